@@ -1,0 +1,320 @@
+/*
+ * glint.h - the public C API of libglint, a Whitted-style ray tracer.
+ *
+ * A program builds a scene (camera, settings, textures, materials, shapes,
+ * lights, fog), renders it into a linear float RGB image and writes that
+ * image as PNG or PPM. Every function that can fail returns a glint_status
+ * and, when given a glint_error, fills it with a one-line message. The
+ * library never prints and never exits.
+ *
+ * Colours are linear RGB, nominally 0..1. Angles are in degrees. y is up.
+ */
+#ifndef GLINT_H
+#define GLINT_H
+
+#include <stddef.h>
+#include <stdint.h>
+#include <stdbool.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---------------------------------------------------------------- errors */
+
+/* Result of every fallible call. */
+typedef enum glint_status {
+    GLINT_OK = 0,
+    GLINT_ERR_INVALID,     /* a value out of range or an inconsistent call */
+    GLINT_ERR_IO,          /* a file could not be read or written */
+    GLINT_ERR_NOMEM,       /* an allocation failed */
+    GLINT_ERR_EMBREE,      /* the Embree device reported an error */
+    GLINT_ERR_CANCELLED    /* the caller's cancel flag stopped a render */
+} glint_status;
+
+/* A one-line, human-readable description of the last failure. */
+typedef struct glint_error {
+    char message[512];
+} glint_error;
+
+/* Returns the version string, e.g. "0.1.0". */
+const char *glint_version(void);
+
+/* Returns the sRGB-encoded value (0..1) of a linear value, clamped to 0..1. */
+double glint_linear_to_srgb(double linear);
+
+/* Returns the linear value of an sRGB-encoded value in 0..1. */
+double glint_srgb_to_linear(double srgb);
+
+/* ------------------------------------------------------------ basic types */
+
+typedef struct glint_vec3 { double x, y, z; } glint_vec3;
+typedef struct glint_color { double r, g, b; } glint_color;
+
+/* An affine transform, row-major 3x4 (the last row is 0 0 0 1). It maps
+ * object coordinates to world coordinates. */
+typedef struct glint_transform { double m[3][4]; } glint_transform;
+
+/* Returns the identity transform. */
+glint_transform glint_transform_identity(void);
+
+/* Each of the following returns t followed by one more step, so steps are
+ * applied in the order they are written:
+ *   t = glint_transform_scale(glint_transform_identity(), 2, 2, 2);
+ *   t = glint_transform_translate(t, 0, 1, 0);   -- scale first, then move */
+glint_transform glint_transform_translate(glint_transform t, double x, double y, double z);
+/* Rotates by `degrees` about `axis` (any non-zero vector; right-handed). */
+glint_transform glint_transform_rotate(glint_transform t, glint_vec3 axis, double degrees);
+/* Scales by (x, y, z) about the origin. */
+glint_transform glint_transform_scale(glint_transform t, double x, double y, double z);
+
+/* Returns the point p mapped by t. */
+glint_vec3 glint_transform_point(const glint_transform *t, glint_vec3 p);
+
+/* ------------------------------------------------------------------ scene */
+
+typedef struct glint_scene glint_scene;
+
+/* Creates an empty scene with default settings and camera, or NULL when out
+ * of memory. */
+glint_scene *glint_scene_new(void);
+
+/* Frees a scene and everything it owns. NULL is allowed. */
+void glint_scene_free(glint_scene *scene);
+
+/* Creates the built-in default scene: the COSC363 seed room (see README).
+ * Returns NULL when out of memory and fills err. */
+glint_scene *glint_scene_seed_room(glint_error *err);
+
+/* Sampling pattern within a pixel. */
+typedef enum glint_sampler {
+    GLINT_SAMPLER_REGULAR = 0,  /* N x N grid of sample points at cell centres */
+    GLINT_SAMPLER_JITTERED      /* N x N strata, one random point in each */
+} glint_sampler;
+
+/* Image and integrator settings. */
+typedef struct glint_settings {
+    int width, height;         /* pixels, 1..65536 each */
+    int samples_per_pixel;     /* a square number N*N, 1..4096 */
+    glint_sampler sampler;
+    int max_depth;             /* reflection/refraction recursion limit, 0..64 */
+    glint_color background;    /* colour of rays that hit nothing */
+    glint_color ambient_light; /* multiplies each material's ambient term */
+    uint32_t seed;             /* seed of the jittered sampler */
+} glint_settings;
+
+/* Returns the settings of a new scene: 640x480, 1 spp, regular, depth 5,
+ * black background, white ambient light, seed 0. */
+glint_settings glint_settings_default(void);
+
+/* Replaces the scene's settings after checking every value. */
+glint_status glint_scene_set_settings(glint_scene *scene, const glint_settings *s, glint_error *err);
+
+/* Returns the scene's current settings. */
+glint_settings glint_scene_get_settings(const glint_scene *scene);
+
+/* Pinhole camera. */
+typedef struct glint_camera {
+    glint_vec3 position;
+    glint_vec3 look_at;
+    glint_vec3 up;
+    double vfov_degrees;       /* vertical field of view, in (0, 180) */
+} glint_camera;
+
+/* Replaces the camera after checking it (distinct position and look_at, up
+ * not parallel to the view direction, field of view in range). */
+glint_status glint_scene_set_camera(glint_scene *scene, const glint_camera *cam, glint_error *err);
+
+/* Returns the scene's current camera. */
+glint_camera glint_scene_get_camera(const glint_scene *scene);
+
+/* Fog along every ray segment, by the segment's length d. */
+typedef enum glint_fog_kind {
+    GLINT_FOG_NONE = 0,
+    GLINT_FOG_LINEAR,          /* f = clamp((d - start) / (end - start), 0, 1) */
+    GLINT_FOG_EXPONENTIAL      /* f = 1 - exp(-density * d) */
+} glint_fog_kind;
+
+typedef struct glint_fog {
+    glint_fog_kind kind;
+    glint_color color;         /* what a fully fogged ray shows */
+    double start, end;         /* linear: start < end; start may be negative */
+    double density;            /* exponential: > 0 */
+} glint_fog;
+
+/* Replaces the scene's fog after checking it. */
+glint_status glint_scene_set_fog(glint_scene *scene, const glint_fog *fog, glint_error *err);
+
+/* ---------------------------------------------------------------- textures */
+
+/* How a surface point becomes texture coordinates (u, v). Mappings work in
+ * the object's own coordinates (before its transform). */
+typedef enum glint_mapping_kind {
+    GLINT_MAP_UV = 0,     /* the shape's own (u, v) */
+    GLINT_MAP_PLANAR,     /* u = p.u_axis / scale, v = p.v_axis / scale */
+    GLINT_MAP_SPHERICAL,  /* d = unit(p - centre): u = 0.5 + atan2(dx, dz)/2pi, v = 0.5 - asin(dy)/pi */
+    GLINT_MAP_CYLINDRICAL /* about the y axis through centre: u = 0.5 + atan2(dx, dz)/2pi, v = (p.y - centre.y) / scale */
+} glint_mapping_kind;
+
+typedef struct glint_mapping {
+    glint_mapping_kind kind;
+    glint_vec3 centre;           /* spherical, cylindrical */
+    glint_vec3 u_axis, v_axis;   /* planar; zero vectors mean x and z */
+    double scale;                /* planar, cylindrical; 0 means 1 */
+} glint_mapping;
+
+/* Adds a checkerboard of colours a and b with square cells of `cell` texture
+ * units; cell (floor(u/cell) + floor(v/cell)) even shows a. Returns the
+ * texture's index (>= 0) or -1 and fills err. `name` may be NULL. */
+int glint_scene_add_checker(glint_scene *scene, const char *name, glint_color a, glint_color b,
+                            double cell, glint_mapping mapping, glint_error *err);
+
+/* Adds an image texture decoded from a PNG or JPEG file (sRGB, converted to
+ * linear). u runs left to right, v top to bottom, repeating in u and clamped
+ * in v. Returns the texture's index or -1 and fills err. */
+int glint_scene_add_image_file(glint_scene *scene, const char *name, const char *path,
+                               glint_mapping mapping, glint_error *err);
+
+/* As glint_scene_add_image_file, from PNG or JPEG bytes in memory. */
+int glint_scene_add_image_memory(glint_scene *scene, const char *name, const void *data,
+                                 size_t size, glint_mapping mapping, glint_error *err);
+
+/* Replaces the image of the named image texture with the file at `path`,
+ * keeping its mapping. */
+glint_status glint_scene_replace_image(glint_scene *scene, const char *name, const char *path,
+                                       glint_error *err);
+
+/* ---------------------------------------------------------------- materials */
+
+/* Phong material with mirror reflection, transparency and refraction.
+ * The surface shows
+ *   (1 - transparency - refraction) * phong
+ *   + reflectivity * reflected
+ *   + transparency * filter * straight-through
+ *   + refraction * filter * refracted,
+ * where filter = (1 - tint) + tint * colour. With fresnel set, the refraction
+ * share is split between the refracted and reflected rays by the dielectric
+ * Fresnel equations; total internal reflection always sends it to the
+ * reflected ray. */
+typedef struct glint_material {
+    glint_color color;        /* base colour */
+    int texture;              /* texture index replacing color, or -1 */
+    double ambient;           /* 0..1, share of color lit by ambient light */
+    double diffuse;           /* >= 0 */
+    double specular;          /* >= 0, white highlight strength */
+    double shininess;         /* Phong exponent, >= 0 */
+    double reflectivity;      /* 0..1 */
+    double transparency;      /* 0..1 */
+    double refraction;        /* 0..1, transparency + refraction <= 1 */
+    double ior;               /* index of refraction, > 0 */
+    double tint;              /* 0..1, how much colour filters transmitted light */
+    bool fresnel;
+} glint_material;
+
+/* Returns a matte white material: ambient 0.2, diffuse 1, specular 1,
+ * shininess 50, nothing else; ior 1.5, tint 1, no texture. */
+glint_material glint_material_default(void);
+
+/* Adds a material; returns its index or -1 and fills err. */
+int glint_scene_add_material(glint_scene *scene, const char *name, const glint_material *m,
+                             glint_error *err);
+
+/* ------------------------------------------------------------------ shapes */
+
+typedef enum glint_shape_kind {
+    GLINT_SHAPE_SPHERE = 0,
+    GLINT_SHAPE_PLANE,      /* infinite (to +-1e6 units) plane through point with normal */
+    GLINT_SHAPE_POLYGON,    /* convex planar triangle or quad, points anticlockwise about the normal */
+    GLINT_SHAPE_BOX,        /* axis-aligned box between min and max */
+    GLINT_SHAPE_CYLINDER,   /* about +y from centre of base, radius, height, optional caps */
+    GLINT_SHAPE_CONE        /* apex above the centre of base at height; optional base cap */
+} glint_shape_kind;
+
+typedef struct glint_shape {
+    glint_shape_kind kind;
+    glint_vec3 center;        /* sphere centre; cylinder and cone base centre; plane point */
+    double radius;            /* sphere, cylinder, cone base */
+    double height;            /* cylinder, cone */
+    bool capped;              /* cylinder: both caps; cone: base cap */
+    glint_vec3 normal;        /* plane */
+    glint_vec3 points[4];     /* polygon */
+    int point_count;          /* polygon: 3 or 4 */
+    glint_vec3 min, max;      /* box */
+} glint_shape;
+
+/* Adds a shape with material index `material`, placed by `transform` (NULL
+ * for identity). Returns the shape's index or -1 and fills err when the
+ * shape is degenerate, a value is not finite, the material does not exist or
+ * the transform is singular. */
+int glint_scene_add_shape(glint_scene *scene, const glint_shape *shape, int material,
+                          const glint_transform *transform, glint_error *err);
+
+/* ------------------------------------------------------------------ lights */
+
+typedef enum glint_light_kind {
+    GLINT_LIGHT_POINT = 0,
+    GLINT_LIGHT_SPOT,
+    GLINT_LIGHT_DIRECTIONAL
+} glint_light_kind;
+
+typedef struct glint_light {
+    glint_light_kind kind;
+    glint_vec3 position;      /* point, spot */
+    glint_vec3 direction;     /* spot: where it points; directional: where light travels */
+    glint_color color;        /* intensity per channel */
+    double cone_angle;        /* spot: half-angle of the cone, degrees, (0, 90] */
+    double falloff_angle;     /* spot: width of the soft edge inside the cone, degrees; 0 = hard */
+} glint_light;
+
+/* Adds a light; returns its index or -1 and fills err. */
+int glint_scene_add_light(glint_scene *scene, const glint_light *light, glint_error *err);
+
+/* --------------------------------------------------------------- rendering */
+
+/* A linear float RGB image: pixels[3 * (y * width + x) + channel], top row first. */
+typedef struct glint_image {
+    int width, height;
+    float *pixels;
+} glint_image;
+
+/* Frees the pixels of an image filled by glint_render. */
+void glint_image_free(glint_image *image);
+
+/* Counts gathered by a render. */
+typedef struct glint_render_stats {
+    double seconds;
+    uint64_t samples;         /* camera samples */
+    uint64_t rays;            /* camera, reflected, refracted, transmitted and shadow rays */
+} glint_render_stats;
+
+/* Called by one thread of the render as tiles finish. */
+typedef void (*glint_progress_fn)(void *user, int tiles_done, int tiles_total);
+
+typedef struct glint_render_options {
+    int threads;              /* 0 means one per core */
+    int tile_size;            /* 0 means 32 */
+    glint_progress_fn progress;
+    void *progress_user;
+    const volatile int *cancel; /* when non-NULL and set non-zero, the render stops */
+} glint_render_options;
+
+/* Renders the scene into *out (allocated here; free with glint_image_free).
+ * The image bytes depend only on the scene and its settings, never on the
+ * thread count or tile size. stats may be NULL. */
+glint_status glint_render(const glint_scene *scene, const glint_render_options *options,
+                          glint_image *out, glint_render_stats *stats, glint_error *err);
+
+/* Writes the image as 8-bit sRGB PNG (".png") or binary PPM (".ppm"),
+ * chosen by the extension, case-insensitively. The file is written under a
+ * temporary name beside it and renamed into place, so a failure never leaves
+ * a partial file and never destroys an existing one. */
+glint_status glint_image_write(const glint_image *image, const char *path, glint_error *err);
+
+/* Checks, before rendering, that glint_image_write could write `path`: a
+ * known extension and a writable directory. */
+glint_status glint_image_check_path(const char *path, glint_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,40 @@
+/* vec.h - 3-vectors in double precision: the arithmetic every module shares. */
+#ifndef GLINT_CORE_VEC_H
+#define GLINT_CORE_VEC_H
+
+#include <math.h>
+#include "glint.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+typedef glint_vec3 vec3;
+
+/* A ray: origin o, direction d (not necessarily unit length). */
+typedef struct ray {
+    vec3 o, d;
+} ray;
+
+static inline vec3 v3(double x, double y, double z) { vec3 v = {x, y, z}; return v; }
+static inline vec3 v3_add(vec3 a, vec3 b) { return v3(a.x + b.x, a.y + b.y, a.z + b.z); }
+static inline vec3 v3_sub(vec3 a, vec3 b) { return v3(a.x - b.x, a.y - b.y, a.z - b.z); }
+static inline vec3 v3_scale(vec3 a, double s) { return v3(a.x * s, a.y * s, a.z * s); }
+static inline vec3 v3_neg(vec3 a) { return v3(-a.x, -a.y, -a.z); }
+static inline double v3_dot(vec3 a, vec3 b) { return a.x * b.x + a.y * b.y + a.z * b.z; }
+static inline vec3 v3_cross(vec3 a, vec3 b)
+{
+    return v3(a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x);
+}
+static inline double v3_length(vec3 a) { return sqrt(v3_dot(a, a)); }
+static inline vec3 v3_normalize(vec3 a)
+{
+    double l = v3_length(a);
+    return l > 0 ? v3_scale(a, 1.0 / l) : a;
+}
+/* a + b * s, the step along a ray. */
+static inline vec3 v3_madd(vec3 a, vec3 b, double s) { return v3(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s); }
+static inline vec3 ray_at(const ray *r, double t) { return v3_madd(r->o, r->d, t); }
+static inline int v3_is_finite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
+
+#endif
