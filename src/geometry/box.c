@@ -1,0 +1,74 @@
+/* box.c - axis-aligned boxes in object space, between min and max.
+ *
+ * Parts 1 to 6 are the faces -x, +x, -y, +y, -z, +z. Each face's (u, v)
+ * follow plane_basis for its outward normal, scaled to [0, 1] across the
+ * box: seen from outside, u runs right and v runs down, so the four side
+ * faces all have v = 0 along their top edge. */
+#include "geometry/kinds.h"
+
+static double component(vec3 v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
+
+glint_status box_init(shape *s, glint_error *err)
+{
+    const glint_shape *d = &s->desc;
+    if (!finite_ok(d->min, "box", "min", err) || !finite_ok(d->max, "box", "max", err))
+        return GLINT_ERR_INVALID;
+    if (!(d->min.x < d->max.x && d->min.y < d->max.y && d->min.z < d->max.z))
+        return error_set(err, GLINT_ERR_INVALID, "box min must be below max on every axis");
+    return GLINT_OK;
+}
+
+/* The slab method: the ray is inside the box where it is inside all three
+ * slabs at once; the slab entered last names the face it came in by. Rays
+ * that only touch an edge or a face still hit. */
+bool box_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+{
+    const glint_shape *d = &s->desc;
+    double t_near = -INFINITY, t_far = INFINITY;
+    int near_part = 0, far_part = 0;
+    for (int axis = 0; axis < 3; axis++) {
+        double dir = component(r->d, axis), t_in, t_out;
+        if (!slab(component(r->o, axis), dir, component(d->min, axis), component(d->max, axis), &t_in, &t_out))
+            return false;
+        int low_face = 1 + 2 * axis;
+        if (t_in > t_near) {
+            t_near = t_in;
+            near_part = dir > 0 ? low_face : low_face + 1;
+        }
+        if (t_out < t_far) {
+            t_far = t_out;
+            far_part = dir > 0 ? low_face + 1 : low_face;
+        }
+    }
+    if (t_near > t_far)
+        return false;
+    shape_hit best = {tmax, 0};
+    hit_offer(&best, tmin, t_near, near_part);
+    hit_offer(&best, tmin, t_far, far_part);
+    return hit_take(&best, tmax, hit);
+}
+
+/* Where p lies along a (a coordinate axis of either sign) across the box:
+ * 0 at the end a points away from, 1 at the end it points to. */
+static double across(const glint_shape *d, vec3 p, vec3 a)
+{
+    vec3 mid = v3_scale(v3_add(d->min, d->max), 0.5), size = v3_sub(d->max, d->min);
+    return 0.5 + v3_dot(v3_sub(p, mid), a) / v3_dot(size, v3(fabs(a.x), fabs(a.y), fabs(a.z)));
+}
+
+void box_surface(const shape *s, int part, surface *out)
+{
+    int axis = (part - 1) / 2;
+    double sign = (part - 1) % 2 ? 1.0 : -1.0;
+    vec3 n = v3(axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0), u, v;
+    plane_basis(n, &u, &v);
+    out->n = n;
+    out->u = across(&s->desc, out->p_obj, u);
+    out->v = across(&s->desc, out->p_obj, v);
+}
+
+void box_bounds(const shape *s, vec3 *lo, vec3 *hi)
+{
+    *lo = s->desc.min;
+    *hi = s->desc.max;
+}

@@ -1,0 +1,84 @@
+/* cone.c - cones in object space: base centre, base radius and height, the
+ * apex straight above the base centre; optionally capped at the base.
+ *
+ * Part 0 is the side, 1 the base cap. Only the nappe between base and apex
+ * is part of the shape. */
+#include "geometry/kinds.h"
+
+glint_status cone_init(shape *s, glint_error *err)
+{
+    return axial_check(&s->desc, "cone", err);
+}
+
+/* The coefficients and roots of F(t) = x^2 + z^2 - k^2 (h - y)^2 along the
+ * ray, F <= 0 being inside the double cone through the apex. */
+typedef struct cone_roots {
+    double a, b, c, t0, t1;
+    bool real;
+} cone_roots;
+
+/* Whether the ray is inside the double cone at t, read off the roots rather
+ * than by evaluating F again, so that the cap and the side agree about the
+ * rim and no ray slips between them. */
+static bool inside_at(const cone_roots *q, double t)
+{
+    if (!q->real)
+        return q->a < 0 || (q->a == 0 && q->c <= 0);
+    if (q->a > 0)
+        return within(t, q->t0, q->t1);
+    if (q->a < 0)
+        return t <= q->t0 || t >= q->t1;
+    return q->b > 0 ? t <= q->t0 : t >= q->t0;
+}
+
+bool cone_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+{
+    const glint_shape *d = &s->desc;
+    vec3 o = v3_sub(r->o, d->center), dir = r->d;
+    double k2 = (d->radius / d->height) * (d->radius / d->height);
+    double below_apex = d->height - o.y;
+    double y_in, y_out;
+    if (!slab(o.y, dir.y, 0, d->height, &y_in, &y_out))
+        return false;
+    cone_roots q;
+    q.a = dir.x * dir.x + dir.z * dir.z - k2 * dir.y * dir.y;
+    q.b = 2 * (o.x * dir.x + o.z * dir.z + k2 * below_apex * dir.y);
+    q.c = o.x * o.x + o.z * o.z - k2 * below_apex * below_apex;
+    q.real = quadratic(q.a, q.b, q.c, &q.t0, &q.t1);
+    shape_hit best = {tmax, 0};
+    /* The height interval also rules out the upper nappe, above the apex. */
+    if (q.real && within(q.t0, y_in, y_out))
+        hit_offer(&best, tmin, q.t0, 0);
+    if (q.real && within(q.t1, y_in, y_out))
+        hit_offer(&best, tmin, q.t1, 0);
+    if (d->capped) {
+        double t_base = dir.y > 0 ? y_in : y_out;
+        if (inside_at(&q, t_base))
+            hit_offer(&best, tmin, t_base, 1);
+    }
+    return hit_take(&best, tmax, hit);
+}
+
+/* Side: u is the angle about the axis (see polar_u), v the height from 0 at
+ * the base to 1 at the apex. Cap: see disc_uv. */
+void cone_surface(const shape *s, int part, surface *out)
+{
+    const glint_shape *d = &s->desc;
+    vec3 l = v3_sub(out->p_obj, d->center);
+    if (part == 1) {
+        out->n = v3(0, -1, 0);
+        disc_uv(l, d->radius, out);
+        return;
+    }
+    /* grad F = 2 (x, k^2 (h - y), z), and on the surface k (h - y) = r, so
+     * it is parallel to (x / r, k, z / r). The apex has no gradient. */
+    double r = sqrt(l.x * l.x + l.z * l.z);
+    out->n = r > 0 ? v3(l.x / r, d->radius / d->height, l.z / r) : v3(0, 1, 0);
+    out->u = polar_u(l.x, l.z);
+    out->v = l.y / d->height;
+}
+
+void cone_bounds(const shape *s, vec3 *lo, vec3 *hi)
+{
+    axial_bounds(&s->desc, lo, hi);
+}

@@ -1,0 +1,71 @@
+/* cylinder.c - cylinders in object space: standing on the centre of their
+ * base, about +y, with radius and height, open or with both caps.
+ *
+ * Part 0 is the side, 1 the bottom cap, 2 the top cap. The side and the caps
+ * are found from the same two intervals (where the ray is within the radius
+ * and where it is within the height), so at the rim one of them always
+ * claims a ray and none slips between. */
+#include "geometry/kinds.h"
+
+glint_status cylinder_init(shape *s, glint_error *err)
+{
+    return axial_check(&s->desc, "cylinder", err);
+}
+
+/* The interval of t where the ray is within radius of the y axis. */
+static bool radius_span(const ray *r, double radius, double *t_in, double *t_out)
+{
+    double a = r->d.x * r->d.x + r->d.z * r->d.z;
+    double b = 2 * (r->o.x * r->d.x + r->o.z * r->d.z);
+    double c = r->o.x * r->o.x + r->o.z * r->o.z - radius * radius;
+    if (a == 0) {
+        *t_in = -INFINITY;
+        *t_out = INFINITY;
+        return c <= 0;
+    }
+    return quadratic(a, b, c, t_in, t_out);
+}
+
+bool cylinder_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+{
+    const glint_shape *d = &s->desc;
+    ray l = {v3_sub(r->o, d->center), r->d};
+    double r_in, r_out, y_in, y_out;
+    if (!radius_span(&l, d->radius, &r_in, &r_out) || !slab(l.o.y, l.d.y, 0, d->height, &y_in, &y_out))
+        return false;
+    shape_hit best = {tmax, 0};
+    if (within(r_in, y_in, y_out))
+        hit_offer(&best, tmin, r_in, 0);
+    if (within(r_out, y_in, y_out))
+        hit_offer(&best, tmin, r_out, 0);
+    if (d->capped) {
+        /* Going up, the ray meets the bottom cap first. */
+        int cap_in = l.d.y > 0 ? 1 : 2;
+        if (within(y_in, r_in, r_out))
+            hit_offer(&best, tmin, y_in, cap_in);
+        if (within(y_out, r_in, r_out))
+            hit_offer(&best, tmin, y_out, 3 - cap_in);
+    }
+    return hit_take(&best, tmax, hit);
+}
+
+/* Side: u is the angle about the axis (see polar_u), v the height from 0 at
+ * the base to 1 at the top. Caps: see disc_uv. */
+void cylinder_surface(const shape *s, int part, surface *out)
+{
+    const glint_shape *d = &s->desc;
+    vec3 l = v3_sub(out->p_obj, d->center);
+    if (part == 0) {
+        out->n = v3(l.x / d->radius, 0, l.z / d->radius);
+        out->u = polar_u(l.x, l.z);
+        out->v = l.y / d->height;
+        return;
+    }
+    out->n = v3(0, part == 1 ? -1 : 1, 0);
+    disc_uv(l, d->radius, out);
+}
+
+void cylinder_bounds(const shape *s, vec3 *lo, vec3 *hi)
+{
+    axial_bounds(&s->desc, lo, hi);
+}

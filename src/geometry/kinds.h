@@ -1,0 +1,169 @@
+/* kinds.h - the per-kind half of the shape interface, between shape.c and
+ * the files that each implement one kind in object space, and the bits of
+ * arithmetic several kinds share.
+ *
+ * Every kind offers four functions:
+ *   <kind>_init       checks s->desc (already copied in) and fills the
+ *                     fields derived from it;
+ *   <kind>_intersect  shape_intersect for a ray already in object space;
+ *   <kind>_surface    fills out->n (object-space normal, any length), out->u
+ *                     and out->v from out->p_obj and the hit's part;
+ *   <kind>_bounds     object-space bounds (planes have none: unbounded). */
+#ifndef GLINT_GEOMETRY_KINDS_H
+#define GLINT_GEOMETRY_KINDS_H
+
+#include <math.h>
+#include <stdbool.h>
+#include "core/error.h"
+#include "geometry/shape.h"
+
+glint_status sphere_init(shape *s, glint_error *err);
+bool sphere_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
+void sphere_surface(const shape *s, int part, surface *out);
+void sphere_bounds(const shape *s, vec3 *lo, vec3 *hi);
+
+glint_status plane_init(shape *s, glint_error *err);
+bool plane_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
+void plane_surface(const shape *s, int part, surface *out);
+
+glint_status polygon_init(shape *s, glint_error *err);
+bool polygon_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
+void polygon_surface(const shape *s, int part, surface *out);
+void polygon_bounds(const shape *s, vec3 *lo, vec3 *hi);
+
+glint_status box_init(shape *s, glint_error *err);
+bool box_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
+void box_surface(const shape *s, int part, surface *out);
+void box_bounds(const shape *s, vec3 *lo, vec3 *hi);
+
+glint_status cylinder_init(shape *s, glint_error *err);
+bool cylinder_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
+void cylinder_surface(const shape *s, int part, surface *out);
+void cylinder_bounds(const shape *s, vec3 *lo, vec3 *hi);
+
+glint_status cone_init(shape *s, glint_error *err);
+bool cone_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
+void cone_surface(const shape *s, int part, surface *out);
+void cone_bounds(const shape *s, vec3 *lo, vec3 *hi);
+
+/* Where r crosses the plane through point with normal n, when that is in
+ * (tmin, tmax); a ray parallel to the plane misses it. Polygons share it. */
+bool plane_hit(vec3 point, vec3 n, const ray *r, double tmin, double tmax, double *t);
+
+/* The texture axes of a plane with unit normal n. Seen from the side n
+ * points to, u runs right and v runs down, as in an image. Planes more than
+ * 45 degrees from horizontal are walls: u is horizontal, and v is -y on a
+ * vertical wall. The rest are floors and ceilings: u is +x on a floor, -x
+ * on a ceiling, and v is +z on both. Box faces share it. */
+void plane_basis(vec3 n, vec3 *u, vec3 *v);
+
+/* Candidate hits are offered one by one to best, which starts as {tmax, 0}
+ * and keeps the nearest in (tmin, tmax); the first offered wins a tie. */
+static inline void hit_offer(shape_hit *best, double tmin, double t, int part)
+{
+    if (t > tmin && t < best->t) {
+        best->t = t;
+        best->part = part;
+    }
+}
+
+static inline bool hit_take(const shape_hit *best, double tmax, shape_hit *hit)
+{
+    if (!(best->t < tmax))
+        return false;
+    *hit = *best;
+    return true;
+}
+
+static inline vec3 min3(vec3 a, vec3 b) { return v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
+static inline vec3 max3(vec3 a, vec3 b) { return v3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
+
+static inline bool within(double t, double lo, double hi) { return t >= lo && t <= hi; }
+
+/* The real roots t0 <= t1 of a t^2 + b t + c = 0, in the form that avoids
+ * cancellation between b and the square root. A double root counts, so a
+ * ray tangent to a surface hits it. With a == 0 (a ray parallel to a cone's
+ * slant) the one linear root is returned twice. */
+static inline bool quadratic(double a, double b, double c, double *t0, double *t1)
+{
+    if (a == 0) {
+        if (b == 0)
+            return false;
+        *t0 = *t1 = -c / b;
+        return true;
+    }
+    double disc = b * b - 4 * a * c;
+    if (disc < 0)
+        return false;
+    double q = -0.5 * (b + copysign(sqrt(disc), b));
+    if (q == 0) {
+        /* b and the discriminant are both zero, so c is too. */
+        *t0 = *t1 = 0;
+        return true;
+    }
+    *t0 = fmin(q / a, c / q);
+    *t1 = fmax(q / a, c / q);
+    return true;
+}
+
+/* The interval of t over which o + t d lies in [lo, hi] along one axis. A
+ * ray parallel to the axis is inside for all t or for none; the infinite
+ * ends that gives are safe to offer as hits, as hit_offer refuses them. */
+static inline bool slab(double o, double d, double lo, double hi, double *t_in, double *t_out)
+{
+    if (d == 0) {
+        *t_in = -INFINITY;
+        *t_out = INFINITY;
+        return o >= lo && o <= hi;
+    }
+    *t_in = fmin((lo - o) / d, (hi - o) / d);
+    *t_out = fmax((lo - o) / d, (hi - o) / d);
+    return true;
+}
+
+/* The angle about +y as u in [0, 1]: 0.5 towards +z, 0.75 towards +x, and
+ * the seam where 0 meets 1 towards -z. */
+static inline double polar_u(double x, double z) { return 0.5 + atan2(x, z) / (2 * M_PI); }
+
+/* Texture coordinates on a disc about the y axis: the disc's square of
+ * side 2 * radius mapped to [0, 1]^2, u along +x, v along +z. */
+static inline void disc_uv(vec3 local, double radius, surface *out)
+{
+    out->u = 0.5 + local.x / (2 * radius);
+    out->v = 0.5 + local.z / (2 * radius);
+}
+
+static inline bool finite_ok(vec3 v, const char *kind, const char *what, glint_error *err)
+{
+    if (v3_is_finite(v))
+        return true;
+    error_set(err, GLINT_ERR_INVALID, "%s %s is not finite", kind, what);
+    return false;
+}
+
+static inline bool positive_ok(double x, const char *kind, const char *what, glint_error *err)
+{
+    if (!isfinite(x))
+        error_set(err, GLINT_ERR_INVALID, "%s %s is not finite", kind, what);
+    else if (x <= 0)
+        error_set(err, GLINT_ERR_INVALID, "%s %s must be positive, got %g", kind, what, x);
+    return isfinite(x) && x > 0;
+}
+
+/* Cylinders and cones are described alike: base centre, radius, height. */
+static inline glint_status axial_check(const glint_shape *d, const char *kind, glint_error *err)
+{
+    bool ok = finite_ok(d->center, kind, "centre", err) && positive_ok(d->radius, kind, "radius", err)
+              && positive_ok(d->height, kind, "height", err);
+    return ok ? GLINT_OK : GLINT_ERR_INVALID;
+}
+
+/* Bounds of a shape standing on its base centre: radius about the y axis,
+ * height up. */
+static inline void axial_bounds(const glint_shape *d, vec3 *lo, vec3 *hi)
+{
+    *lo = v3_add(d->center, v3(-d->radius, 0, -d->radius));
+    *hi = v3_add(d->center, v3(d->radius, d->height, d->radius));
+}
+
+#endif

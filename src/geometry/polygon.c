@@ -1,0 +1,101 @@
+/* polygon.c - convex planar triangles and quads in object space, their
+ * points anticlockwise when seen from the side the normal points to. */
+#include "geometry/kinds.h"
+
+static vec3 corner(const glint_shape *d, int i)
+{
+    int n = d->point_count;
+    vec3 a = d->points[i], b = d->points[(i + 1) % n], c = d->points[(i + 2) % n];
+    return v3_cross(v3_sub(b, a), v3_sub(c, b));
+}
+
+glint_status polygon_init(shape *s, glint_error *err)
+{
+    const glint_shape *d = &s->desc;
+    const vec3 *p = d->points;
+    int n = d->point_count;
+    if (n != 3 && n != 4)
+        return error_set(err, GLINT_ERR_INVALID, "polygon needs 3 or 4 points, got %d", n);
+    for (int i = 0; i < n; i++) {
+        if (!v3_is_finite(p[i]))
+            return error_set(err, GLINT_ERR_INVALID, "polygon point %d is not finite", i);
+    }
+    double size = 0;
+    for (int i = 0; i < n; i++) {
+        double edge = v3_length(v3_sub(p[(i + 1) % n], p[i]));
+        if (edge == 0)
+            return error_set(err, GLINT_ERR_INVALID, "polygon points %d and %d coincide", i, (i + 1) % n);
+        size = fmax(size, edge);
+    }
+    /* Areas below this, relative to the longest edge, count as zero. */
+    double tiny = 1e-9 * size * size;
+    double largest = 0;
+    for (int i = 0; i < n; i++)
+        largest = fmax(largest, v3_length(corner(d, i)));
+    if (largest <= tiny)
+        return error_set(err, GLINT_ERR_INVALID, "polygon points are collinear");
+    /* A quad's diagonals give its normal even when three of its points are
+     * nearly in line; parallel diagonals mean the quad crosses itself. */
+    vec3 normal = n == 3 ? corner(d, 0) : v3_cross(v3_sub(p[2], p[0]), v3_sub(p[3], p[1]));
+    if (v3_length(normal) <= tiny)
+        return error_set(err, GLINT_ERR_INVALID, "polygon is not convex");
+    normal = v3_normalize(normal);
+    if (n == 4 && fabs(v3_dot(v3_sub(p[3], p[0]), normal)) >= 1e-6 * size)
+        return error_set(err, GLINT_ERR_INVALID, "polygon is not planar");
+    /* A straight corner is refused too: it would leave the uv axes (the
+     * edges at point 0) parallel, and such a quad is a triangle anyway. */
+    for (int i = 0; i < n; i++) {
+        if (v3_dot(corner(d, i), normal) <= tiny)
+            return error_set(err, GLINT_ERR_INVALID, "polygon is not convex");
+    }
+    s->poly_normal = normal;
+    s->plane_u = v3_normalize(v3_sub(p[1], p[0]));
+    s->plane_v = v3_normalize(v3_sub(p[n - 1], p[0]));
+    return GLINT_OK;
+}
+
+bool polygon_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+{
+    const glint_shape *d = &s->desc;
+    int n = d->point_count;
+    double t;
+    if (!plane_hit(d->points[0], s->poly_normal, r, tmin, tmax, &t))
+        return false;
+    vec3 p = ray_at(r, t);
+    /* Inside a convex polygon is to the left of every edge; on an edge counts. */
+    for (int i = 0; i < n; i++) {
+        vec3 a = d->points[i], b = d->points[(i + 1) % n];
+        if (v3_dot(v3_cross(v3_sub(b, a), v3_sub(p, a)), s->poly_normal) < 0)
+            return false;
+    }
+    hit->t = t;
+    hit->part = 0;
+    return true;
+}
+
+/* (u, v) are the affine coordinates of the point along the edges from point
+ * 0 to point 1 and from point 0 to the last point, so a parallelogram spans
+ * [0, 1]^2 and a triangle's (u, v) are the barycentric weights of its
+ * points 1 and 2. */
+void polygon_surface(const shape *s, int part, surface *out)
+{
+    const glint_shape *d = &s->desc;
+    vec3 n = s->poly_normal, p0 = d->points[0];
+    vec3 e1 = v3_sub(d->points[1], p0), e2 = v3_sub(d->points[d->point_count - 1], p0);
+    vec3 q = v3_sub(out->p_obj, p0);
+    /* Cramer's rule for q = u e1 + v e2 within the plane. */
+    double det = v3_dot(v3_cross(e1, e2), n);
+    out->n = n;
+    out->u = v3_dot(v3_cross(q, e2), n) / det;
+    out->v = v3_dot(v3_cross(e1, q), n) / det;
+}
+
+void polygon_bounds(const shape *s, vec3 *lo, vec3 *hi)
+{
+    const glint_shape *d = &s->desc;
+    *lo = *hi = d->points[0];
+    for (int i = 1; i < d->point_count; i++) {
+        *lo = min3(*lo, d->points[i]);
+        *hi = max3(*hi, d->points[i]);
+    }
+}

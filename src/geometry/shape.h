@@ -1,0 +1,64 @@
+/* shape.h - the common interface of the analytic shapes.
+ *
+ * Every shape is exact (never tessellated). Each kind lives in its own file
+ * and works in object space; shape.c validates descriptions and moves rays
+ * and results between world and object space through the shape's transform.
+ * Embree sees shapes only through shape_bounds and shape_intersect. */
+#ifndef GLINT_GEOMETRY_SHAPE_H
+#define GLINT_GEOMETRY_SHAPE_H
+
+#include <stdbool.h>
+#include "core/transform.h"
+#include "core/vec.h"
+
+/* Planes are bounded to this many units from the origin for the BVH. */
+#define SHAPE_PLANE_EXTENT 1e6
+
+typedef struct shape {
+    glint_shape desc;         /* object-space description, validated */
+    vec3 poly_normal;         /* polygon: unit normal from the point order */
+    vec3 plane_u, plane_v;    /* plane and polygon: unit tangents (u, v axes) */
+    transform to_world, to_object;
+    bool has_transform;       /* false: to_world is the identity */
+    int material;
+} shape;
+
+/* A hit found by shape_intersect: the ray parameter and which part of the
+ * shape (0 for the main surface; caps and box faces number from 1). */
+typedef struct shape_hit {
+    double t;
+    int part;
+} shape_hit;
+
+/* What shading needs to know about a hit point. */
+typedef struct surface {
+    vec3 p;         /* world position */
+    vec3 n;         /* world unit normal, pointing out of the shape (for planes and
+                       polygons: the side given by the normal or point order) */
+    vec3 p_obj;     /* object-space position, for texture mappings */
+    double u, v;    /* the shape's own texture coordinates */
+} surface;
+
+/* Fills *s from desc and transform (NULL: identity) after checking every
+ * value: finite numbers, positive radius and height, 3 or 4 coplanar convex
+ * non-degenerate polygon points, non-zero plane normal, box min < max, an
+ * invertible transform. On failure fills err with a message naming the
+ * problem (e.g. "sphere radius must be positive, got -1"). */
+glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform *transform,
+                        int material, glint_error *err);
+
+/* Finds the nearest hit of world ray r with t in (tmin, tmax). A ray that
+ * starts inside a closed shape finds the surface on its way out. */
+bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
+
+/* Describes the surface at hit on world ray r. */
+void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *out);
+
+/* World-space axis-aligned bounds. */
+void shape_bounds(const shape *s, vec3 *lo, vec3 *hi);
+
+/* True for shapes that enclose a volume (sphere, box, capped cylinder,
+ * cone with its base cap): a ray enters and leaves them. */
+bool shape_is_closed(const shape *s);
+
+#endif

@@ -1,0 +1,1069 @@
+/* test_geometry.c - the analytic shapes: exact hits, misses, normals, uv,
+ * bounds and validation, in object space and under transforms. Expected
+ * values are worked out by hand in the comments, never by the code under
+ * test. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <math.h>
+#include <string.h>
+#include "geometry/shape.h"
+
+#define EPS 1e-9
+
+/* ------------------------------------------------------------ assertions */
+
+static void near_at(const char *file, int line, double got, double want)
+{
+    if (!(fabs(got - want) < EPS)) {
+        print_error("got %.17g, want %.17g\n", got, want);
+        _fail(file, line);
+    }
+}
+#define NEAR(got, want) near_at(__FILE__, __LINE__, (got), (want))
+
+static void vnear_at(const char *file, int line, vec3 got, vec3 want)
+{
+    if (!(fabs(got.x - want.x) < EPS && fabs(got.y - want.y) < EPS && fabs(got.z - want.z) < EPS)) {
+        print_error("got (%.17g, %.17g, %.17g), want (%.17g, %.17g, %.17g)\n", got.x, got.y, got.z,
+                    want.x, want.y, want.z);
+        _fail(file, line);
+    }
+}
+#define VNEAR(got, want) vnear_at(__FILE__, __LINE__, (got), (want))
+
+static shape make_at(const char *file, int line, glint_shape d, const glint_transform *m)
+{
+    shape s;
+    glint_error err = {{0}};
+    if (shape_init(&s, &d, m, 7, &err) != GLINT_OK) {
+        print_error("shape_init: %s\n", err.message);
+        _fail(file, line);
+    }
+    return s;
+}
+#define MAKE(d, m) make_at(__FILE__, __LINE__, (d), (m))
+
+/* Asserts that r hits s at t on part, at world point p with world normal
+ * n; returns the surface for further checks. */
+static surface hit_at(const char *file, int line, const shape *s, ray r, double tmin, double tmax, double t,
+                      int part, vec3 p, vec3 n)
+{
+    shape_hit h;
+    surface sf;
+    memset(&sf, 0, sizeof sf);
+    if (!shape_intersect(s, &r, tmin, tmax, &h)) {
+        print_error("missed, want a hit at t = %.17g\n", t);
+        _fail(file, line);
+        return sf;
+    }
+    near_at(file, line, h.t, t);
+    if (h.part != part) {
+        print_error("part %d, want %d\n", h.part, part);
+        _fail(file, line);
+    }
+    shape_surface(s, &r, &h, &sf);
+    vnear_at(file, line, sf.p, p);
+    vnear_at(file, line, sf.n, n);
+    return sf;
+}
+#define HIT(s, r, t, part, p, n) hit_at(__FILE__, __LINE__, &(s), (r), 0, INFINITY, (t), (part), (p), (n))
+#define HIT_WITHIN(s, r, tmin, tmax, t, part, p, n) \
+    hit_at(__FILE__, __LINE__, &(s), (r), (tmin), (tmax), (t), (part), (p), (n))
+
+static void miss_at(const char *file, int line, const shape *s, ray r, double tmin, double tmax)
+{
+    shape_hit h;
+    if (shape_intersect(s, &r, tmin, tmax, &h)) {
+        print_error("hit at t = %.17g part %d, want a miss\n", h.t, h.part);
+        _fail(file, line);
+    }
+}
+#define MISS(s, r) miss_at(__FILE__, __LINE__, &(s), (r), 0, INFINITY)
+#define MISS_WITHIN(s, r, tmin, tmax) miss_at(__FILE__, __LINE__, &(s), (r), (tmin), (tmax))
+
+static void rejects_at(const char *file, int line, glint_shape d, const glint_transform *m, const char *message)
+{
+    shape s;
+    glint_error err = {{0}};
+    if (shape_init(&s, &d, m, 0, &err) != GLINT_ERR_INVALID || strcmp(err.message, message) != 0) {
+        print_error("message \"%s\", want \"%s\"\n", err.message, message);
+        _fail(file, line);
+    }
+}
+#define REJECTS(d, m, message) rejects_at(__FILE__, __LINE__, (d), (m), (message))
+
+static ray R(vec3 o, vec3 d)
+{
+    ray r = {o, d};
+    return r;
+}
+
+/* ----------------------------------------------------------- descriptions */
+
+static glint_shape sphere_d(vec3 c, double radius)
+{
+    glint_shape d = {.kind = GLINT_SHAPE_SPHERE, .center = c, .radius = radius};
+    return d;
+}
+
+static glint_shape plane_d(vec3 point, vec3 normal)
+{
+    glint_shape d = {.kind = GLINT_SHAPE_PLANE, .center = point, .normal = normal};
+    return d;
+}
+
+static glint_shape poly_d(int count, vec3 a, vec3 b, vec3 c, vec3 e)
+{
+    glint_shape d = {.kind = GLINT_SHAPE_POLYGON, .point_count = count, .points = {a, b, c, e}};
+    return d;
+}
+
+static glint_shape box_d(vec3 lo, vec3 hi)
+{
+    glint_shape d = {.kind = GLINT_SHAPE_BOX, .min = lo, .max = hi};
+    return d;
+}
+
+static glint_shape axial_d(glint_shape_kind kind, vec3 c, double radius, double height, bool capped)
+{
+    glint_shape d = {.kind = kind, .center = c, .radius = radius, .height = height, .capped = capped};
+    return d;
+}
+
+/* The shapes most tests use. */
+static glint_shape test_sphere(void) { return sphere_d(v3(1, 2, 3), 2); }
+static glint_shape test_floor(void) { return plane_d(v3(0, -1, 0), v3(0, 2, 0)); }
+static glint_shape test_triangle(void) { return poly_d(3, v3(0, 0, 0), v3(2, 0, 0), v3(0, 2, 0), v3(0, 0, 0)); }
+/* A slanted parallelogram: (u, v) are coordinates along its two edges. */
+static glint_shape test_quad(void) { return poly_d(4, v3(0, 0, 0), v3(2, 0, 0), v3(3, 1, 0), v3(1, 1, 0)); }
+static glint_shape test_box(void) { return box_d(v3(-1, -2, -3), v3(1, 2, 3)); }
+/* y from -1 to 1, radius 1. */
+static glint_shape test_cylinder(bool capped) { return axial_d(GLINT_SHAPE_CYLINDER, v3(0, -1, 0), 1, 2, capped); }
+/* Base radius 1 at y = 0, apex at y = 2: the radius at height y is (2 - y) / 2. */
+static glint_shape test_cone(bool capped) { return axial_d(GLINT_SHAPE_CONE, v3(0, 0, 0), 1, 2, capped); }
+
+/* object (x, y, z) -> world (10 - 3y, 20 + 2x, 30 + 4z): scale (2, 3, 4),
+ * then 90 degrees about z, then a move. */
+static glint_transform m_axis(void)
+{
+    glint_transform t = glint_transform_scale(glint_transform_identity(), 2, 3, 4);
+    t = glint_transform_rotate(t, v3(0, 0, 1), 90);
+    return glint_transform_translate(t, 10, 20, 30);
+}
+
+/* Non-uniform scale, 30 degrees about a skew axis, a move. */
+static glint_transform m_skew(void)
+{
+    glint_transform t = glint_transform_scale(glint_transform_identity(), 0.5, 2, 1.5);
+    t = glint_transform_rotate(t, v3(1, 2, 3), 30);
+    return glint_transform_translate(t, -4, 5, 7);
+}
+
+/* ----------------------------------------------------------------- sphere */
+
+static void test_sphere_hit(void **state)
+{
+    shape s = MAKE(test_sphere(), NULL);
+    /* Along z through the centre's x and y: the near pole is z = 3 - 2. */
+    surface sf = HIT(s, R(v3(1, 2, -10), v3(0, 0, 2)), 5.5, 0, v3(1, 2, 1), v3(0, 0, -1));
+    VNEAR(sf.p_obj, v3(1, 2, 1));
+    assert_int_equal(s.material, 7);
+}
+
+static void test_sphere_miss(void **state)
+{
+    shape s = MAKE(test_sphere(), NULL);
+    MISS(s, R(v3(4, 2, -10), v3(0, 0, 1)));
+    MISS(s, R(v3(1, 2, -10), v3(1, 0, 0)));
+    MISS(s, R(v3(1, 2, -10), v3(0, 0, 0)));
+}
+
+/* A tangent ray hits, once, at the point of tangency. */
+static void test_sphere_grazing(void **state)
+{
+    shape s = MAKE(test_sphere(), NULL);
+    HIT(s, R(v3(3, 2, -10), v3(0, 0, 1)), 13, 0, v3(3, 2, 3), v3(1, 0, 0));
+    MISS(s, R(v3(3 + 1e-9, 2, -10), v3(0, 0, 1)));
+}
+
+static void test_sphere_inside(void **state)
+{
+    shape s = MAKE(test_sphere(), NULL);
+    HIT(s, R(v3(1, 2, 3), v3(0, 3, 0)), 2.0 / 3, 0, v3(1, 4, 3), v3(0, 1, 0));
+    /* Leaving from the surface itself: tmin skips the start point. */
+    HIT_WITHIN(s, R(v3(1, 2, 1), v3(0, 0, 1)), 1e-9, INFINITY, 4, 0, v3(1, 2, 5), v3(0, 0, 1));
+}
+
+static void test_sphere_behind(void **state)
+{
+    shape s = MAKE(test_sphere(), NULL);
+    MISS(s, R(v3(1, 2, 10), v3(0, 0, 1)));
+}
+
+static void test_sphere_tmax(void **state)
+{
+    shape s = MAKE(test_sphere(), NULL);
+    ray r = R(v3(1, 2, -10), v3(0, 0, 2));
+    MISS_WITHIN(s, r, 0, 5.5);
+    HIT_WITHIN(s, r, 0, 5.5 + 1e-9, 5.5, 0, v3(1, 2, 1), v3(0, 0, -1));
+    /* With the near hit before tmin, the far one is next. */
+    HIT_WITHIN(s, r, 5.5, INFINITY, 7.5, 0, v3(1, 2, 5), v3(0, 0, 1));
+}
+
+static void test_sphere_uv(void **state)
+{
+    shape s = MAKE(test_sphere(), NULL);
+    surface north = HIT(s, R(v3(1, 10, 3), v3(0, -1, 0)), 6, 0, v3(1, 4, 3), v3(0, 1, 0));
+    NEAR(north.v, 0);
+    surface south = HIT(s, R(v3(1, -10, 3), v3(0, 1, 0)), 10, 0, v3(1, 0, 3), v3(0, -1, 0));
+    NEAR(south.v, 1);
+    surface front = HIT(s, R(v3(1, 2, 10), v3(0, 0, -1)), 5, 0, v3(1, 2, 5), v3(0, 0, 1));
+    NEAR(front.u, 0.5);
+    NEAR(front.v, 0.5);
+    surface east = HIT(s, R(v3(10, 2, 3), v3(-1, 0, 0)), 7, 0, v3(3, 2, 3), v3(1, 0, 0));
+    NEAR(east.u, 0.75);
+    surface west = HIT(s, R(v3(-10, 2, 3), v3(1, 0, 0)), 9, 0, v3(-1, 2, 3), v3(-1, 0, 0));
+    NEAR(west.u, 0.25);
+    /* The seam is at -z: just to the +x side of it u is nearly 1, just to
+     * the -x side nearly 0. The hit direction there is (+-0.01, 0, -..). */
+    shape_hit h;
+    surface sf;
+    ray r = R(v3(1.02, 2, -10), v3(0, 0, 1));
+    assert_true(shape_intersect(&s, &r, 0, INFINITY, &h));
+    shape_surface(&s, &r, &h, &sf);
+    NEAR(sf.u, 1 - asin(0.01) / (2 * M_PI));
+    NEAR(sf.v, 0.5);
+    r = R(v3(0.98, 2, -10), v3(0, 0, 1));
+    assert_true(shape_intersect(&s, &r, 0, INFINITY, &h));
+    shape_surface(&s, &r, &h, &sf);
+    NEAR(sf.u, asin(0.01) / (2 * M_PI));
+}
+
+/* ------------------------------------------------------------------ plane */
+
+static void test_plane_hit(void **state)
+{
+    shape s = MAKE(test_floor(), NULL);
+    surface sf = HIT(s, R(v3(1, 5, 2), v3(0, -3, 0)), 2, 0, v3(1, -1, 2), v3(0, 1, 0));
+    /* Floors: u along +x, v along +z, from the plane's point. */
+    NEAR(sf.u, 1);
+    NEAR(sf.v, 2);
+}
+
+/* The normal is the given one from either side; shading flips it. */
+static void test_plane_from_below(void **state)
+{
+    shape s = MAKE(test_floor(), NULL);
+    HIT(s, R(v3(1, -4, 2), v3(0, 1, 0)), 3, 0, v3(1, -1, 2), v3(0, 1, 0));
+}
+
+static void test_plane_miss(void **state)
+{
+    shape s = MAKE(test_floor(), NULL);
+    MISS(s, R(v3(0, 5, 0), v3(1, 0, 0)));
+    MISS(s, R(v3(0, -1, 0), v3(1, 0, 1)));
+    MISS(s, R(v3(0, 5, 0), v3(0, 1, 0)));
+    MISS_WITHIN(s, R(v3(1, 5, 2), v3(0, -3, 0)), 0, 2);
+    MISS(s, R(v3(3, -1, 3), v3(0, 1, 0)));
+}
+
+static void test_plane_uv_axes(void **state)
+{
+    /* A wall facing +z: u runs along +x and v down, like an image seen
+     * from the front. */
+    shape wall = MAKE(plane_d(v3(1, 2, 3), v3(0, 0, 5)), NULL);
+    surface sf = HIT(wall, R(v3(3, 5, 10), v3(0, 0, -1)), 7, 0, v3(3, 5, 3), v3(0, 0, 1));
+    NEAR(sf.u, 2);
+    NEAR(sf.v, -3);
+    /* A ceiling (seen from below): u along -x, v along +z. */
+    shape ceiling = MAKE(plane_d(v3(0, 4, 0), v3(0, -1, 0)), NULL);
+    sf = HIT(ceiling, R(v3(2, 0, 3), v3(0, 1, 0)), 4, 0, v3(2, 4, 3), v3(0, -1, 0));
+    NEAR(sf.u, -2);
+    NEAR(sf.v, 3);
+    /* A 45 degree slope facing +x and up: u along -z, v down the slope. */
+    shape slope = MAKE(plane_d(v3(0, 0, 0), v3(1, 1, 0)), NULL);
+    double h = sqrt(0.5);
+    VNEAR(slope.plane_u, v3(0, 0, -1));
+    VNEAR(slope.plane_v, v3(h, -h, 0));
+    VNEAR(slope.desc.normal, v3(h, h, 0));
+    /* Past 45 degrees from vertical a plane counts as a floor: u is the
+     * projection of +x, v that of +z. */
+    shape steep = MAKE(plane_d(v3(0, 0, 0), v3(0.6, 0.8, 0)), NULL);
+    VNEAR(steep.plane_u, v3(0.8, -0.6, 0));
+    VNEAR(steep.plane_v, v3(0, 0, 1));
+}
+
+/* ---------------------------------------------------------------- polygon */
+
+static void test_triangle_hit(void **state)
+{
+    shape s = MAKE(test_triangle(), NULL);
+    surface sf = HIT(s, R(v3(0.5, 0.5, 5), v3(0, 0, -2)), 2.5, 0, v3(0.5, 0.5, 0), v3(0, 0, 1));
+    NEAR(sf.u, 0.25);
+    NEAR(sf.v, 0.25);
+    /* From the back the normal is the same. */
+    HIT(s, R(v3(0.5, 0.5, -5), v3(0, 0, 1)), 5, 0, v3(0.5, 0.5, 0), v3(0, 0, 1));
+}
+
+static void test_triangle_outside(void **state)
+{
+    shape s = MAKE(test_triangle(), NULL);
+    MISS(s, R(v3(1.5, 1.5, 5), v3(0, 0, -1)));
+    MISS(s, R(v3(-0.1, 0.5, 5), v3(0, 0, -1)));
+    MISS(s, R(v3(0.5, -0.1, 5), v3(0, 0, -1)));
+    MISS(s, R(v3(0.5, 0.5, 5), v3(0, 0, 1)));
+    MISS(s, R(v3(0.5, 0.5, 0), v3(1, 0, 0)));
+    MISS_WITHIN(s, R(v3(0.5, 0.5, 5), v3(0, 0, -1)), 0, 4.9);
+}
+
+/* Points on an edge or a corner are inside. */
+static void test_triangle_edges(void **state)
+{
+    shape s = MAKE(test_triangle(), NULL);
+    surface sf = HIT(s, R(v3(1, 1, 5), v3(0, 0, -1)), 5, 0, v3(1, 1, 0), v3(0, 0, 1));
+    NEAR(sf.u, 0.5);
+    NEAR(sf.v, 0.5);
+    HIT(s, R(v3(0, 0.5, 5), v3(0, 0, -1)), 5, 0, v3(0, 0.5, 0), v3(0, 0, 1));
+    sf = HIT(s, R(v3(2, 0, 5), v3(0, 0, -1)), 5, 0, v3(2, 0, 0), v3(0, 0, 1));
+    NEAR(sf.u, 1);
+    NEAR(sf.v, 0);
+}
+
+static void test_triangle_clockwise(void **state)
+{
+    shape s = MAKE(poly_d(3, v3(0, 0, 0), v3(0, 2, 0), v3(2, 0, 0), v3(0, 0, 0)), NULL);
+    HIT(s, R(v3(0.5, 0.5, 5), v3(0, 0, -1)), 5, 0, v3(0.5, 0.5, 0), v3(0, 0, -1));
+}
+
+static void test_quad_hit(void **state)
+{
+    shape s = MAKE(test_quad(), NULL);
+    /* (1.5, 0.5) = p0 + 0.5 (2, 0) + 0.5 (1, 1). */
+    surface sf = HIT(s, R(v3(1.5, 0.5, 3), v3(0, 0, -1)), 3, 0, v3(1.5, 0.5, 0), v3(0, 0, 1));
+    NEAR(sf.u, 0.5);
+    NEAR(sf.v, 0.5);
+    sf = HIT(s, R(v3(3, 1, 3), v3(0, 0, -1)), 3, 0, v3(3, 1, 0), v3(0, 0, 1));
+    NEAR(sf.u, 1);
+    NEAR(sf.v, 1);
+    /* On the slanted edge x - y = 2. */
+    sf = HIT(s, R(v3(2.5, 0.5, 3), v3(0, 0, -1)), 3, 0, v3(2.5, 0.5, 0), v3(0, 0, 1));
+    NEAR(sf.u, 1);
+    NEAR(sf.v, 0.5);
+    /* Left of the fourth edge x = y, and right of the second. */
+    MISS(s, R(v3(0.2, 0.5, 3), v3(0, 0, -1)));
+    MISS(s, R(v3(2.8, 0.5, 3), v3(0, 0, -1)));
+    MISS(s, R(v3(1.5, 1.1, 3), v3(0, 0, -1)));
+}
+
+/* A quad in the plane y = z, normal (0, -1, 1) / sqrt 2. */
+static void test_quad_tilted(void **state)
+{
+    shape s = MAKE(poly_d(4, v3(0, 0, 0), v3(1, 0, 0), v3(1, 1, 1), v3(0, 1, 1)), NULL);
+    double h = sqrt(0.5);
+    surface sf = HIT(s, R(v3(0.5, 0, 1), v3(0, 1, -1)), 0.5, 0, v3(0.5, 0.5, 0.5), v3(0, -h, h));
+    NEAR(sf.u, 0.5);
+    NEAR(sf.v, 0.5);
+    MISS(s, R(v3(1.5, 0, 1), v3(0, 1, -1)));
+}
+
+static void test_polygon_validation(void **state)
+{
+    vec3 o = v3(0, 0, 0);
+    glint_shape d = test_triangle();
+    d.point_count = 5;
+    REJECTS(d, NULL, "polygon needs 3 or 4 points, got 5");
+    d.point_count = 2;
+    REJECTS(d, NULL, "polygon needs 3 or 4 points, got 2");
+    d = test_triangle();
+    d.points[1].y = NAN;
+    REJECTS(d, NULL, "polygon point 1 is not finite");
+    REJECTS(poly_d(3, o, v3(1, 0, 0), v3(1, 0, 0), o), NULL, "polygon points 1 and 2 coincide");
+    REJECTS(poly_d(4, o, v3(1, 0, 0), v3(1, 1, 0), o), NULL, "polygon points 3 and 0 coincide");
+    REJECTS(poly_d(3, o, v3(1, 1, 1), v3(2, 2, 2), o), NULL, "polygon points are collinear");
+    REJECTS(poly_d(3, o, v3(1, 1, 1), v3(-3, -3, -3), o), NULL, "polygon points are collinear");
+    REJECTS(poly_d(4, o, v3(1, 0, 0), v3(1, 1, 0), v3(0, 1, 0.1)), NULL, "polygon is not planar");
+    /* A dart: the corner at (0.5, 0.5) bends the wrong way. */
+    REJECTS(poly_d(4, o, v3(2, 0, 0), v3(0.5, 0.5, 0), v3(0, 2, 0)), NULL, "polygon is not convex");
+    /* A bow tie crosses itself. */
+    REJECTS(poly_d(4, o, v3(1, 0, 0), v3(0, 1, 0), v3(1, 1, 0)), NULL, "polygon is not convex");
+    REJECTS(poly_d(4, o, v3(2, 0, 0), v3(0, 1, 0), v3(3, 3, 0)), NULL, "polygon is not convex");
+    /* A straight corner: really a triangle. */
+    REJECTS(poly_d(4, o, v3(1, 0, 0), v3(2, 0, 0), v3(0, 1, 0)), NULL, "polygon is not convex");
+    /* Clockwise order is not an error: it only turns the normal round. */
+    shape s = MAKE(poly_d(4, o, v3(0, 1, 0), v3(1, 1, 0), v3(1, 0, 0)), NULL);
+    VNEAR(s.poly_normal, v3(0, 0, -1));
+}
+
+/* -------------------------------------------------------------------- box */
+
+static void test_box_faces(void **state)
+{
+    shape s = MAKE(test_box(), NULL);
+    HIT(s, R(v3(-5, 0.5, 0.5), v3(2, 0, 0)), 2, 1, v3(-1, 0.5, 0.5), v3(-1, 0, 0));
+    HIT(s, R(v3(5, 0.5, 0.5), v3(-1, 0, 0)), 4, 2, v3(1, 0.5, 0.5), v3(1, 0, 0));
+    HIT(s, R(v3(0.5, -6, 0.5), v3(0, 1, 0)), 4, 3, v3(0.5, -2, 0.5), v3(0, -1, 0));
+    HIT(s, R(v3(0.5, 6, 0.5), v3(0, -1, 0)), 4, 4, v3(0.5, 2, 0.5), v3(0, 1, 0));
+    HIT(s, R(v3(0.5, 0.5, -7), v3(0, 0, 1)), 4, 5, v3(0.5, 0.5, -3), v3(0, 0, -1));
+    HIT(s, R(v3(0.5, 0.5, 7), v3(0, 0, -0.5)), 8, 6, v3(0.5, 0.5, 3), v3(0, 0, 1));
+    /* Oblique, entering by the y face: x slab from t = 0.5, y from t = 1. */
+    HIT(s, R(v3(-2, -3, 0), v3(2, 1, 0)), 1, 3, v3(0, -2, 0), v3(0, -1, 0));
+}
+
+static void test_box_miss(void **state)
+{
+    shape s = MAKE(test_box(), NULL);
+    MISS(s, R(v3(-5, 2.5, 0), v3(1, 0, 0)));
+    MISS(s, R(v3(-5, 0, 0), v3(1, 1, 0)));
+    MISS(s, R(v3(5, 0, 0), v3(1, 0, 0)));
+    MISS_WITHIN(s, R(v3(-5, 0, 0), v3(1, 0, 0)), 0, 4);
+    HIT_WITHIN(s, R(v3(-5, 0, 0), v3(1, 0, 0)), 4, INFINITY, 6, 2, v3(1, 0, 0), v3(1, 0, 0));
+}
+
+static void test_box_inside(void **state)
+{
+    shape s = MAKE(test_box(), NULL);
+    HIT(s, R(v3(0, 0, 0), v3(0, 0, 0.5)), 6, 6, v3(0, 0, 3), v3(0, 0, 1));
+    HIT(s, R(v3(0, 0, 0), v3(-1, 0, 0)), 1, 1, v3(-1, 0, 0), v3(-1, 0, 0));
+}
+
+/* Rays that only touch the box (along a face or an edge) hit. */
+static void test_box_touching(void **state)
+{
+    shape s = MAKE(test_box(), NULL);
+    HIT(s, R(v3(-5, 2, 0), v3(1, 0, 0)), 4, 1, v3(-1, 2, 0), v3(-1, 0, 0));
+    HIT(s, R(v3(-5, 2, 3), v3(1, 0, 0)), 4, 1, v3(-1, 2, 3), v3(-1, 0, 0));
+    MISS(s, R(v3(-5, 2 + 1e-9, 0), v3(1, 0, 0)));
+    /* Across the edge x = 1, y = 2, touching the box at one point only. */
+    shape_hit h;
+    surface sf;
+    ray edge = R(v3(0, 3, 0), v3(1, -1, 0));
+    assert_true(shape_intersect(&s, &edge, 0, INFINITY, &h));
+    NEAR(h.t, 1);
+    shape_surface(&s, &edge, &h, &sf);
+    VNEAR(sf.p, v3(1, 2, 0));
+    MISS(s, R(v3(0, 3 + 1e-9, 0), v3(1, -1, 0)));
+    /* Through the corner (-1, -2, -3) diagonally: every slab starts at t = 1. */
+    ray r = R(v3(-2, -3, -4), v3(1, 1, 1));
+    assert_true(shape_intersect(&s, &r, 0, INFINITY, &h));
+    NEAR(h.t, 1);
+}
+
+/* Seen from outside, u runs right and v down across each face. */
+static void test_box_uv(void **state)
+{
+    shape s = MAKE(test_box(), NULL);
+    struct { vec3 o, d; double u, v; } faces[] = {
+        {v3(-5, 1, 2), v3(1, 0, 0), 5.0 / 6, 0.25},     /* -x: u along +z, v along -y */
+        {v3(5, 1, 2), v3(-1, 0, 0), 1.0 / 6, 0.25},     /* +x: u along -z */
+        {v3(0.5, -5, 1.5), v3(0, 1, 0), 0.25, 0.75},    /* -y: u along -x, v along +z */
+        {v3(0.5, 5, 1.5), v3(0, -1, 0), 0.75, 0.75},    /* +y: u along +x, v along +z */
+        {v3(0.5, 1, -5), v3(0, 0, 1), 0.25, 0.25},      /* -z: u along -x */
+        {v3(0.5, 1, 5), v3(0, 0, -1), 0.75, 0.25},      /* +z: u along +x */
+    };
+    for (int i = 0; i < 6; i++) {
+        shape_hit h;
+        surface sf;
+        ray r = R(faces[i].o, faces[i].d);
+        assert_true(shape_intersect(&s, &r, 0, INFINITY, &h));
+        assert_int_equal(h.part, i + 1);
+        shape_surface(&s, &r, &h, &sf);
+        NEAR(sf.u, faces[i].u);
+        NEAR(sf.v, faces[i].v);
+    }
+}
+
+/* --------------------------------------------------------------- cylinder */
+
+static void test_cylinder_side(void **state)
+{
+    shape s = MAKE(test_cylinder(true), NULL);
+    surface sf = HIT(s, R(v3(5, 0, 0), v3(-2, 0, 0)), 2, 0, v3(1, 0, 0), v3(1, 0, 0));
+    NEAR(sf.u, 0.75);
+    NEAR(sf.v, 0.5);
+    sf = HIT(s, R(v3(0, 0.5, 5), v3(0, 0, -1)), 4, 0, v3(0, 0.5, 1), v3(0, 0, 1));
+    NEAR(sf.u, 0.5);
+    NEAR(sf.v, 0.75);
+}
+
+static void test_cylinder_miss(void **state)
+{
+    shape s = MAKE(test_cylinder(true), NULL);
+    MISS(s, R(v3(5, 0, 1.5), v3(-1, 0, 0)));
+    MISS(s, R(v3(5, 1.5, 0), v3(-1, 0, 0)));
+    MISS(s, R(v3(5, 0, 0), v3(1, 0, 0)));
+    MISS(s, R(v3(0, 5, 0), v3(0, 1, 0)));
+    MISS_WITHIN(s, R(v3(5, 0, 0), v3(-1, 0, 0)), 0, 4);
+    HIT_WITHIN(s, R(v3(5, 0, 0), v3(-1, 0, 0)), 0, 4.0001, 4, 0, v3(1, 0, 0), v3(1, 0, 0));
+}
+
+/* A ray tangent to the side hits at the point of tangency. */
+static void test_cylinder_grazing(void **state)
+{
+    shape s = MAKE(test_cylinder(false), NULL);
+    HIT(s, R(v3(1, 0, -5), v3(0, 0, 1)), 5, 0, v3(1, 0, 0), v3(1, 0, 0));
+    MISS(s, R(v3(1 + 1e-9, 0, -5), v3(0, 0, 1)));
+}
+
+static void test_cylinder_inside(void **state)
+{
+    shape s = MAKE(test_cylinder(true), NULL);
+    HIT(s, R(v3(0, 0, 0), v3(0, 1, 0)), 1, 2, v3(0, 1, 0), v3(0, 1, 0));
+    HIT(s, R(v3(0, 0, 0), v3(0, -2, 0)), 0.5, 1, v3(0, -1, 0), v3(0, -1, 0));
+    HIT(s, R(v3(0, 0, 0), v3(0, 0, -1)), 1, 0, v3(0, 0, -1), v3(0, 0, -1));
+}
+
+static void test_cylinder_caps(void **state)
+{
+    shape s = MAKE(test_cylinder(true), NULL);
+    surface sf = HIT(s, R(v3(0, 5, 0), v3(0, -1, 0)), 4, 2, v3(0, 1, 0), v3(0, 1, 0));
+    NEAR(sf.u, 0.5);
+    NEAR(sf.v, 0.5);
+    sf = HIT(s, R(v3(0.5, -5, 0), v3(0, 1, 0)), 4, 1, v3(0.5, -1, 0), v3(0, -1, 0));
+    NEAR(sf.u, 0.75);
+    NEAR(sf.v, 0.5);
+    sf = HIT(s, R(v3(0, 5, -0.5), v3(0, -2, 0)), 2, 2, v3(0, 1, -0.5), v3(0, 1, 0));
+    NEAR(sf.u, 0.5);
+    NEAR(sf.v, 0.25);
+}
+
+/* Rays through the rim circle hit it, whether or not there are caps. */
+static void test_cylinder_rims(void **state)
+{
+    for (int capped = 0; capped < 2; capped++) {
+        shape s = MAKE(test_cylinder(capped), NULL);
+        shape_hit h;
+        surface sf;
+        ray top = R(v3(2, 2, 0), v3(-1, -1, 0));
+        assert_true(shape_intersect(&s, &top, 0, INFINITY, &h));
+        NEAR(h.t, 1);
+        shape_surface(&s, &top, &h, &sf);
+        VNEAR(sf.p, v3(1, 1, 0));
+        ray bottom = R(v3(-2, -2, 0), v3(1, 1, 0));
+        assert_true(shape_intersect(&s, &bottom, 0, INFINITY, &h));
+        NEAR(h.t, 1);
+        shape_surface(&s, &bottom, &h, &sf);
+        VNEAR(sf.p, v3(-1, -1, 0));
+        /* In the plane of the top cap, tangent to the rim circle. */
+        HIT(s, R(v3(1, 1, -5), v3(0, 0, 1)), 5, 0, v3(1, 1, 0), v3(1, 0, 0));
+    }
+}
+
+static void test_cylinder_open(void **state)
+{
+    shape s = MAKE(test_cylinder(false), NULL);
+    /* Straight down the axis, or parallel to it, nothing is hit. */
+    MISS(s, R(v3(0, 5, 0), v3(0, -1, 0)));
+    MISS(s, R(v3(0.5, 5, 0), v3(0, -1, 0)));
+    MISS(s, R(v3(0, 0, 0), v3(0, 1, 0)));
+    /* From inside, or in through the open top, the far wall is hit; its
+     * normal still points out of the tube. */
+    HIT(s, R(v3(0, 0, 0), v3(1, 0, 0)), 1, 0, v3(1, 0, 0), v3(1, 0, 0));
+    HIT(s, R(v3(0, 5, 0), v3(1, -5, 0)), 1, 0, v3(1, 0, 0), v3(1, 0, 0));
+    /* With caps the same ray stops at the top cap, at y = 1, x = 0.8. */
+    shape capped = MAKE(test_cylinder(true), NULL);
+    HIT(capped, R(v3(0, 5, 0), v3(1, -5, 0)), 0.8, 2, v3(0.8, 1, 0), v3(0, 1, 0));
+}
+
+/* A ray along the wall itself never hits the side: only caps stop it, at
+ * the rim. Parallel to the axis but outside, it misses even the caps. */
+static void test_cylinder_along_wall(void **state)
+{
+    shape open = MAKE(test_cylinder(false), NULL);
+    MISS(open, R(v3(1, -5, 0), v3(0, 1, 0)));
+    shape capped = MAKE(test_cylinder(true), NULL);
+    HIT(capped, R(v3(1, -5, 0), v3(0, 1, 0)), 4, 1, v3(1, -1, 0), v3(0, -1, 0));
+    MISS(capped, R(v3(1 + 1e-9, -5, 0), v3(0, 1, 0)));
+    MISS(capped, R(v3(2, -5, 0), v3(0, 2, 0)));
+}
+
+/* ------------------------------------------------------------------- cone */
+
+/* The gradient of x^2 + z^2 - (R/h)^2 (h - y)^2 for the test cone. */
+static vec3 cone_gradient(vec3 p) { return v3_normalize(v3(2 * p.x, 2 * 0.25 * (2 - p.y), 2 * p.z)); }
+
+static void test_cone_side(void **state)
+{
+    shape s = MAKE(test_cone(true), NULL);
+    /* At y = 1 the radius is 0.5. */
+    surface sf = HIT(s, R(v3(5, 1, 0), v3(-1, 0, 0)), 4.5, 0, v3(0.5, 1, 0), v3_normalize(v3(1, 0.5, 0)));
+    VNEAR(sf.n, cone_gradient(v3(0.5, 1, 0)));
+    NEAR(sf.u, 0.75);
+    NEAR(sf.v, 0.5);
+    /* At y = 0.5 the radius is 0.75; come in along (-0.6, 0, -0.8). */
+    vec3 p = v3(0.45, 0.5, 0.6);
+    sf = HIT(s, R(v3(2.25, 0.5, 3), v3(-0.6, 0, -0.8)), 3, 0, p, cone_gradient(p));
+    NEAR(sf.u, 0.5 + atan2(0.6, 0.8) / (2 * M_PI));
+    NEAR(sf.v, 0.25);
+}
+
+static void test_cone_miss(void **state)
+{
+    shape s = MAKE(test_cone(true), NULL);
+    MISS(s, R(v3(5, 1, 0.6), v3(-1, 0, 0)));
+    /* Through where the other nappe, above the apex, would be. */
+    MISS(s, R(v3(5, 3, 0), v3(-1, 0, 0)));
+    MISS(s, R(v3(5, 1, 0), v3(1, 0, 0)));
+    MISS(s, R(v3(0, -1, 0), v3(0, -1, 0)));
+    /* Crossing the base plane beside the base, never near the side. */
+    MISS(s, R(v3(3, -1, 2), v3(-1, 1, 0)));
+    MISS_WITHIN(s, R(v3(5, 1, 0), v3(-1, 0, 0)), 0, 4.5);
+}
+
+static void test_cone_grazing(void **state)
+{
+    shape s = MAKE(test_cone(false), NULL);
+    HIT(s, R(v3(5, 1, 0.5), v3(-1, 0, 0)), 5, 0, v3(0, 1, 0.5), v3_normalize(v3(0, 0.5, 1)));
+    MISS(s, R(v3(5, 1, 0.5 + 1e-9), v3(-1, 0, 0)));
+}
+
+/* The apex is on the surface, with normal +y. */
+static void test_cone_apex(void **state)
+{
+    shape s = MAKE(test_cone(true), NULL);
+    HIT(s, R(v3(0, 5, 0), v3(0, -1, 0)), 3, 0, v3(0, 2, 0), v3(0, 1, 0));
+}
+
+static void test_cone_inside(void **state)
+{
+    shape s = MAKE(test_cone(true), NULL);
+    HIT(s, R(v3(0, 0.5, 0), v3(1, 0, 0)), 0.75, 0, v3(0.75, 0.5, 0), cone_gradient(v3(0.75, 0.5, 0)));
+    HIT(s, R(v3(0, 0.5, 0), v3(0, -1, 0)), 0.5, 1, v3(0, 0, 0), v3(0, -1, 0));
+    HIT(s, R(v3(0, 0.5, 0), v3(0, 2, 0)), 0.75, 0, v3(0, 2, 0), v3(0, 1, 0));
+    shape open = MAKE(test_cone(false), NULL);
+    MISS(open, R(v3(0, 0.5, 0), v3(0, -1, 0)));
+}
+
+static void test_cone_cap(void **state)
+{
+    shape s = MAKE(test_cone(true), NULL);
+    surface sf = HIT(s, R(v3(0, -5, 0), v3(0, 1, 0)), 5, 1, v3(0, 0, 0), v3(0, -1, 0));
+    NEAR(sf.u, 0.5);
+    NEAR(sf.v, 0.5);
+    sf = HIT(s, R(v3(0.5, -5, -0.25), v3(0, 1, 0)), 5, 1, v3(0.5, 0, -0.25), v3(0, -1, 0));
+    NEAR(sf.u, 0.75);
+    NEAR(sf.v, 0.375);
+    /* Without the cap the ray goes in through the open base to the apex. */
+    shape open = MAKE(test_cone(false), NULL);
+    HIT(open, R(v3(0, -5, 0), v3(0, 1, 0)), 7, 0, v3(0, 2, 0), v3(0, 1, 0));
+}
+
+static void test_cone_rim(void **state)
+{
+    for (int capped = 0; capped < 2; capped++) {
+        shape s = MAKE(test_cone(capped), NULL);
+        shape_hit h;
+        surface sf;
+        ray r = R(v3(2, -1, 0), v3(-1, 1, 0));
+        assert_true(shape_intersect(&s, &r, 0, INFINITY, &h));
+        NEAR(h.t, 1);
+        shape_surface(&s, &r, &h, &sf);
+        VNEAR(sf.p, v3(1, 0, 0));
+    }
+}
+
+/* A ray parallel to the slant (the equation is linear, not quadratic). */
+static void test_cone_parallel_to_slant(void **state)
+{
+    /* x = 0.5 - t, y = -1 + 2t: in through the base at t = 0.5, (0, 0, 0);
+     * out through the side at t = 1, (-0.5, 1, 0), where the radius is 0.5. */
+    ray r = R(v3(0.5, -1, 0), v3(-1, 2, 0));
+    shape open = MAKE(test_cone(false), NULL);
+    HIT(open, r, 1, 0, v3(-0.5, 1, 0), cone_gradient(v3(-0.5, 1, 0)));
+    shape capped = MAKE(test_cone(true), NULL);
+    HIT(capped, r, 0.5, 1, v3(0, 0, 0), v3(0, -1, 0));
+    /* Shifted by 1.5 in x it passes beside the base and above the apex. */
+    MISS(capped, R(v3(2, -1, 0), v3(-1, 2, 0)));
+    /* Along the slant line through (1, 0, 0) and the apex, it lies in the
+     * surface: only the cap stops it, at the rim. */
+    ray slant = R(v3(1.5, -1, 0), v3(-0.5, 1, 0));
+    MISS(open, slant);
+    HIT(capped, slant, 1, 1, v3(1, 0, 0), v3(0, -1, 0));
+}
+
+/* Beside the base (x = 1.5 at y = 0), then into the side at y = 1. */
+static void test_cone_beside_base(void **state)
+{
+    shape s = MAKE(test_cone(true), NULL);
+    HIT(s, R(v3(2.5, -1, 0), v3(-1, 1, 0)), 2, 0, v3(0.5, 1, 0), cone_gradient(v3(0.5, 1, 0)));
+}
+
+static void test_cone_offset(void **state)
+{
+    shape s = MAKE(axial_d(GLINT_SHAPE_CONE, v3(1, -1, 2), 2, 4, true), NULL);
+    /* At y = 1 (2 above the base) the radius is 1; the slope R/h is 0.5. */
+    surface sf = HIT(s, R(v3(1, 1, -5), v3(0, 0, 1)), 6, 0, v3(1, 1, 1), v3_normalize(v3(0, 0.5, -1)));
+    NEAR(sf.u, 1);
+    NEAR(sf.v, 0.5);
+}
+
+/* ------------------------------------------------------------ transforms */
+
+/* Under m_axis the unit sphere is the ellipsoid with semi-axes 3, 2, 4 about
+ * (10, 20, 30). At Y = 21, Z = 30: ((X - 10) / 3)^2 = 3/4. */
+static void test_transform_sphere(void **state)
+{
+    glint_transform m = m_axis();
+    shape s = MAKE(sphere_d(v3(0, 0, 0), 1), &m);
+    double x = 10 + 1.5 * sqrt(3);
+    /* The gradient (2 (X - 10) / 9, 2 (Y - 20) / 4, 0). */
+    vec3 n = v3_normalize(v3(sqrt(3) / 3, 0.5, 0));
+    surface sf = HIT(s, R(v3(100, 21, 30), v3(-1, 0, 0)), 100 - x, 0, v3(x, 21, 30), n);
+    VNEAR(sf.p_obj, v3(0.5, -sqrt(3) / 2, 0));
+    MISS(s, R(v3(100, 22.01, 30), v3(-1, 0, 0)));
+}
+
+/* Under m_axis the cube [-1, 1]^3 is [7, 13] x [18, 22] x [26, 34], and the
+ * face X = 7 is its +y face. */
+static void test_transform_box(void **state)
+{
+    glint_transform m = m_axis();
+    shape s = MAKE(box_d(v3(-1, -1, -1), v3(1, 1, 1)), &m);
+    HIT(s, R(v3(0, 21, 31), v3(1, 0, 0)), 7, 4, v3(7, 21, 31), v3(-1, 0, 0));
+    HIT(s, R(v3(8, 21, 0), v3(0, 0, 2)), 13, 5, v3(8, 21, 26), v3(0, 0, -1));
+    HIT(s, R(v3(10, 20, 30), v3(0, 1, 0)), 2, 2, v3(10, 22, 30), v3(0, 1, 0));
+}
+
+/* Under m_axis the cylinder's axis runs from X = 10 down to X = 4, and its
+ * section is the ellipse ((Y - 20) / 2)^2 + ((Z - 30) / 4)^2 = 1. */
+static void test_transform_cylinder(void **state)
+{
+    glint_transform m = m_axis();
+    shape s = MAKE(axial_d(GLINT_SHAPE_CYLINDER, v3(0, 0, 0), 1, 2, true), &m);
+    /* At Y = 21: ((Z - 30) / 4)^2 = 3/4; gradient (0, 1/2, sqrt(3)/4). */
+    double z = 30 + 2 * sqrt(3);
+    surface sf = HIT(s, R(v3(8, 21, 100), v3(0, 0, -1)), 100 - z, 0, v3(8, 21, z), v3(0, 2 / sqrt(7), sqrt(3 / 7.0)));
+    NEAR(sf.v, 1.0 / 3);
+    /* The top cap, y = 2, is at X = 4 and faces -X. */
+    HIT(s, R(v3(0, 20, 30), v3(1, 0, 0)), 4, 2, v3(4, 20, 30), v3(-1, 0, 0));
+}
+
+/* Under m_axis the cone's apex is at X = 4; at X = 7 (y = 1) its radius
+ * 0.5 reaches Z = 32. The gradient there, by the chain rule through
+ * y = (10 - X) / 3 and z = (Z - 30) / 4, is (-1/6, 0, 1/4). */
+static void test_transform_cone(void **state)
+{
+    glint_transform m = m_axis();
+    shape s = MAKE(test_cone(true), &m);
+    HIT(s, R(v3(7, 20, 100), v3(0, 0, -1)), 68, 0, v3(7, 20, 32), v3_normalize(v3(-2, 0, 3)));
+    HIT(s, R(v3(20, 20.5, 30), v3(-1, 0, 0)), 10, 1, v3(10, 20.5, 30), v3(1, 0, 0));
+}
+
+/* Under m_axis the plane y = 0 is X = 10, facing -X. */
+static void test_transform_plane(void **state)
+{
+    glint_transform m = m_axis();
+    shape s = MAKE(plane_d(v3(0, 0, 0), v3(0, 1, 0)), &m);
+    surface sf = HIT(s, R(v3(0, 5, 5), v3(2, 0, 0)), 5, 0, v3(10, 5, 5), v3(-1, 0, 0));
+    VNEAR(sf.p_obj, v3(-7.5, 0, -6.25));
+    NEAR(sf.u, -7.5);
+    NEAR(sf.v, -6.25);
+}
+
+/* Under m_axis the unit right triangle in z = 0 has corners (10, 20, 30),
+ * (10, 22, 30), (7, 20, 30). */
+static void test_transform_polygon(void **state)
+{
+    glint_transform m = m_axis();
+    shape s = MAKE(poly_d(3, v3(0, 0, 0), v3(1, 0, 0), v3(0, 1, 0), v3(0, 0, 0)), &m);
+    surface sf = HIT(s, R(v3(9, 20.5, 40), v3(0, 0, -1)), 10, 0, v3(9, 20.5, 30), v3(0, 0, 1));
+    NEAR(sf.u, 0.25);
+    NEAR(sf.v, 1.0 / 3);
+    MISS(s, R(v3(8, 21.5, 40), v3(0, 0, -1)));
+}
+
+/* A point p on the object-space surface with outward normal n, tangents a
+ * and b, part and (u, v). Under transform m the world ray from M(p) + 3 N,
+ * with N the image of n, back along -N reaches M(p) at t = 3; the world
+ * normal must be perpendicular to the images of both tangents. */
+typedef struct surface_point {
+    vec3 p, n, a, b;
+    int part;
+    double u, v;
+} surface_point;
+
+static vec3 map_vector(const glint_transform *m, vec3 v)
+{
+    return v3_sub(glint_transform_point(m, v), glint_transform_point(m, v3(0, 0, 0)));
+}
+
+static void check_mapped(const glint_shape *d, const glint_transform *m, const surface_point *sp, int count)
+{
+    shape s = MAKE(*d, m);
+    for (int i = 0; i < count; i++) {
+        vec3 p = glint_transform_point(m, sp[i].p), out = map_vector(m, sp[i].n);
+        vec3 n = v3_normalize(v3_cross(map_vector(m, sp[i].a), map_vector(m, sp[i].b)));
+        if (v3_dot(n, out) < 0)
+            n = v3_neg(n);
+        ray r = R(v3_madd(p, out, 3), v3_neg(out));
+        surface sf = HIT(s, r, 3, sp[i].part, p, n);
+        VNEAR(sf.p_obj, sp[i].p);
+        NEAR(sf.u, sp[i].u);
+        NEAR(sf.v, sp[i].v);
+        /* t is 3 up to rounding in the two transforms. */
+        MISS_WITHIN(s, r, 0, 3 - 1e-9);
+        MISS(s, R(r.o, out));
+    }
+}
+
+static void check_every_shape(const glint_transform *m)
+{
+    double u68 = 0.5 + atan2(0.6, 0.8) / (2 * M_PI);
+    vec3 x = v3(1, 0, 0), y = v3(0, 1, 0), z = v3(0, 0, 1), around = v3(0.8, 0, -0.6);
+
+    glint_shape d = test_sphere();
+    surface_point sphere[] = {
+        {v3(1, 2, 5), z, x, y, 0, 0.5, 0.5},
+        {v3(2.2, 2, 4.6), v3(0.6, 0, 0.8), y, around, 0, u68, 0.5},
+        {v3(1, 3.2, 4.6), v3(0, 0.6, 0.8), x, v3(0, 0.8, -0.6), 0, 0.5, 0.5 - asin(0.6) / M_PI},
+    };
+    check_mapped(&d, m, sphere, 3);
+
+    d = test_floor();
+    surface_point floor[] = {{v3(2, -1, 3), y, x, z, 0, 2, 3}};
+    check_mapped(&d, m, floor, 1);
+
+    d = test_triangle();
+    surface_point triangle[] = {{v3(0.5, 0.5, 0), z, x, y, 0, 0.25, 0.25}};
+    check_mapped(&d, m, triangle, 1);
+
+    d = test_quad();
+    surface_point quad[] = {{v3(1.5, 0.5, 0), z, x, y, 0, 0.5, 0.5}};
+    check_mapped(&d, m, quad, 1);
+
+    d = test_box();
+    surface_point box[] = {
+        {v3(-1, 1, 2), v3(-1, 0, 0), y, z, 1, 5.0 / 6, 0.25},
+        {v3(1, 1, 2), x, y, z, 2, 1.0 / 6, 0.25},
+        {v3(0.5, -2, 1.5), v3(0, -1, 0), x, z, 3, 0.25, 0.75},
+        {v3(0.5, 2, 1.5), y, x, z, 4, 0.75, 0.75},
+        {v3(0.5, 1, -3), v3(0, 0, -1), x, y, 5, 0.25, 0.25},
+        {v3(0.5, 1, 3), z, x, y, 6, 0.75, 0.25},
+    };
+    check_mapped(&d, m, box, 6);
+
+    surface_point cylinder[] = {
+        {v3(0.6, 0, 0.8), v3(0.6, 0, 0.8), y, around, 0, u68, 0.5},
+        {v3(0.5, 1, 0), y, x, z, 2, 0.75, 0.5},
+        {v3(0, -1, 0.5), v3(0, -1, 0), x, z, 1, 0.5, 0.75},
+    };
+    d = test_cylinder(true);
+    check_mapped(&d, m, cylinder, 3);
+    d = test_cylinder(false);
+    check_mapped(&d, m, cylinder, 1);
+
+    /* On the cone at y = 1 (radius 0.5) towards (0.6, 0, 0.8): the gradient
+     * is (0.6, 0.5, 0.8); the slant runs up to the apex (0, 2, 0). */
+    surface_point cone[] = {
+        {v3(0.3, 1, 0.4), v3(0.6, 0.5, 0.8), around, v3(-0.3, 1, -0.4), 0, u68, 0.5},
+        {v3(0.5, 0, 0), v3(0, -1, 0), x, z, 1, 0.75, 0.5},
+    };
+    d = test_cone(true);
+    check_mapped(&d, m, cone, 2);
+    d = test_cone(false);
+    check_mapped(&d, m, cone, 1);
+}
+
+static void test_mapped_identity(void **state)
+{
+    glint_transform m = glint_transform_identity();
+    check_every_shape(&m);
+}
+
+static void test_mapped_axis(void **state)
+{
+    glint_transform m = m_axis();
+    check_every_shape(&m);
+}
+
+static void test_mapped_skew(void **state)
+{
+    glint_transform m = m_skew();
+    check_every_shape(&m);
+}
+
+static void test_has_transform(void **state)
+{
+    glint_transform id = glint_transform_identity(), m = m_axis();
+    assert_false(MAKE(test_sphere(), NULL).has_transform);
+    assert_false(MAKE(test_sphere(), &id).has_transform);
+    assert_true(MAKE(test_sphere(), &m).has_transform);
+}
+
+/* ----------------------------------------------------------------- bounds */
+
+static void bounds_are(const shape *s, vec3 lo, vec3 hi)
+{
+    vec3 a, b;
+    shape_bounds(s, &a, &b);
+    VNEAR(a, lo);
+    VNEAR(b, hi);
+}
+
+static void test_bounds(void **state)
+{
+    shape s = MAKE(test_sphere(), NULL);
+    bounds_are(&s, v3(-1, 0, 1), v3(3, 4, 5));
+    s = MAKE(test_box(), NULL);
+    bounds_are(&s, v3(-1, -2, -3), v3(1, 2, 3));
+    s = MAKE(test_triangle(), NULL);
+    bounds_are(&s, v3(0, 0, 0), v3(2, 2, 0));
+    s = MAKE(test_cylinder(false), NULL);
+    bounds_are(&s, v3(-1, -1, -1), v3(1, 1, 1));
+    s = MAKE(test_cone(true), NULL);
+    bounds_are(&s, v3(-1, 0, -1), v3(1, 2, 1));
+    glint_transform m = m_skew();
+    s = MAKE(test_floor(), &m);
+    bounds_are(&s, v3(-SHAPE_PLANE_EXTENT, -SHAPE_PLANE_EXTENT, -SHAPE_PLANE_EXTENT),
+               v3(SHAPE_PLANE_EXTENT, SHAPE_PLANE_EXTENT, SHAPE_PLANE_EXTENT));
+}
+
+/* The unit cube turned 45 degrees about z: its x and y edges become
+ * diagonals of length sqrt 2. */
+static void test_bounds_rotated_box(void **state)
+{
+    glint_transform m = glint_transform_rotate(glint_transform_identity(), v3(0, 0, 1), 45);
+    shape s = MAKE(box_d(v3(0, 0, 0), v3(1, 1, 1)), &m);
+    double h = sqrt(0.5);
+    bounds_are(&s, v3(-h, 0, 0), v3(h, 2 * h, 1));
+    m = m_axis();
+    s = MAKE(test_box(), &m);
+    bounds_are(&s, v3(4, 18, 18), v3(16, 22, 42));
+}
+
+/* For x -> A x + t, the unit sphere's image reaches furthest along world
+ * axis i at t + A A^T e_i / |A^T e_i|: the bounds must hold those points. */
+static void test_bounds_transformed_sphere(void **state)
+{
+    glint_transform m = m_axis();
+    shape s = MAKE(sphere_d(v3(0, 0, 0), 1), &m);
+    bounds_are(&s, v3(7, 18, 26), v3(13, 22, 34));
+    m = m_skew();
+    s = MAKE(sphere_d(v3(0, 0, 0), 1), &m);
+    vec3 lo, hi;
+    shape_bounds(&s, &lo, &hi);
+    for (int i = 0; i < 3; i++) {
+        vec3 row = v3(m.m[i][0], m.m[i][1], m.m[i][2]);
+        for (int sign = -1; sign <= 1; sign += 2) {
+            vec3 p = glint_transform_point(&m, v3_scale(row, sign / v3_length(row)));
+            assert_true(p.x >= lo.x - EPS && p.y >= lo.y - EPS && p.z >= lo.z - EPS);
+            assert_true(p.x <= hi.x + EPS && p.y <= hi.y + EPS && p.z <= hi.z + EPS);
+        }
+    }
+}
+
+/* ------------------------------------------------------------- validation */
+
+static void test_validation(void **state)
+{
+    REJECTS(sphere_d(v3(0, 0, 0), -1), NULL, "sphere radius must be positive, got -1");
+    REJECTS(sphere_d(v3(0, 0, 0), 0), NULL, "sphere radius must be positive, got 0");
+    REJECTS(sphere_d(v3(0, 0, 0), NAN), NULL, "sphere radius is not finite");
+    REJECTS(sphere_d(v3(0, INFINITY, 0), 1), NULL, "sphere centre is not finite");
+    REJECTS(plane_d(v3(0, 0, 0), v3(0, 0, 0)), NULL, "plane normal must not be zero");
+    REJECTS(plane_d(v3(0, 0, 0), v3(0, NAN, 0)), NULL, "plane normal is not finite");
+    REJECTS(plane_d(v3(NAN, 0, 0), v3(0, 1, 0)), NULL, "plane point is not finite");
+    REJECTS(box_d(v3(0, 0, 0), v3(1, 0, 1)), NULL, "box min must be below max on every axis");
+    REJECTS(box_d(v3(0, 2, 0), v3(1, 1, 1)), NULL, "box min must be below max on every axis");
+    REJECTS(box_d(v3(0, 0, 0), v3(1, 1, INFINITY)), NULL, "box max is not finite");
+    REJECTS(axial_d(GLINT_SHAPE_CYLINDER, v3(0, 0, 0), 1, 0, true), NULL, "cylinder height must be positive, got 0");
+    REJECTS(axial_d(GLINT_SHAPE_CYLINDER, v3(0, 0, 0), -2, 1, true), NULL, "cylinder radius must be positive, got -2");
+    REJECTS(axial_d(GLINT_SHAPE_CYLINDER, v3(0, NAN, 0), 1, 1, true), NULL, "cylinder centre is not finite");
+    REJECTS(axial_d(GLINT_SHAPE_CONE, v3(0, 0, 0), 1, -1, true), NULL, "cone height must be positive, got -1");
+    REJECTS(axial_d(GLINT_SHAPE_CONE, v3(0, 0, 0), INFINITY, 1, true), NULL, "cone radius is not finite");
+    glint_shape d = test_sphere();
+    d.kind = (glint_shape_kind)42;
+    REJECTS(d, NULL, "unknown shape kind 42");
+    glint_transform flat = glint_transform_scale(glint_transform_identity(), 1, 1, 0);
+    REJECTS(test_sphere(), &flat, "transform is singular or not finite");
+    glint_transform bad = glint_transform_identity();
+    bad.m[1][3] = NAN;
+    REJECTS(test_sphere(), &bad, "transform is singular or not finite");
+}
+
+/* Huge and tiny plane normals are normalised without overflow. */
+static void test_plane_normal_scale(void **state)
+{
+    shape s = MAKE(plane_d(v3(0, 0, 0), v3(0, 1e300, 0)), NULL);
+    VNEAR(s.desc.normal, v3(0, 1, 0));
+    s = MAKE(plane_d(v3(0, 0, 0), v3(0, 0, -1e-310)), NULL);
+    VNEAR(s.desc.normal, v3(0, 0, -1));
+}
+
+static void test_is_closed(void **state)
+{
+    assert_true(shape_is_closed(&(shape){.desc = test_sphere()}));
+    assert_true(shape_is_closed(&(shape){.desc = test_box()}));
+    assert_true(shape_is_closed(&(shape){.desc = test_cylinder(true)}));
+    assert_false(shape_is_closed(&(shape){.desc = test_cylinder(false)}));
+    assert_true(shape_is_closed(&(shape){.desc = test_cone(true)}));
+    assert_false(shape_is_closed(&(shape){.desc = test_cone(false)}));
+    assert_false(shape_is_closed(&(shape){.desc = test_floor()}));
+    assert_false(shape_is_closed(&(shape){.desc = test_triangle()}));
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sphere_hit),
+        cmocka_unit_test(test_sphere_miss),
+        cmocka_unit_test(test_sphere_grazing),
+        cmocka_unit_test(test_sphere_inside),
+        cmocka_unit_test(test_sphere_behind),
+        cmocka_unit_test(test_sphere_tmax),
+        cmocka_unit_test(test_sphere_uv),
+        cmocka_unit_test(test_plane_hit),
+        cmocka_unit_test(test_plane_from_below),
+        cmocka_unit_test(test_plane_miss),
+        cmocka_unit_test(test_plane_uv_axes),
+        cmocka_unit_test(test_plane_normal_scale),
+        cmocka_unit_test(test_triangle_hit),
+        cmocka_unit_test(test_triangle_outside),
+        cmocka_unit_test(test_triangle_edges),
+        cmocka_unit_test(test_triangle_clockwise),
+        cmocka_unit_test(test_quad_hit),
+        cmocka_unit_test(test_quad_tilted),
+        cmocka_unit_test(test_polygon_validation),
+        cmocka_unit_test(test_box_faces),
+        cmocka_unit_test(test_box_miss),
+        cmocka_unit_test(test_box_inside),
+        cmocka_unit_test(test_box_touching),
+        cmocka_unit_test(test_box_uv),
+        cmocka_unit_test(test_cylinder_side),
+        cmocka_unit_test(test_cylinder_miss),
+        cmocka_unit_test(test_cylinder_grazing),
+        cmocka_unit_test(test_cylinder_inside),
+        cmocka_unit_test(test_cylinder_caps),
+        cmocka_unit_test(test_cylinder_rims),
+        cmocka_unit_test(test_cylinder_open),
+        cmocka_unit_test(test_cylinder_along_wall),
+        cmocka_unit_test(test_cone_side),
+        cmocka_unit_test(test_cone_miss),
+        cmocka_unit_test(test_cone_grazing),
+        cmocka_unit_test(test_cone_apex),
+        cmocka_unit_test(test_cone_inside),
+        cmocka_unit_test(test_cone_cap),
+        cmocka_unit_test(test_cone_rim),
+        cmocka_unit_test(test_cone_parallel_to_slant),
+        cmocka_unit_test(test_cone_beside_base),
+        cmocka_unit_test(test_cone_offset),
+        cmocka_unit_test(test_transform_sphere),
+        cmocka_unit_test(test_transform_box),
+        cmocka_unit_test(test_transform_cylinder),
+        cmocka_unit_test(test_transform_cone),
+        cmocka_unit_test(test_transform_plane),
+        cmocka_unit_test(test_transform_polygon),
+        cmocka_unit_test(test_mapped_identity),
+        cmocka_unit_test(test_mapped_axis),
+        cmocka_unit_test(test_mapped_skew),
+        cmocka_unit_test(test_has_transform),
+        cmocka_unit_test(test_bounds),
+        cmocka_unit_test(test_bounds_rotated_box),
+        cmocka_unit_test(test_bounds_transformed_sphere),
+        cmocka_unit_test(test_validation),
+        cmocka_unit_test(test_is_closed),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
