@@ -1,0 +1,277 @@
+/* texture_image.c - decoding PNG (libpng's simplified API) and JPEG
+ * (libjpeg-turbo) files or buffers into linear float RGB for image textures.
+ *
+ * Texture files may come from anywhere, so a corrupt or truncated file is an
+ * error value, never a crash, an exit or a line on stderr, and the size in a
+ * header is checked before any pixel memory is allocated. */
+#include <errno.h>
+#include <fcntl.h>
+#include <pthread.h>
+#include <setjmp.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <png.h>
+#include <jpeglib.h>
+#include <jerror.h>
+#include "core/error.h"
+#include "io/texture_image.h"
+
+#define MAX_SIDE 32768UL
+#define MAX_PIXELS (1UL << 28)
+/* Each scan of a progressive JPEG is another pass over the whole image, and
+ * a hostile file can hold thousands; libjpeg-turbo advises capping them. */
+#define MAX_JPEG_SCANS 1000
+
+static float srgb_byte_to_linear[256];
+static pthread_once_t srgb_table_once = PTHREAD_ONCE_INIT;
+
+static void srgb_table_build(void)
+{
+    for (int i = 0; i < 256; i++)
+        srgb_byte_to_linear[i] = (float)glint_srgb_to_linear(i / 255.0);
+}
+
+static glint_status corrupt(const char *what, const char *reason, glint_error *err)
+{
+    return error_set(err, GLINT_ERR_INVALID, "texture '%s' is corrupt: %s", what, reason);
+}
+
+static glint_status check_size(unsigned long width, unsigned long height, const char *what,
+                               glint_error *err)
+{
+    if (width > MAX_SIDE || height > MAX_SIDE || width * height > MAX_PIXELS)
+        return error_set(err, GLINT_ERR_INVALID,
+                         "texture '%s' is too large: %lux%lu (limit %lu a side, %lu pixels)",
+                         what, width, height, MAX_SIDE, MAX_PIXELS);
+    return GLINT_OK;
+}
+
+/* Sizes must have passed check_size, which keeps the product in range. */
+static glint_status image_alloc(texture_image *img, unsigned long width, unsigned long height,
+                                const char *what, glint_error *err)
+{
+    img->rgb = malloc((size_t)width * height * 3 * sizeof *img->rgb);
+    if (!img->rgb)
+        return error_set(err, GLINT_ERR_NOMEM, "cannot decode texture '%s': out of memory", what);
+    img->width = (int)width;
+    img->height = (int)height;
+    return GLINT_OK;
+}
+
+/* libpng has decoded RGBA bytes into the front of the float buffer. Going
+ * from the last pixel back, each pixel's floats only land on bytes of pixels
+ * already converted (or its own, read first), so no second buffer is needed. */
+static void png_rgba_to_linear(texture_image *img)
+{
+    const unsigned char *rgba = (const unsigned char *)img->rgb;
+    for (size_t i = (size_t)img->width * img->height; i-- > 0;) {
+        unsigned char r = rgba[4 * i], g = rgba[4 * i + 1], b = rgba[4 * i + 2];
+        img->rgb[3 * i] = srgb_byte_to_linear[r];
+        img->rgb[3 * i + 1] = srgb_byte_to_linear[g];
+        img->rgb[3 * i + 2] = srgb_byte_to_linear[b];
+    }
+}
+
+static glint_status decode_png(texture_image *out, const void *data, size_t size,
+                               const char *what, glint_error *err)
+{
+    png_image png;
+    memset(&png, 0, sizeof png);
+    png.version = PNG_IMAGE_VERSION;
+    if (!png_image_begin_read_from_memory(&png, data, size))
+        return corrupt(what, png.message, err);
+    glint_status st = check_size(png.width, png.height, what, err);
+    if (st == GLINT_OK)
+        st = image_alloc(out, png.width, png.height, what, err);
+    if (st != GLINT_OK) {
+        png_image_free(&png);
+        return st;
+    }
+    /* Alpha is read and dropped rather than composited: a texture keeps the
+     * colour stored under transparent pixels, not that colour darkened. */
+    png.format = PNG_FORMAT_RGBA;
+    /* Otherwise libpng takes 16-bit files without gamma information to be
+     * linear, when in practice they are sRGB like 8-bit ones. */
+    png.flags |= PNG_IMAGE_FLAG_16BIT_sRGB;
+    if (!png_image_finish_read(&png, NULL, out->rgb, 0, NULL)) {
+        png_image_free(&png);
+        texture_image_free(out);
+        return corrupt(what, png.message, err);
+    }
+    png_rgba_to_linear(out);
+    return GLINT_OK;
+}
+
+/* libjpeg reports errors through these callbacks; the struct starts with its
+ * error manager so the manager's address is the struct's. */
+typedef struct jpeg_failure {
+    struct jpeg_error_mgr mgr;
+    jmp_buf jump;
+    char reason[JMSG_LENGTH_MAX];
+} jpeg_failure;
+
+static void jpeg_fail(j_common_ptr cinfo)
+{
+    jpeg_failure *fail = (jpeg_failure *)cinfo->err;
+    cinfo->err->format_message(cinfo, fail->reason);
+    longjmp(fail->jump, 1);
+}
+
+/* On damaged data libjpeg only warns and invents the missing pixels; a
+ * texture that silently turns grey is worse than an error, so only warnings
+ * about metadata are let through. Trace messages (level >= 0) are dropped. */
+static void jpeg_emit(j_common_ptr cinfo, int level)
+{
+    int code = cinfo->err->msg_code;
+    if (level < 0 && code != JWRN_JFIF_MAJOR && code != JWRN_ADOBE_XFORM && code != JWRN_BOGUS_ICC
+        && code != JWRN_EXTRANEOUS_DATA)
+        jpeg_fail(cinfo);
+}
+
+static void jpeg_output_nothing(j_common_ptr cinfo)
+{
+    (void)cinfo;
+}
+
+static void jpeg_limit_scans(j_common_ptr cinfo)
+{
+    if (((j_decompress_ptr)cinfo)->input_scan_number > MAX_JPEG_SCANS) {
+        jpeg_failure *fail = (jpeg_failure *)cinfo->err;
+        snprintf(fail->reason, sizeof fail->reason, "more than %d progressive scans",
+                 MAX_JPEG_SCANS);
+        longjmp(fail->jump, 1);
+    }
+}
+
+static glint_status decode_jpeg(texture_image *out, const void *data, size_t size,
+                                const char *what, glint_error *err)
+{
+    struct jpeg_decompress_struct cinfo;
+    struct jpeg_progress_mgr progress = {.progress_monitor = jpeg_limit_scans};
+    jpeg_failure fail;
+    glint_status st;
+
+    cinfo.err = jpeg_std_error(&fail.mgr);
+    fail.mgr.error_exit = jpeg_fail;
+    fail.mgr.emit_message = jpeg_emit;
+    fail.mgr.output_message = jpeg_output_nothing;
+    if (setjmp(fail.jump)) {
+        jpeg_destroy_decompress(&cinfo);
+        texture_image_free(out);
+        return corrupt(what, fail.reason, err);
+    }
+    jpeg_create_decompress(&cinfo);
+    cinfo.progress = &progress;
+    jpeg_mem_src(&cinfo, data, (unsigned long)size);
+    jpeg_read_header(&cinfo, TRUE);
+    if (cinfo.jpeg_color_space == JCS_CMYK || cinfo.jpeg_color_space == JCS_YCCK)
+        st = error_set(err, GLINT_ERR_INVALID,
+                       "texture '%s' is a CMYK JPEG, which is not supported (save it as RGB)",
+                       what);
+    else
+        st = check_size(cinfo.image_width, cinfo.image_height, what, err);
+    if (st == GLINT_OK)
+        st = image_alloc(out, cinfo.image_width, cinfo.image_height, what, err);
+    if (st != GLINT_OK) {
+        jpeg_destroy_decompress(&cinfo);
+        return st;
+    }
+    cinfo.out_color_space = JCS_RGB;
+    jpeg_start_decompress(&cinfo);
+    JSAMPARRAY row = cinfo.mem->alloc_sarray((j_common_ptr)&cinfo, JPOOL_IMAGE,
+                                             cinfo.output_width * 3, 1);
+    size_t row_floats = (size_t)cinfo.output_width * 3;
+    while (cinfo.output_scanline < cinfo.output_height) {
+        float *dst = out->rgb + row_floats * cinfo.output_scanline;
+        jpeg_read_scanlines(&cinfo, row, 1);
+        for (size_t i = 0; i < row_floats; i++)
+            dst[i] = srgb_byte_to_linear[row[0][i]];
+    }
+    jpeg_finish_decompress(&cinfo);
+    jpeg_destroy_decompress(&cinfo);
+    return GLINT_OK;
+}
+
+glint_status texture_image_load_memory(texture_image *out, const void *data, size_t size,
+                                       const char *what, glint_error *err)
+{
+    static const unsigned char png_magic[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    static const unsigned char jpeg_magic[3] = {0xff, 0xd8, 0xff};
+
+    pthread_once(&srgb_table_once, srgb_table_build);
+    *out = (texture_image){0};
+    if (!what)
+        what = "(memory)";
+    if (size >= sizeof png_magic && memcmp(data, png_magic, sizeof png_magic) == 0)
+        return decode_png(out, data, size, what, err);
+    if (size >= sizeof jpeg_magic && memcmp(data, jpeg_magic, sizeof jpeg_magic) == 0)
+        return decode_jpeg(out, data, size, what, err);
+    return error_set(err, GLINT_ERR_INVALID, "texture '%s' is not a PNG or JPEG file", what);
+}
+
+static glint_status read_error(int fd, void *buf, const char *path, const char *reason,
+                               glint_error *err)
+{
+    close(fd);
+    free(buf);
+    return error_set(err, GLINT_ERR_IO, "cannot read texture '%s': %s", path, reason);
+}
+
+/* Reads a whole regular file: its size bounds the read, which a pipe or a
+ * device such as /dev/zero would not. */
+static glint_status read_file(const char *path, unsigned char **data, size_t *size,
+                              glint_error *err)
+{
+    struct stat st;
+    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    if (fd < 0)
+        return error_set(err, GLINT_ERR_IO, "cannot open texture '%s': %s", path, strerror(errno));
+    if (fstat(fd, &st) != 0)
+        return read_error(fd, NULL, path, strerror(errno), err);
+    if (!S_ISREG(st.st_mode))
+        return read_error(fd, NULL, path, "not a regular file", err);
+    size_t want = (size_t)st.st_size, got = 0;
+    unsigned char *buf = malloc(want ? want : 1);
+    if (!buf) {
+        close(fd);
+        return error_set(err, GLINT_ERR_NOMEM, "cannot read texture '%s': out of memory", path);
+    }
+    while (got < want) {
+        ssize_t n = read(fd, buf + got, want - got);
+        if (n < 0 && errno == EINTR)
+            continue;
+        if (n < 0)
+            return read_error(fd, buf, path, strerror(errno), err);
+        if (n == 0)
+            break; /* the file shrank: the decoder will call it truncated */
+        got += (size_t)n;
+    }
+    close(fd);
+    *data = buf;
+    *size = got;
+    return GLINT_OK;
+}
+
+glint_status texture_image_load_file(texture_image *out, const char *path, glint_error *err)
+{
+    unsigned char *data = NULL;
+    size_t size = 0;
+    *out = (texture_image){0};
+    glint_status st = read_file(path, &data, &size, err);
+    if (st != GLINT_OK)
+        return st;
+    st = texture_image_load_memory(out, data, size, path, err);
+    free(data);
+    return st;
+}
+
+void texture_image_free(texture_image *img)
+{
+    if (!img)
+        return;
+    free(img->rgb);
+    *img = (texture_image){0};
+}

@@ -1,0 +1,908 @@
+/* test_image_io.c - the sRGB curve, PNG/PPM writing with its atomic replace,
+ * and PNG/JPEG texture decoding, including every refusal message. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <dirent.h>
+#include <errno.h>
+#include <math.h>
+#include <signal.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <unistd.h>
+#include <jpeglib.h>
+#include <png.h>
+#include <zlib.h>
+
+#include "glint.h"
+#include "io/texture_image.h"
+
+#define PATH_SIZE 1024
+
+static char tmp_dir[PATH_SIZE];
+
+/* ------------------------------------------------------------- helpers */
+
+static void tmp_path(char *buf, const char *name)
+{
+    int n = snprintf(buf, PATH_SIZE, "%s/%s", tmp_dir, name);
+    assert_true(n > 0 && n < PATH_SIZE);
+}
+
+static void write_bytes(const char *path, const void *data, size_t size)
+{
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(data, 1, size, f), size);
+    assert_int_equal(fclose(f), 0);
+}
+
+/* Returns the whole file (free it), or NULL when it cannot be opened. */
+static unsigned char *read_bytes(const char *path, size_t *size)
+{
+    FILE *f = fopen(path, "rb");
+    if (!f)
+        return NULL;
+    size_t cap = 4096, len = 0;
+    unsigned char *buf = malloc(cap);
+    assert_non_null(buf);
+    for (;;) {
+        len += fread(buf + len, 1, cap - len, f);
+        if (len < cap)
+            break;
+        cap *= 2;
+        buf = realloc(buf, cap);
+        assert_non_null(buf);
+    }
+    assert_int_equal(ferror(f), 0);
+    fclose(f);
+    *size = len;
+    return buf;
+}
+
+/* Counts the entries of dir whose name contains `part` ("" counts all). */
+static int count_entries(const char *dir, const char *part)
+{
+    DIR *d = opendir(dir);
+    assert_non_null(d);
+    int n = 0;
+    struct dirent *e;
+    while ((e = readdir(d)) != NULL)
+        if (strcmp(e->d_name, ".") != 0 && strcmp(e->d_name, "..") != 0
+            && strstr(e->d_name, part) != NULL)
+            n++;
+    closedir(d);
+    return n;
+}
+
+static void remove_tree(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0)
+        return;
+    if (S_ISDIR(st.st_mode)) {
+        chmod(path, 0700);
+        DIR *d = opendir(path);
+        if (d) {
+            struct dirent *e;
+            char child[PATH_SIZE];
+            while ((e = readdir(d)) != NULL) {
+                if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+                    continue;
+                snprintf(child, sizeof child, "%s/%s", path, e->d_name);
+                remove_tree(child);
+            }
+            closedir(d);
+        }
+        rmdir(path);
+    } else {
+        unlink(path);
+    }
+}
+
+static void expect_error(glint_status got, const glint_error *err, glint_status want,
+                         const char *message)
+{
+    assert_int_equal(got, want);
+    assert_string_equal(err->message, message);
+}
+
+/* cmocka 1.1.5, Debian 12's, has no assert_double_equal. */
+#define assert_near(a, b, tolerance) near_or_fail((a), (b), (tolerance), #a, __FILE__, __LINE__)
+
+static void near_or_fail(double a, double b, double tolerance, const char *expr, const char *file,
+                         int line)
+{
+    if (!(fabs(a - b) <= tolerance))
+        fail_msg("%s:%d: %s = %.17g, expected %.17g within %g", file, line, expr, a, b, tolerance);
+}
+
+static void expect_prefix(const char *message, const char *prefix)
+{
+    if (strncmp(message, prefix, strlen(prefix)) != 0 || strlen(message) == strlen(prefix))
+        fail_msg("message '%s' does not continue '%s'", message, prefix);
+}
+
+static uint32_t noise(uint32_t *state)
+{
+    *state = *state * 1664525u + 1013904223u;
+    return *state >> 24;
+}
+
+static glint_image noise_image(int width, int height)
+{
+    glint_image img = {width, height, malloc(sizeof(float) * 3 * (size_t)width * height)};
+    assert_non_null(img.pixels);
+    uint32_t state = 42;
+    for (int i = 0; i < 3 * width * height; i++)
+        img.pixels[i] = (float)noise(&state) / 255.0f;
+    return img;
+}
+
+/* Encodes pixels (components per pixel in colour space cs) as a JPEG with
+ * libjpeg's memory destination; free the result with free(). */
+static unsigned char *encode_jpeg(int width, int height, int components, J_COLOR_SPACE cs,
+                                  const unsigned char *pixels, unsigned long *size)
+{
+    struct jpeg_compress_struct c;
+    struct jpeg_error_mgr jerr;
+    unsigned char *out = NULL;
+    *size = 0;
+    c.err = jpeg_std_error(&jerr);
+    jpeg_create_compress(&c);
+    jpeg_mem_dest(&c, &out, size);
+    c.image_width = (JDIMENSION)width;
+    c.image_height = (JDIMENSION)height;
+    c.input_components = components;
+    c.in_color_space = cs;
+    jpeg_set_defaults(&c);
+    jpeg_set_quality(&c, 95, TRUE);
+    jpeg_start_compress(&c, TRUE);
+    while (c.next_scanline < c.image_height) {
+        JSAMPROW row = (JSAMPROW)(pixels + (size_t)c.next_scanline * width * components);
+        jpeg_write_scanlines(&c, &row, 1);
+    }
+    jpeg_finish_compress(&c);
+    jpeg_destroy_compress(&c);
+    assert_non_null(out);
+    return out;
+}
+
+static unsigned char *uniform_pixels(int count, int components, const unsigned char *value)
+{
+    unsigned char *p = malloc((size_t)count * components);
+    assert_non_null(p);
+    for (int i = 0; i < count; i++)
+        memcpy(p + (size_t)i * components, value, (size_t)components);
+    return p;
+}
+
+/* Writes an 8-bit PNG of the given simplified-API format with libpng. */
+static void write_png8(const char *path, int width, int height, uint32_t format,
+                       const void *pixels, const void *colormap, int colormap_entries)
+{
+    png_image png;
+    memset(&png, 0, sizeof png);
+    png.version = PNG_IMAGE_VERSION;
+    png.width = (png_uint_32)width;
+    png.height = (png_uint_32)height;
+    png.format = format;
+    png.colormap_entries = (png_uint_32)colormap_entries;
+    if (!png_image_write_to_file(&png, path, 0, pixels, 0, colormap))
+        fail_msg("libpng could not write %s: %s", path, png.message);
+}
+
+/* Writes a 16-bit RGB PNG with no gamma chunk, as most tools save them. */
+static void write_png16(const char *path, int width, int height, const uint16_t *rgb)
+{
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    assert_non_null(png);
+    png_infop info = png_create_info_struct(png);
+    assert_non_null(info);
+    if (setjmp(png_jmpbuf(png)))
+        fail_msg("libpng could not write %s", path);
+    png_init_io(png, f);
+    png_set_IHDR(png, info, (png_uint_32)width, (png_uint_32)height, 16, PNG_COLOR_TYPE_RGB,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_write_info(png, info);
+    unsigned char row[6 * 16];
+    assert_true(width <= 16);
+    for (int y = 0; y < height; y++) {
+        for (int i = 0; i < 3 * width; i++) {
+            uint16_t v = rgb[3 * width * y + i];
+            row[2 * i] = (unsigned char)(v >> 8);
+            row[2 * i + 1] = (unsigned char)(v & 0xff);
+        }
+        png_write_row(png, row);
+    }
+    png_write_end(png, NULL);
+    png_destroy_write_struct(&png, &info);
+    assert_int_equal(fclose(f), 0);
+}
+
+static void put_be32(unsigned char *p, uint32_t v)
+{
+    p[0] = (unsigned char)(v >> 24);
+    p[1] = (unsigned char)(v >> 16);
+    p[2] = (unsigned char)(v >> 8);
+    p[3] = (unsigned char)v;
+}
+
+/* Appends a PNG chunk with its CRC at p; returns the bytes written. */
+static size_t put_chunk(unsigned char *p, const char *type, const unsigned char *data, uint32_t len)
+{
+    put_be32(p, len);
+    memcpy(p + 4, type, 4);
+    if (len > 0)
+        memcpy(p + 8, data, len);
+    put_be32(p + 8 + len, (uint32_t)crc32(0, p + 4, 4 + len));
+    return 12 + len;
+}
+
+/* A PNG whose header claims width x height, with an empty IDAT: enough for
+ * a decoder to read the size, and nothing to decode. */
+static size_t forge_png(unsigned char *buf, uint32_t width, uint32_t height)
+{
+    static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    unsigned char ihdr[13] = {0};
+    put_be32(ihdr, width);
+    put_be32(ihdr + 4, height);
+    ihdr[8] = 8; /* bit depth */
+    ihdr[9] = 2; /* RGB */
+    memcpy(buf, sig, 8);
+    size_t n = 8;
+    n += put_chunk(buf + n, "IHDR", ihdr, 13);
+    n += put_chunk(buf + n, "IDAT", NULL, 0);
+    n += put_chunk(buf + n, "IEND", NULL, 0);
+    return n;
+}
+
+/* ------------------------------------------------------------ fixtures */
+
+static int setup_dir(void **state)
+{
+    const char *base = getenv("GLINT_TEST_TMP");
+    if (!base || !*base)
+        base = "/tmp";
+    snprintf(tmp_dir, sizeof tmp_dir, "%s/glint-image-io-%ld", base, (long)getpid());
+    remove_tree(tmp_dir);
+    return mkdir(tmp_dir, 0755) == 0 ? 0 : -1;
+}
+
+static int teardown_dir(void **state)
+{
+    remove_tree(tmp_dir);
+    return 0;
+}
+
+/* ---------------------------------------------------------------- sRGB */
+
+static void test_srgb_known_values(void **state)
+{
+    assert_near(glint_linear_to_srgb(0.5), 0.7353569830524495, 1e-12);
+    assert_near(glint_srgb_to_linear(0.7353569830524495), 0.5, 1e-12);
+    assert_near(glint_linear_to_srgb(0.0), 0.0, 0.0);
+    assert_near(glint_linear_to_srgb(1.0), 1.0, 1e-12);
+    assert_near(glint_srgb_to_linear(1.0), 1.0, 1e-12);
+    assert_near(glint_linear_to_srgb(0.001), 0.01292, 1e-12);
+    assert_near(glint_srgb_to_linear(0.02), 0.02 / 12.92, 1e-15);
+    /* out of range and NaN clamp, NaN to black */
+    assert_near(glint_linear_to_srgb(-1.0), 0.0, 0.0);
+    assert_near(glint_linear_to_srgb(7.0), 1.0, 1e-12);
+    assert_near(glint_linear_to_srgb(NAN), 0.0, 0.0);
+    assert_near(glint_linear_to_srgb(-INFINITY), 0.0, 0.0);
+    assert_near(glint_linear_to_srgb(INFINITY), 1.0, 1e-12);
+}
+
+static void test_srgb_continuous_at_boundary(void **state)
+{
+    double below = nextafter(0.0031308, 0.0), at = 0.0031308;
+    /* the standard's rounded constants leave a step of 3e-8 here */
+    assert_near(glint_linear_to_srgb(below), glint_linear_to_srgb(at), 1e-7);
+    double sbelow = nextafter(0.04045, 0.0);
+    assert_near(glint_srgb_to_linear(sbelow), glint_srgb_to_linear(0.04045), 1e-8);
+}
+
+static void test_srgb_round_trips(void **state)
+{
+    for (int i = 0; i <= 10000; i++) {
+        double x = i / 10000.0;
+        assert_near(glint_srgb_to_linear(glint_linear_to_srgb(x)), x, 1e-9);
+        assert_near(glint_linear_to_srgb(glint_srgb_to_linear(x)), x, 1e-9);
+    }
+    /* every 8-bit code survives decode then encode, as textures need */
+    for (int v = 0; v < 256; v++) {
+        float linear = (float)glint_srgb_to_linear(v / 255.0);
+        assert_int_equal((int)(glint_linear_to_srgb(linear) * 255.0 + 0.5), v);
+    }
+}
+
+/* ------------------------------------------------------------- writing */
+
+/* 3x2 linear pixels and the 8-bit sRGB bytes they must become. */
+static const float sample_linear[18] = {
+    0.0f, 1.0f, 0.5f,    0.214f, NAN, -1.0f,    2.0f, 0.001f, 0.0031308f,
+    0.18f, 0.75f, 0.05f, 1e-5f, 0.9f, 0.3f,     0.01f, 0.6f, 0.02f,
+};
+static const unsigned char sample_srgb[18] = {
+    0, 255, 188,  127, 0, 0,    255, 3, 10,
+    118, 225, 63, 0, 243, 149,  25, 203, 39,
+};
+
+static glint_image sample_image(void)
+{
+    glint_image img = {3, 2, malloc(sizeof sample_linear)};
+    assert_non_null(img.pixels);
+    memcpy(img.pixels, sample_linear, sizeof sample_linear);
+    return img;
+}
+
+static void test_write_ppm_bytes(void **state)
+{
+    char path[PATH_SIZE];
+    glint_error err = {{0}};
+    glint_image img = sample_image();
+    tmp_path(path, "sample.ppm");
+    assert_int_equal(glint_image_write(&img, path, &err), GLINT_OK);
+    glint_image_free(&img);
+
+    size_t size;
+    unsigned char *bytes = read_bytes(path, &size);
+    assert_non_null(bytes);
+    static const char header[] = "P6\n3 2\n255\n";
+    assert_int_equal(size, strlen(header) + 18);
+    assert_memory_equal(bytes, header, strlen(header));
+    assert_memory_equal(bytes + strlen(header), sample_srgb, 18);
+    free(bytes);
+
+    /* the usual mode of a new file, not mkstemp's 0600 */
+    mode_t mask = umask(0);
+    umask(mask);
+    struct stat st;
+    assert_int_equal(stat(path, &st), 0);
+    assert_int_equal(st.st_mode & 0777, 0666 & ~mask);
+    assert_int_equal(count_entries(tmp_dir, ".tmp-"), 0);
+}
+
+static void test_write_png_round_trip(void **state)
+{
+    char path[PATH_SIZE];
+    glint_error err = {{0}};
+    glint_image img = sample_image();
+    tmp_path(path, "sample.png");
+    assert_int_equal(glint_image_write(&img, path, &err), GLINT_OK);
+    glint_image_free(&img);
+
+    size_t size;
+    unsigned char *bytes = read_bytes(path, &size);
+    assert_non_null(bytes);
+    assert_true(size > 33);
+    assert_memory_equal(bytes + 12, "IHDR", 4);
+    assert_int_equal(bytes[24], 8); /* bit depth */
+    assert_int_equal(bytes[25], 2); /* RGB */
+    assert_int_equal(bytes[28], 0); /* not interlaced */
+    bool has_srgb = false;
+    for (size_t i = 33; i + 8 <= size;) {
+        uint32_t len = (uint32_t)bytes[i] << 24 | (uint32_t)bytes[i + 1] << 16
+                       | (uint32_t)bytes[i + 2] << 8 | bytes[i + 3];
+        if (memcmp(bytes + i + 4, "sRGB", 4) == 0)
+            has_srgb = true;
+        i += 12 + (size_t)len;
+    }
+    assert_true(has_srgb);
+    free(bytes);
+
+    texture_image tex;
+    assert_int_equal(texture_image_load_file(&tex, path, &err), GLINT_OK);
+    assert_int_equal(tex.width, 3);
+    assert_int_equal(tex.height, 2);
+    for (int i = 0; i < 18; i++) {
+        assert_true(tex.rgb[i] == (float)glint_srgb_to_linear(sample_srgb[i] / 255.0));
+        assert_near(glint_linear_to_srgb(tex.rgb[i]), glint_linear_to_srgb(sample_linear[i]),
+                            0.5 / 255 + 1e-6);
+    }
+    texture_image_free(&tex);
+    assert_null(tex.rgb);
+    assert_int_equal(count_entries(tmp_dir, ".tmp-"), 0);
+}
+
+static void test_write_extension_any_case(void **state)
+{
+    char path[PATH_SIZE];
+    glint_error err = {{0}};
+    glint_image img = sample_image();
+    tmp_path(path, "UPPER.PNG");
+    assert_int_equal(glint_image_check_path(path, &err), GLINT_OK);
+    assert_int_equal(glint_image_write(&img, path, &err), GLINT_OK);
+    size_t size;
+    unsigned char *bytes = read_bytes(path, &size);
+    assert_non_null(bytes);
+    assert_memory_equal(bytes, "\x89PNG", 4);
+    free(bytes);
+
+    tmp_path(path, "mixed.PpM");
+    assert_int_equal(glint_image_write(&img, path, &err), GLINT_OK);
+    bytes = read_bytes(path, &size);
+    assert_non_null(bytes);
+    assert_memory_equal(bytes, "P6\n", 3);
+    free(bytes);
+    glint_image_free(&img);
+}
+
+static void test_write_replaces_existing_file(void **state)
+{
+    char path[PATH_SIZE];
+    glint_error err = {{0}};
+    glint_image img = sample_image();
+    tmp_path(path, "replaced.ppm");
+    write_bytes(path, "old contents", 12);
+    assert_int_equal(glint_image_write(&img, path, &err), GLINT_OK);
+    glint_image_free(&img);
+    size_t size;
+    unsigned char *bytes = read_bytes(path, &size);
+    assert_non_null(bytes);
+    assert_memory_equal(bytes, "P6\n3 2\n255\n", 11);
+    free(bytes);
+}
+
+static void test_write_missing_directory(void **state)
+{
+    char dir[PATH_SIZE], path[PATH_SIZE], want[2 * PATH_SIZE];
+    glint_error err = {{0}};
+    glint_image img = sample_image();
+    tmp_path(dir, "no-such-dir");
+    tmp_path(path, "no-such-dir/out.png");
+    snprintf(want, sizeof want, "cannot write '%s': No such file or directory", path);
+
+    expect_error(glint_image_check_path(path, &err), &err, GLINT_ERR_IO, want);
+    memset(&err, 0, sizeof err);
+    expect_error(glint_image_write(&img, path, &err), &err, GLINT_ERR_IO, want);
+    glint_image_free(&img);
+    assert_int_equal(access(dir, F_OK), -1);
+    assert_int_equal(count_entries(tmp_dir, ".tmp-"), 0);
+}
+
+static void test_write_read_only_directory(void **state)
+{
+    if (geteuid() == 0)
+        skip(); /* root writes into read-only directories anyway */
+    char dir[PATH_SIZE], path[PATH_SIZE], want[2 * PATH_SIZE];
+    glint_error err = {{0}};
+    glint_image img = sample_image();
+    tmp_path(dir, "read-only");
+    assert_int_equal(mkdir(dir, 0555), 0);
+    tmp_path(path, "read-only/out.ppm");
+    snprintf(want, sizeof want, "cannot write '%s': Permission denied", path);
+
+    expect_error(glint_image_check_path(path, &err), &err, GLINT_ERR_IO, want);
+    memset(&err, 0, sizeof err);
+    expect_error(glint_image_write(&img, path, &err), &err, GLINT_ERR_IO, want);
+    glint_image_free(&img);
+    assert_int_equal(count_entries(dir, ""), 0);
+}
+
+/* A file size limit makes the write fail half way, even for root. */
+static void test_failed_write_keeps_existing_file(void **state)
+{
+    static const char *names[] = {"kept.ppm", "kept.png"};
+    static const char old[] = "an earlier image that must survive";
+    glint_image img = noise_image(64, 64);
+
+    for (int i = 0; i < 2; i++) {
+        char path[PATH_SIZE], want[2 * PATH_SIZE];
+        glint_error err = {{0}};
+        tmp_path(path, names[i]);
+        write_bytes(path, old, sizeof old);
+        snprintf(want, sizeof want, "cannot write '%s': File too large", path);
+
+        struct rlimit saved, small;
+        assert_int_equal(getrlimit(RLIMIT_FSIZE, &saved), 0);
+        small = saved;
+        small.rlim_cur = 1000;
+        void (*saved_handler)(int) = signal(SIGXFSZ, SIG_IGN);
+        assert_int_equal(setrlimit(RLIMIT_FSIZE, &small), 0);
+        glint_status st = glint_image_write(&img, path, &err);
+        assert_int_equal(setrlimit(RLIMIT_FSIZE, &saved), 0);
+        signal(SIGXFSZ, saved_handler);
+
+        expect_error(st, &err, GLINT_ERR_IO, want);
+        size_t size;
+        unsigned char *bytes = read_bytes(path, &size);
+        assert_non_null(bytes);
+        assert_int_equal(size, sizeof old);
+        assert_memory_equal(bytes, old, sizeof old);
+        free(bytes);
+        assert_int_equal(count_entries(tmp_dir, ".tmp-"), 0);
+    }
+    glint_image_free(&img);
+}
+
+static void test_write_over_directory(void **state)
+{
+    char path[PATH_SIZE], want[2 * PATH_SIZE];
+    glint_error err = {{0}};
+    glint_image img = sample_image();
+    tmp_path(path, "a-directory.png");
+    assert_int_equal(mkdir(path, 0755), 0);
+    snprintf(want, sizeof want, "cannot write '%s': Is a directory", path);
+
+    expect_error(glint_image_check_path(path, &err), &err, GLINT_ERR_IO, want);
+    memset(&err, 0, sizeof err);
+    expect_error(glint_image_write(&img, path, &err), &err, GLINT_ERR_IO, want);
+    glint_image_free(&img);
+    struct stat st;
+    assert_int_equal(stat(path, &st), 0);
+    assert_true(S_ISDIR(st.st_mode));
+    assert_int_equal(count_entries(tmp_dir, ".tmp-"), 0);
+}
+
+static void test_check_path_parent_is_file(void **state)
+{
+    char file[PATH_SIZE], path[PATH_SIZE], want[2 * PATH_SIZE];
+    glint_error err = {{0}};
+    tmp_path(file, "plain-file");
+    write_bytes(file, "x", 1);
+    tmp_path(path, "plain-file/out.png");
+    snprintf(want, sizeof want, "cannot write '%s': Not a directory", path);
+    expect_error(glint_image_check_path(path, &err), &err, GLINT_ERR_IO, want);
+
+    tmp_path(path, "fine.ppm");
+    assert_int_equal(glint_image_check_path(path, &err), GLINT_OK);
+    assert_int_equal(access(path, F_OK), -1); /* checking creates nothing */
+}
+
+static void test_unknown_extension(void **state)
+{
+    glint_error err = {{0}};
+    glint_image img = sample_image();
+    expect_error(glint_image_check_path("out.bmp", &err), &err, GLINT_ERR_INVALID,
+                 "cannot write 'out.bmp': unknown image format (use .png or .ppm)");
+    expect_error(glint_image_write(&img, "out.bmp", &err), &err, GLINT_ERR_INVALID,
+                 "cannot write 'out.bmp': unknown image format (use .png or .ppm)");
+    expect_error(glint_image_check_path("out", &err), &err, GLINT_ERR_INVALID,
+                 "cannot write 'out': unknown image format (use .png or .ppm)");
+    expect_error(glint_image_check_path("dir.png/out", &err), &err, GLINT_ERR_INVALID,
+                 "cannot write 'dir.png/out': unknown image format (use .png or .ppm)");
+    glint_image_free(&img);
+    assert_int_equal(access("out.bmp", F_OK), -1);
+}
+
+static void test_write_empty_image(void **state)
+{
+    glint_error err = {{0}};
+    glint_image empty = {0, 0, NULL};
+    expect_error(glint_image_write(&empty, "empty.png", &err), &err, GLINT_ERR_INVALID,
+                 "cannot write 'empty.png': the image is empty");
+    assert_int_equal(access("empty.png", F_OK), -1);
+}
+
+static void test_image_free(void **state)
+{
+    glint_image_free(NULL);
+    glint_image img = sample_image();
+    glint_image_free(&img);
+    assert_null(img.pixels);
+    assert_int_equal(img.width, 0);
+    assert_int_equal(img.height, 0);
+    glint_image_free(&img);
+}
+
+/* ---------------------------------------------------- texture decoding */
+
+static void test_load_missing_file(void **state)
+{
+    char path[PATH_SIZE], want[2 * PATH_SIZE];
+    glint_error err = {{0}};
+    texture_image tex = {1, 1, NULL};
+    tmp_path(path, "missing.png");
+    snprintf(want, sizeof want, "cannot open texture '%s': No such file or directory", path);
+    expect_error(texture_image_load_file(&tex, path, &err), &err, GLINT_ERR_IO, want);
+    assert_null(tex.rgb);
+    assert_int_equal(tex.width, 0);
+}
+
+static void test_load_directory(void **state)
+{
+    char want[2 * PATH_SIZE];
+    glint_error err = {{0}};
+    texture_image tex;
+    snprintf(want, sizeof want, "cannot read texture '%s': not a regular file", tmp_dir);
+    expect_error(texture_image_load_file(&tex, tmp_dir, &err), &err, GLINT_ERR_IO, want);
+}
+
+static void test_load_text_file(void **state)
+{
+    char path[PATH_SIZE], want[2 * PATH_SIZE];
+    glint_error err = {{0}};
+    texture_image tex;
+    tmp_path(path, "notes.png");
+    write_bytes(path, "just some text\n", 15);
+    snprintf(want, sizeof want, "texture '%s' is not a PNG or JPEG file", path);
+    expect_error(texture_image_load_file(&tex, path, &err), &err, GLINT_ERR_INVALID, want);
+
+    tmp_path(path, "empty.jpg");
+    write_bytes(path, "", 0);
+    snprintf(want, sizeof want, "texture '%s' is not a PNG or JPEG file", path);
+    expect_error(texture_image_load_file(&tex, path, &err), &err, GLINT_ERR_INVALID, want);
+
+    expect_error(texture_image_load_memory(&tex, "GIF89a", 6, NULL, &err), &err,
+                 GLINT_ERR_INVALID, "texture '(memory)' is not a PNG or JPEG file");
+}
+
+static void test_load_truncated_png(void **state)
+{
+    char path[PATH_SIZE], cut[PATH_SIZE], want[2 * PATH_SIZE];
+    glint_error err = {{0}};
+    glint_image img = noise_image(16, 16);
+    tmp_path(path, "whole.png");
+    assert_int_equal(glint_image_write(&img, path, &err), GLINT_OK);
+    glint_image_free(&img);
+    size_t size;
+    unsigned char *bytes = read_bytes(path, &size);
+    assert_non_null(bytes);
+    tmp_path(cut, "truncated.png");
+    write_bytes(cut, bytes, size / 2);
+    free(bytes);
+
+    texture_image tex;
+    snprintf(want, sizeof want, "texture '%s' is corrupt: ", cut);
+    assert_int_equal(texture_image_load_file(&tex, cut, &err), GLINT_ERR_INVALID);
+    expect_prefix(err.message, want);
+    assert_null(tex.rgb);
+}
+
+static void test_load_png_bad_crc(void **state)
+{
+    unsigned char buf[64];
+    glint_error err = {{0}};
+    texture_image tex;
+    size_t n = forge_png(buf, 4, 4);
+    buf[29] ^= 0xff; /* IHDR's CRC */
+    assert_int_equal(texture_image_load_memory(&tex, buf, n, "crc.png", &err), GLINT_ERR_INVALID);
+    expect_prefix(err.message, "texture 'crc.png' is corrupt: ");
+}
+
+static void test_load_oversized_png(void **state)
+{
+    unsigned char buf[64];
+    glint_error err = {{0}};
+    texture_image tex;
+    /* Under ASan an attempt to allocate 120 GB would abort the test. */
+    size_t n = forge_png(buf, 100000, 100000);
+    expect_error(texture_image_load_memory(&tex, buf, n, "huge.png", &err), &err,
+                 GLINT_ERR_INVALID,
+                 "texture 'huge.png' is too large: 100000x100000 (limit 32768 a side, 268435456 pixels)");
+    assert_null(tex.rgb);
+    n = forge_png(buf, 16385, 16385);
+    expect_error(texture_image_load_memory(&tex, buf, n, "many.png", &err), &err,
+                 GLINT_ERR_INVALID,
+                 "texture 'many.png' is too large: 16385x16385 (limit 32768 a side, 268435456 pixels)");
+    n = forge_png(buf, 32769, 1);
+    expect_error(texture_image_load_memory(&tex, buf, n, "wide.png", &err), &err,
+                 GLINT_ERR_INVALID,
+                 "texture 'wide.png' is too large: 32769x1 (limit 32768 a side, 268435456 pixels)");
+}
+
+static void test_load_grey_png(void **state)
+{
+    static const unsigned char grey[4] = {0, 64, 128, 255};
+    char path[PATH_SIZE];
+    glint_error err = {{0}};
+    texture_image tex;
+    tmp_path(path, "grey.png");
+    write_png8(path, 2, 2, PNG_FORMAT_GRAY, grey, NULL, 0);
+    assert_int_equal(texture_image_load_file(&tex, path, &err), GLINT_OK);
+    assert_int_equal(tex.width, 2);
+    assert_int_equal(tex.height, 2);
+    for (int i = 0; i < 4; i++)
+        for (int c = 0; c < 3; c++)
+            assert_true(tex.rgb[3 * i + c] == (float)glint_srgb_to_linear(grey[i] / 255.0));
+    texture_image_free(&tex);
+}
+
+static void test_load_palette_and_alpha_png(void **state)
+{
+    static const unsigned char colormap[4 * 3] = {255, 0, 0, 0, 255, 0, 0, 0, 255, 10, 20, 30};
+    static const unsigned char indices[4] = {3, 2, 1, 0};
+    /* the colour under a fully transparent pixel is kept, not darkened */
+    static const unsigned char rgba[2 * 4] = {200, 100, 50, 0, 1, 2, 3, 255};
+    char path[PATH_SIZE];
+    glint_error err = {{0}};
+    texture_image tex;
+
+    tmp_path(path, "palette.png");
+    write_png8(path, 2, 2, PNG_FORMAT_RGB_COLORMAP, indices, colormap, 4);
+    assert_int_equal(texture_image_load_file(&tex, path, &err), GLINT_OK);
+    for (int i = 0; i < 4; i++)
+        for (int c = 0; c < 3; c++)
+            assert_true(tex.rgb[3 * i + c]
+                        == (float)glint_srgb_to_linear(colormap[3 * indices[i] + c] / 255.0));
+    texture_image_free(&tex);
+
+    tmp_path(path, "alpha.png");
+    write_png8(path, 2, 1, PNG_FORMAT_RGBA, rgba, NULL, 0);
+    assert_int_equal(texture_image_load_file(&tex, path, &err), GLINT_OK);
+    for (int i = 0; i < 2; i++)
+        for (int c = 0; c < 3; c++)
+            assert_true(tex.rgb[3 * i + c] == (float)glint_srgb_to_linear(rgba[4 * i + c] / 255.0));
+    texture_image_free(&tex);
+}
+
+static void test_load_16bit_png(void **state)
+{
+    static const uint16_t rgb[2 * 2 * 3] = {
+        0x0000, 0x8080, 0xffff,  0x1234, 0x4321, 0xabcd,
+        0x0101, 0xfefe, 0x7fff,  0x0000, 0xffff, 0x3333,
+    };
+    char path[PATH_SIZE];
+    glint_error err = {{0}};
+    texture_image tex;
+    tmp_path(path, "deep.png");
+    write_png16(path, 2, 2, rgb);
+    assert_int_equal(texture_image_load_file(&tex, path, &err), GLINT_OK);
+    assert_int_equal(tex.width, 2);
+    assert_int_equal(tex.height, 2);
+    for (int i = 0; i < 12; i++)
+        /* read as sRGB like an 8-bit file, to the nearest 8-bit step */
+        assert_near(glint_linear_to_srgb(tex.rgb[i]), rgb[i] / 65535.0, 0.5 / 255 + 1e-6);
+    assert_true(tex.rgb[1] == (float)glint_srgb_to_linear(128 / 255.0));
+    texture_image_free(&tex);
+}
+
+static void test_load_jpeg_memory(void **state)
+{
+    static const unsigned char colour[3] = {200, 100, 50};
+    static const unsigned char grey[1] = {128};
+    glint_error err = {{0}};
+    texture_image tex;
+    unsigned long size;
+
+    unsigned char *pixels = uniform_pixels(24 * 16, 3, colour);
+    unsigned char *jpeg = encode_jpeg(24, 16, 3, JCS_RGB, pixels, &size);
+    free(pixels);
+    assert_int_equal(texture_image_load_memory(&tex, jpeg, size, "colour.jpg", &err), GLINT_OK);
+    free(jpeg);
+    assert_int_equal(tex.width, 24);
+    assert_int_equal(tex.height, 16);
+    for (int i = 0; i < 24 * 16; i++)
+        for (int c = 0; c < 3; c++)
+            assert_near(glint_linear_to_srgb(tex.rgb[3 * i + c]), colour[c] / 255.0, 3.0 / 255);
+    texture_image_free(&tex);
+
+    pixels = uniform_pixels(8 * 8, 1, grey);
+    jpeg = encode_jpeg(8, 8, 1, JCS_GRAYSCALE, pixels, &size);
+    free(pixels);
+    assert_int_equal(texture_image_load_memory(&tex, jpeg, size, "grey.jpg", &err), GLINT_OK);
+    free(jpeg);
+    for (int i = 0; i < 8 * 8; i++) {
+        assert_true(tex.rgb[3 * i] == tex.rgb[3 * i + 1] && tex.rgb[3 * i] == tex.rgb[3 * i + 2]);
+        assert_near(glint_linear_to_srgb(tex.rgb[3 * i]), 128 / 255.0, 1.0 / 255);
+    }
+    texture_image_free(&tex);
+}
+
+static void test_load_truncated_jpeg(void **state)
+{
+    char path[PATH_SIZE], want[2 * PATH_SIZE];
+    glint_error err = {{0}};
+    texture_image tex;
+    unsigned long size;
+    unsigned char *pixels = malloc(64 * 64 * 3);
+    assert_non_null(pixels);
+    uint32_t rng = 7;
+    for (int i = 0; i < 64 * 64 * 3; i++)
+        pixels[i] = (unsigned char)noise(&rng);
+    unsigned char *jpeg = encode_jpeg(64, 64, 3, JCS_RGB, pixels, &size);
+    free(pixels);
+
+    tmp_path(path, "whole.jpg");
+    write_bytes(path, jpeg, size);
+    assert_int_equal(texture_image_load_file(&tex, path, &err), GLINT_OK);
+    texture_image_free(&tex);
+
+    tmp_path(path, "truncated.jpg");
+    write_bytes(path, jpeg, size * 3 / 4);
+    free(jpeg);
+    snprintf(want, sizeof want, "texture '%s' is corrupt: Premature end of JPEG file", path);
+    expect_error(texture_image_load_file(&tex, path, &err), &err, GLINT_ERR_INVALID, want);
+    assert_null(tex.rgb);
+
+    /* cut inside the header, so libjpeg's error (not a warning) fires */
+    expect_error(texture_image_load_memory(&tex, "\xff\xd8\xff\xe0\x00\x10JF", 8, "head.jpg", &err),
+                 &err, GLINT_ERR_INVALID, "texture 'head.jpg' is corrupt: Premature end of JPEG file");
+}
+
+static void test_load_refused_jpegs(void **state)
+{
+    static const unsigned char cmyk[4] = {0, 0, 0, 0};
+    static const unsigned char black[1] = {0};
+    glint_error err = {{0}};
+    texture_image tex;
+    unsigned long size;
+
+    unsigned char *pixels = uniform_pixels(8 * 8, 4, cmyk);
+    unsigned char *jpeg = encode_jpeg(8, 8, 4, JCS_CMYK, pixels, &size);
+    free(pixels);
+    expect_error(texture_image_load_memory(&tex, jpeg, size, "print.jpg", &err), &err,
+                 GLINT_ERR_INVALID,
+                 "texture 'print.jpg' is a CMYK JPEG, which is not supported (save it as RGB)");
+    free(jpeg);
+
+    pixels = uniform_pixels(40000, 1, black);
+    jpeg = encode_jpeg(40000, 1, 1, JCS_GRAYSCALE, pixels, &size);
+    free(pixels);
+    expect_error(texture_image_load_memory(&tex, jpeg, size, "wide.jpg", &err), &err,
+                 GLINT_ERR_INVALID,
+                 "texture 'wide.jpg' is too large: 40000x1 (limit 32768 a side, 268435456 pixels)");
+    free(jpeg);
+    assert_null(tex.rgb);
+}
+
+static void test_load_moon(void **state)
+{
+    const char *data = getenv("GLINT_SHARED_DATA");
+    char path[PATH_SIZE];
+    if (!data)
+        skip();
+    snprintf(path, sizeof path, "%s/moon.jpg", data);
+    if (access(path, R_OK) != 0)
+        skip();
+    glint_error err = {{0}};
+    texture_image tex;
+    assert_int_equal(texture_image_load_file(&tex, path, &err), GLINT_OK);
+    assert_int_equal(tex.width, 1024);
+    assert_int_equal(tex.height, 512);
+    double mean[3] = {0, 0, 0};
+    for (size_t i = 0; i < (size_t)1024 * 512; i++)
+        for (int c = 0; c < 3; c++)
+            mean[c] += tex.rgb[3 * i + c] / (1024.0 * 512.0);
+    texture_image_free(&tex);
+    /* a mid grey with the map's slight warm tint (means 0.33, 0.32, 0.30) */
+    double grey = (mean[0] + mean[1] + mean[2]) / 3;
+    assert_true(grey > 0.15 && grey < 0.5);
+    for (int c = 0; c < 3; c++)
+        assert_near(mean[c], grey, 0.05);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_srgb_known_values),
+        cmocka_unit_test(test_srgb_continuous_at_boundary),
+        cmocka_unit_test(test_srgb_round_trips),
+        cmocka_unit_test(test_write_ppm_bytes),
+        cmocka_unit_test(test_write_png_round_trip),
+        cmocka_unit_test(test_write_extension_any_case),
+        cmocka_unit_test(test_write_replaces_existing_file),
+        cmocka_unit_test(test_write_missing_directory),
+        cmocka_unit_test(test_write_read_only_directory),
+        cmocka_unit_test(test_failed_write_keeps_existing_file),
+        cmocka_unit_test(test_write_over_directory),
+        cmocka_unit_test(test_check_path_parent_is_file),
+        cmocka_unit_test(test_unknown_extension),
+        cmocka_unit_test(test_write_empty_image),
+        cmocka_unit_test(test_image_free),
+        cmocka_unit_test(test_load_missing_file),
+        cmocka_unit_test(test_load_directory),
+        cmocka_unit_test(test_load_text_file),
+        cmocka_unit_test(test_load_truncated_png),
+        cmocka_unit_test(test_load_png_bad_crc),
+        cmocka_unit_test(test_load_oversized_png),
+        cmocka_unit_test(test_load_grey_png),
+        cmocka_unit_test(test_load_palette_and_alpha_png),
+        cmocka_unit_test(test_load_16bit_png),
+        cmocka_unit_test(test_load_jpeg_memory),
+        cmocka_unit_test(test_load_truncated_jpeg),
+        cmocka_unit_test(test_load_refused_jpegs),
+        cmocka_unit_test(test_load_moon),
+    };
+    return cmocka_run_group_tests(tests, setup_dir, teardown_dir);
+}
