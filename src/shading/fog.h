@@ -1,0 +1,17 @@
+/* fog.h - linear and exponential fog over a ray segment. */
+#ifndef GLINT_SHADING_FOG_H
+#define GLINT_SHADING_FOG_H
+
+#include "core/color.h"
+
+/* Checks a fog description; fills err naming a bad value. */
+glint_status fog_validate(const glint_fog *fog, glint_error *err);
+
+/* How much of the fog colour replaces what a segment of length d shows, in
+ * [0, 1]; d may be INFINITY (a ray that hit nothing). */
+double fog_factor(const glint_fog *fog, double d);
+
+/* Blends c towards the fog colour for a segment of length d. */
+color fog_apply(const glint_fog *fog, color c, double d);
+
+#endif

@@ -1,0 +1,70 @@
+/* material.c - material validation and the Phong lighting model. */
+#include <math.h>
+#include "core/error.h"
+#include "shading/material.h"
+#include "shading/optics.h"
+
+glint_material glint_material_default(void)
+{
+    glint_material m = {
+        .color = {1, 1, 1}, .texture = -1, .ambient = 0.2, .diffuse = 1, .specular = 1,
+        .shininess = 50, .ior = 1.5, .tint = 1,
+    };
+    return m;
+}
+
+static glint_status check_unit(const char *what, double v, glint_error *err)
+{
+    if (!(v >= 0 && v <= 1))
+        return error_set(err, GLINT_ERR_INVALID, "material %s must be in [0, 1], got %g", what, v);
+    return GLINT_OK;
+}
+
+static glint_status check_positive(const char *what, double v, glint_error *err)
+{
+    if (!(v >= 0 && isfinite(v)))
+        return error_set(err, GLINT_ERR_INVALID, "material %s must be finite and not negative, got %g", what, v);
+    return GLINT_OK;
+}
+
+glint_status material_validate(const glint_material *m, int texture_count, glint_error *err)
+{
+    glint_status s;
+    if (!rgb_is_valid(m->color))
+        return error_set(err, GLINT_ERR_INVALID, "material colour must be finite and not negative");
+    if (m->texture < -1 || m->texture >= texture_count)
+        return error_set(err, GLINT_ERR_INVALID, "material texture %d does not exist", m->texture);
+    if ((s = check_unit("ambient", m->ambient, err)) || (s = check_positive("diffuse", m->diffuse, err)) ||
+        (s = check_positive("specular", m->specular, err)) ||
+        (s = check_positive("shininess", m->shininess, err)) ||
+        (s = check_unit("reflectivity", m->reflectivity, err)) ||
+        (s = check_unit("transparency", m->transparency, err)) ||
+        (s = check_unit("refraction", m->refraction, err)) || (s = check_unit("tint", m->tint, err)))
+        return s;
+    if (m->transparency + m->refraction > 1)
+        return error_set(err, GLINT_ERR_INVALID,
+                         "material transparency + refraction must not exceed 1, got %g",
+                         m->transparency + m->refraction);
+    if (!(m->ior > 0 && isfinite(m->ior)))
+        return error_set(err, GLINT_ERR_INVALID, "material index of refraction must be above 0, got %g", m->ior);
+    return GLINT_OK;
+}
+
+color material_filter(const glint_material *m, color c)
+{
+    return rgb_madd(rgb(1 - m->tint, 1 - m->tint, 1 - m->tint), c, m->tint);
+}
+
+color phong_light(const glint_material *m, color c, vec3 n, vec3 to_light, vec3 to_eye, color radiance)
+{
+    double n_dot_l = v3_dot(n, to_light);
+    if (n_dot_l <= 0)
+        return rgb(0, 0, 0);
+    color out = rgb_scale(rgb_mul(c, radiance), m->diffuse * n_dot_l);
+    if (m->specular > 0) {
+        double r_dot_v = v3_dot(optics_reflect(v3_neg(to_light), n), to_eye);
+        if (r_dot_v > 0)
+            out = rgb_madd(out, radiance, m->specular * pow(r_dot_v, m->shininess));
+    }
+    return out;
+}

@@ -1,0 +1,25 @@
+/* material.h - Phong materials with reflection, transparency and refraction. */
+#ifndef GLINT_SHADING_MATERIAL_H
+#define GLINT_SHADING_MATERIAL_H
+
+#include "core/color.h"
+#include "core/vec.h"
+
+typedef struct material {
+    char *name;               /* may be NULL */
+    glint_material m;
+} material;
+
+/* Checks every value of m against texture_count textures; fills err naming
+ * the first bad value. */
+glint_status material_validate(const glint_material *m, int texture_count, glint_error *err);
+
+/* Colour a material transmits: (1 - tint) + tint * surface colour. */
+color material_filter(const glint_material *m, color surface_color);
+
+/* Ambient, diffuse and specular shares of one light: the Phong model.
+ * n is the unit normal facing the viewer, to_light and to_eye unit vectors. */
+color phong_light(const glint_material *m, color surface_color, vec3 n, vec3 to_light,
+                  vec3 to_eye, color radiance);
+
+#endif

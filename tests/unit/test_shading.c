@@ -1,0 +1,341 @@
+/* test_shading.c - optics, lights, textures, mappings, fog and materials,
+ * each checked against values worked out by hand. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <math.h>
+#include <string.h>
+#include "shading/fog.h"
+#include "shading/light.h"
+#include "shading/material.h"
+#include "shading/optics.h"
+#include "shading/texture.h"
+
+#define EPS 1e-12
+#define assert_near(a, b, eps) assert_true(fabs((double)(a) - (double)(b)) <= (eps))
+
+static void assert_vec_near(vec3 a, vec3 b, double eps)
+{
+    assert_near(a.x, b.x, eps);
+    assert_near(a.y, b.y, eps);
+    assert_near(a.z, b.z, eps);
+}
+
+static double deg(double radians) { return radians * 180 / M_PI; }
+
+static void test_reflection_direction(void **state)
+{
+    vec3 d = v3_normalize(v3(1, -1, 0));
+    assert_vec_near(optics_reflect(d, v3(0, 1, 0)), v3_normalize(v3(1, 1, 0)), EPS);
+    /* Straight on comes straight back. */
+    assert_vec_near(optics_reflect(v3(0, 0, -1), v3(0, 0, 1)), v3(0, 0, 1), EPS);
+}
+
+static void test_snell_angle(void **state)
+{
+    /* 45 degrees from air into glass of index 1.5: sin t = sin 45 / 1.5. */
+    vec3 d = v3_normalize(v3(1, -1, 0)), t;
+    assert_true(optics_refract(d, v3(0, 1, 0), 1 / 1.5, &t));
+    double expected = asin(sin(M_PI / 4) / 1.5);
+    assert_near(atan2(t.x, -t.y), expected, 1e-12);
+    assert_near(v3_length(t), 1, 1e-12);
+    assert_true(t.y < 0);
+    /* Normal incidence passes straight through. */
+    assert_true(optics_refract(v3(0, -1, 0), v3(0, 1, 0), 1 / 1.5, &t));
+    assert_vec_near(t, v3(0, -1, 0), EPS);
+}
+
+static void test_total_internal_reflection(void **state)
+{
+    vec3 t;
+    /* Leaving glass (1.5) into air: critical angle asin(1/1.5) = 41.81 degrees. */
+    double crit = asin(1 / 1.5);
+    vec3 steep = v3(sin(crit - 0.01), -cos(crit - 0.01), 0);
+    vec3 shallow = v3(sin(crit + 0.01), -cos(crit + 0.01), 0);
+    assert_true(optics_refract(steep, v3(0, 1, 0), 1.5, &t));
+    assert_false(optics_refract(shallow, v3(0, 1, 0), 1.5, &t));
+    assert_near(optics_fresnel(cos(crit + 0.01), 1.5), 1, 0);
+    assert_near(deg(crit), 41.8103148957786, 1e-9);
+}
+
+static void test_fresnel(void **state)
+{
+    /* Normal incidence: ((n1 - n2) / (n1 + n2))^2 = 0.04 for 1 -> 1.5. */
+    assert_near(optics_fresnel(1, 1 / 1.5), 0.04, 1e-12);
+    assert_near(optics_fresnel(1, 1.5), 0.04, 1e-12);
+    /* Grazing incidence reflects everything. */
+    assert_near(optics_fresnel(1e-9, 1 / 1.5), 1, 1e-6);
+    /* Brewster's angle: p-polarised reflectance vanishes, so R = Rs / 2. */
+    double b = atan(1.5), ct = cos(M_PI / 2 - b);
+    double rs = (cos(b) - 1.5 * ct) / (cos(b) + 1.5 * ct);
+    assert_near(optics_fresnel(cos(b), 1 / 1.5), 0.5 * rs * rs, 1e-12);
+}
+
+static light make_spot(double cone, double falloff)
+{
+    glint_light d = {.kind = GLINT_LIGHT_SPOT, .position = {0, 10, 0}, .direction = {0, -1, 0},
+                     .color = {1, 1, 1}, .cone_angle = cone, .falloff_angle = falloff};
+    light l;
+    assert_int_equal(light_init(&l, &d, NULL), GLINT_OK);
+    return l;
+}
+
+static void test_spotlight(void **state)
+{
+    light l = make_spot(20, 10);
+    light_sample s;
+    /* Straight below: full light, at distance 10. */
+    assert_true(light_illuminate(&l, v3(0, 0, 0), &s));
+    assert_near(s.distance, 10, EPS);
+    assert_vec_near(s.to_light, v3(0, 1, 0), EPS);
+    assert_near(s.radiance.r, 1, EPS);
+    /* 5 degrees off axis: inside the inner cone (10 degrees). */
+    assert_true(light_illuminate(&l, v3(10 * tan(5 * M_PI / 180), 0, 0), &s));
+    assert_near(s.radiance.g, 1, EPS);
+    /* 25 degrees off axis: outside the cone. */
+    assert_false(light_illuminate(&l, v3(10 * tan(25 * M_PI / 180), 0, 0), &s));
+    /* In the falloff, halfway in cosine: smoothstep(0.5) = 0.5. */
+    double c = 0.5 * (cos(20 * M_PI / 180) + cos(10 * M_PI / 180));
+    assert_near(spot_factor(&l, c), 0.5, 1e-12);
+    double c2 = cos(20 * M_PI / 180) + 0.25 * (cos(10 * M_PI / 180) - cos(20 * M_PI / 180));
+    assert_near(spot_factor(&l, c2), 0.15625, 1e-12);
+    /* Hard edge when falloff is 0: the original's cut-off. */
+    light hard = make_spot(8.5, 0);
+    assert_near(spot_factor(&hard, cos(8.49 * M_PI / 180)), 1, 0);
+    assert_near(spot_factor(&hard, cos(8.51 * M_PI / 180)), 0, 0);
+    /* Behind the spot: nothing. */
+    assert_false(light_illuminate(&l, v3(0, 20, 0), &s));
+}
+
+static void test_point_and_directional(void **state)
+{
+    glint_light pd = {.kind = GLINT_LIGHT_POINT, .position = {3, 4, 0}, .color = {0.5, 1, 2}};
+    glint_light dd = {.kind = GLINT_LIGHT_DIRECTIONAL, .direction = {0, -2, 0}, .color = {1, 1, 1}};
+    light p, d;
+    light_sample s;
+    assert_int_equal(light_init(&p, &pd, NULL), GLINT_OK);
+    assert_true(light_illuminate(&p, v3(0, 0, 0), &s));
+    assert_near(s.distance, 5, EPS);
+    assert_vec_near(s.to_light, v3(0.6, 0.8, 0), EPS);
+    assert_near(s.radiance.b, 2, EPS);
+    assert_int_equal(light_init(&d, &dd, NULL), GLINT_OK);
+    assert_true(light_illuminate(&d, v3(7, 7, 7), &s));
+    assert_true(isinf(s.distance));
+    assert_vec_near(s.to_light, v3(0, 1, 0), EPS);
+}
+
+static void test_light_errors(void **state)
+{
+    glint_error err;
+    light l;
+    glint_light bad = {.kind = GLINT_LIGHT_SPOT, .direction = {0, -1, 0}, .color = {1, 1, 1}, .cone_angle = 95};
+    assert_int_equal(light_init(&l, &bad, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "spotlight cone angle must be in (0, 90] degrees, got 95");
+    bad.cone_angle = 10;
+    bad.direction = v3(0, 0, 0);
+    assert_int_equal(light_init(&l, &bad, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "light direction must be finite and not zero");
+    bad.direction = v3(0, -1, 0);
+    bad.color.g = NAN;
+    assert_int_equal(light_init(&l, &bad, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "light colour must be finite and not negative");
+}
+
+static void test_checker(void **state)
+{
+    color a = {1, 1, 1}, b = {0, 0, 0};
+    /* The original floor: 5-unit cells. */
+    assert_near(checker_eval(a, b, 5, 0.1, 0.1).r, 1, 0);
+    assert_near(checker_eval(a, b, 5, 5.1, 0.1).r, 0, 0);
+    assert_near(checker_eval(a, b, 5, 5.1, 5.1).r, 1, 0);
+    assert_near(checker_eval(a, b, 5, -0.1, 0.1).r, 0, 0);
+    assert_near(checker_eval(a, b, 5, -0.1, -0.1).r, 1, 0);
+    assert_near(checker_eval(a, b, 5, -12, -3).r, 1, 0); /* cells -3 and -1: even */
+    assert_near(checker_eval(a, b, 5, -12, 3).r, 0, 0);  /* cells -3 and 0: odd */
+    assert_near(checker_eval(a, b, 5, -7, 14).r, 1, 0);  /* cells -2 and 2 */
+    /* Any two colours, any size. */
+    color red = {1, 0, 0}, blue = {0, 0, 1};
+    assert_near(checker_eval(red, blue, 0.25, 0.3, 0.1).b, 1, 0);
+    assert_near(checker_eval(red, blue, 0.25, 0.6, 0.1).r, 1, 0);
+}
+
+static surface at_object_point(vec3 p)
+{
+    surface s;
+    memset(&s, 0, sizeof s);
+    s.p = s.p_obj = p;
+    return s;
+}
+
+static void test_spherical_mapping(void **state)
+{
+    glint_mapping m = {.kind = GLINT_MAP_SPHERICAL, .centre = {3, 2, -80}};
+    double u, v;
+    surface s = at_object_point(v3(3, 6, -80)); /* north pole */
+    mapping_apply(&m, &s, &u, &v);
+    assert_near(v, 0, 1e-12);
+    s = at_object_point(v3(3, -2, -80)); /* south pole */
+    mapping_apply(&m, &s, &u, &v);
+    assert_near(v, 1, 1e-12);
+    s = at_object_point(v3(3, 2, -76)); /* facing +z: centre of the map */
+    mapping_apply(&m, &s, &u, &v);
+    assert_near(u, 0.5, 1e-12);
+    assert_near(v, 0.5, 1e-12);
+    s = at_object_point(v3(7, 2, -80)); /* +x: a quarter turn on */
+    mapping_apply(&m, &s, &u, &v);
+    assert_near(u, 0.75, 1e-12);
+    /* Across the seam at -z, u jumps from 1 to 0. */
+    s = at_object_point(v3(3 + 1e-9, 2, -84));
+    mapping_apply(&m, &s, &u, &v);
+    assert_near(u, 1, 1e-9);
+    s = at_object_point(v3(3 - 1e-9, 2, -84));
+    mapping_apply(&m, &s, &u, &v);
+    assert_near(u, 0, 1e-9);
+}
+
+static void test_planar_and_cylindrical_mapping(void **state)
+{
+    double u, v;
+    glint_mapping planar = {.kind = GLINT_MAP_PLANAR};
+    surface s = at_object_point(v3(7, -15, -12));
+    mapping_apply(&planar, &s, &u, &v);
+    assert_near(u, 7, EPS);
+    assert_near(v, -12, EPS);
+    glint_mapping wall = {.kind = GLINT_MAP_PLANAR, .u_axis = {0, 0, 2}, .v_axis = {0, -1, 0}, .scale = 2};
+    s = at_object_point(v3(1, 4, 6));
+    mapping_apply(&wall, &s, &u, &v);
+    assert_near(u, 3, EPS);
+    assert_near(v, -2, EPS);
+    glint_mapping cyl = {.kind = GLINT_MAP_CYLINDRICAL, .centre = {0, 1, 0}, .scale = 4};
+    s = at_object_point(v3(0, 3, 2));
+    mapping_apply(&cyl, &s, &u, &v);
+    assert_near(u, 0.5, EPS);
+    assert_near(v, 0.5, EPS);
+    s = at_object_point(v3(-2, 1, 0));
+    mapping_apply(&cyl, &s, &u, &v);
+    assert_near(u, 0.25, EPS);
+    assert_near(v, 0, EPS);
+    glint_error err;
+    glint_mapping bad = {.kind = GLINT_MAP_PLANAR, .u_axis = {1, 0, 0}, .v_axis = {2, 0, 0}};
+    assert_int_equal(mapping_validate(&bad, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "planar mapping axes must not be parallel");
+}
+
+static void test_image_lookup(void **state)
+{
+    /* A 2x1 image: red then blue. Texel centres are at u = 0.25 and 0.75. */
+    float px[6] = {1, 0, 0, 0, 0, 1};
+    texture_image img = {2, 1, px};
+    color c = image_eval(&img, 0.25, 0.5);
+    assert_near(c.r, 1, 1e-7);
+    assert_near(c.b, 0, 1e-7);
+    c = image_eval(&img, 0.5, 0.5);
+    assert_near(c.r, 0.5, 1e-7);
+    assert_near(c.b, 0.5, 1e-7);
+    /* u wraps: 0 sits halfway between the last and first texel. */
+    c = image_eval(&img, 0, 0.5);
+    assert_near(c.r, 0.5, 1e-7);
+    c = image_eval(&img, 1.25, 0.5);
+    assert_near(c.r, 1, 1e-7);
+    /* v clamps. */
+    c = image_eval(&img, 0.75, -3);
+    assert_near(c.b, 1, 1e-7);
+}
+
+static void test_fog(void **state)
+{
+    glint_fog f = {.kind = GLINT_FOG_LINEAR, .color = {0.8, 0.8, 0.8}, .start = -16, .end = 284};
+    assert_near(fog_factor(&f, -20), 0, 0);           /* before its range */
+    assert_near(fog_factor(&f, 134), 0.5, 1e-12);     /* inside */
+    assert_near(fog_factor(&f, 54), 70.0 / 300, 1e-12);
+    assert_near(fog_factor(&f, 1000), 1, 0);          /* beyond: clamped */
+    assert_near(fog_factor(&f, INFINITY), 1, 0);
+    color c = fog_apply(&f, rgb(0, 0.4, 1), 134);
+    assert_near(c.r, 0.4, 1e-12);
+    assert_near(c.g, 0.6, 1e-12);
+    assert_near(c.b, 0.9, 1e-12);
+    glint_fog e = {.kind = GLINT_FOG_EXPONENTIAL, .color = {1, 1, 1}, .density = 0.1};
+    assert_near(fog_factor(&e, 0), 0, 0);
+    assert_near(fog_factor(&e, 10), 1 - exp(-1), 1e-12);
+    glint_fog none = {.kind = GLINT_FOG_NONE};
+    assert_near(fog_factor(&none, 1e9), 0, 0);
+    glint_error err;
+    f.start = 300;
+    assert_int_equal(fog_validate(&f, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "linear fog needs finite start < end, got 300 and 284");
+    e.density = 0;
+    assert_int_equal(fog_validate(&e, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "fog density must be positive, got 0");
+}
+
+static void test_phong(void **state)
+{
+    glint_material m = glint_material_default();
+    color white = {1, 1, 1}, c = {0.5, 0.25, 1};
+    vec3 n = v3(0, 1, 0);
+    /* Light at 60 degrees: diffuse cos = 0.5; the eye on the mirror direction
+     * sees the full highlight. */
+    vec3 l = v3(sin(M_PI / 3), cos(M_PI / 3), 0), eye = v3(-sin(M_PI / 3), cos(M_PI / 3), 0);
+    color out = phong_light(&m, c, n, l, eye, white);
+    assert_near(out.r, 0.25 + 1, 1e-12);
+    assert_near(out.g, 0.125 + 1, 1e-12);
+    /* Away from the mirror direction, the highlight falls as cos^50. */
+    vec3 eye2 = n; /* 60 degrees from the reflection: r.v = 0.5 */
+    out = phong_light(&m, c, n, l, eye2, white);
+    assert_near(out.b, 0.5 + pow(0.5, 50), 1e-12);
+    /* Light behind the surface: nothing. */
+    out = phong_light(&m, c, n, v3(0, -1, 0), eye, white);
+    assert_near(rgb_max(out), 0, 0);
+}
+
+static void test_material_validation(void **state)
+{
+    glint_error err;
+    glint_material m = glint_material_default();
+    assert_int_equal(material_validate(&m, 0, &err), GLINT_OK);
+    m.ior = 0;
+    assert_int_equal(material_validate(&m, 0, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "material index of refraction must be above 0, got 0");
+    m = glint_material_default();
+    m.transparency = 0.6;
+    m.refraction = 0.6;
+    assert_int_equal(material_validate(&m, 0, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "material transparency + refraction must not exceed 1, got 1.2");
+    m = glint_material_default();
+    m.reflectivity = NAN;
+    assert_int_equal(material_validate(&m, 0, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "material reflectivity must be in [0, 1], got nan");
+    m = glint_material_default();
+    m.texture = 2;
+    assert_int_equal(material_validate(&m, 2, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "material texture 2 does not exist");
+    /* The transmission filter: tint 0 is clear, tint 1 the colour. */
+    m = glint_material_default();
+    m.tint = 0.5;
+    color f = material_filter(&m, rgb(1, 0, 0));
+    assert_near(f.r, 1, EPS);
+    assert_near(f.g, 0.5, EPS);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_reflection_direction),
+        cmocka_unit_test(test_snell_angle),
+        cmocka_unit_test(test_total_internal_reflection),
+        cmocka_unit_test(test_fresnel),
+        cmocka_unit_test(test_spotlight),
+        cmocka_unit_test(test_point_and_directional),
+        cmocka_unit_test(test_light_errors),
+        cmocka_unit_test(test_checker),
+        cmocka_unit_test(test_spherical_mapping),
+        cmocka_unit_test(test_planar_and_cylindrical_mapping),
+        cmocka_unit_test(test_image_lookup),
+        cmocka_unit_test(test_fog),
+        cmocka_unit_test(test_phong),
+        cmocka_unit_test(test_material_validation),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
