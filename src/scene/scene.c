@@ -1,0 +1,248 @@
+/* scene.c - the scene's C API: creating a scene and adding to it. Every
+ * value is checked here, so the renderer can trust what it reads. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "core/error.h"
+#include "scene/scene.h"
+#include "shading/fog.h"
+
+/* The most of any one kind of thing a scene may hold. */
+#define SCENE_MAX_ITEMS (1 << 24)
+
+const char *glint_version(void)
+{
+    return GLINT_VERSION;
+}
+
+glint_settings glint_settings_default(void)
+{
+    glint_settings s = {
+        .width = 640, .height = 480, .samples_per_pixel = 1, .sampler = GLINT_SAMPLER_REGULAR,
+        .max_depth = 5, .background = {0, 0, 0}, .ambient_light = {1, 1, 1}, .seed = 0,
+    };
+    return s;
+}
+
+glint_scene *glint_scene_new(void)
+{
+    glint_scene *s = calloc(1, sizeof *s);
+    if (!s)
+        return NULL;
+    s->settings = glint_settings_default();
+    s->camera = (glint_camera){.position = {0, 0, 0}, .look_at = {0, 0, -1}, .up = {0, 1, 0}, .vfov_degrees = 45};
+    s->fog.kind = GLINT_FOG_NONE;
+    return s;
+}
+
+void glint_scene_free(glint_scene *s)
+{
+    if (!s)
+        return;
+    for (int i = 0; i < s->texture_count; i++)
+        texture_release(&s->textures[i]);
+    for (int i = 0; i < s->material_count; i++)
+        free(s->materials[i].name);
+    free(s->textures);
+    free(s->materials);
+    free(s->shapes);
+    free(s->lights);
+    free(s);
+}
+
+/* Makes room for one more element in a growing array. */
+static glint_status grow(void **items, int *cap, int count, size_t size, const char *what, glint_error *err)
+{
+    if (count < *cap)
+        return GLINT_OK;
+    if (count >= SCENE_MAX_ITEMS)
+        return error_set(err, GLINT_ERR_INVALID, "too many %s (limit %d)", what, SCENE_MAX_ITEMS);
+    int ncap = *cap ? *cap * 2 : 16;
+    void *p = realloc(*items, (size_t)ncap * size);
+    if (!p)
+        return error_set(err, GLINT_ERR_NOMEM, "out of memory adding %s", what);
+    *items = p;
+    *cap = ncap;
+    return GLINT_OK;
+}
+
+static glint_status copy_name(char **out, const char *name, glint_error *err)
+{
+    *out = NULL;
+    if (!name)
+        return GLINT_OK;
+    *out = strdup(name);
+    return *out ? GLINT_OK : error_set(err, GLINT_ERR_NOMEM, "out of memory");
+}
+
+glint_status glint_scene_set_settings(glint_scene *scene, const glint_settings *s, glint_error *err)
+{
+    if (s->width < 1 || s->width > 65536 || s->height < 1 || s->height > 65536)
+        return error_set(err, GLINT_ERR_INVALID, "image size must be 1..65536 pixels each way, got %dx%d",
+                         s->width, s->height);
+    int n = (int)lround(sqrt((double)s->samples_per_pixel));
+    if (s->samples_per_pixel < 1 || s->samples_per_pixel > 4096 || n * n != s->samples_per_pixel)
+        return error_set(err, GLINT_ERR_INVALID,
+                         "samples per pixel must be a square number from 1 to 4096 (1, 4, 9, 16, ...), got %d",
+                         s->samples_per_pixel);
+    if (s->sampler != GLINT_SAMPLER_REGULAR && s->sampler != GLINT_SAMPLER_JITTERED)
+        return error_set(err, GLINT_ERR_INVALID, "unknown sampler %d", (int)s->sampler);
+    if (s->max_depth < 0 || s->max_depth > 64)
+        return error_set(err, GLINT_ERR_INVALID, "recursion depth must be 0..64, got %d", s->max_depth);
+    if (!rgb_is_valid(s->background) || !rgb_is_valid(s->ambient_light))
+        return error_set(err, GLINT_ERR_INVALID, "background and ambient light must be finite, not negative colours");
+    scene->settings = *s;
+    return GLINT_OK;
+}
+
+glint_settings glint_scene_get_settings(const glint_scene *scene)
+{
+    return scene->settings;
+}
+
+glint_status camera_validate(const glint_camera *c, glint_error *err)
+{
+    if (!v3_is_finite(c->position) || !v3_is_finite(c->look_at) || !v3_is_finite(c->up) ||
+        !isfinite(c->vfov_degrees))
+        return error_set(err, GLINT_ERR_INVALID, "camera values must be finite");
+    if (!(c->vfov_degrees > 0 && c->vfov_degrees < 180))
+        return error_set(err, GLINT_ERR_INVALID, "camera field of view must be in (0, 180) degrees, got %g",
+                         c->vfov_degrees);
+    vec3 view = v3_sub(c->look_at, c->position);
+    if (v3_length(view) == 0)
+        return error_set(err, GLINT_ERR_INVALID, "camera position and look_at must differ");
+    if (v3_length(v3_cross(v3_normalize(view), v3_normalize(c->up))) < 1e-9)
+        return error_set(err, GLINT_ERR_INVALID, "camera up must not be zero or parallel to the view direction");
+    return GLINT_OK;
+}
+
+glint_status glint_scene_set_camera(glint_scene *scene, const glint_camera *cam, glint_error *err)
+{
+    glint_status s = camera_validate(cam, err);
+    if (s == GLINT_OK)
+        scene->camera = *cam;
+    return s;
+}
+
+glint_camera glint_scene_get_camera(const glint_scene *scene)
+{
+    return scene->camera;
+}
+
+glint_status glint_scene_set_fog(glint_scene *scene, const glint_fog *fog, glint_error *err)
+{
+    glint_status s = fog_validate(fog, err);
+    if (s == GLINT_OK)
+        scene->fog = *fog;
+    return s;
+}
+
+static int find_texture(const glint_scene *scene, const char *name)
+{
+    for (int i = 0; name && i < scene->texture_count; i++)
+        if (scene->textures[i].name && strcmp(scene->textures[i].name, name) == 0)
+            return i;
+    return -1;
+}
+
+/* Appends a texture after checking its name and mapping; on failure releases
+ * what t owns. */
+static int add_texture(glint_scene *scene, texture *t, const char *name, glint_error *err)
+{
+    glint_status s = GLINT_OK;
+    if (find_texture(scene, name) >= 0)
+        s = error_set(err, GLINT_ERR_INVALID, "texture '%s' is defined twice", name);
+    if (!s)
+        s = mapping_validate(&t->mapping, err);
+    if (!s)
+        s = grow((void **)&scene->textures, &scene->texture_cap, scene->texture_count, sizeof *t, "textures", err);
+    if (!s)
+        s = copy_name(&t->name, name, err);
+    if (s) {
+        texture_release(t);
+        return -1;
+    }
+    scene->textures[scene->texture_count] = *t;
+    return scene->texture_count++;
+}
+
+int glint_scene_add_checker(glint_scene *scene, const char *name, glint_color a, glint_color b, double cell,
+                            glint_mapping mapping, glint_error *err)
+{
+    if (!rgb_is_valid(a) || !rgb_is_valid(b)) {
+        error_set(err, GLINT_ERR_INVALID, "checker colours must be finite and not negative");
+        return -1;
+    }
+    if (!(cell > 0 && isfinite(cell))) {
+        error_set(err, GLINT_ERR_INVALID, "checker cell size must be positive, got %g", cell);
+        return -1;
+    }
+    texture t = {.kind = TEXTURE_CHECKER, .mapping = mapping, .a = a, .b = b, .cell = cell};
+    return add_texture(scene, &t, name, err);
+}
+
+int glint_scene_add_image_file(glint_scene *scene, const char *name, const char *path, glint_mapping mapping,
+                               glint_error *err)
+{
+    texture t = {.kind = TEXTURE_IMAGE, .mapping = mapping};
+    if (texture_image_load_file(&t.image, path, err))
+        return -1;
+    return add_texture(scene, &t, name, err);
+}
+
+int glint_scene_add_image_memory(glint_scene *scene, const char *name, const void *data, size_t size,
+                                 glint_mapping mapping, glint_error *err)
+{
+    texture t = {.kind = TEXTURE_IMAGE, .mapping = mapping};
+    if (texture_image_load_memory(&t.image, data, size, name ? name : "image", err))
+        return -1;
+    return add_texture(scene, &t, name, err);
+}
+
+glint_status glint_scene_replace_image(glint_scene *scene, const char *name, const char *path, glint_error *err)
+{
+    int i = find_texture(scene, name);
+    if (i < 0 || scene->textures[i].kind != TEXTURE_IMAGE)
+        return error_set(err, GLINT_ERR_INVALID, "no image texture named '%s'", name ? name : "");
+    texture_image img;
+    glint_status s = texture_image_load_file(&img, path, err);
+    if (s)
+        return s;
+    texture_image_free(&scene->textures[i].image);
+    scene->textures[i].image = img;
+    return GLINT_OK;
+}
+
+int glint_scene_add_material(glint_scene *scene, const char *name, const glint_material *m, glint_error *err)
+{
+    if (material_validate(m, scene->texture_count, err) ||
+        grow((void **)&scene->materials, &scene->material_cap, scene->material_count, sizeof(material),
+             "materials", err))
+        return -1;
+    material *slot = &scene->materials[scene->material_count];
+    if (copy_name(&slot->name, name, err))
+        return -1;
+    slot->m = *m;
+    return scene->material_count++;
+}
+
+int glint_scene_add_shape(glint_scene *scene, const glint_shape *desc, int mat, const glint_transform *xf,
+                          glint_error *err)
+{
+    if (mat < 0 || mat >= scene->material_count) {
+        error_set(err, GLINT_ERR_INVALID, "material %d does not exist", mat);
+        return -1;
+    }
+    if (grow((void **)&scene->shapes, &scene->shape_cap, scene->shape_count, sizeof(shape), "shapes", err) ||
+        shape_init(&scene->shapes[scene->shape_count], desc, xf, mat, err))
+        return -1;
+    return scene->shape_count++;
+}
+
+int glint_scene_add_light(glint_scene *scene, const glint_light *desc, glint_error *err)
+{
+    if (grow((void **)&scene->lights, &scene->light_cap, scene->light_count, sizeof(light), "lights", err) ||
+        light_init(&scene->lights[scene->light_count], desc, err))
+        return -1;
+    return scene->light_count++;
+}
