@@ -1,0 +1,22 @@
+/* camera.h - the pinhole camera: pixel positions to primary rays. */
+#ifndef GLINT_RENDER_CAMERA_H
+#define GLINT_RENDER_CAMERA_H
+
+#include "core/vec.h"
+
+typedef struct camera {
+    vec3 position, forward, right, up;   /* orthonormal frame */
+    double half_height, half_width;      /* of the image plane at distance 1 */
+    int width, height;
+} camera;
+
+/* Sets up the frame for an image of width x height pixels; the camera must
+ * have passed camera_validate. */
+void camera_init(camera *c, const glint_camera *desc, int width, int height);
+
+/* The unit-direction ray through image position (x, y) in pixels, where
+ * (0, 0) is the top-left corner of the image and (width, height) the
+ * bottom-right. */
+ray camera_ray(const camera *c, double x, double y);
+
+#endif

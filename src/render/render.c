@@ -1,0 +1,181 @@
+/* render.c - hands out tiles to threads and gathers their pixels. Each pixel
+ * depends only on its own position and the scene, so the image is the same
+ * for any thread count, tile size or tile order. */
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdlib.h>
+#include <time.h>
+#include <unistd.h>
+#include "core/error.h"
+#include "core/hash.h"
+#include "render/camera.h"
+#include "render/integrator.h"
+
+#define MAX_THREADS 1024
+
+typedef struct job {
+    const glint_scene *scene;
+    const accel *acc;
+    camera cam;
+    const glint_render_options *opts;
+    float *pixels;
+    int tiles_x, tiles_total, tile_size, grid;
+    atomic_int next_tile, tiles_done;
+} job;
+
+typedef struct worker {
+    job *job;
+    int index;
+    pthread_t thread;
+    uint64_t rays;
+} worker;
+
+static color render_pixel(tracer *t, const job *j, int px, int py)
+{
+    const glint_settings *s = &j->scene->settings;
+    int n = j->grid;
+    color sum = rgb(0, 0, 0);
+    for (int sy = 0; sy < n; sy++) {
+        for (int sx = 0; sx < n; sx++) {
+            double ox = (sx + 0.5) / n, oy = (sy + 0.5) / n;
+            if (s->sampler == GLINT_SAMPLER_JITTERED) {
+                uint32_t h = hash4((uint32_t)px, (uint32_t)py, (uint32_t)(sy * n + sx), s->seed);
+                ox = (sx + hash_unit(h)) / n;
+                oy = (sy + hash_unit(hash_u32(h ^ 0x9e3779b9U))) / n;
+            }
+            ray r = camera_ray(&j->cam, px + ox, py + oy);
+            sum = rgb_add(sum, tracer_trace(t, &r, 0));
+        }
+    }
+    return rgb_scale(sum, 1.0 / (n * n));
+}
+
+static void render_tile(tracer *t, job *j, int tile)
+{
+    const glint_settings *s = &j->scene->settings;
+    int x0 = (tile % j->tiles_x) * j->tile_size, y0 = (tile / j->tiles_x) * j->tile_size;
+    int x1 = x0 + j->tile_size < s->width ? x0 + j->tile_size : s->width;
+    int y1 = y0 + j->tile_size < s->height ? y0 + j->tile_size : s->height;
+    for (int y = y0; y < y1; y++) {
+        for (int x = x0; x < x1; x++) {
+            color c = render_pixel(t, j, x, y);
+            float *p = j->pixels + 3 * ((size_t)y * s->width + x);
+            p[0] = (float)c.r;
+            p[1] = (float)c.g;
+            p[2] = (float)c.b;
+        }
+    }
+}
+
+static void *worker_run(void *arg)
+{
+    worker *w = arg;
+    job *j = w->job;
+    tracer t = {j->scene, j->acc, 0};
+    int tile;
+    while ((tile = atomic_fetch_add(&j->next_tile, 1)) < j->tiles_total) {
+        if (j->opts->cancel && *j->opts->cancel)
+            break;
+        render_tile(&t, j, tile);
+        int done = atomic_fetch_add(&j->tiles_done, 1) + 1;
+        if (w->index == 0 && j->opts->progress)
+            j->opts->progress(j->opts->progress_user, done, j->tiles_total);
+    }
+    w->rays = t.rays;
+    return NULL;
+}
+
+static double now_seconds(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static int default_threads(void)
+{
+    long n = sysconf(_SC_NPROCESSORS_ONLN);
+    return n < 1 ? 1 : n > MAX_THREADS ? MAX_THREADS : (int)n;
+}
+
+/* Runs the job on `count` threads, the caller's being the first. */
+static glint_status run_workers(job *j, int count, uint64_t *rays, glint_error *err)
+{
+    worker *ws = calloc((size_t)count, sizeof *ws);
+    if (!ws)
+        return error_set(err, GLINT_ERR_NOMEM, "out of memory starting threads");
+    int started = 1;
+    for (int i = 0; i < count; i++) {
+        ws[i].job = j;
+        ws[i].index = i;
+    }
+    for (; started < count; started++)
+        if (pthread_create(&ws[started].thread, NULL, worker_run, &ws[started]) != 0)
+            break;
+    worker_run(&ws[0]);
+    *rays = 0;
+    for (int i = 0; i < started; i++) {
+        if (i > 0)
+            pthread_join(ws[i].thread, NULL);
+        *rays += ws[i].rays;
+    }
+    free(ws);
+    return GLINT_OK;
+}
+
+glint_status glint_render(const glint_scene *scene, const glint_render_options *options, glint_image *out,
+                          glint_render_stats *stats, glint_error *err)
+{
+    static const glint_render_options defaults;
+    const glint_render_options *o = options ? options : &defaults;
+    const glint_settings *s = &scene->settings;
+    out->width = out->height = 0;
+    out->pixels = NULL;
+    if (o->threads < 0 || o->threads > MAX_THREADS)
+        return error_set(err, GLINT_ERR_INVALID, "thread count must be 0..%d, got %d", MAX_THREADS, o->threads);
+    if (o->tile_size < 0 || o->tile_size > 65536)
+        return error_set(err, GLINT_ERR_INVALID, "tile size must be 0..65536, got %d", o->tile_size);
+    double start = now_seconds();
+
+    job j = {.scene = scene, .opts = o, .tile_size = o->tile_size ? o->tile_size : 32};
+    j.pixels = calloc((size_t)s->width * s->height * 3, sizeof(float));
+    if (!j.pixels)
+        return error_set(err, GLINT_ERR_NOMEM, "out of memory for a %dx%d image", s->width, s->height);
+    accel *acc;
+    glint_status st = accel_build(&acc, scene->shapes, scene->shape_count, err);
+    if (st) {
+        free(j.pixels);
+        return st;
+    }
+    j.acc = acc;
+    camera_init(&j.cam, &scene->camera, s->width, s->height);
+    j.grid = 1;
+    while (j.grid * j.grid < s->samples_per_pixel)
+        j.grid++;
+    j.tiles_x = (s->width + j.tile_size - 1) / j.tile_size;
+    j.tiles_total = j.tiles_x * ((s->height + j.tile_size - 1) / j.tile_size);
+    atomic_init(&j.next_tile, 0);
+    atomic_init(&j.tiles_done, 0);
+    int threads = o->threads ? o->threads : default_threads();
+    if (threads > j.tiles_total)
+        threads = j.tiles_total;
+
+    uint64_t rays = 0;
+    st = run_workers(&j, threads, &rays, err);
+    accel_free(acc);
+    if (!st && o->cancel && *o->cancel)
+        st = error_set(err, GLINT_ERR_CANCELLED, "render cancelled");
+    if (st) {
+        free(j.pixels);
+        return st;
+    }
+    out->width = s->width;
+    out->height = s->height;
+    out->pixels = j.pixels;
+    if (stats) {
+        stats->seconds = now_seconds() - start;
+        stats->samples = (uint64_t)s->width * s->height * j.grid * j.grid;
+        stats->rays = rays;
+    }
+    return GLINT_OK;
+}

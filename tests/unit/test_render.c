@@ -1,0 +1,271 @@
+/* test_render.c - whole-image properties of small renders through the public
+ * API: silhouettes, shadows (opaque and tinted), mirrors, refraction, and
+ * identical bytes whatever the thread count. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <math.h>
+#include <string.h>
+#include "glint.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+#define assert_near(a, b, eps) assert_true(fabs((double)(a) - (double)(b)) <= (eps))
+
+static glint_scene *new_scene(int w, int h, glint_vec3 eye, glint_vec3 at, glint_vec3 up, double fov)
+{
+    glint_scene *s = glint_scene_new();
+    assert_non_null(s);
+    glint_settings st = glint_settings_default();
+    st.width = w;
+    st.height = h;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_camera cam = {eye, at, up, fov};
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    return s;
+}
+
+/* A material that shows exactly its colour: ambient only, under white ambient light. */
+static int flat(glint_scene *s, double r, double g, double b)
+{
+    glint_material m = glint_material_default();
+    m.color = (glint_color){r, g, b};
+    m.ambient = 1;
+    m.diffuse = 0;
+    m.specular = 0;
+    int i = glint_scene_add_material(s, NULL, &m, NULL);
+    assert_true(i >= 0);
+    return i;
+}
+
+static int matte(glint_scene *s, double r, double g, double b)
+{
+    glint_material m = glint_material_default();
+    m.color = (glint_color){r, g, b};
+    m.specular = 0;
+    int i = glint_scene_add_material(s, NULL, &m, NULL);
+    assert_true(i >= 0);
+    return i;
+}
+
+static void add_sphere(glint_scene *s, double x, double y, double z, double r, int mat)
+{
+    glint_shape sh = {.kind = GLINT_SHAPE_SPHERE, .center = {x, y, z}, .radius = r};
+    assert_true(glint_scene_add_shape(s, &sh, mat, NULL, NULL) >= 0);
+}
+
+static void add_quad(glint_scene *s, glint_vec3 a, glint_vec3 b, glint_vec3 c, glint_vec3 d, int mat)
+{
+    glint_shape sh = {.kind = GLINT_SHAPE_POLYGON, .point_count = 4, .points = {a, b, c, d}};
+    assert_true(glint_scene_add_shape(s, &sh, mat, NULL, NULL) >= 0);
+}
+
+static glint_image render(const glint_scene *s, int threads)
+{
+    glint_image img;
+    glint_render_options o = {.threads = threads};
+    glint_error err;
+    glint_status st = glint_render(s, &o, &img, NULL, &err);
+    if (st)
+        fail_msg("render failed: %s", err.message);
+    return img;
+}
+
+static const float *pixel(const glint_image *img, int x, int y)
+{
+    return img->pixels + 3 * ((size_t)y * img->width + x);
+}
+
+static void test_sphere_silhouette_area(void **state)
+{
+    /* A sphere of radius 1 at distance 10 subtends a disc of radius
+     * tan(asin(1/10)) = 1/sqrt(99) on the image plane at distance 1. */
+    glint_scene *s = new_scene(400, 400, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 30);
+    add_sphere(s, 0, 0, -10, 1, flat(s, 1, 1, 1));
+    glint_image img = render(s, 0);
+    int covered = 0;
+    for (int i = 0; i < img.width * img.height; i++)
+        covered += img.pixels[3 * i] > 0.5f;
+    double radius_px = (1 / sqrt(99.0)) / tan(15 * M_PI / 180) * 200;
+    double expected = M_PI * radius_px * radius_px;
+    assert_true(fabs(covered - expected) / expected < 0.01);
+    /* Outside the disc is the black background, inside exactly white. */
+    assert_near(pixel(&img, 0, 0)[0], 0, 0);
+    assert_near(pixel(&img, 200, 200)[1], 1, 1e-6);
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
+/* A white matte floor under a light straight above the origin, seen by a
+ * camera whose centre pixel (odd image size) looks exactly at `target`. */
+static glint_scene *floor_scene(glint_vec3 target)
+{
+    glint_scene *s = new_scene(11, 11, (glint_vec3){0, 8, 12}, target, (glint_vec3){0, 1, 0}, 20);
+    glint_shape plane = {.kind = GLINT_SHAPE_PLANE, .center = {0, 0, 0}, .normal = {0, 1, 0}};
+    assert_true(glint_scene_add_shape(s, &plane, matte(s, 1, 1, 1), NULL, NULL) >= 0);
+    glint_light l = {.kind = GLINT_LIGHT_POINT, .position = {0, 10, 0}, .color = {1, 1, 1}};
+    assert_true(glint_scene_add_light(s, &l, NULL) >= 0);
+    return s;
+}
+
+static const float *centre(const glint_image *img)
+{
+    return pixel(img, img->width / 2, img->height / 2);
+}
+
+static void test_shadow_ratio(void **state)
+{
+    glint_scene *lit = floor_scene((glint_vec3){3, 0, 0});
+    glint_scene *shadowed = floor_scene((glint_vec3){0, 0, 0});
+    add_sphere(lit, 0, 5, 0, 1, matte(lit, 1, 1, 1));
+    add_sphere(shadowed, 0, 5, 0, 1, matte(shadowed, 1, 1, 1));
+    glint_image a = render(lit, 1), b = render(shadowed, 1);
+    double lit_value = 0.2 + 10 / sqrt(109.0); /* ambient + cos of the light's angle */
+    assert_near(centre(&a)[0], lit_value, 1e-5);
+    assert_near(centre(&b)[0], 0.2, 1e-6);       /* ambient only: never black */
+    assert_near(centre(&b)[0] / centre(&a)[0], 0.2 / lit_value, 1e-5);
+    glint_image_free(&a);
+    glint_image_free(&b);
+    glint_scene_free(lit);
+    glint_scene_free(shadowed);
+}
+
+static int red_glass(glint_scene *s)
+{
+    glint_material m = glint_material_default();
+    m.color = (glint_color){1, 0, 0};
+    m.specular = 0;
+    m.transparency = 0.8;
+    m.tint = 1;
+    int i = glint_scene_add_material(s, NULL, &m, NULL);
+    assert_true(i >= 0);
+    return i;
+}
+
+static void test_tinted_shadows_multiply(void **state)
+{
+    /* One red transparent sphere passes 0.8 of the light, filtered red; the
+     * sphere is crossed twice but filters once. */
+    glint_scene *one = floor_scene((glint_vec3){0, 0, 0});
+    add_sphere(one, 0, 5, 0, 1, red_glass(one));
+    glint_image a = render(one, 1);
+    assert_near(centre(&a)[0], 0.2 + 0.8, 1e-5);
+    assert_near(centre(&a)[1], 0.2, 1e-6);
+    assert_near(centre(&a)[2], 0.2, 1e-6);
+    /* Two such spheres multiply: 0.64. */
+    glint_scene *two = floor_scene((glint_vec3){0, 0, 0});
+    add_sphere(two, 0, 5, 0, 1, red_glass(two));
+    add_sphere(two, 0, 2.5, 0, 1, red_glass(two));
+    glint_image b = render(two, 1);
+    assert_near(centre(&b)[0], 0.2 + 0.64, 1e-5);
+    assert_near(centre(&b)[1], 0.2, 1e-6);
+    glint_image_free(&a);
+    glint_image_free(&b);
+    glint_scene_free(one);
+    glint_scene_free(two);
+}
+
+static void test_mirror_shows_facing_wall(void **state)
+{
+    glint_scene *s = new_scene(21, 21, (glint_vec3){0, 0, 5}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 1, 0}, 10);
+    glint_material mirror = glint_material_default();
+    mirror.color = (glint_color){0, 0, 0};
+    mirror.ambient = 0;
+    mirror.specular = 0;
+    mirror.reflectivity = 1;
+    add_sphere(s, 0, 0, -5, 2, glint_scene_add_material(s, NULL, &mirror, NULL));
+    int red = flat(s, 1, 0, 0), green = flat(s, 0, 1, 0);
+    /* Behind the camera, facing the sphere: red. To the left: green. */
+    add_quad(s, (glint_vec3){-50, -50, 10}, (glint_vec3){50, -50, 10}, (glint_vec3){50, 50, 10},
+             (glint_vec3){-50, 50, 10}, red);
+    add_quad(s, (glint_vec3){-20, -50, -50}, (glint_vec3){-20, -50, 50}, (glint_vec3){-20, 50, 50},
+             (glint_vec3){-20, 50, -50}, green);
+    glint_image img = render(s, 2);
+    assert_near(centre(&img)[0], 1, 1e-6);
+    assert_near(centre(&img)[1], 0, 0);
+    assert_near(centre(&img)[2], 0, 0);
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
+static void test_refraction_inverts(void **state)
+{
+    /* A glass ball in front of a backdrop red above y = 0 and blue below:
+     * through the ball, which focuses well before the backdrop, up and down
+     * swap. */
+    glint_scene *s = new_scene(101, 101, (glint_vec3){0, 0, 10}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 1, 0}, 20);
+    glint_material glass = glint_material_default();
+    glass.color = (glint_color){0, 0, 0};
+    glass.ambient = 0;
+    glass.specular = 0;
+    glass.refraction = 1;
+    glass.ior = 1.5;
+    glass.tint = 0;
+    add_sphere(s, 0, 0, 0, 1, glint_scene_add_material(s, NULL, &glass, NULL));
+    int red = flat(s, 1, 0, 0), blue = flat(s, 0, 0, 1);
+    add_quad(s, (glint_vec3){-50, 0, -20}, (glint_vec3){50, 0, -20}, (glint_vec3){50, 50, -20},
+             (glint_vec3){-50, 50, -20}, red);
+    add_quad(s, (glint_vec3){-50, -50, -20}, (glint_vec3){50, -50, -20}, (glint_vec3){50, 0, -20},
+             (glint_vec3){-50, 0, -20}, blue);
+    glint_image img = render(s, 2);
+    /* Outside the ball: upright. */
+    assert_near(pixel(&img, 50, 2)[0], 1, 1e-6);
+    assert_near(pixel(&img, 50, 98)[2], 1, 1e-6);
+    /* Inside the ball (radius about 28 pixels): inverted. */
+    assert_near(pixel(&img, 50, 40)[2], 1, 1e-6);
+    assert_near(pixel(&img, 50, 40)[0], 0, 0);
+    assert_near(pixel(&img, 50, 60)[0], 1, 1e-6);
+    assert_near(pixel(&img, 50, 60)[2], 0, 0);
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
+static void test_identical_bytes_for_any_thread_count(void **state)
+{
+    glint_error err;
+    glint_scene *s = glint_scene_seed_room(&err);
+    assert_non_null(s);
+    glint_settings st = glint_scene_get_settings(s);
+    st.width = 96;
+    st.height = 80;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_image one = render(s, 1), two = render(s, 2), seven = render(s, 7);
+    size_t bytes = (size_t)st.width * st.height * 3 * sizeof(float);
+    assert_memory_equal(one.pixels, two.pixels, bytes);
+    assert_memory_equal(one.pixels, seven.pixels, bytes);
+    /* Another tile size too. */
+    glint_image tiled;
+    glint_render_options o = {.threads = 3, .tile_size = 7};
+    assert_int_equal(glint_render(s, &o, &tiled, NULL, NULL), GLINT_OK);
+    assert_memory_equal(one.pixels, tiled.pixels, bytes);
+    /* The jittered sampler is as deterministic, and its seed matters. */
+    st.sampler = GLINT_SAMPLER_JITTERED;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_image j1 = render(s, 1), j2 = render(s, 2);
+    assert_memory_equal(j1.pixels, j2.pixels, bytes);
+    assert_memory_not_equal(j1.pixels, one.pixels, bytes);
+    glint_image_free(&one);
+    glint_image_free(&two);
+    glint_image_free(&seven);
+    glint_image_free(&tiled);
+    glint_image_free(&j1);
+    glint_image_free(&j2);
+    glint_scene_free(s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sphere_silhouette_area),
+        cmocka_unit_test(test_shadow_ratio),
+        cmocka_unit_test(test_tinted_shadows_multiply),
+        cmocka_unit_test(test_mirror_shows_facing_wall),
+        cmocka_unit_test(test_refraction_inverts),
+        cmocka_unit_test(test_identical_bytes_for_any_thread_count),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
