@@ -1,0 +1,295 @@
+/* main.c - the glint command: parses flags, renders the built-in seed room
+ * through the public API, shows progress and writes the image. */
+#include <errno.h>
+#include <signal.h>
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+#include <unistd.h>
+#include "glint.h"
+
+enum exit_code {
+    EXIT_OK = 0,
+    EXIT_BAD_INPUT = 1,   /* a scene or texture that cannot be used */
+    EXIT_USAGE = 2,       /* flags that do not parse */
+    EXIT_IO = 3,          /* the output cannot be written */
+    EXIT_INTERRUPTED = 4, /* SIGINT or SIGTERM */
+    EXIT_INTERNAL = 5     /* out of memory, Embree failure */
+};
+
+#define MAX_TEXTURE_SWAPS 16
+
+typedef struct options {
+    const char *output;
+    long long width, height, spp, depth, threads, seed; /* -1: the scene's own */
+    int sampler;                                        /* -1: the scene's own */
+    bool quiet;
+    const char *swap_name[MAX_TEXTURE_SWAPS], *swap_path[MAX_TEXTURE_SWAPS];
+    char swap_buf[MAX_TEXTURE_SWAPS][256];
+    int swaps;
+} options;
+
+static const char USAGE[] =
+    "usage: glint [options]\n"
+    "Renders the built-in seed room (the COSC363 scene) to an image.\n"
+    "\n"
+    "options:\n"
+    "  -o, --output FILE      image to write, .png (8-bit sRGB) or .ppm (default glint.png)\n"
+    "  -w, --width N          image width in pixels, 1..65536 (default 1000)\n"
+    "  -h, --height N         image height in pixels, 1..65536 (default 1000)\n"
+    "      --spp N            samples per pixel, a square number 1, 4, 9, ... 4096 (default 4)\n"
+    "      --sampler NAME     regular (an N x N grid, default) or jittered (one random\n"
+    "                         point in each cell of the grid)\n"
+    "      --seed N           seed of the jittered sampler, 0..4294967295 (default 0)\n"
+    "      --depth N          reflection and refraction recursion limit, 0..64 (default 5)\n"
+    "      --threads N        render threads, 1..1024 (default: one per core); the image\n"
+    "                         is the same for any count\n"
+    "      --texture NAME=FILE\n"
+    "                         replace the image of texture NAME (the seed room's is 'moon')\n"
+    "                         with a PNG or JPEG file\n"
+    "  -q, --quiet            no progress line and no summary on stderr\n"
+    "      --help             show this help and exit\n"
+    "      --version          print the version and exit\n"
+    "\n"
+    "Exit codes: 0 success, 1 bad input (scene, texture), 2 bad usage, 3 the output\n"
+    "cannot be written, 4 interrupted, 5 internal failure (out of memory, Embree).\n"
+    "The image is written under a temporary name and renamed into place, so a failed\n"
+    "or interrupted run never leaves a partial file or destroys an existing one.\n";
+
+static volatile sig_atomic_t interrupted;
+
+static void on_signal(int sig)
+{
+    (void)sig;
+    interrupted = 1;
+}
+
+static int complain(int code, const char *fmt, ...)
+{
+    va_list ap;
+    va_start(ap, fmt);
+    fputs("glint: ", stderr);
+    vfprintf(stderr, fmt, ap);
+    fputc('\n', stderr);
+    va_end(ap);
+    return code;
+}
+
+/* Parses a whole decimal number in [lo, hi]. */
+static bool parse_int(const char *text, long long lo, long long hi, long long *out)
+{
+    char *end;
+    errno = 0;
+    long long v = strtoll(text, &end, 10);
+    if (errno || end == text || *end != '\0' || v < lo || v > hi)
+        return false;
+    *out = v;
+    return true;
+}
+
+typedef struct number_flag {
+    const char *long_name, *short_name;
+    size_t field;                 /* offset of the long long in options */
+    long long lo, hi;
+    const char *what;
+} number_flag;
+
+static const number_flag NUMBER_FLAGS[] = {
+    {"--width", "-w", offsetof(options, width), 1, 65536, "a whole number from 1 to 65536"},
+    {"--height", "-h", offsetof(options, height), 1, 65536, "a whole number from 1 to 65536"},
+    {"--spp", NULL, offsetof(options, spp), 1, 4096, "a square number from 1 to 4096 (1, 4, 9, 16, ...)"},
+    {"--depth", NULL, offsetof(options, depth), 0, 64, "a whole number from 0 to 64"},
+    {"--threads", NULL, offsetof(options, threads), 1, 1024, "a whole number from 1 to 1024"},
+    {"--seed", NULL, offsetof(options, seed), 0, 4294967295LL, "a whole number from 0 to 4294967295"},
+};
+
+static bool is_square(long long n)
+{
+    long long r = 0;
+    while ((r + 1) * (r + 1) <= n)
+        r++;
+    return r * r == n;
+}
+
+static int parse_texture_swap(options *o, const char *arg)
+{
+    const char *eq = strchr(arg, '=');
+    if (!eq || eq == arg || eq[1] == '\0' || (size_t)(eq - arg) >= sizeof o->swap_buf[0])
+        return complain(EXIT_USAGE, "--texture needs NAME=FILE, got '%s'", arg);
+    if (o->swaps == MAX_TEXTURE_SWAPS)
+        return complain(EXIT_USAGE, "--texture may be given at most %d times", MAX_TEXTURE_SWAPS);
+    memcpy(o->swap_buf[o->swaps], arg, (size_t)(eq - arg));
+    o->swap_buf[o->swaps][eq - arg] = '\0';
+    o->swap_name[o->swaps] = o->swap_buf[o->swaps];
+    o->swap_path[o->swaps] = eq + 1;
+    o->swaps++;
+    return 0;
+}
+
+/* Fills o from argv; returns -1 to go on, or an exit code. */
+static int parse_args(int argc, char **argv, options *o)
+{
+    for (int i = 1; i < argc; i++) {
+        const char *a = argv[i];
+        if (strcmp(a, "--help") == 0) {
+            fputs(USAGE, stdout);
+            return EXIT_OK;
+        }
+        if (strcmp(a, "--version") == 0) {
+            printf("glint %s\n", glint_version());
+            return EXIT_OK;
+        }
+        if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {
+            o->quiet = true;
+            continue;
+        }
+        if (a[0] != '-' || a[1] == '\0')
+            return complain(EXIT_USAGE, "unexpected argument '%s' (try 'glint --help')", a);
+        const number_flag *nf = NULL;
+        for (size_t k = 0; k < sizeof NUMBER_FLAGS / sizeof NUMBER_FLAGS[0]; k++)
+            if (strcmp(a, NUMBER_FLAGS[k].long_name) == 0 ||
+                (NUMBER_FLAGS[k].short_name && strcmp(a, NUMBER_FLAGS[k].short_name) == 0))
+                nf = &NUMBER_FLAGS[k];
+        bool takes_value = nf || strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0 ||
+                           strcmp(a, "--sampler") == 0 || strcmp(a, "--texture") == 0;
+        if (!takes_value)
+            return complain(EXIT_USAGE, "unknown option '%s' (try 'glint --help')", a);
+        if (i + 1 >= argc)
+            return complain(EXIT_USAGE, "option '%s' needs a value", a);
+        const char *v = argv[++i];
+        if (nf) {
+            long long *field = (long long *)((char *)o + nf->field);
+            if (!parse_int(v, nf->lo, nf->hi, field) || (field == &o->spp && !is_square(*field)))
+                return complain(EXIT_USAGE, "%s needs %s, got '%s'", nf->long_name, nf->what, v);
+        } else if (strcmp(a, "--sampler") == 0) {
+            if (strcmp(v, "regular") == 0)
+                o->sampler = GLINT_SAMPLER_REGULAR;
+            else if (strcmp(v, "jittered") == 0)
+                o->sampler = GLINT_SAMPLER_JITTERED;
+            else
+                return complain(EXIT_USAGE, "--sampler needs 'regular' or 'jittered', got '%s'", v);
+        } else if (strcmp(a, "--texture") == 0) {
+            int code = parse_texture_swap(o, v);
+            if (code)
+                return code;
+        } else {
+            if (v[0] == '\0')
+                return complain(EXIT_USAGE, "%s needs a file name", a);
+            o->output = v;
+        }
+    }
+    return -1;
+}
+
+static int exit_code_of(glint_status s)
+{
+    switch (s) {
+    case GLINT_OK: return EXIT_OK;
+    case GLINT_ERR_INVALID: return EXIT_BAD_INPUT;
+    case GLINT_ERR_IO: return EXIT_IO;
+    case GLINT_ERR_CANCELLED: return EXIT_INTERRUPTED;
+    default: return EXIT_INTERNAL;
+    }
+}
+
+static void apply_overrides(const options *o, glint_settings *s)
+{
+    if (o->width >= 0) s->width = (int)o->width;
+    if (o->height >= 0) s->height = (int)o->height;
+    if (o->spp >= 0) s->samples_per_pixel = (int)o->spp;
+    if (o->depth >= 0) s->max_depth = (int)o->depth;
+    if (o->seed >= 0) s->seed = (uint32_t)o->seed;
+    if (o->sampler >= 0) s->sampler = (glint_sampler)o->sampler;
+}
+
+typedef struct progress {
+    struct timespec start;
+    double last_print;
+} progress;
+
+static double seconds_since(const struct timespec *t0)
+{
+    struct timespec t;
+    clock_gettime(CLOCK_MONOTONIC, &t);
+    return (t.tv_sec - t0->tv_sec) + (t.tv_nsec - t0->tv_nsec) * 1e-9;
+}
+
+static void show_progress(void *user, int done, int total)
+{
+    progress *p = user;
+    double elapsed = seconds_since(&p->start);
+    if (done < total && elapsed - p->last_print < 0.1)
+        return;
+    p->last_print = elapsed;
+    double left = done > 0 ? elapsed * (total - done) / done : 0;
+    fprintf(stderr, "\r%3d%%  %.1f s elapsed, %.1f s left   ", (int)(100.0 * done / total), elapsed, left);
+    if (done == total)
+        fputs("\r\033[K", stderr);
+    fflush(stderr);
+}
+
+static int run(const options *o)
+{
+    glint_error err = {{0}};
+    glint_status st = glint_image_check_path(o->output, &err);
+    if (st)
+        return complain(st == GLINT_ERR_INVALID ? EXIT_USAGE : exit_code_of(st), "%s", err.message);
+    glint_scene *scene = glint_scene_seed_room(&err);
+    if (!scene)
+        return complain(EXIT_INTERNAL, "%s", err.message);
+    for (int i = 0; i < o->swaps && !st; i++)
+        st = glint_scene_replace_image(scene, o->swap_name[i], o->swap_path[i], &err);
+    glint_settings settings = glint_scene_get_settings(scene);
+    apply_overrides(o, &settings);
+    if (!st)
+        st = glint_scene_set_settings(scene, &settings, &err);
+    if (st) {
+        glint_scene_free(scene);
+        /* Whatever stopped the scene, unreadable textures included, is bad input. */
+        return complain(st == GLINT_ERR_NOMEM ? EXIT_INTERNAL : EXIT_BAD_INPUT, "%s", err.message);
+    }
+
+    progress prog = {.last_print = -1};
+    clock_gettime(CLOCK_MONOTONIC, &prog.start);
+    glint_render_options ro = {.threads = o->threads > 0 ? (int)o->threads : 0,
+                               .cancel = (const volatile int *)&interrupted};
+    if (!o->quiet && isatty(STDERR_FILENO)) {
+        ro.progress = show_progress;
+        ro.progress_user = &prog;
+    }
+    glint_image image;
+    glint_render_stats stats;
+    st = glint_render(scene, &ro, &image, &stats, &err);
+    glint_scene_free(scene);
+    if (st)
+        return complain(exit_code_of(st), "%s", err.message);
+    st = glint_image_write(&image, o->output, &err);
+    glint_image_free(&image);
+    if (st)
+        return complain(exit_code_of(st), "%s", err.message);
+    if (!o->quiet) {
+        long threads = o->threads > 0 ? (long)o->threads : sysconf(_SC_NPROCESSORS_ONLN);
+        fprintf(stderr, "glint: %dx%d, %d spp, %ld threads: %.3f s, %llu samples, %llu rays, %.1f Mrays/s -> %s\n",
+                settings.width, settings.height, settings.samples_per_pixel, threads, stats.seconds,
+                (unsigned long long)stats.samples, (unsigned long long)stats.rays,
+                stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, o->output);
+    }
+    return EXIT_OK;
+}
+
+int main(int argc, char **argv)
+{
+    options o = {.output = "glint.png", .width = -1, .height = -1, .spp = -1, .depth = -1,
+                 .threads = -1, .seed = -1, .sampler = -1};
+    int code = parse_args(argc, argv, &o);
+    if (code >= 0)
+        return code;
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
+    return run(&o);
+}

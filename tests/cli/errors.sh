@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# Command-line errors: each bad flag, value, output path or texture gives its
+# one-line message on stderr, its exit code, and leaves no file behind.
+# Usage: errors.sh PATH/TO/glint
+set -u
+GLINT=$1
+work=$(mktemp -d)
+trap 'chmod -R u+w "$work"; rm -rf "$work"' EXIT
+cd "$work"
+passed=0
+failed=0
+
+# expect CODE MESSAGE -- ARGS...: runs glint ARGS, checks exit code and stderr.
+expect() {
+    local code=$1 message=$2
+    shift 3
+    local out err status
+    err=$("$GLINT" "$@" 2>&1 >/dev/null)
+    status=$?
+    if [ "$status" -ne "$code" ] || [ "$err" != "$message" ]; then
+        echo "FAIL: glint $*"
+        echo "  expected exit $code: $message"
+        echo "  got      exit $status: $err"
+        failed=$((failed + 1))
+    else
+        passed=$((passed + 1))
+    fi
+    if [ -n "$(ls -A "$work" | grep -v '^ro$' | grep -v '^old.png$' | grep -v '^not-an-image.jpg$')" ]; then
+        echo "FAIL: glint $* left files: $(ls -A "$work")"
+        failed=$((failed + 1))
+    fi
+}
+
+small=(-w 8 -h 8 --spp 1 --quiet)
+expect 2 "glint: unknown option '--frobnicate' (try 'glint --help')" -- --frobnicate
+expect 2 "glint: unexpected argument 'scene.yaml' (try 'glint --help')" -- scene.yaml
+expect 2 "glint: option '--width' needs a value" -- --width
+expect 2 "glint: --width needs a whole number from 1 to 65536, got '-5'" -- -w -5 -o a.png
+expect 2 "glint: --width needs a whole number from 1 to 65536, got '0'" -- --width 0 -o a.png
+expect 2 "glint: --height needs a whole number from 1 to 65536, got 'ten'" -- -h ten -o a.png
+expect 2 "glint: --height needs a whole number from 1 to 65536, got '12px'" -- --height 12px -o a.png
+expect 2 "glint: --spp needs a square number from 1 to 4096 (1, 4, 9, 16, ...), got '0'" -- --spp 0 -o a.png
+expect 2 "glint: --spp needs a square number from 1 to 4096 (1, 4, 9, 16, ...), got '5'" -- --spp 5 -o a.png
+expect 2 "glint: --threads needs a whole number from 1 to 1024, got '0'" -- --threads 0 -o a.png
+expect 2 "glint: --depth needs a whole number from 0 to 64, got '65'" -- --depth 65 -o a.png
+expect 2 "glint: --sampler needs 'regular' or 'jittered', got 'random'" -- --sampler random -o a.png
+expect 2 "glint: --texture needs NAME=FILE, got 'moon'" -- --texture moon -o a.png
+expect 3 "glint: cannot write 'missing/dir/a.png': No such file or directory" -- "${small[@]}" -o missing/dir/a.png
+expect 2 "glint: cannot write 'a.bmp': unknown image format (use .png or .ppm)" -- "${small[@]}" -o a.bmp
+mkdir ro && chmod a-w ro
+if [ "$(id -u)" -ne 0 ]; then
+    expect 3 "glint: cannot write 'ro/a.png': Permission denied" -- "${small[@]}" -o ro/a.png
+fi
+expect 1 "glint: cannot open texture 'nope.jpg': No such file or directory" -- "${small[@]}" --texture moon=nope.jpg -o a.png
+echo "this is not an image" > not-an-image.jpg
+expect 1 "glint: texture 'not-an-image.jpg' is not a PNG or JPEG file" -- "${small[@]}" --texture moon=not-an-image.jpg -o a.png
+expect 1 "glint: no image texture named 'sun'" -- "${small[@]}" --texture sun=not-an-image.jpg -o a.png
+
+# A failed run never touches an existing file.
+printf 'precious' > old.png
+expect 1 "glint: cannot open texture 'nope.jpg': No such file or directory" -- "${small[@]}" --texture moon=nope.jpg -o old.png
+if [ "$(cat old.png)" != "precious" ]; then echo "FAIL: old.png was changed"; failed=$((failed + 1)); fi
+rm -f old.png not-an-image.jpg
+
+# --help and --version succeed and say what they should.
+if "$GLINT" --help | grep -q -- "--spp N" && "$GLINT" --version | grep -Eq '^glint [0-9]+\.[0-9]+\.[0-9]+$'; then
+    passed=$((passed + 1))
+else
+    echo "FAIL: --help or --version"; failed=$((failed + 1))
+fi
+
+# A good run writes exactly the named file, PNG or PPM, and a summary line.
+summary=$("$GLINT" -w 16 -h 12 --spp 1 --threads 2 -o ok.ppm 2>&1 >/dev/null)
+if [ "$(head -c 2 ok.ppm)" = "P6" ] && [ "$(head -2 ok.ppm | tail -1)" = "16 12" ] &&
+   [[ "$summary" =~ ^glint:\ 16x12,\ 1\ spp,\ 2\ threads:\ .*\ s,\ 192\ samples,\ [0-9]+\ rays,\ .*Mrays/s\ -\>\ ok.ppm$ ]]; then
+    passed=$((passed + 1))
+else
+    echo "FAIL: good PPM run: $summary"; failed=$((failed + 1))
+fi
+"$GLINT" -w 16 -h 12 --spp 1 --quiet -o ok.png 2>quiet.err
+if [ "$(head -c 8 ok.png | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] && [ ! -s quiet.err ]; then
+    passed=$((passed + 1))
+else
+    echo "FAIL: good PNG run"; failed=$((failed + 1))
+fi
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
