@@ -224,6 +224,98 @@ static void test_refraction_inverts(void **state)
     glint_scene_free(s);
 }
 
+static void test_transparency_passes_light_straight_through(void **state)
+{
+    /* A transparent sphere (0.8, tint 0.5, red) in front of a flat green
+     * wall: the centre pixel is 0.2 of its own flat colour plus 0.8 of the
+     * wall filtered by (1 - 0.5) + 0.5 * red; the ray is not bent, so the
+     * wall behind is exactly the wall on the axis. */
+    glint_scene *s = new_scene(11, 11, (glint_vec3){0, 0, 10}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 1, 0}, 20);
+    glint_material m = glint_material_default();
+    m.color = (glint_color){1, 0, 0};
+    m.ambient = 1;
+    m.diffuse = 0;
+    m.specular = 0;
+    m.transparency = 0.8;
+    m.tint = 0.5;
+    add_sphere(s, 0, 0, 0, 1, glint_scene_add_material(s, NULL, &m, NULL));
+    add_quad(s, (glint_vec3){-50, -50, -20}, (glint_vec3){50, -50, -20}, (glint_vec3){50, 50, -20},
+             (glint_vec3){-50, 50, -20}, flat(s, 0.2, 1, 0.4));
+    glint_image img = render(s, 1);
+    /* Front surface: 0.2 * red + 0.8 * filter * (what the back surface shows),
+     * and the back surface likewise in front of the wall. */
+    double fr = 1, fg = 0.5, fb = 0.5;
+    double back_r = 0.2 * 1 + 0.8 * fr * 0.2, back_g = 0.8 * fg * 1, back_b = 0.8 * fb * 0.4;
+    assert_near(centre(&img)[0], 0.2 + 0.8 * fr * back_r, 1e-6);
+    assert_near(centre(&img)[1], 0.8 * fg * back_g, 1e-6);
+    assert_near(centre(&img)[2], 0.8 * fb * back_b, 1e-6);
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
+static void test_supersamples_are_four_distinct_points(void **state)
+{
+    /* A white quad covering the quarter x < 0, y > 0 of the view, its corner
+     * on the centre of the middle pixel of a 3x3 image: of a 2x2 grid, one
+     * sample lands on it (the original repeated its first sample, giving 0.5
+     * or 0). Half-covered edge pixels give exactly 0.5. */
+    glint_scene *s = new_scene(3, 3, (glint_vec3){0, 0, 1}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 1, 0}, 90);
+    glint_settings st = glint_scene_get_settings(s);
+    st.samples_per_pixel = 4;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    add_quad(s, (glint_vec3){-10, 0, -1}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 10, -1}, (glint_vec3){-10, 10, -1},
+             flat(s, 1, 1, 1));
+    glint_image img = render(s, 1);
+    assert_near(pixel(&img, 1, 1)[0], 0.25, 1e-7);
+    assert_near(pixel(&img, 0, 1)[0], 0.5, 1e-7);
+    assert_near(pixel(&img, 1, 0)[0], 0.5, 1e-7);
+    assert_near(pixel(&img, 0, 0)[0], 1, 1e-7);
+    assert_near(pixel(&img, 2, 2)[0], 0, 0);
+    /* 3x3 samples: 4 of 9 fall on the quad in the middle pixel, two of
+     * them exactly on its edges, which count as inside. */
+    st.samples_per_pixel = 9;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_image_free(&img);
+    img = render(s, 1);
+    assert_near(pixel(&img, 1, 1)[0], 4.0 / 9, 1e-7);
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
+static void test_fresnel_reflects_more_at_grazing_angles(void **state)
+{
+    /* A glass floor with Fresnel over a red ground far below, under a blue
+     * sky of flat quads: looking straight down shows mostly the refracted
+     * red; looking along the floor shows mostly the reflected blue. */
+    glint_material glass = glint_material_default();
+    glass.color = (glint_color){0, 0, 0};
+    glass.ambient = 0;
+    glass.specular = 0;
+    glass.refraction = 1;
+    glass.ior = 1.5;
+    glass.tint = 0;
+    glass.fresnel = true;
+    glint_vec3 eyes[2] = {{0, 5, 0.001}, {0, 0.05, 5}};
+    double blue[2];
+    for (int k = 0; k < 2; k++) {
+        glint_scene *s = new_scene(1, 1, eyes[k], (glint_vec3){0, 0, 0}, (glint_vec3){0, 1, 0}, 1);
+        glint_shape plane = {.kind = GLINT_SHAPE_PLANE, .center = {0, 0, 0}, .normal = {0, 1, 0}};
+        assert_true(glint_scene_add_shape(s, &plane, glint_scene_add_material(s, NULL, &glass, NULL), NULL, NULL) >= 0);
+        glint_shape ground = {.kind = GLINT_SHAPE_PLANE, .center = {0, -100, 0}, .normal = {0, 1, 0}};
+        glint_shape sky = {.kind = GLINT_SHAPE_PLANE, .center = {0, 1000, 0}, .normal = {0, -1, 0}};
+        assert_true(glint_scene_add_shape(s, &ground, flat(s, 1, 0, 0), NULL, NULL) >= 0);
+        assert_true(glint_scene_add_shape(s, &sky, flat(s, 0, 0, 1), NULL, NULL) >= 0);
+        glint_image img = render(s, 1);
+        blue[k] = img.pixels[2];
+        /* Energy is split, never lost or created. */
+        assert_near(img.pixels[0] + img.pixels[2], 1, 1e-6);
+        glint_image_free(&img);
+        glint_scene_free(s);
+    }
+    assert_near(blue[0], 0.04, 1e-4);   /* ((1.5 - 1) / (1.5 + 1))^2 */
+    assert_true(blue[1] > 0.9);
+}
+
 static void test_identical_bytes_for_any_thread_count(void **state)
 {
     glint_error err;
@@ -265,6 +357,9 @@ int main(void)
         cmocka_unit_test(test_tinted_shadows_multiply),
         cmocka_unit_test(test_mirror_shows_facing_wall),
         cmocka_unit_test(test_refraction_inverts),
+        cmocka_unit_test(test_transparency_passes_light_straight_through),
+        cmocka_unit_test(test_supersamples_are_four_distinct_points),
+        cmocka_unit_test(test_fresnel_reflects_more_at_grazing_angles),
         cmocka_unit_test(test_identical_bytes_for_any_thread_count),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
