@@ -271,8 +271,8 @@ static int run(const options *o)
         return complain(exit_code_of(st), "%s", err.message);
     if (!o->quiet) {
         long threads = o->threads > 0 ? (long)o->threads : sysconf(_SC_NPROCESSORS_ONLN);
-        fprintf(stderr, "glint: %dx%d, %d spp, %ld threads: %.3f s, %llu samples, %llu rays, %.1f Mrays/s -> %s\n",
-                settings.width, settings.height, settings.samples_per_pixel, threads, stats.seconds,
+        fprintf(stderr, "glint: %dx%d, %d spp, %ld thread%s: %.3f s, %llu samples, %llu rays, %.1f Mrays/s -> %s\n",
+                settings.width, settings.height, settings.samples_per_pixel, threads, threads == 1 ? "" : "s", stats.seconds,
                 (unsigned long long)stats.samples, (unsigned long long)stats.rays,
                 stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, o->output);
     }

@@ -84,5 +84,17 @@ else
     echo "FAIL: good PNG run"; failed=$((failed + 1))
 fi
 
+# On a terminal, a progress line (percent, elapsed, remaining) comes before
+# the summary; off a terminal there is none.
+if command -v script >/dev/null; then
+    tty_out=$(script -qec "'$GLINT' -w 200 -h 200 --spp 16 --threads 1 -o tty.png" /dev/null | tr '\r' '\n')
+    if grep -Eq '^ *[0-9]+%  [0-9.]+ s elapsed, [0-9.]+ s left' <<<"$tty_out" && grep -q 'glint: 200x200, 16 spp, 1 thread:' <<<"$tty_out" &&
+       ! grep -q 'elapsed' <<<"$summary"; then
+        passed=$((passed + 1))
+    else
+        echo "FAIL: progress line on a terminal: $tty_out"; failed=$((failed + 1))
+    fi
+fi
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
