@@ -56,13 +56,23 @@ static double across(const glint_shape *d, vec3 p, vec3 a)
     return 0.5 + v3_dot(v3_sub(p, mid), a) / v3_dot(size, v3(fabs(a.x), fabs(a.y), fabs(a.z)));
 }
 
-void box_surface(const shape *s, int part, surface *out)
+/* The outward normal of face `part`: parts 1..6 are -x, +x, -y, +y, -z, +z. */
+static vec3 face_normal(int part)
 {
     int axis = (part - 1) / 2;
     double sign = (part - 1) % 2 ? 1.0 : -1.0;
-    vec3 n = v3(axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0), u, v;
-    plane_basis(n, &u, &v);
-    out->n = n;
+    return v3(axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0);
+}
+
+void box_surface(const shape *s, int part, surface *out)
+{
+    out->n = face_normal(part);
+}
+
+void box_uv(const shape *s, int part, surface *out)
+{
+    vec3 u, v;
+    plane_basis(face_normal(part), &u, &v);
     out->u = across(&s->desc, out->p_obj, u);
     out->v = across(&s->desc, out->p_obj, v);
 }

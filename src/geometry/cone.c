@@ -67,13 +67,22 @@ void cone_surface(const shape *s, int part, surface *out)
     vec3 l = v3_sub(out->p_obj, d->center);
     if (part == 1) {
         out->n = v3(0, -1, 0);
-        disc_uv(l, d->radius, out);
         return;
     }
     /* grad F = 2 (x, k^2 (h - y), z), and on the surface k (h - y) = r, so
      * it is parallel to (x / r, k, z / r). The apex has no gradient. */
     double r = sqrt(l.x * l.x + l.z * l.z);
     out->n = r > 0 ? v3(l.x / r, d->radius / d->height, l.z / r) : v3(0, 1, 0);
+}
+
+void cone_uv(const shape *s, int part, surface *out)
+{
+    const glint_shape *d = &s->desc;
+    vec3 l = v3_sub(out->p_obj, d->center);
+    if (part == 1) {
+        disc_uv(l, d->radius, out);
+        return;
+    }
     out->u = polar_u(l.x, l.z);
     out->v = l.y / d->height;
 }

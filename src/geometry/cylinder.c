@@ -55,13 +55,18 @@ void cylinder_surface(const shape *s, int part, surface *out)
 {
     const glint_shape *d = &s->desc;
     vec3 l = v3_sub(out->p_obj, d->center);
+    out->n = part == 0 ? v3(l.x / d->radius, 0, l.z / d->radius) : v3(0, part == 1 ? -1 : 1, 0);
+}
+
+void cylinder_uv(const shape *s, int part, surface *out)
+{
+    const glint_shape *d = &s->desc;
+    vec3 l = v3_sub(out->p_obj, d->center);
     if (part == 0) {
-        out->n = v3(l.x / d->radius, 0, l.z / d->radius);
         out->u = polar_u(l.x, l.z);
         out->v = l.y / d->height;
         return;
     }
-    out->n = v3(0, part == 1 ? -1 : 1, 0);
     disc_uv(l, d->radius, out);
 }
 

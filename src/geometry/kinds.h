@@ -6,8 +6,10 @@
  *   <kind>_init       checks s->desc (already copied in) and fills the
  *                     fields derived from it;
  *   <kind>_intersect  shape_intersect for a ray already in object space;
- *   <kind>_surface    fills out->n (object-space normal, any length), out->u
- *                     and out->v from out->p_obj and the hit's part;
+ *   <kind>_surface    fills out->n (object-space normal, any length) from
+ *                     out->p_obj and the hit's part;
+ *   <kind>_uv         fills out->u and out->v likewise, only when a texture
+ *                     asks for them (atan2 and asin are not free);
  *   <kind>_bounds     object-space bounds (planes have none: unbounded). */
 #ifndef GLINT_GEOMETRY_KINDS_H
 #define GLINT_GEOMETRY_KINDS_H
@@ -20,30 +22,36 @@
 glint_status sphere_init(shape *s, glint_error *err);
 bool sphere_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
 void sphere_surface(const shape *s, int part, surface *out);
+void sphere_uv(const shape *s, int part, surface *out);
 void sphere_bounds(const shape *s, vec3 *lo, vec3 *hi);
 
 glint_status plane_init(shape *s, glint_error *err);
 bool plane_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
 void plane_surface(const shape *s, int part, surface *out);
+void plane_uv(const shape *s, int part, surface *out);
 
 glint_status polygon_init(shape *s, glint_error *err);
 bool polygon_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
 void polygon_surface(const shape *s, int part, surface *out);
+void polygon_uv(const shape *s, int part, surface *out);
 void polygon_bounds(const shape *s, vec3 *lo, vec3 *hi);
 
 glint_status box_init(shape *s, glint_error *err);
 bool box_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
 void box_surface(const shape *s, int part, surface *out);
+void box_uv(const shape *s, int part, surface *out);
 void box_bounds(const shape *s, vec3 *lo, vec3 *hi);
 
 glint_status cylinder_init(shape *s, glint_error *err);
 bool cylinder_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
 void cylinder_surface(const shape *s, int part, surface *out);
+void cylinder_uv(const shape *s, int part, surface *out);
 void cylinder_bounds(const shape *s, vec3 *lo, vec3 *hi);
 
 glint_status cone_init(shape *s, glint_error *err);
 bool cone_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
 void cone_surface(const shape *s, int part, surface *out);
+void cone_uv(const shape *s, int part, surface *out);
 void cone_bounds(const shape *s, vec3 *lo, vec3 *hi);
 
 /* Where r crosses the plane through point with normal n, when that is in

@@ -50,8 +50,12 @@ bool plane_intersect(const shape *s, const ray *r, double tmin, double tmax, sha
 /* u and v are distances from the plane's point along plane_u and plane_v. */
 void plane_surface(const shape *s, int part, surface *out)
 {
-    vec3 q = v3_sub(out->p_obj, s->desc.center);
     out->n = s->desc.normal;
+}
+
+void plane_uv(const shape *s, int part, surface *out)
+{
+    vec3 q = v3_sub(out->p_obj, s->desc.center);
     out->u = v3_dot(q, s->plane_u);
     out->v = v3_dot(q, s->plane_v);
 }

@@ -79,13 +79,17 @@ bool polygon_intersect(const shape *s, const ray *r, double tmin, double tmax, s
  * points 1 and 2. */
 void polygon_surface(const shape *s, int part, surface *out)
 {
+    out->n = s->poly_normal;
+}
+
+void polygon_uv(const shape *s, int part, surface *out)
+{
     const glint_shape *d = &s->desc;
     vec3 n = s->poly_normal, p0 = d->points[0];
     vec3 e1 = v3_sub(d->points[1], p0), e2 = v3_sub(d->points[d->point_count - 1], p0);
     vec3 q = v3_sub(out->p_obj, p0);
     /* Cramer's rule for q = u e1 + v e2 within the plane. */
     double det = v3_dot(v3_cross(e1, e2), n);
-    out->n = n;
     out->u = v3_dot(v3_cross(q, e2), n) / det;
     out->v = v3_dot(v3_cross(e1, q), n) / det;
 }

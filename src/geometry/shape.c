@@ -7,16 +7,17 @@ typedef struct kind_ops {
     glint_status (*init)(shape *s, glint_error *err);
     bool (*intersect)(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
     void (*surface)(const shape *s, int part, surface *out);
+    void (*uv)(const shape *s, int part, surface *out);
     void (*bounds)(const shape *s, vec3 *lo, vec3 *hi);
 } kind_ops;
 
 static const kind_ops KINDS[] = {
-    [GLINT_SHAPE_SPHERE] = {sphere_init, sphere_intersect, sphere_surface, sphere_bounds},
-    [GLINT_SHAPE_PLANE] = {plane_init, plane_intersect, plane_surface, NULL},
-    [GLINT_SHAPE_POLYGON] = {polygon_init, polygon_intersect, polygon_surface, polygon_bounds},
-    [GLINT_SHAPE_BOX] = {box_init, box_intersect, box_surface, box_bounds},
-    [GLINT_SHAPE_CYLINDER] = {cylinder_init, cylinder_intersect, cylinder_surface, cylinder_bounds},
-    [GLINT_SHAPE_CONE] = {cone_init, cone_intersect, cone_surface, cone_bounds},
+    [GLINT_SHAPE_SPHERE] = {sphere_init, sphere_intersect, sphere_surface, sphere_uv, sphere_bounds},
+    [GLINT_SHAPE_PLANE] = {plane_init, plane_intersect, plane_surface, plane_uv, NULL},
+    [GLINT_SHAPE_POLYGON] = {polygon_init, polygon_intersect, polygon_surface, polygon_uv, polygon_bounds},
+    [GLINT_SHAPE_BOX] = {box_init, box_intersect, box_surface, box_uv, box_bounds},
+    [GLINT_SHAPE_CYLINDER] = {cylinder_init, cylinder_intersect, cylinder_surface, cylinder_uv, cylinder_bounds},
+    [GLINT_SHAPE_CONE] = {cone_init, cone_intersect, cone_surface, cone_uv, cone_bounds},
 };
 
 glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform *to_world,
@@ -56,10 +57,17 @@ void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *
     ray o = object_ray(s, r);
     out->p = ray_at(r, hit->t);
     out->p_obj = ray_at(&o, hit->t);
+    out->part = hit->part;
+    out->u = out->v = 0;
     KINDS[s->desc.kind].surface(s, hit->part, out);
     if (s->has_transform)
         out->n = xf_normal(&s->to_object, out->n);
     out->n = v3_normalize(out->n);
+}
+
+void shape_surface_uv(const shape *s, surface *out)
+{
+    KINDS[s->desc.kind].uv(s, out->part, out);
 }
 
 void shape_bounds(const shape *s, vec3 *lo, vec3 *hi)

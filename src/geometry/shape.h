@@ -36,7 +36,9 @@ typedef struct surface {
     vec3 n;         /* world unit normal, pointing out of the shape (for planes and
                        polygons: the side given by the normal or point order) */
     vec3 p_obj;     /* object-space position, for texture mappings */
-    double u, v;    /* the shape's own texture coordinates */
+    int part;       /* as in shape_hit */
+    double u, v;    /* the shape's own texture coordinates, once shape_surface_uv
+                       has filled them */
 } surface;
 
 /* Fills *s from desc and transform (NULL: identity) after checking every
@@ -51,8 +53,12 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
  * starts inside a closed shape finds the surface on its way out. */
 bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
 
-/* Describes the surface at hit on world ray r. */
+/* Describes the surface at hit on world ray r, all but u and v. */
 void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *out);
+
+/* Fills out->u and out->v, the shape's own texture coordinates, for a
+ * surface filled by shape_surface. */
+void shape_surface_uv(const shape *s, surface *out);
 
 /* World-space axis-aligned bounds. */
 void shape_bounds(const shape *s, vec3 *lo, vec3 *hi);

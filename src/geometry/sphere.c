@@ -25,8 +25,12 @@ bool sphere_intersect(const shape *s, const ray *r, double tmin, double tmax, sh
  * (+y) pole to 1 at the south pole. */
 void sphere_surface(const shape *s, int part, surface *out)
 {
+    out->n = v3_sub(out->p_obj, s->desc.center);
+}
+
+void sphere_uv(const shape *s, int part, surface *out)
+{
     vec3 n = v3_normalize(v3_sub(out->p_obj, s->desc.center));
-    out->n = n;
     out->u = polar_u(n.x, n.z);
     /* Rounding can push |n.y| a hair past 1, where asin is NaN. */
     out->v = 0.5 - asin(fmax(-1.0, fmin(1.0, n.y))) / M_PI;

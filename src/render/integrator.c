@@ -14,9 +14,14 @@ static vec3 offset_point(vec3 p, vec3 n)
     return v3_madd(p, n, 1e-7 * scale);
 }
 
-static color surface_color(const glint_scene *scene, const glint_material *m, const surface *s)
+static color surface_color(const glint_scene *scene, const shape *sh, const glint_material *m, surface *s)
 {
-    return m->texture >= 0 ? texture_eval(&scene->textures[m->texture], s) : m->color;
+    if (m->texture < 0)
+        return m->color;
+    const texture *t = &scene->textures[m->texture];
+    if (t->mapping.kind == GLINT_MAP_UV)
+        shape_surface_uv(sh, s);
+    return texture_eval(t, s);
 }
 
 /* What one surface crossing passes to a shadow ray. A closed shape filters
@@ -33,7 +38,7 @@ static color shadow_filter(void *user, int index, const ray *r, const shape_hit 
     shape_surface(sh, r, hit, &s);
     if (shape_is_closed(sh) && v3_dot(r->d, s.n) > 0)
         return rgb(1, 1, 1);
-    return rgb_scale(material_filter(m, surface_color(scene, m, &s)), amount);
+    return rgb_scale(material_filter(m, surface_color(scene, sh, m, &s)), amount);
 }
 
 static color direct_light(tracer *t, const glint_material *m, color base, vec3 p, vec3 n, vec3 to_eye)
@@ -77,7 +82,7 @@ color tracer_trace(tracer *t, const ray *r, int depth)
     shape_surface(sh, r, &hit, &s);
     bool front = v3_dot(r->d, s.n) < 0;
     vec3 n = front ? s.n : v3_neg(s.n);
-    color base = surface_color(scene, m, &s);
+    color base = surface_color(scene, sh, m, &s);
     double transmitted = m->transparency + m->refraction;
     color out = rgb_scale(direct_light(t, m, base, s.p, n, v3_neg(r->d)), 1 - transmitted);
 

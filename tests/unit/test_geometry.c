@@ -65,6 +65,7 @@ static surface hit_at(const char *file, int line, const shape *s, ray r, double 
         _fail(file, line);
     }
     shape_surface(s, &r, &h, &sf);
+    shape_surface_uv(s, &sf);
     vnear_at(file, line, sf.p, p);
     vnear_at(file, line, sf.n, n);
     return sf;
@@ -234,11 +235,13 @@ static void test_sphere_uv(void **state)
     ray r = R(v3(1.02, 2, -10), v3(0, 0, 1));
     assert_true(shape_intersect(&s, &r, 0, INFINITY, &h));
     shape_surface(&s, &r, &h, &sf);
+    shape_surface_uv(&s, &sf);
     NEAR(sf.u, 1 - asin(0.01) / (2 * M_PI));
     NEAR(sf.v, 0.5);
     r = R(v3(0.98, 2, -10), v3(0, 0, 1));
     assert_true(shape_intersect(&s, &r, 0, INFINITY, &h));
     shape_surface(&s, &r, &h, &sf);
+    shape_surface_uv(&s, &sf);
     NEAR(sf.u, asin(0.01) / (2 * M_PI));
 }
 
@@ -443,6 +446,7 @@ static void test_box_touching(void **state)
     assert_true(shape_intersect(&s, &edge, 0, INFINITY, &h));
     NEAR(h.t, 1);
     shape_surface(&s, &edge, &h, &sf);
+    shape_surface_uv(&s, &sf);
     VNEAR(sf.p, v3(1, 2, 0));
     MISS(s, R(v3(0, 3 + 1e-9, 0), v3(1, -1, 0)));
     /* Through the corner (-1, -2, -3) diagonally: every slab starts at t = 1. */
@@ -470,6 +474,7 @@ static void test_box_uv(void **state)
         assert_true(shape_intersect(&s, &r, 0, INFINITY, &h));
         assert_int_equal(h.part, i + 1);
         shape_surface(&s, &r, &h, &sf);
+        shape_surface_uv(&s, &sf);
         NEAR(sf.u, faces[i].u);
         NEAR(sf.v, faces[i].v);
     }
@@ -540,11 +545,13 @@ static void test_cylinder_rims(void **state)
         assert_true(shape_intersect(&s, &top, 0, INFINITY, &h));
         NEAR(h.t, 1);
         shape_surface(&s, &top, &h, &sf);
+        shape_surface_uv(&s, &sf);
         VNEAR(sf.p, v3(1, 1, 0));
         ray bottom = R(v3(-2, -2, 0), v3(1, 1, 0));
         assert_true(shape_intersect(&s, &bottom, 0, INFINITY, &h));
         NEAR(h.t, 1);
         shape_surface(&s, &bottom, &h, &sf);
+        shape_surface_uv(&s, &sf);
         VNEAR(sf.p, v3(-1, -1, 0));
         /* In the plane of the top cap, tangent to the rim circle. */
         HIT(s, R(v3(1, 1, -5), v3(0, 0, 1)), 5, 0, v3(1, 1, 0), v3(1, 0, 0));
@@ -660,6 +667,7 @@ static void test_cone_rim(void **state)
         assert_true(shape_intersect(&s, &r, 0, INFINITY, &h));
         NEAR(h.t, 1);
         shape_surface(&s, &r, &h, &sf);
+        shape_surface_uv(&s, &sf);
         VNEAR(sf.p, v3(1, 0, 0));
     }
 }
