@@ -63,7 +63,8 @@ glint_transform glint_transform_identity(void);
  *   t = glint_transform_scale(glint_transform_identity(), 2, 2, 2);
  *   t = glint_transform_translate(t, 0, 1, 0);   -- scale first, then move */
 glint_transform glint_transform_translate(glint_transform t, double x, double y, double z);
-/* Rotates by `degrees` about `axis` (any non-zero vector; right-handed). */
+/* Rotates by `degrees` about `axis` (right-handed). A zero or non-finite
+ * axis gives a non-finite transform, which glint_scene_add_shape refuses. */
 glint_transform glint_transform_rotate(glint_transform t, glint_vec3 axis, double degrees);
 /* Scales by (x, y, z) about the origin. */
 glint_transform glint_transform_scale(glint_transform t, double x, double y, double z);
@@ -142,24 +143,30 @@ typedef struct glint_fog {
     double density;            /* exponential: > 0 */
 } glint_fog;
 
-/* Replaces the scene's fog after checking it. */
+/* Replaces the scene's fog after checking it. A ray that hits nothing is
+ * fogged as if infinitely long, so with fog it shows the fog colour rather
+ * than the background. */
 glint_status glint_scene_set_fog(glint_scene *scene, const glint_fog *fog, glint_error *err);
+
+/* Returns the scene's current fog. */
+glint_fog glint_scene_get_fog(const glint_scene *scene);
 
 /* ---------------------------------------------------------------- textures */
 
-/* How a surface point becomes texture coordinates (u, v). Mappings work in
- * the object's own coordinates (before its transform). */
+/* How a surface point becomes texture coordinates (u, v). Mappings work on
+ * p = (object-space point - center), in the object's own coordinates (before
+ * its transform), so a texture moves with its object. */
 typedef enum glint_mapping_kind {
     GLINT_MAP_UV = 0,     /* the shape's own (u, v) */
-    GLINT_MAP_PLANAR,     /* u = p.u_axis / scale, v = p.v_axis / scale */
-    GLINT_MAP_SPHERICAL,  /* d = unit(p - centre): u = 0.5 + atan2(dx, dz)/2pi, v = 0.5 - asin(dy)/pi */
-    GLINT_MAP_CYLINDRICAL /* about the y axis through centre: u = 0.5 + atan2(dx, dz)/2pi, v = (p.y - centre.y) / scale */
+    GLINT_MAP_PLANAR,     /* u = p.unit(u_axis) / scale, v = p.unit(v_axis) / scale */
+    GLINT_MAP_SPHERICAL,  /* d = unit(p): u = 0.5 + atan2(d.x, d.z)/2pi, v = 0.5 - asin(d.y)/pi */
+    GLINT_MAP_CYLINDRICAL /* about the y axis: u = 0.5 + atan2(p.x, p.z)/2pi, v = p.y / scale */
 } glint_mapping_kind;
 
 typedef struct glint_mapping {
     glint_mapping_kind kind;
-    glint_vec3 centre;           /* spherical, cylindrical */
-    glint_vec3 u_axis, v_axis;   /* planar; zero vectors mean x and z */
+    glint_vec3 center;           /* origin of p */
+    glint_vec3 u_axis, v_axis;   /* planar; both zero means x and z */
     double scale;                /* planar, cylindrical; 0 means 1 */
 } glint_mapping;
 
@@ -224,7 +231,8 @@ int glint_scene_add_material(glint_scene *scene, const char *name, const glint_m
 typedef enum glint_shape_kind {
     GLINT_SHAPE_SPHERE = 0,
     GLINT_SHAPE_PLANE,      /* infinite (to +-1e6 units) plane through point with normal */
-    GLINT_SHAPE_POLYGON,    /* convex planar triangle or quad, points anticlockwise about the normal */
+    GLINT_SHAPE_POLYGON,    /* convex planar triangle or quad; its front faces the side from
+                               which the points run anticlockwise */
     GLINT_SHAPE_BOX,        /* axis-aligned box between min and max */
     GLINT_SHAPE_CYLINDER,   /* about +y from centre of base, radius, height, optional caps */
     GLINT_SHAPE_CONE        /* apex above the centre of base at height; optional base cap */
@@ -287,7 +295,9 @@ typedef struct glint_render_stats {
     uint64_t rays;            /* camera, reflected, refracted, transmitted and shadow rays */
 } glint_render_stats;
 
-/* Called by one thread of the render as tiles finish. */
+/* Called after every finished tile with the count finished so far, from
+ * whichever render thread finished it, one call at a time and in order;
+ * the last call reports tiles_done == tiles_total. */
 typedef void (*glint_progress_fn)(void *user, int tiles_done, int tiles_total);
 
 typedef struct glint_render_options {

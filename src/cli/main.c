@@ -58,6 +58,9 @@ static const char USAGE[] =
     "The image is written under a temporary name and renamed into place, so a failed\n"
     "or interrupted run never leaves a partial file or destroys an existing one.\n";
 
+/* The render's cancel flag is a volatile int; on the platforms glint runs
+ * on, sig_atomic_t is that int. */
+_Static_assert(sizeof(sig_atomic_t) == sizeof(int), "sig_atomic_t must be an int");
 static volatile sig_atomic_t interrupted;
 
 static void on_signal(int sig)

@@ -33,7 +33,14 @@ glint_transform glint_transform_translate(glint_transform t, double x, double y,
 
 glint_transform glint_transform_rotate(glint_transform t, glint_vec3 axis, double degrees)
 {
-    vec3 a = v3_normalize(axis);
+    double len = v3_length(axis);
+    if (!(len > 0 && isfinite(len))) {
+        for (int i = 0; i < 3; i++)
+            for (int j = 0; j < 4; j++)
+                t.m[i][j] = NAN;
+        return t;
+    }
+    vec3 a = v3_scale(axis, 1.0 / len);
     double th = degrees * (M_PI / 180.0), c = cos(th), s = sin(th), k = 1.0 - c;
     transform r = glint_transform_identity();
     /* Rodrigues' rotation matrix. */

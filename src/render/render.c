@@ -20,12 +20,13 @@ typedef struct job {
     const glint_render_options *opts;
     float *pixels;
     int tiles_x, tiles_total, tile_size, grid;
-    atomic_int next_tile, tiles_done;
+    atomic_int next_tile;
+    int tiles_done;               /* under progress_lock */
+    pthread_mutex_t progress_lock;
 } job;
 
 typedef struct worker {
     job *job;
-    int index;
     pthread_t thread;
     uint64_t rays;
 } worker;
@@ -77,9 +78,12 @@ static void *worker_run(void *arg)
         if (j->opts->cancel && *j->opts->cancel)
             break;
         render_tile(&t, j, tile);
-        int done = atomic_fetch_add(&j->tiles_done, 1) + 1;
-        if (w->index == 0 && j->opts->progress)
-            j->opts->progress(j->opts->progress_user, done, j->tiles_total);
+        if (j->opts->progress) {
+            /* The lock keeps the calls one at a time and their counts in order. */
+            pthread_mutex_lock(&j->progress_lock);
+            j->opts->progress(j->opts->progress_user, ++j->tiles_done, j->tiles_total);
+            pthread_mutex_unlock(&j->progress_lock);
+        }
     }
     w->rays = t.rays;
     return NULL;
@@ -105,10 +109,8 @@ static glint_status run_workers(job *j, int count, uint64_t *rays, glint_error *
     if (!ws)
         return error_set(err, GLINT_ERR_NOMEM, "out of memory starting threads");
     int started = 1;
-    for (int i = 0; i < count; i++) {
+    for (int i = 0; i < count; i++)
         ws[i].job = j;
-        ws[i].index = i;
-    }
     for (; started < count; started++)
         if (pthread_create(&ws[started].thread, NULL, worker_run, &ws[started]) != 0)
             break;
@@ -155,13 +157,14 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
     j.tiles_x = (s->width + j.tile_size - 1) / j.tile_size;
     j.tiles_total = j.tiles_x * ((s->height + j.tile_size - 1) / j.tile_size);
     atomic_init(&j.next_tile, 0);
-    atomic_init(&j.tiles_done, 0);
+    pthread_mutex_init(&j.progress_lock, NULL);
     int threads = o->threads ? o->threads : default_threads();
     if (threads > j.tiles_total)
         threads = j.tiles_total;
 
     uint64_t rays = 0;
     st = run_workers(&j, threads, &rays, err);
+    pthread_mutex_destroy(&j.progress_lock);
     accel_free(acc);
     if (!st && o->cancel && *o->cancel)
         st = error_set(err, GLINT_ERR_CANCELLED, "render cancelled");

@@ -129,6 +129,11 @@ glint_camera glint_scene_get_camera(const glint_scene *scene)
     return scene->camera;
 }
 
+glint_fog glint_scene_get_fog(const glint_scene *scene)
+{
+    return scene->fog;
+}
+
 glint_status glint_scene_set_fog(glint_scene *scene, const glint_fog *fog, glint_error *err)
 {
     glint_status s = fog_validate(fog, err);

@@ -10,7 +10,7 @@ glint_status mapping_validate(const glint_mapping *m, glint_error *err)
 {
     if (m->kind < GLINT_MAP_UV || m->kind > GLINT_MAP_CYLINDRICAL)
         return error_set(err, GLINT_ERR_INVALID, "unknown texture mapping %d", (int)m->kind);
-    if (!v3_is_finite(m->centre) || !v3_is_finite(m->u_axis) || !v3_is_finite(m->v_axis) ||
+    if (!v3_is_finite(m->center) || !v3_is_finite(m->u_axis) || !v3_is_finite(m->v_axis) ||
         !isfinite(m->scale))
         return error_set(err, GLINT_ERR_INVALID, "texture mapping values must be finite");
     if (m->scale < 0)
@@ -37,7 +37,7 @@ static void angles_of(vec3 d, double *u, double *v)
 void mapping_apply(const glint_mapping *m, const surface *s, double *u, double *v)
 {
     double scale = m->scale > 0 ? m->scale : 1.0;
-    vec3 d = v3_sub(s->p_obj, m->centre);
+    vec3 d = v3_sub(s->p_obj, m->center);
     switch (m->kind) {
     case GLINT_MAP_UV:
         *u = s->u;
@@ -45,11 +45,11 @@ void mapping_apply(const glint_mapping *m, const surface *s, double *u, double *
         return;
     case GLINT_MAP_PLANAR:
         if (v3_length(m->u_axis) == 0) {
-            *u = s->p_obj.x / scale;
-            *v = s->p_obj.z / scale;
+            *u = d.x / scale;
+            *v = d.z / scale;
         } else {
-            *u = v3_dot(s->p_obj, v3_normalize(m->u_axis)) / scale;
-            *v = v3_dot(s->p_obj, v3_normalize(m->v_axis)) / scale;
+            *u = v3_dot(d, v3_normalize(m->u_axis)) / scale;
+            *v = v3_dot(d, v3_normalize(m->v_axis)) / scale;
         }
         return;
     case GLINT_MAP_SPHERICAL:

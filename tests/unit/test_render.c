@@ -349,6 +349,66 @@ static void test_identical_bytes_for_any_thread_count(void **state)
     glint_scene_free(s);
 }
 
+typedef struct progress_log {
+    int calls, last, total;
+    bool in_order;
+} progress_log;
+
+static void log_progress(void *user, int done, int total)
+{
+    progress_log *p = user;
+    p->in_order = p->in_order && done == p->last + 1;
+    p->last = done;
+    p->total = total;
+    p->calls++;
+}
+
+static void test_progress_reports_every_tile_in_order(void **state)
+{
+    glint_scene *s = new_scene(100, 70, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 30);
+    add_sphere(s, 0, 0, -10, 1, flat(s, 1, 1, 1));
+    progress_log log = {.in_order = true};
+    glint_render_options o = {.threads = 4, .tile_size = 10, .progress = log_progress, .progress_user = &log};
+    glint_image img;
+    assert_int_equal(glint_render(s, &o, &img, NULL, NULL), GLINT_OK);
+    assert_int_equal(log.total, 70);
+    assert_int_equal(log.calls, 70);
+    assert_int_equal(log.last, 70);
+    assert_true(log.in_order);
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
+static void test_cancel_flag_stops_the_render(void **state)
+{
+    glint_scene *s = new_scene(64, 64, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 30);
+    volatile int cancel = 1;
+    glint_render_options o = {.threads = 2, .cancel = &cancel};
+    glint_image img;
+    glint_error err;
+    assert_int_equal(glint_render(s, &o, &img, NULL, &err), GLINT_ERR_CANCELLED);
+    assert_string_equal(err.message, "render cancelled");
+    assert_null(img.pixels);
+    glint_scene_free(s);
+}
+
+static void test_bad_transforms_are_refused(void **state)
+{
+    glint_scene *s = new_scene(8, 8, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 30);
+    int m = flat(s, 1, 1, 1);
+    glint_shape ball = {.kind = GLINT_SHAPE_SPHERE, .radius = 1};
+    glint_error err;
+    glint_transform t = glint_transform_rotate(glint_transform_identity(), (glint_vec3){0, 0, 0}, 60);
+    assert_int_equal(glint_scene_add_shape(s, &ball, m, &t, &err), -1);
+    assert_string_equal(err.message, "transform is singular or not finite");
+    t = glint_transform_scale(glint_transform_identity(), 1, 0, 1);
+    assert_int_equal(glint_scene_add_shape(s, &ball, m, &t, &err), -1);
+    assert_string_equal(err.message, "transform is singular or not finite");
+    assert_int_equal(glint_scene_add_shape(s, &ball, 5, NULL, &err), -1);
+    assert_string_equal(err.message, "material 5 does not exist");
+    glint_scene_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -361,6 +421,9 @@ int main(void)
         cmocka_unit_test(test_supersamples_are_four_distinct_points),
         cmocka_unit_test(test_fresnel_reflects_more_at_grazing_angles),
         cmocka_unit_test(test_identical_bytes_for_any_thread_count),
+        cmocka_unit_test(test_progress_reports_every_tile_in_order),
+        cmocka_unit_test(test_cancel_flag_stops_the_render),
+        cmocka_unit_test(test_bad_transforms_are_refused),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
