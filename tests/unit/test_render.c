@@ -192,12 +192,9 @@ static void test_mirror_shows_facing_wall(void **state)
     glint_scene_free(s);
 }
 
-static void test_refraction_inverts(void **state)
+/* Clear glass that shows nothing of its own: all refraction. */
+static glint_material clear_glass(bool fresnel)
 {
-    /* A glass ball in front of a backdrop red above y = 0 and blue below:
-     * through the ball, which focuses well before the backdrop, up and down
-     * swap. */
-    glint_scene *s = new_scene(101, 101, (glint_vec3){0, 0, 10}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 1, 0}, 20);
     glint_material glass = glint_material_default();
     glass.color = (glint_color){0, 0, 0};
     glass.ambient = 0;
@@ -205,6 +202,17 @@ static void test_refraction_inverts(void **state)
     glass.refraction = 1;
     glass.ior = 1.5;
     glass.tint = 0;
+    glass.fresnel = fresnel;
+    return glass;
+}
+
+static void test_refraction_inverts(void **state)
+{
+    /* A glass ball in front of a backdrop red above y = 0 and blue below:
+     * through the ball, which focuses well before the backdrop, up and down
+     * swap. */
+    glint_scene *s = new_scene(101, 101, (glint_vec3){0, 0, 10}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 1, 0}, 20);
+    glint_material glass = clear_glass(false);
     add_sphere(s, 0, 0, 0, 1, glint_scene_add_material(s, NULL, &glass, NULL));
     int red = flat(s, 1, 0, 0), blue = flat(s, 0, 0, 1);
     add_quad(s, (glint_vec3){-50, 0, -20}, (glint_vec3){50, 0, -20}, (glint_vec3){50, 50, -20},
@@ -287,14 +295,7 @@ static void test_fresnel_reflects_more_at_grazing_angles(void **state)
     /* A glass floor with Fresnel over a red ground far below, under a blue
      * sky of flat quads: looking straight down shows mostly the refracted
      * red; looking along the floor shows mostly the reflected blue. */
-    glint_material glass = glint_material_default();
-    glass.color = (glint_color){0, 0, 0};
-    glass.ambient = 0;
-    glass.specular = 0;
-    glass.refraction = 1;
-    glass.ior = 1.5;
-    glass.tint = 0;
-    glass.fresnel = true;
+    glint_material glass = clear_glass(true);
     glint_vec3 eyes[2] = {{0, 5, 0.001}, {0, 0.05, 5}};
     double blue[2];
     for (int k = 0; k < 2; k++) {
