@@ -277,6 +277,44 @@ typedef struct glint_light {
 /* Adds a light; returns its index or -1 and fills err. */
 int glint_scene_add_light(glint_scene *scene, const glint_light *light, glint_error *err);
 
+/* ------------------------------------------------------------ scene files */
+
+/* Called once for each problem found while loading a scene file, with a
+ * one-line message "file:line:column: what is wrong". */
+typedef void (*glint_report_fn)(void *user, const char *message);
+
+typedef struct glint_load_options {
+    glint_report_fn report;   /* NULL: problems are only counted, and err gets the first */
+    void *report_user;
+    int max_errors;           /* stop after this many problems; 0 means 20 */
+} glint_load_options;
+
+/* Loads a YAML scene file (docs/scene-format.md). Returns the scene, or NULL
+ * when the file has any problem: every problem, up to max_errors, goes to
+ * options->report, and err receives the first one. Texture paths and
+ * includes are relative to the file that names them. options may be NULL. */
+glint_scene *glint_scene_load_file(const char *path, const glint_load_options *options, glint_error *err);
+
+/* As glint_scene_load_file, from `size` bytes in memory; `name` stands for
+ * the file in messages, and relative paths resolve against the directory
+ * part of `name`. */
+glint_scene *glint_scene_load_memory(const char *data, size_t size, const char *name,
+                                     const glint_load_options *options, glint_error *err);
+
+/* Sets the output image path a scene file asked for (NULL clears it). */
+glint_status glint_scene_set_output(glint_scene *scene, const char *path, glint_error *err);
+
+/* Returns the output path a scene file asked for, or NULL. */
+const char *glint_scene_get_output(const glint_scene *scene);
+
+/* Counts of what a scene holds, for reports such as `glint --check`. */
+typedef struct glint_scene_counts {
+    int textures, materials, shapes, lights;
+} glint_scene_counts;
+
+/* Returns the counts of what the scene holds. */
+glint_scene_counts glint_scene_get_counts(const glint_scene *scene);
+
 /* --------------------------------------------------------------- rendering */
 
 /* A linear float RGB image: pixels[3 * (y * width + x) + channel], top row first. */

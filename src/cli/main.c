@@ -22,7 +22,9 @@ enum exit_code {
 #define MAX_TEXTURE_SWAPS 16
 
 typedef struct options {
-    const char *output;
+    const char *scene;          /* NULL: the built-in seed room */
+    const char *output;         /* NULL: the scene's, else glint.png */
+    bool check;
     long long width, height, spp, depth, threads, seed; /* -1: the scene's own */
     int sampler;                                        /* -1: the scene's own */
     bool quiet;
@@ -32,28 +34,32 @@ typedef struct options {
 } options;
 
 static const char USAGE[] =
-    "usage: glint [options]\n"
-    "Renders the built-in seed room (the COSC363 scene) to an image.\n"
+    "usage: glint [SCENE.yaml] [options]\n"
+    "Renders a scene file (docs/scene-format.md), or without one the built-in seed\n"
+    "room (the COSC363 scene), to an image. Flags override the file's settings.\n"
     "\n"
     "options:\n"
-    "  -o, --output FILE      image to write, .png (8-bit sRGB) or .ppm (default glint.png)\n"
-    "  -w, --width N          image width in pixels, 1..65536 (default 1000)\n"
-    "  -h, --height N         image height in pixels, 1..65536 (default 1000)\n"
-    "      --spp N            samples per pixel, a square number 1, 4, 9, ... 4096 (default 4)\n"
-    "      --sampler NAME     regular (an N x N grid, default) or jittered (one random\n"
-    "                         point in each cell of the grid)\n"
-    "      --seed N           seed of the jittered sampler, 0..4294967295 (default 0)\n"
-    "      --depth N          reflection and refraction recursion limit, 0..64 (default 5)\n"
+    "  -o, --output FILE      image to write, .png (8-bit sRGB) or .ppm (default: the\n"
+    "                         scene's output setting, else glint.png)\n"
+    "      --check            validate the scene file, report every problem, render nothing\n"
+    "  -w, --width N          image width in pixels, 1..65536\n"
+    "  -h, --height N         image height in pixels, 1..65536\n"
+    "      --spp N            samples per pixel, a square number 1, 4, 9, ... 4096\n"
+    "      --sampler NAME     regular (an N x N grid) or jittered (one random point in\n"
+    "                         each cell of the grid)\n"
+    "      --seed N           seed of the jittered sampler, 0..4294967295\n"
+    "      --depth N          reflection and refraction recursion limit, 0..64\n"
+    "                         (the seed room: 1000 x 1000, 4 samples, regular, depth 5)\n"
     "      --threads N        render threads, 1..1024 (default: one per core); the image\n"
     "                         is the same for any count\n"
     "      --texture NAME=FILE\n"
-    "                         replace the image of texture NAME (the seed room's is 'moon')\n"
-    "                         with a PNG or JPEG file\n"
+    "                         replace the image of the scene's texture NAME (the seed\n"
+    "                         room's is 'moon') with a PNG or JPEG file\n"
     "  -q, --quiet            no progress line and no summary on stderr\n"
     "      --help             show this help and exit\n"
     "      --version          print the version and exit\n"
     "\n"
-    "Exit codes: 0 success, 1 bad input (scene, texture), 2 bad usage, 3 the output\n"
+    "Exit codes: 0 success, 1 bad input (scene file, texture), 2 bad usage, 3 the output\n"
     "cannot be written, 4 interrupted, 5 internal failure (out of memory, Embree).\n"
     "The image is written under a temporary name and renamed into place, so a failed\n"
     "or interrupted run never leaves a partial file or destroys an existing one.\n";
@@ -148,8 +154,16 @@ static int parse_args(int argc, char **argv, options *o)
             o->quiet = true;
             continue;
         }
-        if (a[0] != '-' || a[1] == '\0')
-            return complain(EXIT_USAGE, "unexpected argument '%s' (try 'glint --help')", a);
+        if (strcmp(a, "--check") == 0) {
+            o->check = true;
+            continue;
+        }
+        if (a[0] != '-' || a[1] == '\0') {
+            if (o->scene)
+                return complain(EXIT_USAGE, "unexpected argument '%s': one scene file at a time (try 'glint --help')", a);
+            o->scene = a;
+            continue;
+        }
         const number_flag *nf = NULL;
         for (size_t k = 0; k < sizeof NUMBER_FLAGS / sizeof NUMBER_FLAGS[0]; k++)
             if (strcmp(a, NUMBER_FLAGS[k].long_name) == 0 ||
@@ -183,6 +197,8 @@ static int parse_args(int argc, char **argv, options *o)
             o->output = v;
         }
     }
+    if (o->check && !o->scene)
+        return complain(EXIT_USAGE, "--check needs a scene file");
     return -1;
 }
 
@@ -233,15 +249,53 @@ static void show_progress(void *user, int done, int total)
     fflush(stderr);
 }
 
+#define MAX_PROBLEMS 20
+
+static void print_problem(void *user, const char *message)
+{
+    ++*(int *)user;
+    fprintf(stderr, "%s\n", message);
+}
+
+/* Loads the scene file, printing every problem and a last line saying what
+ * became of the run; NULL after reporting. */
+static glint_scene *load_scene(const char *path, const char *outcome)
+{
+    glint_error err = {{0}};
+    int problems = 0;
+    glint_load_options lo = {.report = print_problem, .report_user = &problems, .max_errors = MAX_PROBLEMS};
+    glint_scene *scene = glint_scene_load_file(path, &lo, &err);
+    if (!scene)
+        complain(EXIT_BAD_INPUT, "%s: %d problem%s%s; %s", path, problems, problems == 1 ? "" : "s",
+                 problems >= MAX_PROBLEMS ? " (stopped at the limit)" : "", outcome);
+    return scene;
+}
+
+static int check_only(const options *o)
+{
+    glint_scene *scene = load_scene(o->scene, "not valid");
+    if (!scene)
+        return EXIT_BAD_INPUT;
+    glint_scene_counts c = glint_scene_get_counts(scene);
+    printf("%s: ok: %d textures, %d materials, %d shapes, %d lights\n", o->scene, c.textures, c.materials,
+           c.shapes, c.lights);
+    glint_scene_free(scene);
+    return EXIT_OK;
+}
+
 static int run(const options *o)
 {
     glint_error err = {{0}};
-    glint_status st = glint_image_check_path(o->output, &err);
-    if (st)
-        return complain(st == GLINT_ERR_INVALID ? EXIT_USAGE : exit_code_of(st), "%s", err.message);
-    glint_scene *scene = glint_scene_seed_room(&err);
+    glint_scene *scene = o->scene ? load_scene(o->scene, "nothing rendered") : glint_scene_seed_room(&err);
     if (!scene)
-        return complain(EXIT_INTERNAL, "%s", err.message);
+        return o->scene ? EXIT_BAD_INPUT : complain(EXIT_INTERNAL, "%s", err.message);
+    const char *output = o->output ? o->output : glint_scene_get_output(scene) ? glint_scene_get_output(scene)
+                                                                                 : "glint.png";
+    glint_status st = glint_image_check_path(output, &err);
+    if (st) {
+        glint_scene_free(scene);
+        return complain(st == GLINT_ERR_INVALID ? EXIT_USAGE : exit_code_of(st), "%s", err.message);
+    }
     for (int i = 0; i < o->swaps && !st; i++)
         st = glint_scene_replace_image(scene, o->swap_name[i], o->swap_path[i], &err);
     glint_settings settings = glint_scene_get_settings(scene);
@@ -268,7 +322,7 @@ static int run(const options *o)
     glint_scene_free(scene);
     if (st)
         return complain(exit_code_of(st), "%s", err.message);
-    st = glint_image_write(&image, o->output, &err);
+    st = glint_image_write(&image, output, &err);
     glint_image_free(&image);
     if (st)
         return complain(exit_code_of(st), "%s", err.message);
@@ -277,14 +331,14 @@ static int run(const options *o)
         fprintf(stderr, "glint: %dx%d, %d spp, %ld thread%s: %.3f s, %llu samples, %llu rays, %.1f Mrays/s -> %s\n",
                 settings.width, settings.height, settings.samples_per_pixel, threads, threads == 1 ? "" : "s", stats.seconds,
                 (unsigned long long)stats.samples, (unsigned long long)stats.rays,
-                stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, o->output);
+                stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, output);
     }
     return EXIT_OK;
 }
 
 int main(int argc, char **argv)
 {
-    options o = {.output = "glint.png", .width = -1, .height = -1, .spp = -1, .depth = -1,
+    options o = {.width = -1, .height = -1, .spp = -1, .depth = -1,
                  .threads = -1, .seed = -1, .sampler = -1};
     int code = parse_args(argc, argv, &o);
     if (code >= 0)
@@ -294,5 +348,5 @@ int main(int argc, char **argv)
     sa.sa_handler = on_signal;
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
-    return run(&o);
+    return o.check ? check_only(&o) : run(&o);
 }

@@ -47,6 +47,7 @@ void glint_scene_free(glint_scene *s)
     free(s->materials);
     free(s->shapes);
     free(s->lights);
+    free(s->output);
     free(s);
 }
 
@@ -142,10 +143,18 @@ glint_status glint_scene_set_fog(glint_scene *scene, const glint_fog *fog, glint
     return s;
 }
 
-static int find_texture(const glint_scene *scene, const char *name)
+int scene_find_texture(const glint_scene *scene, const char *name)
 {
     for (int i = 0; name && i < scene->texture_count; i++)
         if (scene->textures[i].name && strcmp(scene->textures[i].name, name) == 0)
+            return i;
+    return -1;
+}
+
+int scene_find_material(const glint_scene *scene, const char *name)
+{
+    for (int i = 0; name && i < scene->material_count; i++)
+        if (scene->materials[i].name && strcmp(scene->materials[i].name, name) == 0)
             return i;
     return -1;
 }
@@ -155,7 +164,7 @@ static int find_texture(const glint_scene *scene, const char *name)
 static int add_texture(glint_scene *scene, texture *t, const char *name, glint_error *err)
 {
     glint_status s = GLINT_OK;
-    if (find_texture(scene, name) >= 0)
+    if (scene_find_texture(scene, name) >= 0)
         s = error_set(err, GLINT_ERR_INVALID, "texture '%s' is defined twice", name);
     if (!s)
         s = mapping_validate(&t->mapping, err);
@@ -206,7 +215,7 @@ int glint_scene_add_image_memory(glint_scene *scene, const char *name, const voi
 
 glint_status glint_scene_replace_image(glint_scene *scene, const char *name, const char *path, glint_error *err)
 {
-    int i = find_texture(scene, name);
+    int i = scene_find_texture(scene, name);
     if (i < 0 || scene->textures[i].kind != TEXTURE_IMAGE)
         return error_set(err, GLINT_ERR_INVALID, "no image texture named '%s'", name ? name : "");
     texture_image img;
@@ -220,6 +229,10 @@ glint_status glint_scene_replace_image(glint_scene *scene, const char *name, con
 
 int glint_scene_add_material(glint_scene *scene, const char *name, const glint_material *m, glint_error *err)
 {
+    if (scene_find_material(scene, name) >= 0) {
+        error_set(err, GLINT_ERR_INVALID, "material '%s' is defined twice", name);
+        return -1;
+    }
     if (material_validate(m, scene->texture_count, err) ||
         grow((void **)&scene->materials, &scene->material_cap, scene->material_count, sizeof(material),
              "materials", err))
@@ -250,4 +263,26 @@ int glint_scene_add_light(glint_scene *scene, const glint_light *desc, glint_err
         light_init(&scene->lights[scene->light_count], desc, err))
         return -1;
     return scene->light_count++;
+}
+
+glint_status glint_scene_set_output(glint_scene *scene, const char *path, glint_error *err)
+{
+    char *copy = NULL;
+    glint_status s = copy_name(&copy, path, err);
+    if (s)
+        return s;
+    free(scene->output);
+    scene->output = copy;
+    return GLINT_OK;
+}
+
+const char *glint_scene_get_output(const glint_scene *scene)
+{
+    return scene->output;
+}
+
+glint_scene_counts glint_scene_get_counts(const glint_scene *scene)
+{
+    glint_scene_counts c = {scene->texture_count, scene->material_count, scene->shape_count, scene->light_count};
+    return c;
 }

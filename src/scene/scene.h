@@ -19,7 +19,12 @@ struct glint_scene {
     int shape_count, shape_cap;
     light *lights;
     int light_count, light_cap;
+    char *output;             /* image path a scene file asked for, or NULL */
 };
+
+/* Index of the texture or material with that name, or -1. */
+int scene_find_texture(const glint_scene *scene, const char *name);
+int scene_find_material(const glint_scene *scene, const char *name);
 
 /* Checks a camera; fills err naming a bad value. */
 glint_status camera_validate(const glint_camera *cam, glint_error *err);
