@@ -697,12 +697,17 @@ static void read_bytes(loader *l, const char *data, size_t size, const char *nam
 /* Reads a whole file (bounded); NULL with a message in err on failure. */
 static char *slurp(const char *path, size_t *size, glint_error *err)
 {
+    /* stat first: opening a FIFO named by a hostile include would block. */
+    struct stat st;
+    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
+        error_set(err, GLINT_ERR_IO, "cannot read scene '%s': not a regular file", path);
+        return NULL;
+    }
     FILE *f = fopen(path, "rb");
     if (!f) {
         error_set(err, GLINT_ERR_IO, "cannot read scene '%s': %s", path, strerror(errno));
         return NULL;
     }
-    struct stat st;
     char *data = NULL;
     if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode))
         error_set(err, GLINT_ERR_IO, "cannot read scene '%s': not a regular file", path);

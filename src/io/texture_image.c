@@ -226,7 +226,7 @@ static glint_status read_file(const char *path, unsigned char **data, size_t *si
                               glint_error *err)
 {
     struct stat st;
-    int fd = open(path, O_RDONLY | O_CLOEXEC);
+    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK); /* a FIFO must not block */
     if (fd < 0)
         return error_set(err, GLINT_ERR_IO, "cannot open texture '%s': %s", path, strerror(errno));
     if (fstat(fd, &st) != 0)

@@ -33,7 +33,9 @@ expect() {
 
 small=(-w 8 -h 8 --spp 1 --quiet)
 expect 2 "glint: unknown option '--frobnicate' (try 'glint --help')" -- --frobnicate
-expect 2 "glint: unexpected argument 'scene.yaml' (try 'glint --help')" -- scene.yaml
+expect 2 "glint: unexpected argument 'b.yaml': one scene file at a time (try 'glint --help')" -- a.yaml b.yaml
+expect 1 $'cannot read scene \'missing.yaml\': No such file or directory\nglint: missing.yaml: 1 problem; nothing rendered' -- missing.yaml
+expect 2 "glint: --check needs a scene file" -- --check
 expect 2 "glint: option '--width' needs a value" -- --width
 expect 2 "glint: --width needs a whole number from 1 to 65536, got '-5'" -- -w -5 -o a.png
 expect 2 "glint: --width needs a whole number from 1 to 65536, got '0'" -- --width 0 -o a.png
