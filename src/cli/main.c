@@ -319,13 +319,13 @@ static int run(const options *o)
     glint_image image;
     glint_render_stats stats;
     st = glint_render(scene, &ro, &image, &stats, &err);
-    glint_scene_free(scene);
-    if (st)
-        return complain(exit_code_of(st), "%s", err.message);
-    st = glint_image_write(&image, output, &err);
+    if (!st)
+        st = glint_image_write(&image, output, &err);
     glint_image_free(&image);
-    if (st)
+    if (st) {
+        glint_scene_free(scene);
         return complain(exit_code_of(st), "%s", err.message);
+    }
     if (!o->quiet) {
         long threads = o->threads > 0 ? (long)o->threads : sysconf(_SC_NPROCESSORS_ONLN);
         fprintf(stderr, "glint: %dx%d, %d spp, %ld thread%s: %.3f s, %llu samples, %llu rays, %.1f Mrays/s -> %s\n",
@@ -333,6 +333,7 @@ static int run(const options *o)
                 (unsigned long long)stats.samples, (unsigned long long)stats.rays,
                 stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, output);
     }
+    glint_scene_free(scene); /* last: output may point into it */
     return EXIT_OK;
 }
 
