@@ -242,6 +242,10 @@ bool yr_color(reader *r, const ynode *n, const char *key, color *out)
         diag_at(r->d, n, "'%s' must not have negative channels", key);
         return false;
     }
+    if (ok && !linear && (v[0] > 1 || v[1] > 1 || v[2] > 1)) {
+        diag_at(r->d, n, "'%s' channels must be from 0 to 1 (brighter lights take 'intensity')", key);
+        return false;
+    }
     if (!ok) {
         diag_at(r->d, n, "'%s' must be a colour: [r, g, b], \"#rrggbb\" or {linear: [r, g, b]}", key);
         return false;

@@ -40,8 +40,8 @@ bool yr_number(reader *r, const ynode *n, const char *key, double *out);
 bool yr_integer(reader *r, const ynode *n, const char *key, long long lo, long long hi, long long *out);
 bool yr_bool(reader *r, const ynode *n, const char *key, bool *out);
 bool yr_vec3(reader *r, const ynode *n, const char *key, vec3 *out);
-/* [r, g, b] and "#rrggbb" are sRGB display colours, converted to linear;
- * {linear: [r, g, b]} is taken as it is. Channels must be finite, >= 0. */
+/* [r, g, b] (channels 0..1) and "#rrggbb" are sRGB display colours,
+ * converted to linear; {linear: [r, g, b]} (channels >= 0) is taken as it is. */
 bool yr_color(reader *r, const ynode *n, const char *key, color *out);
 /* A non-empty scalar. */
 bool yr_text(reader *r, const ynode *n, const char *key, const char **out);
