@@ -299,6 +299,27 @@ static void read_texture(loader *l, const char *name, const ynode *n)
 
 /* ------------------------------------------------------------ materials */
 
+/* Reports an unknown texture or material name at n, with the nearest
+ * defined name as a hint. */
+static void unknown_name(loader *l, const ynode *n, bool is_texture, const char *name)
+{
+    const glint_scene *sc = l->scene;
+    int total = is_texture ? sc->texture_count : sc->material_count, count = 0;
+    const char **names = malloc((size_t)(total ? total : 1) * sizeof *names);
+    for (int i = 0; names && i < total; i++) {
+        const char *candidate = is_texture ? sc->textures[i].name : sc->materials[i].name;
+        if (candidate)
+            names[count++] = candidate;
+    }
+    const char *hint = names ? diag_suggest(name, names, count) : NULL;
+    const char *kind = is_texture ? "texture" : "material";
+    if (hint)
+        diag_at(&l->d, n, "unknown %s '%.100s' (did you mean '%s'?)", kind, name, hint);
+    else
+        diag_at(&l->d, n, "unknown %s '%.100s'", kind, name);
+    free(names);
+}
+
 /* Reads a material map's keys over *m (which holds the defaults). */
 static bool read_material_keys(loader *l, const ynode *n, const char *what, glint_material *m)
 {
@@ -323,18 +344,8 @@ static bool read_material_keys(loader *l, const ynode *n, const char *what, glin
     const char *name;
     if (tex && yr_text(&l->r, tex, "texture", &name)) {
         m->texture = scene_find_texture(l->scene, name);
-        if (m->texture < 0) {
-            const char *names[64];
-            int count = 0;
-            for (int i = 0; i < l->scene->texture_count && count < 64; i++)
-                if (l->scene->textures[i].name)
-                    names[count++] = l->scene->textures[i].name;
-            const char *hint = diag_suggest(name, names, count);
-            if (hint)
-                diag_at(&l->d, tex, "unknown texture '%.100s' (did you mean '%s'?)", name, hint);
-            else
-                diag_at(&l->d, tex, "unknown texture '%.100s'", name);
-        }
+        if (m->texture < 0)
+            unknown_name(l, tex, true, name);
     }
     if (l->d.count == before && m->transparency + m->refraction > 1) {
         diag_at(&l->d, n, "transparency + refraction must not exceed 1, got %g", m->transparency + m->refraction);
@@ -373,19 +384,9 @@ static int object_material(loader *l, const ynode *n)
     if (!yr_text(&l->r, n, "material", &name))
         return -1;
     int i = scene_find_material(l->scene, name);
-    if (i >= 0)
-        return i;
-    const char *names[256];
-    int count = 0;
-    for (int k = 0; k < l->scene->material_count && count < 256; k++)
-        if (l->scene->materials[k].name)
-            names[count++] = l->scene->materials[k].name;
-    const char *hint = diag_suggest(name, names, count);
-    if (hint)
-        diag_at(&l->d, n, "unknown material '%.100s' (did you mean '%s'?)", name, hint);
-    else
-        diag_at(&l->d, n, "unknown material '%.100s'", name);
-    return -1;
+    if (i < 0)
+        unknown_name(l, n, false, name);
+    return i;
 }
 
 /* --------------------------------------------------------------- lights */
