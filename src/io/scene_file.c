@@ -28,12 +28,15 @@ typedef struct loader {
     glint_camera camera;
     glint_fog fog;
     const ynode *settings_node, *camera_node, *fog_node;  /* the last file's, for messages */
+    unsigned fog_keys;                                   /* FOG_* keys given in any file */
     const char *output;
     const char *chain[MAX_INCLUDE_DEPTH + 1];   /* canonical paths of the files being read */
     int depth;
     ydoc *docs;                                  /* kept until the end: nodes name their file */
     int doc_count, doc_cap;
 } loader;
+
+enum { FOG_TYPE = 1, FOG_START = 2, FOG_END = 4, FOG_DENSITY = 8 };
 
 /* What an object inherits from the groups around it. */
 typedef struct context {
@@ -216,6 +219,24 @@ static void read_fog(loader *l, const ynode *n)
     yr_opt_number(&l->r, n, "start", &l->fog.start);
     yr_opt_number(&l->r, n, "end", &l->fog.end);
     ranged(l, n, "density", 0, 1e300, OPEN_LOW, "positive", &l->fog.density);
+    static const char *const tracked[] = {"type", "start", "end", "density"};
+    for (int i = 0; i < COUNT(tracked); i++)
+        if (yr_get(&l->r, n, tracked[i]))
+            l->fog_keys |= 1u << i;
+}
+
+/* The keys fog needs, checked once every file has had its say. */
+static bool fog_complete(loader *l)
+{
+    const char *missing = !(l->fog_keys & FOG_TYPE) ? "fog needs 'type'"
+                          : l->fog.kind == GLINT_FOG_LINEAR && (~l->fog_keys & (FOG_START | FOG_END))
+                              ? "linear fog needs 'start' and 'end'"
+                          : l->fog.kind == GLINT_FOG_EXPONENTIAL && !(l->fog_keys & FOG_DENSITY)
+                              ? "exponential fog needs 'density'"
+                              : NULL;
+    if (missing)
+        diag_at(&l->d, l->fog_node, "%s", missing);
+    return !missing;
 }
 
 /* ------------------------------------------------------------- textures */
@@ -223,10 +244,11 @@ static void read_fog(loader *l, const ynode *n)
 static bool read_mapping(loader *l, const ynode *n, glint_mapping *m)
 {
     static const char *const kinds[] = {"uv", "planar", "spherical", "cylindrical"};
-    static const char *const keys[] = {"type", "center", "u_axis", "v_axis", "scale"};
+    /* The keys each kind of mapping reads, by kind. */
+    static const char *const keys[] = {"type", "center", "scale", "u_axis", "v_axis"};
+    static const int key_count[] = {1, 5, 2, 3};
     const ynode *type = n;
     if (n->kind == YNODE_MAPPING) {
-        yr_check_keys(&l->r, n, "mapping", keys, COUNT(keys));
         type = yr_need(&l->r, n, "type", "mapping");
         if (!type)
             return false;
@@ -237,6 +259,9 @@ static bool read_mapping(loader *l, const ynode *n, glint_mapping *m)
     m->kind = (glint_mapping_kind)k;
     if (n->kind != YNODE_MAPPING)
         return true;
+    char what[40];
+    snprintf(what, sizeof what, "a %s mapping", kinds[k]);
+    yr_check_keys(&l->r, n, what, keys, key_count[k]);
     bool good = yr_opt_vec3(&l->r, n, "center", &m->center) && yr_opt_vec3(&l->r, n, "u_axis", &m->u_axis) &&
                 yr_opt_vec3(&l->r, n, "v_axis", &m->v_axis) &&
                 ranged(l, n, "scale", 0, 1e300, OPEN_LOW, "positive", &m->scale);
@@ -249,15 +274,16 @@ static bool read_mapping(loader *l, const ynode *n, glint_mapping *m)
 
 static void read_texture(loader *l, const char *name, const ynode *n)
 {
-    static const char *const keys[] = {"type", "colors", "size", "file", "mapping"};
     static const char *const kinds[] = {"checker", "image"};
+    static const char *const keys[2][4] = {{"type", "mapping", "colors", "size"}, {"type", "mapping", "file"}};
     char what[160];
     snprintf(what, sizeof what, "texture '%.100s'", name);
     if (!yr_is_map(&l->r, n, what))
         return;
-    yr_check_keys(&l->r, n, what, keys, COUNT(keys));
     const ynode *type = yr_need(&l->r, n, "type", what);
     int kind = type ? word(l, type, "type", kinds, COUNT(kinds)) : -1;
+    if (kind >= 0)
+        yr_check_keys(&l->r, n, what, keys[kind], kind == 0 ? 4 : 3);
     glint_mapping mapping = {.kind = GLINT_MAP_UV};
     const ynode *m = yr_get(&l->r, n, "mapping");
     if (kind < 0 || (m && !read_mapping(l, m, &mapping)))
@@ -393,15 +419,22 @@ static int object_material(loader *l, const ynode *n)
 
 static void read_light(loader *l, const ynode *n)
 {
-    static const char *const keys[] = {"type", "position", "direction", "color", "intensity", "angle", "falloff"};
     static const char *const kinds[] = {"point", "spot", "directional"};
+    static const char *const keys[3][7] = {
+        {"type", "color", "intensity", "position"},
+        {"type", "color", "intensity", "position", "direction", "angle", "falloff"},
+        {"type", "color", "intensity", "direction"},
+    };
+    static const int key_count[] = {4, 7, 4};
     if (!yr_is_map(&l->r, n, "a light"))
         return;
-    yr_check_keys(&l->r, n, "light", keys, COUNT(keys));
     const ynode *type = yr_need(&l->r, n, "type", "a light");
     int k = type ? word(l, type, "type", kinds, COUNT(kinds)) : -1;
     if (k < 0)
         return;
+    char kind_name[32];
+    snprintf(kind_name, sizeof kind_name, "a %s light", kinds[k]);
+    yr_check_keys(&l->r, n, kind_name, keys[k], key_count[k]);
     glint_light lt = {.kind = (glint_light_kind)k, .color = {1, 1, 1}};
     double intensity = 1;
     const char *what = kinds[k];
@@ -438,8 +471,8 @@ static bool read_transform(loader *l, const ynode *n, glint_transform *t)
         if (!yr_visit(&l->r, step))
             return false;
         if (step->kind != YNODE_MAPPING || step->count != 2) {
-            diag_at(&l->d, step, "a transform step must be one of translate, rotate, rotate_x, rotate_y, "
-                                 "rotate_z or scale, with its value");
+            diag_at(&l->d, step, "each transform step is a map with one key: translate, rotate, rotate_x, "
+                                 "rotate_y, rotate_z or scale");
             return false;
         }
         const ynode *key = step->items[0], *v = step->items[1];
@@ -780,7 +813,7 @@ static void finish(loader *l, const char *name)
     for (int i = 0; i < 3; i++) {
         if (i == 1)
             s[1] = glint_scene_set_camera(l->scene, &l->camera, &err);
-        if (i == 2)
+        if (i == 2 && (!l->fog_node || fog_complete(l)))
             s[2] = glint_scene_set_fog(l->scene, &l->fog, &err);
         if (s[i] && where[i])
             diag_at(&l->d, where[i], "%s", err.message);

@@ -88,8 +88,15 @@ static void check_keys_depth(reader *r, const ynode *map, const char *what, cons
         bool known = false;
         for (int j = 0; j < count && !known; j++)
             known = strcmp(k->value, allowed[j]) == 0;
-        if (known)
+        if (known) {
+            /* Only known keys are compared, so this stays linear in the map's size. */
+            for (int j = 0; j < i; j += 2)
+                if (map->items[j]->kind == YNODE_SCALAR && strcmp(map->items[j]->value, k->value) == 0) {
+                    diag_at(r->d, k, "duplicate key '%.100s' in %s", k->value, what);
+                    break;
+                }
             continue;
+        }
         const char *hint = diag_suggest(k->value, allowed, count);
         if (hint)
             diag_at(r->d, k, "unknown key '%.100s' in %s (did you mean '%s'?)", k->value, what, hint);
