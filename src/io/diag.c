@@ -6,6 +6,8 @@
 
 void diag_raw(diag *d, glint_status status, const char *message)
 {
+    if (d->closed)
+        return;
     if (d->count == 0 && d->first) {
         snprintf(d->first->message, sizeof d->first->message, "%s", message);
         d->first_status = status;

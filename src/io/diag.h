@@ -14,6 +14,7 @@ typedef struct diag {
     int count;                /* problems found */
     glint_error *first;       /* receives the first problem; may be NULL */
     glint_status first_status;
+    bool closed;              /* no more reports: the walk was cut short */
 } diag;
 
 /* Reports "file:line:column: message" at node n (or "file: message" when n

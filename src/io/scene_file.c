@@ -203,18 +203,24 @@ static void read_camera(loader *l, const ynode *n)
 
 static void read_fog(loader *l, const ynode *n)
 {
-    static const char *const keys[] = {"type", "color", "start", "end", "density"};
     static const char *const kinds[] = {"none", "linear", "exponential"};
+    /* The keys each type reads; without a type (one that an included file
+     * gave), any of them. */
+    static const char *const keys[4][5] = {
+        {"type", "color"}, {"type", "color", "start", "end"}, {"type", "color", "density"},
+        {"type", "color", "start", "end", "density"},
+    };
+    static const int key_count[] = {2, 4, 3, 5};
     if (!yr_is_map(&l->r, n, "fog"))
         return;
     l->fog_node = n;
-    yr_check_keys(&l->r, n, "fog", keys, COUNT(keys));
     const ynode *type = yr_get(&l->r, n, "type");
-    if (type) {
-        int k = word(l, type, "type", kinds, COUNT(kinds));
-        if (k >= 0)
-            l->fog.kind = k == 0 ? GLINT_FOG_NONE : k == 1 ? GLINT_FOG_LINEAR : GLINT_FOG_EXPONENTIAL;
-    }
+    int k = type ? word(l, type, "type", kinds, COUNT(kinds)) : 3;
+    if (k >= 0 && k < 3)
+        l->fog.kind = k == 0 ? GLINT_FOG_NONE : k == 1 ? GLINT_FOG_LINEAR : GLINT_FOG_EXPONENTIAL;
+    char what[32];
+    snprintf(what, sizeof what, k >= 0 && k < 3 ? "%s fog" : "fog", k >= 0 && k < 3 ? kinds[k] : "");
+    yr_check_keys(&l->r, n, what, keys[k < 0 ? 3 : k], key_count[k < 0 ? 3 : k]);
     yr_opt_color(&l->r, n, "color", &l->fog.color);
     yr_opt_number(&l->r, n, "start", &l->fog.start);
     yr_opt_number(&l->r, n, "end", &l->fog.end);
@@ -265,14 +271,14 @@ static bool read_mapping(loader *l, const ynode *n, glint_mapping *m)
     bool good = yr_opt_vec3(&l->r, n, "center", &m->center) && yr_opt_vec3(&l->r, n, "u_axis", &m->u_axis) &&
                 yr_opt_vec3(&l->r, n, "v_axis", &m->v_axis) &&
                 ranged(l, n, "scale", 0, 1e300, OPEN_LOW, "positive", &m->scale);
-    if (good && (!yr_get(&l->r, n, "u_axis")) != (!yr_get(&l->r, n, "v_axis"))) {
+    if (good && k == GLINT_MAP_PLANAR && (!yr_get(&l->r, n, "u_axis")) != (!yr_get(&l->r, n, "v_axis"))) {
         diag_at(&l->d, n, "a planar mapping needs both 'u_axis' and 'v_axis', or neither");
         return false;
     }
     return good;
 }
 
-static void read_texture(loader *l, const char *name, const ynode *n)
+static void add_texture(loader *l, const char *name, const ynode *n)
 {
     static const char *const kinds[] = {"checker", "image"};
     static const char *const keys[2][4] = {{"type", "mapping", "colors", "size"}, {"type", "mapping", "file"}};
@@ -321,6 +327,16 @@ static void read_texture(loader *l, const char *name, const ynode *n)
     if (glint_scene_add_image_file(l->scene, name, full, mapping, &err) < 0)
         diag_at(&l->d, file, "%s", err.message);
     free(full);
+}
+
+static void read_texture(loader *l, const char *name, const ynode *n)
+{
+    add_texture(l, name, n);
+    if (scene_find_texture(l->scene, name) < 0) {
+        /* A stand-in keeps the name known: no second report at each use. */
+        glint_mapping uv = {.kind = GLINT_MAP_UV};
+        glint_scene_add_checker(l->scene, name, rgb(0, 0, 0), rgb(1, 1, 1), 1, uv, NULL);
+    }
 }
 
 /* ------------------------------------------------------------ materials */

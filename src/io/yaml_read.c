@@ -1,5 +1,6 @@
 /* yaml_read.c - typed getters over the YAML tree, with their messages. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -17,6 +18,8 @@ bool yr_visit(reader *r, const ynode *n)
         return true;
     r->exhausted = true;
     diag_at(r->d, n, "scene too large after alias expansion (limit %ld nodes)", YAML_MAX_VISITS);
+    /* What the cut-short walk would say next (missing keys, ...) is not true. */
+    r->d->closed = true;
     return false;
 }
 
@@ -68,11 +71,16 @@ static void check_keys_depth(reader *r, const ynode *map, const char *what, cons
         if (!yr_visit(r, k))
             return;
         if (is_merge_key(k)) {
-            bool ok = v->kind == YNODE_MAPPING;
-            for (int j = 0; v->kind == YNODE_SEQUENCE && j < v->count; j++)
-                ok = v->items[j]->kind == YNODE_MAPPING;
-            if (!ok || depth >= MAX_MERGE_DEPTH) {
-                diag_at(r->d, v, "a merge key (<<) needs a map or a list of maps");
+            const ynode *bad = v->kind == YNODE_MAPPING || v->kind == YNODE_SEQUENCE ? NULL : v;
+            for (int j = 0; !bad && v->kind == YNODE_SEQUENCE && j < v->count; j++)
+                if (v->items[j]->kind != YNODE_MAPPING)
+                    bad = v->items[j];
+            if (bad) {
+                diag_at(r->d, bad, "a merge key (<<) needs a map or a list of maps");
+                continue;
+            }
+            if (depth >= MAX_MERGE_DEPTH) {
+                diag_at(r->d, v, "merge keys (<<) nested too deep (limit %d)", MAX_MERGE_DEPTH);
                 continue;
             }
             if (v->kind == YNODE_MAPPING)
@@ -149,15 +157,25 @@ static bool parse_number(const ynode *n, double *out, const char **why)
     return true;
 }
 
+/* How a wrong value is named in a message: its text, or what it is. */
+static void got(const ynode *n, char *buf, size_t size)
+{
+    if (n->kind == YNODE_SCALAR && n->quoted)
+        snprintf(buf, size, "'%.60s' in quotes, which is text", n->value);
+    else if (n->kind == YNODE_SCALAR && strcmp(ynode_describe(n), "nothing") != 0)
+        snprintf(buf, size, "'%.60s'", n->value);
+    else
+        snprintf(buf, size, "%s", ynode_describe(n));
+}
+
 bool yr_number(reader *r, const ynode *n, const char *key, double *out)
 {
     const char *why;
+    char what[100];
     if (parse_number(n, out, &why))
         return true;
-    if (n->kind == YNODE_SCALAR)
-        diag_at(r->d, n, "'%s' must be %s, got '%.60s'", key, why, n->value);
-    else
-        diag_at(r->d, n, "'%s' must be %s, got %s", key, why, ynode_describe(n));
+    got(n, what, sizeof what);
+    diag_at(r->d, n, "'%s' must be %s, got %s", key, why, what);
     return false;
 }
 
@@ -165,14 +183,13 @@ bool yr_integer(reader *r, const ynode *n, const char *key, long long lo, long l
 {
     double v;
     const char *why;
+    char what[100];
     if (parse_number(n, &v, &why) && v == floor(v) && v >= (double)lo && v <= (double)hi) {
         *out = (long long)v;
         return true;
     }
-    if (n->kind == YNODE_SCALAR)
-        diag_at(r->d, n, "'%s' must be a whole number from %lld to %lld, got '%.60s'", key, lo, hi, n->value);
-    else
-        diag_at(r->d, n, "'%s' must be a whole number from %lld to %lld, got %s", key, lo, hi, ynode_describe(n));
+    got(n, what, sizeof what);
+    diag_at(r->d, n, "'%s' must be a whole number from %lld to %lld, got %s", key, lo, hi, what);
     return false;
 }
 
@@ -182,7 +199,9 @@ bool yr_bool(reader *r, const ynode *n, const char *key, bool *out)
         *out = n->value[0] == 't';
         return true;
     }
-    diag_at(r->d, n, "'%s' must be true or false, got %s", key, ynode_describe(n));
+    char what[100];
+    got(n, what, sizeof what);
+    diag_at(r->d, n, "'%s' must be true or false, got %s", key, what);
     return false;
 }
 
@@ -250,7 +269,7 @@ bool yr_color(reader *r, const ynode *n, const char *key, color *out)
         return false;
     }
     if (ok && !linear && (v[0] > 1 || v[1] > 1 || v[2] > 1)) {
-        diag_at(r->d, n, "'%s' channels must be from 0 to 1 (brighter lights take 'intensity')", key);
+        diag_at(r->d, n, "'%s' channels must be from 0 to 1 (a light's 'intensity' makes it brighter)", key);
         return false;
     }
     if (!ok) {

@@ -1,0 +1,2137 @@
+/* test_scene_file.c - the YAML scene loader: every key of the format and its
+ * effect on the loaded scene (or on a tiny render), includes, anchors and
+ * merge keys, and a table of broken scenes, each with its exact first
+ * message and number of problems. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <dirent.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/resource.h>
+#include <sys/stat.h>
+#include <time.h>
+#include <unistd.h>
+#include <png.h>
+#include <zlib.h>
+
+#include "glint.h"
+#include "scene/scene.h"
+
+#define PATH_SIZE 1024
+#define COUNT(a) (sizeof(a) / sizeof((a)[0]))
+
+static char tmp_dir[PATH_SIZE];
+
+/* ------------------------------------------------------------- helpers */
+
+/* Every problem a load reported, in order. */
+typedef struct report_log {
+    int count;
+    char first[512];
+    char all[16384];
+} report_log;
+
+static void log_report(void *user, const char *message)
+{
+    report_log *log = user;
+    if (log->count == 0)
+        snprintf(log->first, sizeof log->first, "%s", message);
+    size_t used = strlen(log->all);
+    snprintf(log->all + used, sizeof log->all - used, "%s\n", message);
+    log->count++;
+}
+
+#define assert_near(a, b, tol) near_at((double)(a), (double)(b), (tol), #a, __FILE__, __LINE__)
+#define assert_exact(a, b) assert_near((a), (b), 0)
+
+static void near_at(double a, double b, double tol, const char *what, const char *file, int line)
+{
+    if (fabs(a - b) <= tol)
+        return;
+    print_error("%s is %.17g, expected %.17g (tolerance %g)\n", what, a, b, tol);
+    _fail(file, line);
+}
+
+#define assert_vec(v, X, Y, Z, tol)              \
+    do {                                         \
+        assert_near((v).x, (X), (tol));          \
+        assert_near((v).y, (Y), (tol));          \
+        assert_near((v).z, (Z), (tol));          \
+    } while (0)
+
+#define assert_rgb(c, R, G, B, tol)              \
+    do {                                         \
+        assert_near((c).r, (R), (tol));          \
+        assert_near((c).g, (G), (tol));          \
+        assert_near((c).b, (B), (tol));          \
+    } while (0)
+
+static void assert_matrix(const glint_transform *t, const double want[3][4], double tol)
+{
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            if (!(fabs(t->m[i][j] - want[i][j]) <= tol))
+                fail_msg("to_world m[%d][%d] is %.17g, expected %.17g", i, j, t->m[i][j], want[i][j]);
+}
+
+static void assert_same_material(const glint_material *a, const glint_material *b)
+{
+    assert_rgb(a->color, b->color.r, b->color.g, b->color.b, 0);
+    assert_int_equal(a->texture, b->texture);
+    assert_exact(a->ambient, b->ambient);
+    assert_exact(a->diffuse, b->diffuse);
+    assert_exact(a->specular, b->specular);
+    assert_exact(a->shininess, b->shininess);
+    assert_exact(a->reflectivity, b->reflectivity);
+    assert_exact(a->transparency, b->transparency);
+    assert_exact(a->refraction, b->refraction);
+    assert_exact(a->ior, b->ior);
+    assert_exact(a->tint, b->tint);
+    assert_int_equal(a->fresnel, b->fresnel);
+}
+
+static void assert_same_settings(const glint_settings *a, const glint_settings *b)
+{
+    assert_int_equal(a->width, b->width);
+    assert_int_equal(a->height, b->height);
+    assert_int_equal(a->samples_per_pixel, b->samples_per_pixel);
+    assert_int_equal(a->sampler, b->sampler);
+    assert_int_equal(a->max_depth, b->max_depth);
+    assert_rgb(a->background, b->background.r, b->background.g, b->background.b, 0);
+    assert_rgb(a->ambient_light, b->ambient_light.r, b->ambient_light.g, b->ambient_light.b, 0);
+    assert_int_equal(a->seed, b->seed);
+}
+
+static double lin(double display)
+{
+    return glint_srgb_to_linear(display);
+}
+
+static void tmp_path(char *buf, const char *name)
+{
+    int n = snprintf(buf, PATH_SIZE, "%s/%s", tmp_dir, name);
+    assert_true(n > 0 && n < PATH_SIZE);
+}
+
+/* Fills path with tmp_dir/name and makes the folders on the way. */
+static void tmp_path_made(char *path, const char *name)
+{
+    tmp_path(path, name);
+    for (char *p = path + strlen(tmp_dir) + 1; (p = strchr(p, '/')) != NULL; p++) {
+        *p = '\0';
+        mkdir(path, 0755);
+        *p = '/';
+    }
+}
+
+/* Writes text to tmp_dir/name. */
+static void write_tmp(const char *name, const char *text)
+{
+    char path[PATH_SIZE];
+    tmp_path_made(path, name);
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(text, 1, strlen(text), f), strlen(text));
+    assert_int_equal(fclose(f), 0);
+}
+
+/* Replaces each "@TMP@" in `in` with tmp_dir. */
+static void with_tmp(const char *in, char *out, size_t size)
+{
+    size_t n = 0;
+    while (*in) {
+        if (strncmp(in, "@TMP@", 5) == 0) {
+            n += (size_t)snprintf(out + n, size - n, "%s", tmp_dir);
+            in += 5;
+        } else if (n + 1 < size) {
+            out[n++] = *in++;
+        }
+        assert_true(n + 1 < size);
+    }
+    out[n] = '\0';
+}
+
+/* Loads a scene that must be good; fails the test with every problem. */
+static glint_scene *load_good_named(const char *yaml, const char *name)
+{
+    report_log log = {0};
+    glint_load_options o = {.report = log_report, .report_user = &log};
+    glint_error err = {{0}};
+    glint_scene *s = glint_scene_load_memory(yaml, strlen(yaml), name, &o, &err);
+    if (!s)
+        fail_msg("the scene did not load (%d problems):\n%s", log.count, log.all);
+    assert_int_equal(log.count, 0);
+    return s;
+}
+
+static glint_scene *load_good(const char *yaml)
+{
+    return load_good_named(yaml, "good.yaml");
+}
+
+static glint_scene *load_good_file(const char *name)
+{
+    char path[PATH_SIZE];
+    tmp_path(path, name);
+    report_log log = {0};
+    glint_load_options o = {.report = log_report, .report_user = &log};
+    glint_error err = {{0}};
+    glint_scene *s = glint_scene_load_file(path, &o, &err);
+    if (!s)
+        fail_msg("%s did not load (%d problems):\n%s", path, log.count, log.all);
+    assert_int_equal(log.count, 0);
+    return s;
+}
+
+/* Loads a scene that must be refused as bad.yaml; fills log and err. */
+static void load_bad(const char *yaml, int max_errors, report_log *log, glint_error *err)
+{
+    glint_load_options o = {.report = log_report, .report_user = log, .max_errors = max_errors};
+    glint_scene *s = glint_scene_load_memory(yaml, strlen(yaml), "bad.yaml", &o, err);
+    if (s) {
+        glint_scene_free(s);
+        fail_msg("a bad scene loaded:\n%s", yaml);
+    }
+    assert_string_equal(err->message, log->first);
+}
+
+/* The index of the material with that name, failing when there is none. */
+static int material_named(const glint_scene *s, const char *name)
+{
+    int i = scene_find_material(s, name);
+    if (i < 0)
+        fail_msg("no material named '%s'", name);
+    return i;
+}
+
+static int texture_named(const glint_scene *s, const char *name)
+{
+    int i = scene_find_texture(s, name);
+    if (i < 0)
+        fail_msg("no texture named '%s'", name);
+    return i;
+}
+
+static glint_image render(const glint_scene *s)
+{
+    glint_render_options o = {.threads = 1};
+    glint_image img;
+    glint_error err = {{0}};
+    if (glint_render(s, &o, &img, NULL, &err))
+        fail_msg("render failed: %s", err.message);
+    return img;
+}
+
+static void write_png(const char *name, int width, int height, const unsigned char *rgb)
+{
+    char path[PATH_SIZE];
+    tmp_path_made(path, name);
+    png_image img;
+    memset(&img, 0, sizeof img);
+    img.version = PNG_IMAGE_VERSION;
+    img.width = (png_uint_32)width;
+    img.height = (png_uint_32)height;
+    img.format = PNG_FORMAT_RGB;
+    assert_true(png_image_write_to_file(&img, path, 0, rgb, 0, NULL));
+}
+
+static size_t put_chunk(unsigned char *out, const char *type, const unsigned char *data, uint32_t size)
+{
+    out[0] = (unsigned char)(size >> 24);
+    out[1] = (unsigned char)(size >> 16);
+    out[2] = (unsigned char)(size >> 8);
+    out[3] = (unsigned char)size;
+    memcpy(out + 4, type, 4);
+    if (size)
+        memcpy(out + 8, data, size);
+    uLong crc = crc32(0L, out + 4, 4 + size);
+    out[8 + size] = (unsigned char)(crc >> 24);
+    out[9 + size] = (unsigned char)(crc >> 16);
+    out[10 + size] = (unsigned char)(crc >> 8);
+    out[11 + size] = (unsigned char)crc;
+    return 12 + size;
+}
+
+/* A PNG whose header says 0 x 0 pixels, an empty "PNG" and a good one. */
+static void write_table_pngs(void)
+{
+    unsigned char buf[64];
+    static const unsigned char sig[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    unsigned char ihdr[13] = {0, 0, 0, 0, 0, 0, 0, 0, 8, 2, 0, 0, 0};
+    memcpy(buf, sig, 8);
+    size_t n = 8;
+    n += put_chunk(buf + n, "IHDR", ihdr, 13);
+    n += put_chunk(buf + n, "IEND", NULL, 0);
+    char path[PATH_SIZE];
+    tmp_path(path, "zero.png");
+    FILE *f = fopen(path, "wb");
+    assert_non_null(f);
+    assert_int_equal(fwrite(buf, 1, n, f), n);
+    assert_int_equal(fclose(f), 0);
+    write_tmp("empty.png", "");
+    static const unsigned char green[3] = {0, 255, 0};
+    write_png("one.png", 1, 1, green);
+}
+
+static void remove_tree(const char *path)
+{
+    struct stat st;
+    if (lstat(path, &st) != 0)
+        return;
+    if (S_ISDIR(st.st_mode)) {
+        DIR *d = opendir(path);
+        struct dirent *e;
+        while (d && (e = readdir(d)) != NULL) {
+            if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
+                continue;
+            char child[PATH_SIZE];
+            snprintf(child, sizeof child, "%s/%s", path, e->d_name);
+            remove_tree(child);
+        }
+        if (d)
+            closedir(d);
+        rmdir(path);
+    } else {
+        unlink(path);
+    }
+}
+
+/* ------------------------------------------------------------- fixtures */
+
+static int setup_dir(void **state)
+{
+    const char *base = getenv("GLINT_TEST_TMP");
+    if (!base || !*base)
+        base = "/tmp";
+    snprintf(tmp_dir, sizeof tmp_dir, "%s/glint-scene-file-%ld", base, (long)getpid());
+    remove_tree(tmp_dir);
+    if (mkdir(tmp_dir, 0755) != 0)
+        return -1;
+    write_table_pngs();
+    return 0;
+}
+
+static int teardown_dir(void **state)
+{
+    remove_tree(tmp_dir);
+    return 0;
+}
+
+/* ------------------------------------------------------------- settings */
+
+static void test_settings_every_key(void **state)
+{
+    glint_scene *s = load_good("glint: 1\n"
+                               "settings:\n"
+                               "  width: 33\n"
+                               "  height: 17\n"
+                               "  samples: 9\n"
+                               "  sampler: jittered\n"
+                               "  seed: 4294967295\n"
+                               "  depth: 0\n"
+                               "  background: [0.5, 0.25, 1]\n"
+                               "  ambient: [0.2, 0.4, 0.6]\n"
+                               "  output: renders/out.ppm\n");
+    glint_settings st = glint_scene_get_settings(s);
+    assert_int_equal(st.width, 33);
+    assert_int_equal(st.height, 17);
+    assert_int_equal(st.samples_per_pixel, 9);
+    assert_int_equal(st.sampler, GLINT_SAMPLER_JITTERED);
+    assert_true(st.seed == 4294967295u);
+    assert_int_equal(st.max_depth, 0);
+    assert_rgb(st.background, lin(0.5), lin(0.25), 1, 0);
+    assert_rgb(st.ambient_light, lin(0.2), lin(0.4), lin(0.6), 0);
+    assert_string_equal(glint_scene_get_output(s), "renders/out.ppm");
+    glint_scene_free(s);
+}
+
+static void test_settings_other_values(void **state)
+{
+    glint_scene *s = load_good("settings:\n"
+                               "  width: 65536\n"
+                               "  height: 1\n"
+                               "  samples: 4096\n"
+                               "  sampler: regular\n"
+                               "  seed: 0\n"
+                               "  depth: 64\n"
+                               "  output: OUT.PNG\n");
+    glint_settings st = glint_scene_get_settings(s);
+    assert_int_equal(st.width, 65536);
+    assert_int_equal(st.height, 1);
+    assert_int_equal(st.samples_per_pixel, 4096);
+    assert_int_equal(st.sampler, GLINT_SAMPLER_REGULAR);
+    assert_int_equal(st.seed, 0);
+    assert_int_equal(st.max_depth, 64);
+    assert_string_equal(glint_scene_get_output(s), "OUT.PNG");
+    glint_scene_free(s);
+}
+
+/* A file that sets nothing gives the API's defaults; so does an empty one. */
+static void test_defaults_of_an_empty_scene(void **state)
+{
+    const char *texts[] = {"glint: 1\n", "", "# only a comment\n"};
+    for (size_t i = 0; i < COUNT(texts); i++) {
+        glint_scene *s = load_good(texts[i]);
+        glint_settings st = glint_scene_get_settings(s), def = glint_settings_default();
+        assert_same_settings(&st, &def);
+        glint_camera cam = glint_scene_get_camera(s);
+        assert_vec(cam.position, 0, 0, 0, 0);
+        assert_vec(cam.look_at, 0, 0, -1, 0);
+        assert_vec(cam.up, 0, 1, 0, 0);
+        assert_exact(cam.vfov_degrees, 45);
+        assert_int_equal(glint_scene_get_fog(s).kind, GLINT_FOG_NONE);
+        assert_null(glint_scene_get_output(s));
+        glint_scene_counts c = glint_scene_get_counts(s);
+        assert_int_equal(c.textures + c.materials + c.shapes + c.lights, 0);
+        glint_scene_free(s);
+    }
+}
+
+static void test_camera_every_key(void **state)
+{
+    glint_scene *s = load_good("camera:\n"
+                               "  position: [1, 2, 3]\n"
+                               "  look_at: [4, 5.5, -6]\n"
+                               "  up: [0, 0, 1]\n"
+                               "  fov: 35.5\n");
+    glint_camera cam = glint_scene_get_camera(s);
+    assert_vec(cam.position, 1, 2, 3, 0);
+    assert_vec(cam.look_at, 4, 5.5, -6, 0);
+    assert_vec(cam.up, 0, 0, 1, 0);
+    assert_exact(cam.vfov_degrees, 35.5);
+    glint_scene_free(s);
+}
+
+/* ------------------------------------------------------------------ fog */
+
+static void test_fog_none(void **state)
+{
+    glint_scene *s = load_good("fog:\n  type: none\n  color: [1, 0, 0]\n");
+    glint_fog f = glint_scene_get_fog(s);
+    assert_int_equal(f.kind, GLINT_FOG_NONE);
+    glint_scene_free(s);
+}
+
+static void test_fog_linear(void **state)
+{
+    glint_scene *s = load_good("fog:\n"
+                               "  type: linear\n"
+                               "  color: [0.5, 0.5, 0.5]\n"
+                               "  start: -2\n"
+                               "  end: 10.5\n");
+    glint_fog f = glint_scene_get_fog(s);
+    assert_int_equal(f.kind, GLINT_FOG_LINEAR);
+    assert_rgb(f.color, lin(0.5), lin(0.5), lin(0.5), 0);
+    assert_exact(f.start, -2);
+    assert_exact(f.end, 10.5);
+    glint_scene_free(s);
+}
+
+static void test_fog_exponential(void **state)
+{
+    glint_scene *s = load_good("fog: {type: exponential, color: \"#808080\", density: 0.25}\n");
+    glint_fog f = glint_scene_get_fog(s);
+    assert_int_equal(f.kind, GLINT_FOG_EXPONENTIAL);
+    assert_rgb(f.color, lin(128 / 255.0), lin(128 / 255.0), lin(128 / 255.0), 0);
+    assert_exact(f.density, 0.25);
+    glint_scene_free(s);
+}
+
+/* ------------------------------------------------------------- textures */
+
+static void test_checker_texture(void **state)
+{
+    glint_scene *s = load_good("textures:\n"
+                               "  tiles:\n"
+                               "    type: checker\n"
+                               "    colors: [\"#ff0000\", [0, 0, 1]]\n"
+                               "    size: 0.25\n"
+                               "    mapping: planar\n"
+                               "  plain: {type: checker}\n");
+    assert_int_equal(glint_scene_get_counts(s).textures, 2);
+    const texture *t = &s->textures[texture_named(s, "tiles")];
+    assert_int_equal(t->kind, TEXTURE_CHECKER);
+    assert_rgb(t->a, 1, 0, 0, 0);
+    assert_rgb(t->b, 0, 0, 1, 0);
+    assert_exact(t->cell, 0.25);
+    assert_int_equal(t->mapping.kind, GLINT_MAP_PLANAR);
+    /* Defaults: black and white cells of one unit, the shape's own (u, v). */
+    t = &s->textures[texture_named(s, "plain")];
+    assert_int_equal(t->kind, TEXTURE_CHECKER);
+    assert_rgb(t->a, 0, 0, 0, 0);
+    assert_rgb(t->b, 1, 1, 1, 0);
+    assert_exact(t->cell, 1);
+    assert_int_equal(t->mapping.kind, GLINT_MAP_UV);
+    assert_vec(t->mapping.center, 0, 0, 0, 0);
+    assert_exact(t->mapping.scale, 0);
+    glint_scene_free(s);
+}
+
+static void test_mapping_as_a_word(void **state)
+{
+    glint_scene *s = load_good("textures:\n"
+                               "  a: {type: checker, mapping: uv}\n"
+                               "  b: {type: checker, mapping: planar}\n"
+                               "  c: {type: checker, mapping: spherical}\n"
+                               "  d: {type: checker, mapping: cylindrical}\n");
+    assert_int_equal(s->textures[texture_named(s, "a")].mapping.kind, GLINT_MAP_UV);
+    assert_int_equal(s->textures[texture_named(s, "b")].mapping.kind, GLINT_MAP_PLANAR);
+    assert_int_equal(s->textures[texture_named(s, "c")].mapping.kind, GLINT_MAP_SPHERICAL);
+    assert_int_equal(s->textures[texture_named(s, "d")].mapping.kind, GLINT_MAP_CYLINDRICAL);
+    glint_scene_free(s);
+}
+
+static void test_mapping_as_a_map(void **state)
+{
+    glint_scene *s = load_good("textures:\n"
+                               "  flat:\n"
+                               "    type: checker\n"
+                               "    mapping:\n"
+                               "      type: planar\n"
+                               "      center: [1, 2, 3]\n"
+                               "      u_axis: [0, 0, 1]\n"
+                               "      v_axis: [0, 1, 0]\n"
+                               "      scale: 2.5\n"
+                               "  can: {type: checker, mapping: {type: cylindrical, scale: 4, center: [0, -1, 0]}}\n"
+                               "  ball: {type: checker, mapping: {type: spherical, center: [5, 5, 5]}}\n"
+                               "  own: {type: checker, mapping: {type: uv}}\n");
+    glint_mapping m = s->textures[texture_named(s, "flat")].mapping;
+    assert_int_equal(m.kind, GLINT_MAP_PLANAR);
+    assert_vec(m.center, 1, 2, 3, 0);
+    assert_vec(m.u_axis, 0, 0, 1, 0);
+    assert_vec(m.v_axis, 0, 1, 0, 0);
+    assert_exact(m.scale, 2.5);
+    m = s->textures[texture_named(s, "can")].mapping;
+    assert_int_equal(m.kind, GLINT_MAP_CYLINDRICAL);
+    assert_exact(m.scale, 4);
+    assert_vec(m.center, 0, -1, 0, 0);
+    m = s->textures[texture_named(s, "ball")].mapping;
+    assert_int_equal(m.kind, GLINT_MAP_SPHERICAL);
+    assert_vec(m.center, 5, 5, 5, 0);
+    assert_int_equal(s->textures[texture_named(s, "own")].mapping.kind, GLINT_MAP_UV);
+    glint_scene_free(s);
+}
+
+/* The texels of tiny.png below, as linear values. */
+static void check_tiny_texels(const texture *t)
+{
+    assert_int_equal(t->kind, TEXTURE_IMAGE);
+    assert_int_equal(t->image.width, 2);
+    assert_int_equal(t->image.height, 2);
+    static const unsigned char want[12] = {255, 0, 0, 0, 128, 255, 10, 20, 30, 255, 255, 255};
+    for (int i = 0; i < 12; i++)
+        assert_exact(t->image.rgb[i], (float)glint_srgb_to_linear(want[i] / 255.0));
+}
+
+/* An image texture named relative to the scene file, in a folder beside it. */
+static void test_image_texture_from_a_file(void **state)
+{
+    static const unsigned char rgb[12] = {255, 0, 0, 0, 128, 255, 10, 20, 30, 255, 255, 255};
+    write_png("img/maps/tiny.png", 2, 2, rgb);
+    write_tmp("img/scene.yaml", "textures:\n"
+                                "  tiny:\n"
+                                "    type: image\n"
+                                "    file: maps/tiny.png\n"
+                                "    mapping: {type: planar, center: [0, 1, 0], scale: 3}\n"
+                                "  plain: {type: image, file: maps/tiny.png}\n");
+    glint_scene *s = load_good_file("img/scene.yaml");
+    const texture *t = &s->textures[texture_named(s, "tiny")];
+    check_tiny_texels(t);
+    assert_int_equal(t->mapping.kind, GLINT_MAP_PLANAR);
+    assert_vec(t->mapping.center, 0, 1, 0, 0);
+    assert_exact(t->mapping.scale, 3);
+    t = &s->textures[texture_named(s, "plain")];
+    check_tiny_texels(t);
+    assert_int_equal(t->mapping.kind, GLINT_MAP_UV);
+    glint_scene_free(s);
+
+    /* From memory, paths resolve against the folder of the name given. */
+    char name[PATH_SIZE];
+    tmp_path(name, "img/memory.yaml");
+    s = load_good_named("textures:\n  tiny: {type: image, file: maps/tiny.png}\n", name);
+    check_tiny_texels(&s->textures[0]);
+    glint_scene_free(s);
+}
+
+/* ------------------------------------------------------------ materials */
+
+static void test_material_every_key(void **state)
+{
+    glint_scene *s = load_good("textures:\n"
+                               "  checks: {type: checker}\n"
+                               "  other: {type: checker, size: 2}\n"
+                               "materials:\n"
+                               "  glass:\n"
+                               "    color: [0.5, 0.25, 0.75]\n"
+                               "    texture: other\n"
+                               "    ambient: 0.3\n"
+                               "    diffuse: 0.7\n"
+                               "    specular: 0.4\n"
+                               "    shininess: 12.5\n"
+                               "    reflectivity: 0.25\n"
+                               "    transparency: 0.2\n"
+                               "    refraction: 0.6\n"
+                               "    ior: 1.33\n"
+                               "    tint: 0.8\n"
+                               "    fresnel: true\n"
+                               "  plain: {}\n"
+                               "  unlit: {fresnel: false, diffuse: 0, specular: 0, ambient: 1}\n");
+    assert_int_equal(glint_scene_get_counts(s).materials, 3);
+    const glint_material *m = &s->materials[material_named(s, "glass")].m;
+    assert_rgb(m->color, lin(0.5), lin(0.25), lin(0.75), 0);
+    assert_int_equal(m->texture, texture_named(s, "other"));
+    assert_int_equal(m->texture, 1);
+    assert_exact(m->ambient, 0.3);
+    assert_exact(m->diffuse, 0.7);
+    assert_exact(m->specular, 0.4);
+    assert_exact(m->shininess, 12.5);
+    assert_exact(m->reflectivity, 0.25);
+    assert_exact(m->transparency, 0.2);
+    assert_exact(m->refraction, 0.6);
+    assert_exact(m->ior, 1.33);
+    assert_exact(m->tint, 0.8);
+    assert_true(m->fresnel);
+
+    /* Nothing given: glint_material_default(). */
+    glint_material def = glint_material_default();
+    m = &s->materials[material_named(s, "plain")].m;
+    assert_same_material(m, &def);
+    assert_int_equal(m->texture, -1);
+
+    m = &s->materials[material_named(s, "unlit")].m;
+    assert_false(m->fresnel);
+    assert_exact(m->diffuse, 0);
+    assert_exact(m->specular, 0);
+    assert_exact(m->ambient, 1);
+    assert_exact(m->shininess, def.shininess);
+    glint_scene_free(s);
+}
+
+/* --------------------------------------------------------------- lights */
+
+static void test_lights(void **state)
+{
+    glint_scene *s = load_good("lights:\n"
+                               "  - {type: point, position: [1, 2, 3], color: [1, 0.5, 0], intensity: 2}\n"
+                               "  - type: spot\n"
+                               "    position: [0, 5, 0]\n"
+                               "    direction: [0, -2, 0]\n"
+                               "    color: \"#ffffff\"\n"
+                               "    angle: 30\n"
+                               "    falloff: 10\n"
+                               "  - {type: directional, direction: [-1, -1, -1], color: {linear: [0.2, 0.4, 0.6]},"
+                               " intensity: 0.5}\n"
+                               "  - {type: spot, position: [0, 0, 0], direction: [1, 0, 0], angle: 90}\n"
+                               "  - {type: point, position: [0, 0, 0]}\n"
+                               "  - {type: point, position: [0, 0, 0], intensity: 0}\n");
+    assert_int_equal(glint_scene_get_counts(s).lights, 6);
+    const glint_light *l = &s->lights[0].desc;
+    assert_int_equal(l->kind, GLINT_LIGHT_POINT);
+    assert_vec(l->position, 1, 2, 3, 0);
+    assert_rgb(l->color, 2, 2 * lin(0.5), 0, 1e-15);
+
+    l = &s->lights[1].desc;
+    assert_int_equal(l->kind, GLINT_LIGHT_SPOT);
+    assert_vec(l->position, 0, 5, 0, 0);
+    assert_vec(l->direction, 0, -2, 0, 0);
+    assert_rgb(l->color, 1, 1, 1, 0);
+    assert_exact(l->cone_angle, 30);
+    assert_exact(l->falloff_angle, 10);
+
+    l = &s->lights[2].desc;
+    assert_int_equal(l->kind, GLINT_LIGHT_DIRECTIONAL);
+    assert_vec(l->direction, -1, -1, -1, 0);
+    assert_rgb(l->color, 0.1, 0.2, 0.3, 1e-15);
+
+    l = &s->lights[3].desc;
+    assert_int_equal(l->kind, GLINT_LIGHT_SPOT);
+    assert_exact(l->cone_angle, 90);
+    assert_exact(l->falloff_angle, 0);
+
+    /* Defaults: white, intensity 1. */
+    assert_rgb(s->lights[4].desc.color, 1, 1, 1, 0);
+    assert_rgb(s->lights[5].desc.color, 0, 0, 0, 0);
+    glint_scene_free(s);
+}
+
+/* --------------------------------------------------------------- shapes */
+
+static const char *const MATS = "materials:\n  m: {}\n  n: {color: [0, 1, 0]}\n";
+
+static glint_scene *load_objects(const char *objects)
+{
+    char yaml[8192];
+    snprintf(yaml, sizeof yaml, "%sobjects:\n%s", MATS, objects);
+    return load_good(yaml);
+}
+
+static void test_sphere_and_plane(void **state)
+{
+    glint_scene *s = load_objects("  - {type: sphere, material: m, center: [1, 2, 3], radius: 0.5}\n"
+                                  "  - {type: sphere, material: n, radius: 2}\n"
+                                  "  - {type: plane, material: m, point: [0, -1, 0], normal: [0, 2, 0]}\n"
+                                  "  - {type: plane, material: m, normal: [3, 0, 4]}\n");
+    assert_int_equal(glint_scene_get_counts(s).shapes, 4);
+    const glint_shape *d = &s->shapes[0].desc;
+    assert_int_equal(d->kind, GLINT_SHAPE_SPHERE);
+    assert_vec(d->center, 1, 2, 3, 0);
+    assert_exact(d->radius, 0.5);
+    assert_int_equal(s->shapes[0].material, material_named(s, "m"));
+    assert_false(s->shapes[0].has_transform);
+
+    d = &s->shapes[1].desc;
+    assert_vec(d->center, 0, 0, 0, 0);
+    assert_exact(d->radius, 2);
+    assert_int_equal(s->shapes[1].material, material_named(s, "n"));
+
+    /* The plane's normal is kept as a unit vector. */
+    d = &s->shapes[2].desc;
+    assert_int_equal(d->kind, GLINT_SHAPE_PLANE);
+    assert_vec(d->center, 0, -1, 0, 0);
+    assert_vec(d->normal, 0, 1, 0, 1e-15);
+    d = &s->shapes[3].desc;
+    assert_vec(d->center, 0, 0, 0, 0);
+    assert_vec(d->normal, 0.6, 0, 0.8, 1e-15);
+    glint_scene_free(s);
+}
+
+static void test_polygons(void **state)
+{
+    glint_scene *s = load_objects("  - type: polygon\n"
+                                  "    material: m\n"
+                                  "    points: [[0, 0, 0], [1, 0, 0], [0, 1, 0]]\n"
+                                  "  - type: polygon\n"
+                                  "    material: m\n"
+                                  "    points:\n"
+                                  "      - [-1, 0, -1]\n"
+                                  "      - [1, 0, -1]\n"
+                                  "      - [1, 0, 1]\n"
+                                  "      - [-1, 0, 1]\n");
+    const glint_shape *d = &s->shapes[0].desc;
+    assert_int_equal(d->kind, GLINT_SHAPE_POLYGON);
+    assert_int_equal(d->point_count, 3);
+    assert_vec(d->points[0], 0, 0, 0, 0);
+    assert_vec(d->points[1], 1, 0, 0, 0);
+    assert_vec(d->points[2], 0, 1, 0, 0);
+    d = &s->shapes[1].desc;
+    assert_int_equal(d->point_count, 4);
+    assert_vec(d->points[0], -1, 0, -1, 0);
+    assert_vec(d->points[1], 1, 0, -1, 0);
+    assert_vec(d->points[2], 1, 0, 1, 0);
+    assert_vec(d->points[3], -1, 0, 1, 0);
+    /* Points running anticlockwise seen from -y face down. */
+    assert_vec(s->shapes[1].poly_normal, 0, -1, 0, 1e-15);
+    glint_scene_free(s);
+}
+
+static void test_box_cylinder_cone(void **state)
+{
+    glint_scene *s = load_objects("  - {type: box, material: m, min: [-1, -2, -3], max: [1, 2, 3.5]}\n"
+                                  "  - {type: cylinder, material: m, center: [1, 0, 1], radius: 0.5, height: 2}\n"
+                                  "  - {type: cylinder, material: m, radius: 1, height: 3, capped: false}\n"
+                                  "  - {type: cone, material: m, center: [0, 1, 0], radius: 2, height: 4}\n"
+                                  "  - {type: cone, material: n, radius: 1, height: 1, capped: false}\n"
+                                  "  - {type: cylinder, material: m, radius: 1, height: 1, capped: true}\n");
+    const glint_shape *d = &s->shapes[0].desc;
+    assert_int_equal(d->kind, GLINT_SHAPE_BOX);
+    assert_vec(d->min, -1, -2, -3, 0);
+    assert_vec(d->max, 1, 2, 3.5, 0);
+
+    d = &s->shapes[1].desc;
+    assert_int_equal(d->kind, GLINT_SHAPE_CYLINDER);
+    assert_vec(d->center, 1, 0, 1, 0);
+    assert_exact(d->radius, 0.5);
+    assert_exact(d->height, 2);
+    assert_true(d->capped);
+
+    d = &s->shapes[2].desc;
+    assert_vec(d->center, 0, 0, 0, 0);
+    assert_exact(d->radius, 1);
+    assert_exact(d->height, 3);
+    assert_false(d->capped);
+
+    d = &s->shapes[3].desc;
+    assert_int_equal(d->kind, GLINT_SHAPE_CONE);
+    assert_vec(d->center, 0, 1, 0, 0);
+    assert_exact(d->radius, 2);
+    assert_exact(d->height, 4);
+    assert_true(d->capped);
+
+    d = &s->shapes[4].desc;
+    assert_int_equal(d->kind, GLINT_SHAPE_CONE);
+    assert_false(d->capped);
+    assert_int_equal(s->shapes[4].material, material_named(s, "n"));
+    assert_true(s->shapes[5].desc.capped);
+    glint_scene_free(s);
+}
+
+/* ----------------------------------------------------------- transforms */
+
+static void test_transform_each_step(void **state)
+{
+    glint_scene *s = load_objects("  - {type: sphere, material: m, radius: 1, transform: [{translate: [1, -2, 3.5]}]}\n"
+                                  "  - {type: sphere, material: m, radius: 1, transform: [{scale: 2}]}\n"
+                                  "  - {type: sphere, material: m, radius: 1, transform: [{scale: [2, 3, -4]}]}\n"
+                                  "  - {type: sphere, material: m, radius: 1, transform: [{rotate_x: 90}]}\n"
+                                  "  - {type: sphere, material: m, radius: 1, transform: [{rotate_y: 90}]}\n"
+                                  "  - {type: sphere, material: m, radius: 1, transform: [{rotate_z: 90}]}\n"
+                                  "  - type: sphere\n"
+                                  "    material: m\n"
+                                  "    radius: 1\n"
+                                  "    transform:\n"
+                                  "      - rotate: {axis: [0, 0, 2], angle: 90}\n"
+                                  "  - type: sphere\n"
+                                  "    material: m\n"
+                                  "    radius: 1\n"
+                                  "    transform:\n"
+                                  "      - rotate: {axis: [1, 1, 1], angle: 120}\n"
+                                  "  - {type: sphere, material: m, radius: 1, transform: []}\n");
+    static const double translate[3][4] = {{1, 0, 0, 1}, {0, 1, 0, -2}, {0, 0, 1, 3.5}};
+    static const double uniform[3][4] = {{2, 0, 0, 0}, {0, 2, 0, 0}, {0, 0, 2, 0}};
+    static const double per_axis[3][4] = {{2, 0, 0, 0}, {0, 3, 0, 0}, {0, 0, -4, 0}};
+    /* Right-handed turns by 90 degrees. */
+    static const double about_x[3][4] = {{1, 0, 0, 0}, {0, 0, -1, 0}, {0, 1, 0, 0}};
+    static const double about_y[3][4] = {{0, 0, 1, 0}, {0, 1, 0, 0}, {-1, 0, 0, 0}};
+    static const double about_z[3][4] = {{0, -1, 0, 0}, {1, 0, 0, 0}, {0, 0, 1, 0}};
+    /* A third of a turn about (1, 1, 1) sends x to y, y to z and z to x. */
+    static const double cycle[3][4] = {{0, 0, 1, 0}, {1, 0, 0, 0}, {0, 1, 0, 0}};
+    static const double identity[3][4] = {{1, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+    assert_matrix(&s->shapes[0].to_world, translate, 0);
+    assert_matrix(&s->shapes[1].to_world, uniform, 0);
+    assert_matrix(&s->shapes[2].to_world, per_axis, 0);
+    assert_matrix(&s->shapes[3].to_world, about_x, 1e-15);
+    assert_matrix(&s->shapes[4].to_world, about_y, 1e-15);
+    assert_matrix(&s->shapes[5].to_world, about_z, 1e-15);
+    assert_matrix(&s->shapes[6].to_world, about_z, 1e-15);
+    assert_matrix(&s->shapes[7].to_world, cycle, 1e-15);
+    assert_matrix(&s->shapes[8].to_world, identity, 0);
+    assert_false(s->shapes[8].has_transform);
+    glint_scene_free(s);
+}
+
+/* Steps apply in the order written: the first step acts first. */
+static void test_transform_order(void **state)
+{
+    glint_scene *s = load_objects("  - {type: sphere, material: m, radius: 1, transform: [{scale: 2}, {translate: [1, 2, 3]}]}\n"
+                                  "  - {type: sphere, material: m, radius: 1, transform: [{translate: [1, 2, 3]}, {scale: [2, 3, 4]}]}\n"
+                                  "  - type: sphere\n"
+                                  "    material: m\n"
+                                  "    radius: 1\n"
+                                  "    transform:\n"
+                                  "      - rotate_z: 90\n"
+                                  "      - translate: [5, 0, 0]\n"
+                                  "      - scale: [1, 2, 1]\n");
+    static const double scale_then_move[3][4] = {{2, 0, 0, 1}, {0, 2, 0, 2}, {0, 0, 2, 3}};
+    static const double move_then_scale[3][4] = {{2, 0, 0, 2}, {0, 3, 0, 6}, {0, 0, 4, 12}};
+    assert_matrix(&s->shapes[0].to_world, scale_then_move, 0);
+    assert_matrix(&s->shapes[1].to_world, move_then_scale, 0);
+    /* (1, 0, 0) turns to (0, 1, 0), moves to (5, 1, 0), stretches to (5, 2, 0). */
+    glint_vec3 p = glint_transform_point(&s->shapes[2].to_world, (glint_vec3){1, 0, 0});
+    assert_vec(p, 5, 2, 0, 1e-15);
+    p = glint_transform_point(&s->shapes[2].to_world, (glint_vec3){0, 0, 1});
+    assert_vec(p, 5, 0, 1, 1e-15);
+    glint_scene_free(s);
+}
+
+/* A group's transform applies after each child's own; its material goes to
+ * children without one, through nested groups; a child's own material wins. */
+static void test_groups(void **state)
+{
+    glint_scene *s = load_objects("  - type: group\n"
+                                  "    material: n\n"
+                                  "    transform: [{translate: [10, 0, 0]}]\n"
+                                  "    objects:\n"
+                                  "      - {type: sphere, radius: 1, transform: [{scale: 2}]}\n"
+                                  "      - {type: sphere, radius: 1, material: m}\n"
+                                  "      - type: group\n"
+                                  "        transform: [{rotate_z: 90}]\n"
+                                  "        objects:\n"
+                                  "          - {type: box, min: [0, 0, 0], max: [1, 1, 1], transform: [{translate: [1, 0, 0]}]}\n"
+                                  "          - {type: sphere, radius: 1, material: {color: [1, 0, 0]}}\n"
+                                  "  - type: group\n"
+                                  "    material: {ambient: 0.75}\n"
+                                  "    objects:\n"
+                                  "      - {type: sphere, radius: 3}\n"
+                                  "      - {type: sphere, radius: 4}\n"
+                                  "  - {type: sphere, material: m, radius: 1}\n");
+    int m = material_named(s, "m"), n = material_named(s, "n");
+    assert_int_equal(glint_scene_get_counts(s).shapes, 7);
+    /* Scaled by 2 first, then moved by 10: (1, 0, 0) lands at (12, 0, 0). */
+    static const double scaled_moved[3][4] = {{2, 0, 0, 10}, {0, 2, 0, 0}, {0, 0, 2, 0}};
+    assert_matrix(&s->shapes[0].to_world, scaled_moved, 0);
+    assert_int_equal(s->shapes[0].material, n);
+    static const double moved[3][4] = {{1, 0, 0, 10}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+    assert_matrix(&s->shapes[1].to_world, moved, 0);
+    assert_int_equal(s->shapes[1].material, m);
+    /* Box: moved by 1, turned by the inner group, moved by the outer. */
+    glint_vec3 p = glint_transform_point(&s->shapes[2].to_world, (glint_vec3){0, 0, 0});
+    assert_vec(p, 10, 1, 0, 1e-15);
+    p = glint_transform_point(&s->shapes[2].to_world, (glint_vec3){1, 0, 0});
+    assert_vec(p, 10, 2, 0, 1e-15);
+    assert_int_equal(s->shapes[2].material, n);
+    /* An inline material is a new, unnamed material. */
+    int inline_red = s->shapes[3].material;
+    assert_true(inline_red != m && inline_red != n);
+    assert_null(s->materials[inline_red].name);
+    assert_rgb(s->materials[inline_red].m.color, 1, 0, 0, 0);
+    assert_exact(s->materials[inline_red].m.ambient, glint_material_default().ambient);
+    /* A group's inline material is one material shared by its children. */
+    int shared = s->shapes[4].material;
+    assert_int_equal(s->shapes[5].material, shared);
+    assert_null(s->materials[shared].name);
+    assert_exact(s->materials[shared].m.ambient, 0.75);
+    assert_false(s->shapes[4].has_transform);
+    assert_int_equal(s->shapes[6].material, m);
+    assert_int_equal(glint_scene_get_counts(s).materials, 4);
+    glint_scene_free(s);
+}
+
+/* -------------------------------------------------------------- colours */
+
+static void test_colours(void **state)
+{
+    glint_scene *s = load_good("materials:\n"
+                               "  display: {color: [0.5, 0.2, 1]}\n"
+                               "  hex: {color: \"#ff8000\"}\n"
+                               "  upper: {color: \"#ABCDEF\"}\n"
+                               "  linear: {color: {linear: [0.5, 0.2, 3]}}\n"
+                               "  black: {color: [0, 0, 0]}\n");
+    assert_rgb(s->materials[material_named(s, "display")].m.color, lin(0.5), lin(0.2), 1, 0);
+    assert_near(lin(0.5), 0.21404114048223255, 1e-15);
+    assert_rgb(s->materials[material_named(s, "hex")].m.color, 1, lin(128 / 255.0), 0, 0);
+    assert_rgb(s->materials[material_named(s, "upper")].m.color, lin(0xab / 255.0), lin(0xcd / 255.0),
+               lin(0xef / 255.0), 0);
+    assert_rgb(s->materials[material_named(s, "linear")].m.color, 0.5, 0.2, 3, 0);
+    assert_rgb(s->materials[material_named(s, "black")].m.color, 0, 0, 0, 0);
+    glint_scene_free(s);
+}
+
+/* ------------------------------------------------------------- includes */
+
+static void test_includes(void **state)
+{
+    write_tmp("inc/main.yaml", "glint: 1\n"
+                               "include: [parts/base.yaml, parts/materials.yaml]\n"
+                               "settings:\n"
+                               "  height: 20\n"
+                               "camera:\n"
+                               "  position: [0, 0, 9]\n"
+                               "materials:\n"
+                               "  blue: {color: [0, 0, 1], texture: checks}\n"
+                               "objects:\n"
+                               "  - {type: sphere, material: red, radius: 1}\n"
+                               "  - {type: sphere, material: blue, radius: 2}\n");
+    write_tmp("inc/parts/base.yaml", "include: more/textures.yaml   # relative to parts/\n"
+                                     "settings:\n"
+                                     "  width: 40\n"
+                                     "  height: 30\n"
+                                     "  samples: 4\n"
+                                     "camera: {position: [0, 0, 5], fov: 50}\n"
+                                     "lights:\n"
+                                     "  - {type: point, position: [1, 1, 1]}\n");
+    write_tmp("inc/parts/more/textures.yaml", "textures:\n  checks: {type: checker, size: 3}\n");
+    write_tmp("inc/parts/materials.yaml", "materials:\n"
+                                          "  red: {color: [1, 0, 0], texture: checks}\n"
+                                          "objects:\n"
+                                          "  - {type: box, material: red, min: [0, 0, 0], max: [1, 1, 1]}\n");
+    glint_scene *s = load_good_file("inc/main.yaml");
+    glint_settings st = glint_scene_get_settings(s);
+    assert_int_equal(st.width, 40);   /* from the include */
+    assert_int_equal(st.height, 20);  /* the including file wins, key by key */
+    assert_int_equal(st.samples_per_pixel, 4);
+    glint_camera cam = glint_scene_get_camera(s);
+    assert_vec(cam.position, 0, 0, 9, 0);
+    assert_exact(cam.vfov_degrees, 50);
+    glint_scene_counts c = glint_scene_get_counts(s);
+    assert_int_equal(c.textures, 1);
+    assert_int_equal(c.materials, 2);
+    assert_int_equal(c.shapes, 3);
+    assert_int_equal(c.lights, 1);
+    /* Names are shared across files, in both directions of the include. */
+    int checks = texture_named(s, "checks");
+    assert_exact(s->textures[checks].cell, 3);
+    int red = material_named(s, "red"), blue = material_named(s, "blue");
+    assert_int_equal(s->materials[red].m.texture, checks);
+    assert_int_equal(s->materials[blue].m.texture, checks);
+    /* Included objects come first. */
+    assert_int_equal(s->shapes[0].desc.kind, GLINT_SHAPE_BOX);
+    assert_int_equal(s->shapes[0].material, red);
+    assert_int_equal(s->shapes[1].material, red);
+    assert_int_equal(s->shapes[2].material, blue);
+    glint_scene_free(s);
+}
+
+/* --------------------------------------------------- anchors and merges */
+
+static void test_anchors_and_aliases(void **state)
+{
+    glint_scene *s = load_good("camera:\n"
+                               "  position: &eye [0, 1, 5]\n"
+                               "  look_at: [0, 0, 0]\n"
+                               "materials:\n"
+                               "  m: &plain {specular: 0.125}\n"
+                               "  again: *plain\n"
+                               "lights:\n"
+                               "  - {type: point, position: *eye}\n"
+                               "objects:\n"
+                               "  - &ball {type: sphere, material: m, radius: 2, center: [1, 1, 1]}\n"
+                               "  - *ball\n");
+    assert_vec(s->lights[0].desc.position, 0, 1, 5, 0);
+    assert_exact(s->materials[material_named(s, "again")].m.specular, 0.125);
+    assert_int_equal(glint_scene_get_counts(s).shapes, 2);
+    assert_exact(s->shapes[1].desc.radius, 2);
+    assert_vec(s->shapes[1].desc.center, 1, 1, 1, 0);
+    glint_scene_free(s);
+}
+
+static void test_merge_keys(void **state)
+{
+    glint_scene *s = load_good("materials:\n"
+                               "  base: &base {color: [1, 0, 0], specular: 0.5, shininess: 10}\n"
+                               "  shiny:\n"
+                               "    <<: *base\n"
+                               "    shininess: 99\n"
+                               "  both: {<<: [*base, {reflectivity: 0.25, specular: 0.75}], ambient: 0.125}\n"
+                               "objects:\n"
+                               "  - &ball {type: sphere, material: base, radius: 2}\n"
+                               "  - {<<: *ball, center: [5, 0, 0], material: shiny}\n");
+    const glint_material *m = &s->materials[material_named(s, "shiny")].m;
+    assert_rgb(m->color, 1, 0, 0, 0);
+    assert_exact(m->specular, 0.5);
+    assert_exact(m->shininess, 99); /* a key written in the map wins */
+    m = &s->materials[material_named(s, "both")].m;
+    assert_exact(m->specular, 0.5); /* the earlier merge wins */
+    assert_exact(m->reflectivity, 0.25);
+    assert_exact(m->ambient, 0.125);
+    assert_exact(m->shininess, 10);
+    assert_int_equal(s->shapes[1].desc.kind, GLINT_SHAPE_SPHERE);
+    assert_exact(s->shapes[1].desc.radius, 2);
+    assert_vec(s->shapes[1].desc.center, 5, 0, 0, 0);
+    assert_int_equal(s->shapes[1].material, material_named(s, "shiny"));
+    glint_scene_free(s);
+}
+
+static void test_version_and_comments(void **state)
+{
+    glint_scene *s = load_good("# A scene with comments everywhere.\n"
+                               "glint: 1        # the format version\n"
+                               "settings:       # the image\n"
+                               "  width: 8      # eight pixels\n"
+                               "  # height: 999\n"
+                               "materials: {m: {}}  # one material\n"
+                               "objects:\n"
+                               "  # - {type: sphere, material: m, radius: 1}\n"
+                               "  - {type: sphere, material: m, radius: 3}  # radius: 4\n");
+    assert_int_equal(glint_scene_get_settings(s).width, 8);
+    assert_int_equal(glint_scene_get_settings(s).height, 480);
+    assert_int_equal(glint_scene_get_counts(s).shapes, 1);
+    assert_exact(s->shapes[0].desc.radius, 3);
+    glint_scene_free(s);
+}
+
+/* --------------------------------------------------------- tiny renders */
+
+/* Settings ambient times material ambient times colour, nothing else lit. */
+static void test_render_ambient(void **state)
+{
+    glint_scene *s = load_good("settings: {width: 2, height: 2, ambient: {linear: [0.5, 1, 1]}, background: [1, 1, 1]}\n"
+                               "camera: {position: [0, 0, 0], look_at: [0, 0, -1], fov: 10}\n"
+                               "materials:\n"
+                               "  flat: {color: {linear: [0.5, 0.25, 1]}, ambient: 0.5, diffuse: 0, specular: 0}\n"
+                               "objects:\n"
+                               "  - {type: plane, material: flat, point: [0, 0, -5], normal: [0, 0, 1]}\n");
+    glint_image img = render(s);
+    assert_int_equal(img.width, 2);
+    assert_int_equal(img.height, 2);
+    for (int i = 0; i < 4; i++) {
+        assert_near(img.pixels[3 * i], 0.125, 1e-6);
+        assert_near(img.pixels[3 * i + 1], 0.125, 1e-6);
+        assert_near(img.pixels[3 * i + 2], 0.5, 1e-6);
+    }
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
+/* Background alone; exponential fog hides it; linear fog by distance. */
+static void test_render_background_and_fog(void **state)
+{
+    glint_scene *s = load_good("settings: {width: 1, height: 1, background: [0.5, 0.5, 0.5]}\n");
+    glint_image img = render(s);
+    for (int c = 0; c < 3; c++)
+        assert_near(img.pixels[c], lin(0.5), 1e-6);
+    glint_image_free(&img);
+    glint_scene_free(s);
+
+    s = load_good("settings: {width: 1, height: 1, background: [1, 0, 0]}\n"
+                  "fog: {type: exponential, color: {linear: [0, 0.5, 0]}, density: 0.1}\n");
+    img = render(s);
+    assert_near(img.pixels[0], 0, 1e-6);
+    assert_near(img.pixels[1], 0.5, 1e-6);
+    assert_near(img.pixels[2], 0, 1e-6);
+    glint_image_free(&img);
+    glint_scene_free(s);
+
+    /* The single pixel sees the wall 5 units away: halfway from 0 to 10. */
+    s = load_good("settings: {width: 1, height: 1}\n"
+                  "fog: {type: linear, color: {linear: [0, 0, 0.5]}, start: 0, end: 10}\n"
+                  "materials:\n"
+                  "  glow: {color: {linear: [1, 1, 1]}, ambient: 1, diffuse: 0, specular: 0}\n"
+                  "objects:\n"
+                  "  - {type: plane, material: glow, point: [0, 0, -5], normal: [0, 0, 1]}\n");
+    img = render(s);
+    assert_near(img.pixels[0], 0.5, 1e-6);
+    assert_near(img.pixels[1], 0.5, 1e-6);
+    assert_near(img.pixels[2], 0.75, 1e-6);
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
+/* ------------------------------------------------------ broken scenes */
+
+/* A broken scene, loaded from memory as "bad.yaml" with the default
+ * max_errors: its first message and how many problems it has. "@TMP@"
+ * stands for the test's temporary folder in both texts. */
+typedef struct bad_scene {
+    const char *name;
+    const char *yaml;
+    const char *first;
+    int problems;
+} bad_scene;
+
+static const bad_scene BAD[] = {
+    {"syntax_unclosed_bracket",
+     "objects: [1, 2\n",
+     "bad.yaml:2:1: syntax error: did not find expected ',' or ']' while parsing a flow sequence", 1},
+    {"syntax_bad_indentation",
+     "settings:\n"
+     "  width: 10\n"
+     "   height: 20\n",
+     "bad.yaml:3:10: syntax error: mapping values are not allowed in this context", 1},
+    {"syntax_tab_indent",
+     "settings:\n"
+     "\twidth: 10\n",
+     "bad.yaml:2:1: syntax error: found character that cannot start any token while scanning for the next token", 1},
+    {"syntax_unclosed_quote",
+     "settings:\n"
+     "  output: \"a.png\n",
+     "bad.yaml:3:1: syntax error: found unexpected end of stream while scanning a quoted scalar", 1},
+    {"syntax_unknown_alias",
+     "settings: *nope\n",
+     "bad.yaml:1:11: unknown alias '*nope'", 1},
+    {"two_documents",
+     "glint: 1\n"
+     "---\n"
+     "glint: 1\n",
+     "bad.yaml:2:1: only one YAML document per file", 1},
+    {"top_level_list",
+     "- glint: 1\n",
+     "bad.yaml:1:1: a scene file must be a map, got a list", 1},
+    {"top_level_text",
+     "hello\n",
+     "bad.yaml:1:1: a scene file must be a map, got text", 1},
+    {"unknown_root_key_hint",
+     "glint: 1\n"
+     "setings:\n"
+     "  width: 10\n",
+     "bad.yaml:2:1: unknown key 'setings' in the scene (did you mean 'settings'?)", 1},
+    {"unknown_root_key",
+     "glint: 1\n"
+     "frobnicate: 1\n",
+     "bad.yaml:2:1: unknown key 'frobnicate' in the scene", 1},
+    {"unknown_settings_key_hint",
+     "settings:\n"
+     "  widht: 10\n",
+     "bad.yaml:2:3: unknown key 'widht' in settings (did you mean 'width'?)", 1},
+    {"unknown_camera_key_hint",
+     "camera:\n"
+     "  lookat: [0, 0, 0]\n",
+     "bad.yaml:2:3: unknown key 'lookat' in camera (did you mean 'look_at'?)", 1},
+    {"unknown_fog_key_hint",
+     "fog:\n"
+     "  type: exponential\n"
+     "  densty: 0.5\n",
+     "bad.yaml:3:3: unknown key 'densty' in exponential fog (did you mean 'density'?)", 1},
+    {"unknown_texture_key_hint",
+     "textures:\n"
+     "  t: {type: checker, colours: [[0, 0, 0], [1, 1, 1]]}\n",
+     "bad.yaml:2:22: unknown key 'colours' in texture 't' (did you mean 'colors'?)", 1},
+    {"unknown_material_key_hint",
+     "materials:\n"
+     "  m: {colour: [1, 1, 1]}\n",
+     "bad.yaml:2:7: unknown key 'colour' in material 'm' (did you mean 'color'?)", 1},
+    {"unknown_light_key_hint",
+     "lights:\n"
+     "  - {type: point, position: [0, 0, 0], intensty: 2}\n",
+     "bad.yaml:2:40: unknown key 'intensty' in a point light (did you mean 'intensity'?)", 1},
+    {"unknown_object_key",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: box, material: m, min: [0, 0, 0], max: [1, 1, 1], radius: 1}\n",
+     "bad.yaml:4:62: unknown key 'radius' in box", 1},
+    {"unknown_rotate_key_hint",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - type: sphere\n"
+     "    material: m\n"
+     "    radius: 1\n"
+     "    transform:\n"
+     "      - rotate: {axis: [0, 1, 0], angel: 30}\n",
+     "bad.yaml:8:35: unknown key 'angel' in rotate (did you mean 'angle'?)", 2},
+    {"unknown_mapping_key_hint",
+     "textures:\n"
+     "  t: {type: checker, mapping: {type: planar, scael: 2}}\n",
+     "bad.yaml:2:46: unknown key 'scael' in a planar mapping (did you mean 'scale'?)", 1},
+    {"sphere_needs_radius",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - type: sphere\n"
+     "    material: m\n"
+     "    center: [0, 1, 0]\n",
+     "bad.yaml:4:5: sphere needs 'radius'", 1},
+    {"plane_needs_normal",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: plane, material: m, point: [0, 0, 0]}\n",
+     "bad.yaml:4:5: plane needs 'normal'", 1},
+    {"polygon_needs_points",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: polygon, material: m}\n",
+     "bad.yaml:4:5: polygon needs 'points'", 1},
+    {"box_needs_min",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: box, material: m, max: [1, 1, 1]}\n",
+     "bad.yaml:4:5: box needs 'min'", 1},
+    {"box_needs_max",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: box, material: m, min: [0, 0, 0]}\n",
+     "bad.yaml:4:5: box needs 'max'", 1},
+    {"cylinder_needs_radius",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: cylinder, material: m, height: 2}\n",
+     "bad.yaml:4:5: cylinder needs 'radius'", 1},
+    {"cylinder_needs_height",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: cylinder, material: m, radius: 1}\n",
+     "bad.yaml:4:5: cylinder needs 'height'", 1},
+    {"cone_needs_height",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: cone, material: m, radius: 1, capped: false}\n",
+     "bad.yaml:4:5: cone needs 'height'", 1},
+    {"object_needs_type",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {material: m, radius: 1}\n",
+     "bad.yaml:4:5: an object needs 'type'", 1},
+    {"object_needs_material",
+     "objects:\n"
+     "  - {type: sphere, radius: 1}\n",
+     "bad.yaml:2:5: sphere needs 'material'", 1},
+    {"group_needs_objects",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: group, material: m}\n",
+     "bad.yaml:4:5: group needs 'objects'", 1},
+    {"light_needs_type",
+     "lights:\n"
+     "  - {position: [0, 0, 0]}\n",
+     "bad.yaml:2:5: a light needs 'type'", 1},
+    {"point_light_needs_position",
+     "lights:\n"
+     "  - {type: point, color: [1, 1, 1]}\n",
+     "bad.yaml:2:5: a point light needs 'position'", 1},
+    {"spot_light_needs_three_keys",
+     "lights:\n"
+     "  - type: spot\n"
+     "    color: [1, 1, 1]\n",
+     "bad.yaml:2:5: a spot light needs 'position'", 3},
+    {"spot_light_needs_angle",
+     "lights:\n"
+     "  - {type: spot, position: [0, 5, 0], direction: [0, -1, 0]}\n",
+     "bad.yaml:2:5: a spot light needs 'angle'", 1},
+    {"directional_light_needs_direction",
+     "lights:\n"
+     "  - {type: directional, intensity: 2}\n",
+     "bad.yaml:2:5: a directional light needs 'direction'", 1},
+    {"texture_needs_type",
+     "textures:\n"
+     "  t: {colors: [[0, 0, 0], [1, 1, 1]]}\n",
+     "bad.yaml:2:6: texture 't' needs 'type'", 1},
+    {"image_texture_needs_file",
+     "textures:\n"
+     "  t: {type: image, mapping: spherical}\n",
+     "bad.yaml:2:6: texture 't' needs 'file'", 1},
+    {"mapping_needs_type",
+     "textures:\n"
+     "  t: {type: checker, mapping: {scale: 2}}\n",
+     "bad.yaml:2:31: mapping needs 'type'", 1},
+    {"rotate_needs_angle",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: 1, transform: [{rotate: {axis: [0, 1, 0]}}]}\n",
+     "bad.yaml:4:65: rotate needs 'angle'", 1},
+    {"text_for_integer",
+     "settings:\n"
+     "  width: ten\n",
+     "bad.yaml:2:10: 'width' must be a whole number from 1 to 65536, got 'ten'", 1},
+    {"text_for_number",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: big}\n",
+     "bad.yaml:4:41: 'radius' must be a number, got 'big'", 1},
+    {"fraction_for_integer",
+     "settings:\n"
+     "  height: 10.5\n",
+     "bad.yaml:2:11: 'height' must be a whole number from 1 to 65536, got '10.5'", 1},
+    {"list_for_map",
+     "settings: [640, 480]\n",
+     "bad.yaml:1:11: settings must be a map, got a list", 1},
+    {"list_for_material_map",
+     "materials:\n"
+     "  m: [1, 1, 1]\n",
+     "bad.yaml:2:6: material 'm' must be a map, got a list", 1},
+    {"map_for_list",
+     "objects: {type: sphere}\n",
+     "bad.yaml:1:10: 'objects' must be a list, got a map", 1},
+    {"map_for_lights_list",
+     "lights: {type: point}\n",
+     "bad.yaml:1:9: 'lights' must be a list, got a map", 1},
+    {"map_for_transform_list",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: 1, transform: {translate: [1, 2, 3]}}\n",
+     "bad.yaml:4:55: 'transform' must be a list, got a map", 1},
+    {"map_for_vector",
+     "camera:\n"
+     "  position: {x: 1, y: 2, z: 3}\n",
+     "bad.yaml:2:13: 'position' must be a list of 3 finite numbers [x, y, z]", 1},
+    {"vector_of_two",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: 1, center: [1, 2]}\n",
+     "bad.yaml:4:52: 'center' must be a list of 3 finite numbers [x, y, z]", 1},
+    {"polygon_point_not_vector",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: polygon, material: m, points: [[0, 0, 0], [1, 0, 0], 7]}\n",
+     "bad.yaml:4:65: 'points' must be a list of 3 finite numbers [x, y, z]", 1},
+    {"bool_yes",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: cylinder, material: m, radius: 1, height: 1, capped: yes}\n",
+     "bad.yaml:4:65: 'capped' must be true or false, got 'yes'", 1},
+    {"bool_number",
+     "materials:\n"
+     "  glass: {fresnel: 1}\n",
+     "bad.yaml:2:20: 'fresnel' must be true or false, got '1'", 1},
+    {"colour_two_channels",
+     "settings:\n"
+     "  background: [1, 0.5]\n",
+     "bad.yaml:2:15: 'background' must be a colour: [r, g, b], \"#rrggbb\" or {linear: [r, g, b]}", 1},
+    {"colour_bad_hex",
+     "settings:\n"
+     "  background: \"#12345g\"\n",
+     "bad.yaml:2:15: 'background' must be a colour: [r, g, b], \"#rrggbb\" or {linear: [r, g, b]}", 1},
+    {"colour_negative",
+     "materials:\n"
+     "  m: {color: [0.5, -0.1, 0]}\n",
+     "bad.yaml:2:14: 'color' must not have negative channels", 1},
+    {"colour_linear_wrong",
+     "settings:\n"
+     "  ambient: {linear: [1, 1]}\n",
+     "bad.yaml:2:12: 'ambient' must be a colour: [r, g, b], \"#rrggbb\" or {linear: [r, g, b]}", 1},
+    {"radius_negative",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: -1}\n",
+     "bad.yaml:4:41: 'radius' must be positive, got -1", 1},
+    {"radius_zero",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: 0}\n",
+     "bad.yaml:4:41: 'radius' must be positive, got 0", 1},
+    {"cylinder_radius_zero",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: cylinder, material: m, radius: 0, height: 1}\n",
+     "bad.yaml:4:43: 'radius' must be positive, got 0", 1},
+    {"cylinder_height_negative",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: cylinder, material: m, radius: 1, height: -2}\n",
+     "bad.yaml:4:54: 'height' must be positive, got -2", 1},
+    {"cone_height_zero",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: cone, material: m, radius: 1, height: 0}\n",
+     "bad.yaml:4:50: 'height' must be positive, got 0", 1},
+    {"checker_size_zero",
+     "textures:\n"
+     "  t: {type: checker, size: 0}\n",
+     "bad.yaml:2:28: 'size' must be positive, got 0", 1},
+    {"image_zero_size",
+     "textures:\n"
+     "  t: {type: image, file: @TMP@/zero.png}\n",
+     "bad.yaml:2:26: texture '@TMP@/zero.png' is corrupt: Invalid IHDR data", 1},
+    {"image_empty_file",
+     "textures:\n"
+     "  t: {type: image, file: @TMP@/empty.png}\n",
+     "bad.yaml:2:26: texture '@TMP@/empty.png' is not a PNG or JPEG file", 1},
+    {"width_zero",
+     "settings:\n"
+     "  width: 0\n",
+     "bad.yaml:2:10: 'width' must be a whole number from 1 to 65536, got '0'", 1},
+    {"samples_not_square",
+     "settings:\n"
+     "  samples: 8\n",
+     "bad.yaml:2:12: 'samples' must be a square number (1, 4, 9, 16, ...), got 8", 1},
+    {"samples_too_many",
+     "settings:\n"
+     "  samples: 4225\n",
+     "bad.yaml:2:12: 'samples' must be a whole number from 1 to 4096, got '4225'", 1},
+    {"depth_65",
+     "settings:\n"
+     "  depth: 65\n",
+     "bad.yaml:2:10: 'depth' must be a whole number from 0 to 64, got '65'", 1},
+    {"seed_negative",
+     "settings:\n"
+     "  seed: -1\n",
+     "bad.yaml:2:9: 'seed' must be a whole number from 0 to 4294967295, got '-1'", 1},
+    {"fov_0",
+     "camera:\n"
+     "  fov: 0\n",
+     "bad.yaml:2:8: 'fov' must be between 0 and 180 degrees, got 0", 1},
+    {"fov_180",
+     "camera:\n"
+     "  fov: 180\n",
+     "bad.yaml:2:8: 'fov' must be between 0 and 180 degrees, got 180", 1},
+    {"camera_looks_at_itself",
+     "camera:\n"
+     "  position: [1, 2, 3]\n"
+     "  look_at: [1, 2, 3]\n",
+     "bad.yaml:2:3: camera position and look_at must differ", 1},
+    {"ior_0",
+     "materials:\n"
+     "  glass: {refraction: 1, ior: 0}\n",
+     "bad.yaml:2:31: 'ior' must be above 0, got 0", 1},
+    {"ambient_2",
+     "materials:\n"
+     "  m: {ambient: 2}\n",
+     "bad.yaml:2:16: 'ambient' must be from 0 to 1, got 2", 1},
+    {"reflectivity_negative",
+     "materials:\n"
+     "  m: {reflectivity: -0.5}\n",
+     "bad.yaml:2:21: 'reflectivity' must be from 0 to 1, got -0.5", 1},
+    {"transparency_plus_refraction",
+     "materials:\n"
+     "  m: {transparency: 0.5, refraction: 0.75}\n",
+     "bad.yaml:2:6: transparency + refraction must not exceed 1, got 1.25", 1},
+    {"spot_angle_0",
+     "lights:\n"
+     "  - {type: spot, position: [0, 5, 0], direction: [0, -1, 0], angle: 0}\n",
+     "bad.yaml:2:69: 'angle' must be above 0 and at most 90 degrees, got 0", 1},
+    {"spot_angle_95",
+     "lights:\n"
+     "  - {type: spot, position: [0, 5, 0], direction: [0, -1, 0], angle: 95}\n",
+     "bad.yaml:2:69: 'angle' must be above 0 and at most 90 degrees, got 95", 1},
+    {"spot_falloff_above_angle",
+     "lights:\n"
+     "  - {type: spot, position: [0, 5, 0], direction: [0, -1, 0], angle: 20, falloff: 25}\n",
+     "bad.yaml:2:82: 'falloff' must be from 0 to the cone angle, got 25", 1},
+    {"light_intensity_negative",
+     "lights:\n"
+     "  - {type: point, position: [0, 5, 0], intensity: -1}\n",
+     "bad.yaml:2:51: 'intensity' must be 0 or more, got -1", 1},
+    {"light_direction_zero",
+     "lights:\n"
+     "  - {type: directional, direction: [0, 0, 0]}\n",
+     "bad.yaml:2:5: light direction must be finite and not zero", 1},
+    {"fog_density_zero",
+     "fog:\n"
+     "  type: exponential\n"
+     "  density: 0\n",
+     "bad.yaml:3:12: 'density' must be positive, got 0", 1},
+    {"fog_start_after_end",
+     "fog: {type: linear, start: 10, end: 5}\n",
+     "bad.yaml:1:6: linear fog needs finite start < end, got 10 and 5", 1},
+    {"fog_type_hint",
+     "fog:\n"
+     "  type: linera\n",
+     "bad.yaml:2:9: 'type' must be none, linear or exponential, got 'linera' (did you mean 'linear'?)", 1},
+    {"sampler_hint",
+     "settings:\n"
+     "  sampler: jitterd\n",
+     "bad.yaml:2:12: 'sampler' must be regular or jittered, got 'jitterd' (did you mean 'jittered'?)", 1},
+    {"sampler_no_hint",
+     "settings:\n"
+     "  sampler: random\n",
+     "bad.yaml:2:12: 'sampler' must be regular or jittered, got 'random'", 1},
+    {"object_type_hint",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphear, material: m, radius: 1}\n",
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone or group, got 'sphear' (did you mean 'sphere'?)", 1},
+    {"object_type_no_hint",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: torus, material: m, radius: 1}\n",
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone or group, got 'torus'", 1},
+    {"light_type_no_hint",
+     "lights:\n"
+     "  - {type: area}\n",
+     "bad.yaml:2:12: 'type' must be point, spot or directional, got 'area'", 1},
+    {"texture_type_no_hint",
+     "textures:\n"
+     "  t: {type: noise}\n",
+     "bad.yaml:2:13: 'type' must be checker or image, got 'noise'", 1},
+    {"mapping_hint",
+     "textures:\n"
+     "  t: {type: checker, mapping: sphericl}\n",
+     "bad.yaml:2:31: 'mapping' must be uv, planar, spherical or cylindrical, got 'sphericl' (did you mean 'spherical'?)", 1},
+    {"version_2",
+     "glint: 2\n",
+     "bad.yaml:1:8: format version 2 is not supported (this glint reads version 1)", 1},
+    {"version_text",
+     "glint: one\n",
+     "bad.yaml:1:8: 'glint' must be a number, got 'one'", 1},
+    {"output_not_image",
+     "settings:\n"
+     "  output: render.bmp\n",
+     "bad.yaml:2:11: 'output' must name a .png or .ppm file, got 'render.bmp'", 1},
+    {"radius_nan",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: .nan}\n",
+     "bad.yaml:4:41: 'radius' must be a finite number, got '.nan'", 1},
+    {"radius_inf",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: .inf}\n",
+     "bad.yaml:4:41: 'radius' must be a finite number, got '.inf'", 1},
+    {"fov_negative_inf",
+     "camera:\n"
+     "  fov: -.inf\n",
+     "bad.yaml:2:8: 'fov' must be a finite number, got '-.inf'", 1},
+    {"ambient_NaN",
+     "materials:\n"
+     "  m: {ambient: .NaN}\n",
+     "bad.yaml:2:16: 'ambient' must be a finite number, got '.NaN'", 1},
+    {"vector_with_inf",
+     "camera:\n"
+     "  position: [0, .inf, 0]\n",
+     "bad.yaml:2:13: 'position' must be a list of 3 finite numbers [x, y, z]", 1},
+    {"unknown_material_hint",
+     "materials:\n"
+     "  marble: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: marbel, radius: 1}\n",
+     "bad.yaml:4:30: unknown material 'marbel' (did you mean 'marble'?)", 1},
+    {"unknown_material",
+     "materials:\n"
+     "  marble: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: granite, radius: 1}\n",
+     "bad.yaml:4:30: unknown material 'granite'", 1},
+    {"unknown_texture_hint",
+     "textures:\n"
+     "  checks: {type: checker}\n"
+     "materials:\n"
+     "  m: {texture: chekcs}\n",
+     "bad.yaml:4:16: unknown texture 'chekcs' (did you mean 'checks'?)", 1},
+    {"unknown_texture",
+     "materials:\n"
+     "  m: {texture: wood}\n",
+     "bad.yaml:2:16: unknown texture 'wood'", 1},
+    {"texture_file_missing",
+     "textures:\n"
+     "  moon: {type: image, file: no-such-moon.png}\n",
+     "bad.yaml:2:29: cannot open texture 'no-such-moon.png': No such file or directory", 1},
+    {"include_missing",
+     "include: no-such-part.yaml\n",
+     "bad.yaml:1:10: cannot include 'no-such-part.yaml': No such file or directory", 1},
+    {"include_not_text",
+     "include: [{file: a.yaml}]\n",
+     "bad.yaml:1:11: 'include' must name files, got a map", 1},
+    {"duplicate_material",
+     "materials:\n"
+     "  m: {}\n"
+     "  m: {ambient: 0.5}\n",
+     "bad.yaml:3:6: material 'm' is defined twice", 1},
+    {"duplicate_texture",
+     "textures:\n"
+     "  t: {type: checker}\n"
+     "  t: {type: checker, size: 2}\n",
+     "bad.yaml:3:6: texture 't' is defined twice", 1},
+    {"polygon_collinear",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: polygon, material: m, points: [[0, 0, 0], [1, 1, 1], [2, 2, 2]]}\n",
+     "bad.yaml:4:5: polygon points are collinear", 1},
+    {"polygon_non_planar",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: polygon, material: m, points: [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.5]]}\n",
+     "bad.yaml:4:5: polygon is not planar", 1},
+    {"polygon_not_convex",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: polygon, material: m, points: [[0, 0, 0], [2, 0, 0], [0.5, 0.5, 0], [0, 2, 0]]}\n",
+     "bad.yaml:4:5: polygon is not convex", 1},
+    {"polygon_five_points",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: polygon, material: m, points: [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0.5, 0]]}\n",
+     "bad.yaml:4:42: 'points' must hold 3 or 4 points, got 5", 1},
+    {"polygon_two_points",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: polygon, material: m, points: [[0, 0, 0], [1, 0, 0]]}\n",
+     "bad.yaml:4:42: 'points' must hold 3 or 4 points, got 2", 1},
+    {"polygon_points_coincide",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: polygon, material: m, points: [[0, 0, 0], [0, 0, 0], [1, 1, 0]]}\n",
+     "bad.yaml:4:5: polygon points 0 and 1 coincide", 1},
+    {"box_min_equals_max",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: box, material: m, min: [0, 0, 0], max: [1, 0, 1]}\n",
+     "bad.yaml:4:5: box min must be below max on every axis", 1},
+    {"box_min_above_max",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: box, material: m, min: [2, 2, 2], max: [1, 1, 1]}\n",
+     "bad.yaml:4:5: box min must be below max on every axis", 1},
+    {"plane_normal_zero",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: plane, material: m, normal: [0, 0, 0]}\n",
+     "bad.yaml:4:5: plane normal must not be zero", 1},
+    {"scale_zero_vector",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: 1, transform: [{scale: [1, 0, 1]}]}\n",
+     "bad.yaml:4:64: 'scale' must not be zero", 1},
+    {"scale_zero_number",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: 1, transform: [{scale: 0}]}\n",
+     "bad.yaml:4:64: 'scale' must not be zero", 1},
+    {"rotate_axis_zero",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: 1, transform: [{rotate: {axis: [0, 0, 0], angle: 45}}]}\n",
+     "bad.yaml:4:72: 'axis' must not be zero", 1},
+    {"transform_step_hint",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: 1, transform: [{translat: [1, 2, 3]}]}\n",
+     "bad.yaml:4:57: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z or scale, got 'translat' (did you mean 'translate'?)", 1},
+    {"transform_step_two_keys",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: 1, transform: [{translate: [1, 2, 3], scale: 2}]}\n",
+     "bad.yaml:4:56: each transform step is a map with one key: translate, rotate, rotate_x, rotate_y, rotate_z or scale", 1},
+    {"planar_mapping_one_axis",
+     "textures:\n"
+     "  t: {type: checker, mapping: {type: planar, u_axis: [1, 0, 0]}}\n",
+     "bad.yaml:2:31: a planar mapping needs both 'u_axis' and 'v_axis', or neither", 1},
+    {"merge_key_not_map",
+     "materials:\n"
+     "  m: {<<: 5, ambient: 0.5}\n",
+     "bad.yaml:2:11: a merge key (<<) needs a map or a list of maps", 1},
+    {"material_name_not_word",
+     "materials:\n"
+     "  [a, b]: {}\n",
+     "bad.yaml:2:3: a name in 'materials' must be a word, got a list", 1},
+    {"three_problems",
+     "settings:\n"
+     "  width: 0\n"
+     "  height: -1\n"
+     "  samples: 3\n",
+     "bad.yaml:2:10: 'width' must be a whole number from 1 to 65536, got '0'", 3},
+    {"problems_in_three_sections",
+     "settings:\n"
+     "  depth: 100\n"
+     "camera:\n"
+     "  fov: 200\n"
+     "materials:\n"
+     "  m: {ambient: 7}\n",
+     "bad.yaml:2:10: 'depth' must be a whole number from 0 to 64, got '100'", 3},
+    {"duplicate_key_in_object",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: 1, radius: 2}\n",
+     "bad.yaml:4:44: duplicate key 'radius' in sphere", 1},
+    {"duplicate_root_key",
+     "settings:\n"
+     "  width: 10\n"
+     "settings:\n"
+     "  width: 20\n",
+     "bad.yaml:3:1: duplicate key 'settings' in the scene", 1},
+    {"duplicate_key_in_settings",
+     "settings:\n"
+     "  width: 10\n"
+     "  height: 10\n"
+     "  width: 20\n",
+     "bad.yaml:4:3: duplicate key 'width' in settings", 1},
+    {"directional_light_with_position",
+     "lights:\n"
+     "  - {type: directional, direction: [0, -1, 0], position: [1, 2, 3]}\n",
+     "bad.yaml:2:48: unknown key 'position' in a directional light", 1},
+    {"point_light_with_angle",
+     "lights:\n"
+     "  - {type: point, position: [0, 1, 0], angle: 30}\n",
+     "bad.yaml:2:40: unknown key 'angle' in a point light", 1},
+    {"point_light_with_direction_hint",
+     "lights:\n"
+     "  - {type: point, position: [0, 1, 0], direction: [0, -1, 0]}\n",
+     "bad.yaml:2:40: unknown key 'direction' in a point light", 1},
+    {"checker_with_file",
+     "textures:\n"
+     "  t: {type: checker, file: checks.png}\n",
+     "bad.yaml:2:22: unknown key 'file' in texture 't'", 1},
+    {"image_with_colors",
+     "textures:\n"
+     "  t: {type: image, colors: [[0, 0, 0], [1, 1, 1]], file: @TMP@/one.png}\n",
+     "bad.yaml:2:20: unknown key 'colors' in texture 't'", 1},
+    {"spherical_mapping_with_scale",
+     "textures:\n"
+     "  t: {type: checker, mapping: {type: spherical, scale: 2}}\n",
+     "bad.yaml:2:49: unknown key 'scale' in a spherical mapping", 1},
+    {"cylindrical_mapping_with_axis",
+     "textures:\n"
+     "  t: {type: checker, mapping: {type: cylindrical, u_axis: [1, 0, 0]}}\n",
+     "bad.yaml:2:51: unknown key 'u_axis' in a cylindrical mapping", 1},
+    {"fog_needs_type",
+     "fog:\n"
+     "  color: [1, 1, 1]\n"
+     "  density: 0.5\n",
+     "bad.yaml:2:3: fog needs 'type'", 1},
+    {"linear_fog_needs_start_and_end",
+     "fog:\n"
+     "  type: linear\n"
+     "  end: 10\n",
+     "bad.yaml:2:3: linear fog needs 'start' and 'end'", 1},
+    {"exponential_fog_needs_density",
+     "fog:\n"
+     "  type: exponential\n"
+     "  color: [1, 1, 1]\n",
+     "bad.yaml:2:3: exponential fog needs 'density'", 1},
+    {"display_colour_above_1",
+     "materials:\n"
+     "  m: {color: [1.5, 0, 0]}\n",
+     "bad.yaml:2:14: 'color' channels must be from 0 to 1 (a light's 'intensity' makes it brighter)", 1},
+    {"light_colour_above_1",
+     "lights:\n"
+     "  - {type: point, position: [0, 1, 0], color: [2, 2, 2]}\n",
+     "bad.yaml:2:47: 'color' channels must be from 0 to 1 (a light's 'intensity' makes it brighter)", 1},
+    {"planar_mapping_parallel_axes",
+     "textures:\n"
+     "  t: {type: checker, mapping: {type: planar, u_axis: [1, 0, 0], v_axis: [2, 0, 0]}}\n",
+     "bad.yaml:2:6: planar mapping axes must not be parallel", 1},
+    {"misspelt_required_key",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, raduis: 1}\n",
+     "bad.yaml:4:33: unknown key 'raduis' in sphere (did you mean 'radius'?)", 2},
+};
+
+static void test_bad_scene(void **state)
+{
+    const bad_scene *b = *state;
+    char yaml[4096], want[1024];
+    with_tmp(b->yaml, yaml, sizeof yaml);
+    with_tmp(b->first, want, sizeof want);
+    report_log log = {0};
+    glint_error err = {{0}};
+    load_bad(yaml, 0, &log, &err);
+    if (strcmp(log.first, want) != 0 || log.count != b->problems)
+        fail_msg("%s:\n%s\nexpected %d problem(s), first:\n  %s\ngot %d:\n%s", b->name, yaml, b->problems, want,
+                 log.count, log.all);
+}
+
+/* Without a report callback, or without options at all, err still gets the
+ * first problem; with no err the load still fails cleanly. */
+static void test_problems_without_a_report(void **state)
+{
+    const char *yaml = "settings:\n  width: 0\n  depth: 99\n";
+    glint_error err = {{0}};
+    glint_load_options o = {0};
+    assert_null(glint_scene_load_memory(yaml, strlen(yaml), "bad.yaml", &o, &err));
+    assert_string_equal(err.message, "bad.yaml:2:10: 'width' must be a whole number from 1 to 65536, got '0'");
+    memset(&err, 0, sizeof err);
+    assert_null(glint_scene_load_memory(yaml, strlen(yaml), "bad.yaml", NULL, &err));
+    assert_string_equal(err.message, "bad.yaml:2:10: 'width' must be a whole number from 1 to 65536, got '0'");
+    assert_null(glint_scene_load_memory(yaml, strlen(yaml), "bad.yaml", NULL, NULL));
+    /* A NULL name stands as "<memory>". */
+    assert_null(glint_scene_load_memory(yaml, strlen(yaml), NULL, NULL, &err));
+    assert_string_equal(err.message, "<memory>:2:10: 'width' must be a whole number from 1 to 65536, got '0'");
+}
+
+/* Every problem is reported, in the order of the file. */
+static void test_every_problem_in_order(void **state)
+{
+    report_log log = {0};
+    glint_error err = {{0}};
+    load_bad("settings:\n"
+             "  width: 0\n"
+             "  sampler: jitterd\n"
+             "camera: {fov: 0}\n"
+             "materials:\n"
+             "  m: {ambient: 2, colour: [1, 1, 1]}\n"
+             "lights:\n"
+             "  - {type: spot}\n"
+             "objects:\n"
+             "  - {type: sphere, material: m, radius: -1}\n"
+             "  - {type: box, material: m, min: [1, 1, 1], max: [0, 0, 0]}\n",
+             0, &log, &err);
+    assert_string_equal(log.all, "bad.yaml:2:10: 'width' must be a whole number from 1 to 65536, got '0'\n"
+                                 "bad.yaml:3:12: 'sampler' must be regular or jittered, got 'jitterd' (did you mean 'jittered'?)\n"
+                                 "bad.yaml:4:15: 'fov' must be between 0 and 180 degrees, got 0\n"
+                                 "bad.yaml:6:19: unknown key 'colour' in material 'm' (did you mean 'color'?)\n"
+                                 "bad.yaml:6:16: 'ambient' must be from 0 to 1, got 2\n"
+                                 "bad.yaml:8:5: a spot light needs 'position'\n"
+                                 "bad.yaml:8:5: a spot light needs 'direction'\n"
+                                 "bad.yaml:8:5: a spot light needs 'angle'\n"
+                                 "bad.yaml:10:41: 'radius' must be positive, got -1\n"
+                                 "bad.yaml:11:5: box min must be below max on every axis\n");
+    assert_int_equal(log.count, 10);
+}
+
+/* 25 problems: the default stops at 20 reported, max_errors at its own. */
+static void test_max_errors(void **state)
+{
+    char yaml[2048] = "glint: 1\n";
+    for (int i = 1; i <= 25; i++)
+        snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "unknown%d: %d\n", i, i);
+    report_log log = {0};
+    glint_error err = {{0}};
+    load_bad(yaml, 0, &log, &err);
+    assert_int_equal(log.count, 20);
+    assert_string_equal(log.first, "bad.yaml:2:1: unknown key 'unknown1' in the scene");
+    assert_non_null(strstr(log.all, "bad.yaml:21:1: unknown key 'unknown20' in the scene\n"));
+    assert_null(strstr(log.all, "unknown21"));
+
+    int limits[] = {1, 3, 25, 100};
+    int want[] = {1, 3, 25, 25};
+    for (size_t i = 0; i < COUNT(limits); i++) {
+        report_log l = {0};
+        load_bad(yaml, limits[i], &l, &err);
+        assert_int_equal(l.count, want[i]);
+        assert_string_equal(l.first, "bad.yaml:2:1: unknown key 'unknown1' in the scene");
+    }
+    /* Problems found anywhere count towards the limit, not only one kind. */
+    report_log l = {0};
+    load_bad("settings: {width: 0, height: 0}\ncamera: {fov: 0}\nfog: {type: foggy}\n", 2, &l, &err);
+    assert_int_equal(l.count, 2);
+    assert_string_equal(l.all, "bad.yaml:1:19: 'width' must be a whole number from 1 to 65536, got '0'\n"
+                               "bad.yaml:1:30: 'height' must be a whole number from 1 to 65536, got '0'\n");
+}
+
+static void load_bad_file(const char *name, report_log *log, glint_error *err)
+{
+    char path[PATH_SIZE];
+    tmp_path(path, name);
+    glint_load_options o = {.report = log_report, .report_user = log};
+    glint_scene *s = glint_scene_load_file(path, &o, err);
+    if (s) {
+        glint_scene_free(s);
+        fail_msg("%s loaded", path);
+    }
+    assert_string_equal(err->message, log->first);
+}
+
+static void test_include_cycle(void **state)
+{
+    write_tmp("cycle/a.yaml", "glint: 1\ninclude: b.yaml\n");
+    write_tmp("cycle/b.yaml", "include: [a.yaml]\n");
+    report_log log = {0};
+    glint_error err = {{0}};
+    load_bad_file("cycle/a.yaml", &log, &err);
+    char want[PATH_SIZE + 100];
+    snprintf(want, sizeof want, "%s/cycle/b.yaml:1:11: include cycle: a.yaml -> b.yaml -> a.yaml", tmp_dir);
+    assert_string_equal(log.first, want);
+    assert_int_equal(log.count, 1);
+
+    write_tmp("cycle/self.yaml", "include: self.yaml\n");
+    report_log self = {0};
+    load_bad_file("cycle/self.yaml", &self, &err);
+    snprintf(want, sizeof want, "%s/cycle/self.yaml:1:10: include cycle: self.yaml -> self.yaml", tmp_dir);
+    assert_string_equal(self.first, want);
+    assert_int_equal(self.count, 1);
+}
+
+/* Including one file twice side by side is no cycle, but it defines its
+ * names twice. */
+static void test_include_twice(void **state)
+{
+    write_tmp("twice/main.yaml", "include: [mats.yaml, mats.yaml]\n");
+    write_tmp("twice/mats.yaml", "materials:\n  m: {}\n");
+    report_log log = {0};
+    glint_error err = {{0}};
+    load_bad_file("twice/main.yaml", &log, &err);
+    char want[PATH_SIZE + 100];
+    snprintf(want, sizeof want, "%s/twice/mats.yaml:2:6: material 'm' is defined twice", tmp_dir);
+    assert_string_equal(log.first, want);
+    assert_int_equal(log.count, 1);
+}
+
+static void test_includes_nested_too_deep(void **state)
+{
+    for (int i = 0; i < 20; i++) {
+        char name[64], text[64];
+        snprintf(name, sizeof name, "deep/f%d.yaml", i);
+        snprintf(text, sizeof text, "include: f%d.yaml\n", i + 1);
+        write_tmp(name, text);
+    }
+    write_tmp("deep/f20.yaml", "glint: 1\n");
+    report_log log = {0};
+    glint_error err = {{0}};
+    load_bad_file("deep/f0.yaml", &log, &err);
+    char want[PATH_SIZE + 100];
+    snprintf(want, sizeof want, "%s/deep/f15.yaml:1:10: includes nested too deep (limit 16)", tmp_dir);
+    assert_string_equal(log.first, want);
+    assert_int_equal(log.count, 1);
+}
+
+static void test_missing_scene_file(void **state)
+{
+    report_log log = {0};
+    glint_error err = {{0}};
+    load_bad_file("no-such-scene.yaml", &log, &err);
+    char want[PATH_SIZE + 100];
+    snprintf(want, sizeof want, "cannot read scene '%s/no-such-scene.yaml': No such file or directory", tmp_dir);
+    assert_string_equal(log.first, want);
+    assert_int_equal(log.count, 1);
+}
+
+/* Groups nest through aliases without nesting in the text. */
+static void test_groups_nested_too_deep(void **state)
+{
+    char yaml[4096] = "materials: {m: {}}\nobjects:\n  - &g0 {type: sphere, material: m, radius: 1}\n";
+    for (int i = 1; i <= 33; i++)
+        snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "  - &g%d {type: group, objects: [*g%d]}\n", i,
+                 i - 1);
+    report_log log = {0};
+    glint_error err = {{0}};
+    load_bad(yaml, 0, &log, &err);
+    assert_string_equal(log.first, "bad.yaml:4:5: groups nested too deep (limit 32)");
+    assert_int_equal(log.count, 1);
+}
+
+static double seconds_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return ts.tv_sec + ts.tv_nsec * 1e-9;
+}
+
+static long peak_kib(void)
+{
+    struct rusage ru;
+    getrusage(RUSAGE_SELF, &ru);
+    return ru.ru_maxrss;
+}
+
+/* A billion-laughs file: ten aliases of ten aliases ... nine levels deep
+ * names 10^9 objects or lights. The walk must stop at its visit limit with
+ * one problem, quickly and in little memory. */
+static void check_alias_bomb(const char *yaml, const char *first)
+{
+    report_log log = {0};
+    glint_error err = {{0}};
+    long before = peak_kib();
+    double start = seconds_now();
+    load_bad(yaml, 0, &log, &err);
+    double seconds = seconds_now() - start;
+    long grown = peak_kib() - before;
+    if (seconds > 20 || grown > 512 * 1024)
+        fail_msg("alias bomb took %.1f s and %ld KiB", seconds, grown);
+    if (strcmp(log.first, first) != 0 || log.count != 1)
+        fail_msg("expected 1 problem:\n  %s\ngot %d:\n%s", first, log.count, log.all);
+}
+
+static void test_alias_bomb_of_objects(void **state)
+{
+    char yaml[4096] = "materials: {m: {}}\nobjects:\n  - &l0 {type: sphere, material: m, radius: 1}\n";
+    for (int i = 1; i <= 9; i++) {
+        snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "  - &l%d {type: group, objects: [", i);
+        for (int k = 0; k < 10; k++)
+            snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "%s*l%d", k ? ", " : "", i - 1);
+        snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "]}\n");
+    }
+    check_alias_bomb(yaml, "bad.yaml:3:24: scene too large after alias expansion (limit 1000000 nodes)");
+}
+
+/* Lights are a flat list, so the bomb goes through merge keys instead. */
+static void test_alias_bomb_of_lights(void **state)
+{
+    char yaml[4096] = "lights:\n  - &l0 {type: point, position: [0, 0, 0]}\n";
+    for (int i = 1; i <= 9; i++) {
+        snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "  - &l%d {<<: [", i);
+        for (int k = 0; k < 10; k++)
+            snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "%s*l%d", k ? ", " : "", i - 1);
+        snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "]}\n");
+    }
+    check_alias_bomb(yaml, "bad.yaml:2:10: scene too large after alias expansion (limit 1000000 nodes)");
+}
+
+/* ------------------------------------- one report each, in the right words */
+
+/* A texture that fails keeps its name known, as a material does: the
+ * materials that use it get no second report. */
+static void test_failed_texture_is_reported_once(void **state)
+{
+    const char *yamls[] = {
+        "textures:\n  wood: {type: image, file: no-such-wood.png}\nmaterials:\n  m: {texture: wood}\n",
+        "textures:\n  wood: {type: checker, size: -1}\nmaterials:\n  m: {texture: wood}\n",
+    };
+    const char *firsts[] = {
+        "bad.yaml:2:29: cannot open texture 'no-such-wood.png': No such file or directory",
+        "bad.yaml:2:31: 'size' must be positive, got -1",
+    };
+    for (size_t i = 0; i < COUNT(yamls); i++) {
+        report_log log = {0};
+        glint_error err = {{0}};
+        load_bad(yamls[i], 0, &log, &err);
+        assert_string_equal(log.first, firsts[i]);
+        if (log.count != 1)
+            fail_msg("expected 1 problem, got %d:\n%s", log.count, log.all);
+    }
+}
+
+/* Every item of a merge list must be a map, not only the last. */
+static void test_merge_list_of_non_maps(void **state)
+{
+    report_log log = {0};
+    glint_error err = {{0}};
+    load_bad("materials:\n  b: &b {color: [1, 0, 0]}\n  m: {<<: [3, *b]}\n", 0, &log, &err);
+    assert_string_equal(log.first, "bad.yaml:3:12: a merge key (<<) needs a map or a list of maps");
+    assert_int_equal(log.count, 1);
+}
+
+/* Merges nested past the limit say so, not that a map is not a map. */
+static void test_merge_too_deep_says_so(void **state)
+{
+    char yaml[4096] = "materials:\n  m0: &m0 {color: [1, 0, 0]}\n";
+    for (int i = 1; i <= 18; i++)
+        snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "  m%d: &m%d {<<: *m%d}\n", i, i, i - 1);
+    report_log log = {0};
+    glint_error err = {{0}};
+    load_bad(yaml, 0, &log, &err);
+    if (strstr(log.all, "needs a map") || !strstr(log.first, "deep"))
+        fail_msg("expected a message about depth, got %d:\n%s", log.count, log.all);
+}
+
+/* ------------------------------------------------------------------ main */
+
+int main(void)
+{
+    static const struct CMUnitTest fixed[] = {
+        cmocka_unit_test(test_settings_every_key),
+        cmocka_unit_test(test_settings_other_values),
+        cmocka_unit_test(test_defaults_of_an_empty_scene),
+        cmocka_unit_test(test_camera_every_key),
+        cmocka_unit_test(test_fog_none),
+        cmocka_unit_test(test_fog_linear),
+        cmocka_unit_test(test_fog_exponential),
+        cmocka_unit_test(test_checker_texture),
+        cmocka_unit_test(test_mapping_as_a_word),
+        cmocka_unit_test(test_mapping_as_a_map),
+        cmocka_unit_test(test_image_texture_from_a_file),
+        cmocka_unit_test(test_material_every_key),
+        cmocka_unit_test(test_lights),
+        cmocka_unit_test(test_sphere_and_plane),
+        cmocka_unit_test(test_polygons),
+        cmocka_unit_test(test_box_cylinder_cone),
+        cmocka_unit_test(test_transform_each_step),
+        cmocka_unit_test(test_transform_order),
+        cmocka_unit_test(test_groups),
+        cmocka_unit_test(test_colours),
+        cmocka_unit_test(test_includes),
+        cmocka_unit_test(test_anchors_and_aliases),
+        cmocka_unit_test(test_merge_keys),
+        cmocka_unit_test(test_version_and_comments),
+        cmocka_unit_test(test_render_ambient),
+        cmocka_unit_test(test_render_background_and_fog),
+        cmocka_unit_test(test_problems_without_a_report),
+        cmocka_unit_test(test_every_problem_in_order),
+        cmocka_unit_test(test_max_errors),
+        cmocka_unit_test(test_include_cycle),
+        cmocka_unit_test(test_include_twice),
+        cmocka_unit_test(test_includes_nested_too_deep),
+        cmocka_unit_test(test_missing_scene_file),
+        cmocka_unit_test(test_groups_nested_too_deep),
+        cmocka_unit_test(test_alias_bomb_of_objects),
+        cmocka_unit_test(test_alias_bomb_of_lights),
+        cmocka_unit_test(test_failed_texture_is_reported_once),
+        cmocka_unit_test(test_merge_list_of_non_maps),
+        cmocka_unit_test(test_merge_too_deep_says_so),
+    };
+    /* One test per row of the table, named after it. */
+    static struct CMUnitTest tests[COUNT(fixed) + COUNT(BAD)];
+    static char names[COUNT(BAD)][64];
+    size_t n = 0;
+    for (size_t i = 0; i < COUNT(fixed); i++)
+        tests[n++] = fixed[i];
+    for (size_t i = 0; i < COUNT(BAD); i++) {
+        snprintf(names[i], sizeof names[i], "bad_%s", BAD[i].name);
+        tests[n++] = (struct CMUnitTest){names[i], test_bad_scene, NULL, NULL, (void *)&BAD[i]};
+    }
+    return _cmocka_run_group_tests("test_scene_file", tests, n, setup_dir, teardown_dir);
+}
