@@ -308,6 +308,13 @@ static int run(const options *o)
         return complain(st == GLINT_ERR_NOMEM ? EXIT_INTERNAL : EXIT_BAD_INPUT, "%s", err.message);
     }
 
+    /* From here on a signal cancels the render, which then writes nothing;
+     * before, the default action ends glint, which has written nothing yet. */
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
     progress prog = {.last_print = -1};
     clock_gettime(CLOCK_MONOTONIC, &prog.start);
     glint_render_options ro = {.threads = o->threads > 0 ? (int)o->threads : 0,
@@ -344,10 +351,5 @@ int main(int argc, char **argv)
     int code = parse_args(argc, argv, &o);
     if (code >= 0)
         return code;
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
     return o.check ? check_only(&o) : run(&o);
 }

@@ -16,6 +16,7 @@
 #include "scene/scene.h"
 
 #define MAX_INCLUDE_DEPTH 16
+#define MAX_FILES 1000            /* files read for one scene, includes counted */
 #define MAX_GROUP_DEPTH 32
 #define MAX_SCENE_FILE_BYTES (64L << 20)
 #define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
@@ -34,6 +35,8 @@ typedef struct loader {
     int depth;
     ydoc *docs;                                  /* kept until the end: nodes name their file */
     int doc_count, doc_cap;
+    int files;                                   /* files read so far */
+    long bytes;                                  /* bytes read so far, all files */
 } loader;
 
 enum { FOG_TYPE = 1, FOG_START = 2, FOG_END = 4, FOG_DENSITY = 8 };
@@ -804,6 +807,13 @@ static void read_file(loader *l, const char *path, const ynode *from)
         diag_at(&l->d, from, "includes nested too deep (limit %d)", MAX_INCLUDE_DEPTH);
         return;
     }
+    /* Includes can fan out (a list of files each including a list...), so
+     * the files and bytes of one scene are bounded as a whole. */
+    if (++l->files > MAX_FILES) {
+        diag_at(&l->d, from, "too many included files (limit %d)", MAX_FILES);
+        l->d.closed = true;
+        return;
+    }
     glint_error err;
     size_t size = 0;
     char *data = slurp(path, &size, &err);
@@ -812,6 +822,13 @@ static void read_file(loader *l, const char *path, const ynode *from)
             diag_at(&l->d, from, "%s", err.message);
         else
             diag_raw(&l->d, GLINT_ERR_IO, err.message);
+        return;
+    }
+    l->bytes += (long)size;
+    if (l->bytes > MAX_SCENE_FILE_BYTES) {
+        diag_at(&l->d, from, "scene files too large together (limit %ld bytes)", MAX_SCENE_FILE_BYTES);
+        l->d.closed = true;
+        free(data);
         return;
     }
     l->chain[l->depth++] = canonical;

@@ -287,7 +287,10 @@ bool yr_text(reader *r, const ynode *n, const char *key, const char **out)
         *out = n->value;
         return true;
     }
-    diag_at(r->d, n, "'%s' must be text, got %s", key, ynode_describe(n));
+    if (n->kind == YNODE_SCALAR)
+        diag_at(r->d, n, "'%s' must not be empty", key);
+    else
+        diag_at(r->d, n, "'%s' must be text, got %s", key, ynode_describe(n));
     return false;
 }
 

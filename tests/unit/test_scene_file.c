@@ -1916,6 +1916,31 @@ static void test_include_cycle(void **state)
     assert_int_equal(self.count, 1);
 }
 
+/* Includes that fan out (each file a list of files) are bounded as a whole:
+ * 40 x 40 empty includes would be 1600 files. */
+static void test_include_fan_out_is_bounded(void **state)
+{
+    char list[40 * 12 + 32] = "include: [";
+    for (int i = 0; i < 40; i++)
+        strcat(list, i ? ", e.yaml" : "e.yaml");
+    strcat(list, "]\n");
+    write_tmp("fan/e.yaml", "");
+    write_tmp("fan/f.yaml", list);
+    strcpy(list, "include: [");
+    for (int i = 0; i < 40; i++)
+        strcat(list, i ? ", f.yaml" : "f.yaml");
+    strcat(list, "]\n");
+    write_tmp("fan/g.yaml", list);
+    report_log log = {0};
+    glint_error err = {{0}};
+    load_bad_file("fan/g.yaml", &log, &err);
+    char want[PATH_SIZE + 100];
+    snprintf(want, sizeof want, "%s/fan/f.yaml:1:", tmp_dir);
+    assert_true(strncmp(log.first, want, strlen(want)) == 0);
+    assert_non_null(strstr(log.first, ": too many included files (limit 1000)"));
+    assert_int_equal(log.count, 1);
+}
+
 /* Including one file twice side by side is no cycle, but it defines its
  * names twice. */
 static void test_include_twice(void **state)
@@ -2113,6 +2138,7 @@ int main(void)
         cmocka_unit_test(test_every_problem_in_order),
         cmocka_unit_test(test_max_errors),
         cmocka_unit_test(test_include_cycle),
+        cmocka_unit_test(test_include_fan_out_is_bounded),
         cmocka_unit_test(test_include_twice),
         cmocka_unit_test(test_includes_nested_too_deep),
         cmocka_unit_test(test_missing_scene_file),
