@@ -3,11 +3,14 @@
 #   ./build.sh render [glint flags]   install what is missing, build, render glint.png
 #   ./build.sh test                   install what is missing, build, run every test
 # Debian packages that are missing are installed with apt-get (through sudo
-# when not root). Builds go to build/ (Release) and build-asan/ (sanitizers).
+# when not root). Builds go to build/ (Release), build-asan/ (the tests again
+# under ASan and UBSan) and build-fuzz/ (the scene loader's libFuzzer target,
+# run for GLINT_FUZZ_SECONDS, default 60).
 set -euo pipefail
 cd "$(dirname "$0")"
 
-PACKAGES=(gcc make cmake pkg-config libembree-dev zlib1g-dev libpng-dev libjpeg62-turbo-dev libyaml-dev libcmocka-dev)
+PACKAGES=(gcc make cmake pkg-config libembree-dev zlib1g-dev libpng-dev libjpeg62-turbo-dev libyaml-dev libcmocka-dev
+          clang libclang-rt-14-dev)
 
 install_missing() {
     local missing=()
@@ -45,6 +48,24 @@ test)
     build build-asan -DGLINT_WERROR=ON -DGLINT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
         ctest --test-dir build-asan --output-on-failure -j "$(nproc)"
+    # Fuzz the scene loader for a bounded time (tests/fuzz/README.md) on copies
+    # of the seed corpus and the saved regressions, from inside the corpus copy
+    # so relative includes find seeds; a crash, leak or timeout fails the test
+    # and leaves its input in build-fuzz/artifacts/.
+    CC=clang build build-fuzz -DGLINT_WERROR=ON -DGLINT_FUZZ=ON -DGLINT_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
+    rm -rf build-fuzz/corpus build-fuzz/regressions build-fuzz/artifacts
+    mkdir -p build-fuzz/regressions build-fuzz/artifacts
+    cp -R tests/fuzz/corpus/scene build-fuzz/corpus
+    [ ! -d tests/fuzz/regressions/scene ] || cp -R tests/fuzz/regressions/scene/. build-fuzz/regressions/
+    if ! (cd build-fuzz/corpus && UBSAN_OPTIONS=print_stacktrace=1 ../fuzz_scene -max_total_time="${GLINT_FUZZ_SECONDS:-60}" \
+            -max_len=8192 -rss_limit_mb=2048 -timeout=10 -dict=../../tests/fuzz/scene.dict \
+            -artifact_prefix=../artifacts/ -print_final_stats=1 . ../regressions) >build-fuzz/fuzz.log 2>&1; then
+        tail -n 60 build-fuzz/fuzz.log
+        echo "fuzz: FAILED; input in build-fuzz/artifacts/, log in build-fuzz/fuzz.log" >&2
+        exit 1
+    fi
+    echo "fuzz: $(sed -n 's/^Done \([0-9]*\) runs in \([0-9]*\).*/\1 runs in \2 s/p' build-fuzz/fuzz.log)," \
+        "$(sed -n 's/^stat::average_exec_per_sec: *//p' build-fuzz/fuzz.log) exec/s, no crash"
     ;;
 *)
     echo "usage: ./build.sh render [glint flags] | ./build.sh test" >&2
