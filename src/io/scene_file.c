@@ -130,6 +130,16 @@ static int word(loader *l, const ynode *n, const char *key, const char *const *w
     return -1;
 }
 
+/* The kind of a map that must say its `type`: the index of that word among
+ * `kinds`, or -1 after a report. `what` names the map ("a light"). */
+static int typed_map(loader *l, const ynode *n, const char *what, const char *const *kinds, int count)
+{
+    if (!yr_is_map(&l->r, n, what))
+        return -1;
+    const ynode *type = yr_need(&l->r, n, "type", what);
+    return type ? word(l, type, "type", kinds, count) : -1;
+}
+
 /* Joins a path named in file `from` to that file's directory. */
 static char *relative_to(const char *from, const char *path)
 {
@@ -287,10 +297,7 @@ static void add_texture(loader *l, const char *name, const ynode *n)
     static const char *const keys[2][4] = {{"type", "mapping", "colors", "size"}, {"type", "mapping", "file"}};
     char what[160];
     snprintf(what, sizeof what, "texture '%.100s'", name);
-    if (!yr_is_map(&l->r, n, what))
-        return;
-    const ynode *type = yr_need(&l->r, n, "type", what);
-    int kind = type ? word(l, type, "type", kinds, COUNT(kinds)) : -1;
+    int kind = typed_map(l, n, what, kinds, COUNT(kinds));
     if (kind >= 0)
         yr_check_keys(&l->r, n, what, keys[kind], kind == 0 ? 4 : 3);
     glint_mapping mapping = {.kind = GLINT_MAP_UV};
@@ -445,10 +452,7 @@ static void read_light(loader *l, const ynode *n)
         {"type", "color", "intensity", "direction"},
     };
     static const int key_count[] = {4, 7, 4};
-    if (!yr_is_map(&l->r, n, "a light"))
-        return;
-    const ynode *type = yr_need(&l->r, n, "type", "a light");
-    int k = type ? word(l, type, "type", kinds, COUNT(kinds)) : -1;
+    int k = typed_map(l, n, "a light", kinds, COUNT(kinds));
     if (k < 0)
         return;
     char kind_name[32];
@@ -582,10 +586,7 @@ static void read_object(loader *l, const ynode *n, const context *outer)
         {"center", "radius"}, {"point", "normal"}, {"points"}, {"min", "max"},
         {"center", "radius", "height", "capped"}, {"center", "radius", "height", "capped"}, {"objects"},
     };
-    if (!yr_is_map(&l->r, n, "an object"))
-        return;
-    const ynode *type = yr_need(&l->r, n, "type", "an object");
-    int kind = type ? word(l, type, "type", SHAPE_NAMES, COUNT(SHAPE_NAMES)) : -1;
+    int kind = typed_map(l, n, "an object", SHAPE_NAMES, COUNT(SHAPE_NAMES));
     if (kind < 0)
         return;
     const char *keys[8];
