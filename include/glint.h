@@ -277,6 +277,60 @@ typedef struct glint_light {
 /* Adds a light; returns its index or -1 and fills err. */
 int glint_scene_add_light(glint_scene *scene, const glint_light *light, glint_error *err);
 
+/* ------------------------------------------------------------------ meshes */
+
+/* A triangle mesh given as arrays; glint copies them. Vertices are in the
+ * mesh's own coordinates; instances place the mesh in the world. */
+typedef struct glint_mesh_data {
+    const float *positions;   /* 3 floats per vertex, finite */
+    const float *normals;     /* 3 per vertex (need not be unit length), or NULL for flat shading */
+    const float *uvs;         /* 2 per vertex, or NULL (then u = v = 0) */
+    int vertex_count;         /* 1..2^30 */
+    const uint32_t *indices;  /* 3 per triangle, each < vertex_count */
+    int triangle_count;       /* 1..2^30 */
+    const int *materials;     /* a material index per triangle, or NULL: `material` for all */
+    int material;             /* used when materials is NULL */
+} glint_mesh_data;
+
+/* Adds a mesh (not yet placed: see glint_scene_add_instance). Returns its
+ * index or -1 and fills err: a non-finite position, an index out of range,
+ * a material that does not exist. Degenerate triangles are kept (they are
+ * never hit). `name` may be NULL. */
+int glint_scene_add_mesh(glint_scene *scene, const char *name, const glint_mesh_data *mesh, glint_error *err);
+
+/* Places mesh `mesh` in the world through `transform` (NULL: identity). With
+ * material >= 0 every triangle of this instance uses that material instead
+ * of the mesh's own. The triangles are stored once however many instances
+ * there are. Returns the instance's index or -1 and fills err. */
+int glint_scene_add_instance(glint_scene *scene, int mesh, int material, const glint_transform *transform,
+                             glint_error *err);
+
+/* Options for glint_scene_import_mesh. Zero them for the defaults. */
+typedef struct glint_import_options {
+    double crease_angle;      /* degrees; vertex normals are generated when the file has
+                                 none, smoothing across edges sharper than this angle
+                                 never; 0 means 80; 180 smooths everything */
+    int default_material;     /* for triangles whose file gives no material; -1: a matte grey */
+} glint_import_options;
+
+/* Imports a model file (OBJ+MTL, PLY, glTF 2.0 / GLB, STL) through Assimp
+ * as one mesh: the file's node hierarchy is flattened, its materials become
+ * scene materials (docs/meshes.md gives the mapping) and its diffuse or
+ * base-colour textures image textures. Returns the mesh's index or -1 and
+ * fills err with a message naming the file. options may be NULL. */
+int glint_scene_import_mesh(glint_scene *scene, const char *path, const glint_import_options *options,
+                            glint_error *err);
+
+/* As glint_scene_import_mesh, from `size` bytes in memory; `name` stands for
+ * the file in messages and its extension (".obj", ".glb", ...) tells the
+ * format. Files the model refers to (MTL, textures) are not read. */
+int glint_scene_import_mesh_memory(glint_scene *scene, const void *data, size_t size, const char *name,
+                                   const glint_import_options *options, glint_error *err);
+
+/* The axis-aligned bounds of a mesh in its own coordinates. */
+glint_status glint_scene_mesh_bounds(const glint_scene *scene, int mesh, glint_vec3 *min, glint_vec3 *max,
+                                     glint_error *err);
+
 /* ------------------------------------------------------------ scene files */
 
 /* Called once for each problem found while loading a scene file, with a
@@ -309,7 +363,8 @@ const char *glint_scene_get_output(const glint_scene *scene);
 
 /* Counts of what a scene holds, for reports such as `glint --check`. */
 typedef struct glint_scene_counts {
-    int textures, materials, shapes, lights;
+    int textures, materials, shapes, lights, meshes, instances;
+    long long triangles;      /* stored, each mesh once */
 } glint_scene_counts;
 
 /* Returns the counts of what the scene holds. */

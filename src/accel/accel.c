@@ -1,18 +1,24 @@
-/* accel.c - one Embree user geometry holding every analytic shape, one
- * primitive per shape. Embree's rays are single precision; each query keeps
- * the double-precision ray in an extended intersection context, and the
- * callbacks test shapes exactly with it. */
+/* accel.c - the Embree scenes. Analytic shapes are one user geometry, one
+ * primitive per shape; Embree's rays are single precision, so each query
+ * keeps the double-precision ray in an extended intersection context and
+ * the callbacks test shapes exactly with it. Each mesh is a triangle scene
+ * over its own arrays, placed by Embree instances. */
 #include <embree3/rtcore.h>
 #include <math.h>
 #include <stdlib.h>
 #include "accel/accel.h"
 #include "core/error.h"
 
+/* Geometry IDs in the top scene: the shapes, then instance i at 1 + i. */
+#define SHAPES_ID 0u
+
 struct accel {
     RTCDevice device;
     RTCScene scene;
+    RTCScene *mesh_scenes;
+    int mesh_count;
     const shape *shapes;
-    int count;
+    int shape_count;
 };
 
 /* Below this a shadow segment is taken as fully blocked. */
@@ -57,16 +63,26 @@ static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
     if (!args->valid[0])
         return;
     query *q = (query *)args->context;
+    struct RTCRayHit *rh = (struct RTCRayHit *)args->rayhit;
     shape_hit h;
-    if (!shape_intersect(&q->acc->shapes[args->primID], q->r, q->tmin, q->tmax, &h))
+    /* A triangle found first may have shortened the ray below q->tmax. */
+    double tmax = fmin(q->tmax, (double)rh->ray.tfar);
+    if (!shape_intersect(&q->acc->shapes[args->primID], q->r, q->tmin, tmax, &h))
         return;
     q->tmax = h.t;
     q->hit = h;
     q->index = (int)args->primID;
-    struct RTCRayHit *rh = (struct RTCRayHit *)args->rayhit;
     rh->ray.tfar = nextafterf((float)h.t, INFINITY);
     rh->hit.geomID = args->geomID;
     rh->hit.primID = args->primID;
+    rh->hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+}
+
+/* Multiplies in what one crossing passes; false once nothing passes. */
+static bool pass_through(query *q, const accel_hit *h)
+{
+    q->through = rgb_mul(q->through, q->filter(q->user, q->r, h));
+    return rgb_max(q->through) >= TRANSMISSION_CUTOFF;
 }
 
 static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
@@ -76,16 +92,47 @@ static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
     query *q = (query *)args->context;
     const shape *s = &q->acc->shapes[args->primID];
     double tmin = q->tmin;
-    shape_hit h;
+    accel_hit h = {.shape = (int)args->primID, .instance = -1};
     /* Shapes are convex, so a ray crosses one at most twice. */
-    for (int crossing = 0; crossing < 2 && shape_intersect(s, q->r, tmin, q->tmax, &h); crossing++) {
-        q->through = rgb_mul(q->through, q->filter(q->user, (int)args->primID, q->r, &h));
-        if (rgb_max(q->through) < TRANSMISSION_CUTOFF) {
+    for (int crossing = 0; crossing < 2 && shape_intersect(s, q->r, tmin, q->tmax, &h.on_shape); crossing++) {
+        h.t = h.on_shape.t;
+        if (!pass_through(q, &h)) {
             ((struct RTCRay *)args->ray)->tfar = -INFINITY;
             return;
         }
         tmin = h.t;
     }
+}
+
+/* Lane i of Embree's structure-of-arrays rays and hits, as its C++ helpers
+ * (RTCRayN_tfar, RTCHitN_u, ...) index them. */
+static float ray_lane_tfar(const struct RTCRayN *rays, unsigned n, unsigned i) { return ((const float *)rays)[8 * n + i]; }
+static float hit_lane_float(const struct RTCHitN *hit, unsigned n, unsigned field, unsigned i)
+{
+    return ((const float *)hit)[field * n + i];
+}
+static unsigned hit_lane_uint(const struct RTCHitN *hit, unsigned n, unsigned field, unsigned i)
+{
+    return ((const unsigned *)hit)[field * n + i];
+}
+
+/* Embree found a triangle on a shadow segment: reject the hit (so the
+ * search goes on) while light still passes. */
+static void triangle_occlusion_filter(const struct RTCFilterFunctionNArguments *args)
+{
+    if (!args->valid[0])
+        return;
+    query *q = (query *)args->context;
+    accel_hit h = {
+        .t = ray_lane_tfar(args->ray, args->N, 0),
+        .shape = -1,
+        .instance = (int)hit_lane_uint(args->hit, args->N, 7, 0) - 1, /* instID[0] */
+        .triangle = hit_lane_uint(args->hit, args->N, 5, 0),          /* primID */
+        .b1 = hit_lane_float(args->hit, args->N, 3, 0),               /* u */
+        .b2 = hit_lane_float(args->hit, args->N, 4, 0),               /* v */
+    };
+    if (pass_through(q, &h))
+        args->valid[0] = 0;
 }
 
 static void error_fn(void *user, enum RTCError code, const char *str)
@@ -95,36 +142,79 @@ static void error_fn(void *user, enum RTCError code, const char *str)
         error_set(err, GLINT_ERR_EMBREE, "embree error %d: %s", (int)code, str ? str : "");
 }
 
-glint_status accel_build(accel **out, const shape *shapes, int count, glint_error *err)
+static void add_shapes(accel *a)
+{
+    RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_USER);
+    rtcSetGeometryUserPrimitiveCount(g, (unsigned)a->shape_count);
+    rtcSetGeometryUserData(g, a);
+    rtcSetGeometryBoundsFunction(g, bounds_fn, a);
+    rtcSetGeometryIntersectFunction(g, intersect_fn);
+    rtcSetGeometryOccludedFunction(g, occluded_fn);
+    rtcCommitGeometry(g);
+    rtcAttachGeometryByID(a->scene, g, SHAPES_ID);
+    rtcReleaseGeometry(g);
+}
+
+/* A triangle scene over the mesh's own arrays: shared, not copied. */
+static RTCScene mesh_scene(accel *a, const mesh *m)
+{
+    RTCScene s = rtcNewScene(a->device);
+    RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_TRIANGLE);
+    rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, m->positions, 0,
+                               3 * sizeof(float), (size_t)m->vertex_count);
+    rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, m->indices, 0,
+                               3 * sizeof(uint32_t), (size_t)m->triangle_count);
+    rtcSetGeometryOccludedFilterFunction(g, triangle_occlusion_filter);
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(s, g);
+    rtcReleaseGeometry(g);
+    rtcCommitScene(s);
+    return s;
+}
+
+static void add_instance(accel *a, const instance *inst, unsigned id)
+{
+    float m[12];
+    for (int row = 0; row < 3; row++)
+        for (int col = 0; col < 4; col++)
+            m[row * 4 + col] = (float)inst->to_world.m[row][col];
+    RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_INSTANCE);
+    rtcSetGeometryInstancedScene(g, a->mesh_scenes[inst->mesh]);
+    rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
+    rtcCommitGeometry(g);
+    rtcAttachGeometryByID(a->scene, g, id);
+    rtcReleaseGeometry(g);
+}
+
+glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *err)
 {
     *out = NULL;
     accel *a = calloc(1, sizeof *a);
-    if (!a)
+    if (!a || !(a->mesh_scenes = calloc((size_t)geo->mesh_count + 1, sizeof(RTCScene)))) {
+        free(a);
         return error_set(err, GLINT_ERR_NOMEM, "out of memory building the accelerator");
-    a->shapes = shapes;
-    a->count = count;
-    glint_error embree_err = {{0}};
+    }
+    a->shapes = geo->shapes;
+    a->shape_count = geo->shape_count;
     a->device = rtcNewDevice(NULL);
     if (!a->device) {
+        free(a->mesh_scenes);
         free(a);
         return error_set(err, GLINT_ERR_EMBREE, "cannot create the Embree device: error %d",
                          (int)rtcGetDeviceError(NULL));
     }
+    glint_error embree_err = {{0}};
     rtcSetDeviceErrorFunction(a->device, error_fn, &embree_err);
     a->scene = rtcNewScene(a->device);
-    if (a->scene && count > 0) {
-        RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_USER);
-        rtcSetGeometryUserPrimitiveCount(g, (unsigned)count);
-        rtcSetGeometryUserData(g, a);
-        rtcSetGeometryBoundsFunction(g, bounds_fn, a);
-        rtcSetGeometryIntersectFunction(g, intersect_fn);
-        rtcSetGeometryOccludedFunction(g, occluded_fn);
-        rtcCommitGeometry(g);
-        rtcAttachGeometry(a->scene, g);
-        rtcReleaseGeometry(g);
-    }
-    if (a->scene)
+    if (a->scene) {
+        if (a->shape_count > 0)
+            add_shapes(a);
+        for (; a->mesh_count < geo->mesh_count; a->mesh_count++)
+            a->mesh_scenes[a->mesh_count] = mesh_scene(a, &geo->meshes[a->mesh_count]);
+        for (int i = 0; i < geo->instance_count; i++)
+            add_instance(a, &geo->instances[i], 1u + (unsigned)i);
         rtcCommitScene(a->scene);
+    }
     rtcSetDeviceErrorFunction(a->device, NULL, NULL);
     if (!a->scene || embree_err.message[0]) {
         accel_free(a);
@@ -142,6 +232,10 @@ void accel_free(accel *a)
         return;
     if (a->scene)
         rtcReleaseScene(a->scene);
+    for (int i = 0; i < a->mesh_count; i++)
+        if (a->mesh_scenes[i])
+            rtcReleaseScene(a->mesh_scenes[i]);
+    free(a->mesh_scenes);
     if (a->device)
         rtcReleaseDevice(a->device);
     free(a);
@@ -164,10 +258,8 @@ static void embree_ray(struct RTCRay *er, const ray *r, double tmin, double tmax
     er->flags = 0;
 }
 
-bool accel_intersect(const accel *a, const ray *r, double tmin, double tmax, int *index, shape_hit *hit)
+bool accel_intersect(const accel *a, const ray *r, double tmin, double tmax, accel_hit *hit)
 {
-    if (a->count == 0)
-        return false;
     query q = {.acc = a, .r = r, .tmin = tmin, .tmax = tmax, .index = -1};
     rtcInitIntersectContext(&q.ctx);
     struct RTCRayHit rh;
@@ -176,18 +268,20 @@ bool accel_intersect(const accel *a, const ray *r, double tmin, double tmax, int
     rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(a->scene, &q.ctx, &rh);
-    if (q.index < 0)
+    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
         return false;
-    *index = q.index;
-    *hit = q.hit;
+    if (rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID) {
+        *hit = (accel_hit){.t = q.hit.t, .shape = q.index, .on_shape = q.hit, .instance = -1};
+        return true;
+    }
+    *hit = (accel_hit){.t = rh.ray.tfar, .shape = -1, .instance = (int)rh.hit.instID[0] - 1,
+                       .triangle = rh.hit.primID, .b1 = rh.hit.u, .b2 = rh.hit.v};
     return true;
 }
 
 color accel_transmission(const accel *a, const ray *r, double tmin, double tmax, accel_filter_fn filter,
                          void *user)
 {
-    if (a->count == 0)
-        return rgb(1, 1, 1);
     query q = {.acc = a, .r = r, .tmin = tmin, .tmax = tmax, .filter = filter, .user = user, .through = {1, 1, 1}};
     rtcInitIntersectContext(&q.ctx);
     struct RTCRay er;

@@ -1,31 +1,52 @@
 /* accel.h - Embree answers every ray query: the nearest hit along a ray, and
  * how much light passes along a shadow segment. The accelerator knows shapes
- * but not materials: what a crossed surface lets through is asked of the
- * caller. */
+ * and meshes but not materials: what a crossed surface lets through is
+ * asked of the caller. */
 #ifndef GLINT_ACCEL_ACCEL_H
 #define GLINT_ACCEL_ACCEL_H
 
 #include <stdbool.h>
 #include "core/color.h"
+#include "geometry/mesh.h"
 #include "geometry/shape.h"
 
 typedef struct accel accel;
 
-/* Builds the Embree device and scene over `count` shapes (which must outlive
- * the accelerator). */
-glint_status accel_build(accel **out, const shape *shapes, int count, glint_error *err);
+/* What a ray hit: an analytic shape, or a triangle of a mesh instance. */
+typedef struct accel_hit {
+    double t;
+    int shape;                /* shape index, or -1 for a mesh */
+    shape_hit on_shape;       /* shapes: t and part */
+    int instance;             /* meshes: the instance index */
+    unsigned triangle;        /* meshes: the triangle in the instance's mesh */
+    double b1, b2;            /* meshes: barycentric coordinates of vertices 1 and 2 */
+} accel_hit;
+
+/* The geometry an accelerator is built over; it must outlive it. */
+typedef struct accel_geometry {
+    const shape *shapes;
+    int shape_count;
+    const mesh *meshes;
+    int mesh_count;
+    const instance *instances;
+    int instance_count;
+} accel_geometry;
+
+/* Builds the Embree device and scenes: one user geometry for every shape,
+ * one triangle scene per mesh sharing its arrays, one Embree instance per
+ * placement. */
+glint_status accel_build(accel **out, const accel_geometry *g, glint_error *err);
 
 /* Releases the Embree objects. NULL is allowed. */
 void accel_free(accel *a);
 
-/* Finds the nearest shape hit by r with t in (tmin, tmax); sets *index and
- * *hit. */
-bool accel_intersect(const accel *a, const ray *r, double tmin, double tmax, int *index, shape_hit *hit);
+/* Finds the nearest hit of r with t in (tmin, tmax). */
+bool accel_intersect(const accel *a, const ray *r, double tmin, double tmax, accel_hit *hit);
 
 /* Returns what a surface crossing lets through: black for opaque. */
-typedef color (*accel_filter_fn)(void *user, int index, const ray *r, const shape_hit *hit);
+typedef color (*accel_filter_fn)(void *user, const ray *r, const accel_hit *hit);
 
-/* Returns the product of filter() over every surface crossing of r with t
+/* Returns the product of filter() over the surface crossings of r with t
  * in (tmin, tmax), stopping early at black: the light that survives a
  * shadow segment. */
 color accel_transmission(const accel *a, const ray *r, double tmin, double tmax, accel_filter_fn filter,

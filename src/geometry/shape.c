@@ -62,7 +62,7 @@ void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *
     KINDS[s->desc.kind].surface(s, hit->part, out);
     if (s->has_transform)
         out->n = xf_normal(&s->to_object, out->n);
-    out->n = v3_normalize(out->n);
+    out->n = out->shading_n = v3_normalize(out->n);
 }
 
 void shape_surface_uv(const shape *s, surface *out)

@@ -35,6 +35,8 @@ typedef struct surface {
     vec3 p;         /* world position */
     vec3 n;         /* world unit normal, pointing out of the shape (for planes and
                        polygons: the side given by the normal or point order) */
+    vec3 shading_n; /* world unit normal for lighting: n, or for meshes the
+                       interpolated vertex normal on n's side */
     vec3 p_obj;     /* object-space position, for texture mappings */
     int part;       /* as in shape_hit */
     double u, v;    /* the shape's own texture coordinates, once shape_surface_uv

@@ -144,7 +144,9 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
     if (!j.pixels)
         return error_set(err, GLINT_ERR_NOMEM, "out of memory for a %dx%d image", s->width, s->height);
     accel *acc;
-    glint_status st = accel_build(&acc, scene->shapes, scene->shape_count, err);
+    accel_geometry geo = {scene->shapes, scene->shape_count, scene->meshes, scene->mesh_count, scene->instances,
+                          scene->instance_count};
+    glint_status st = accel_build(&acc, &geo, err);
     if (st) {
         free(j.pixels);
         return st;

@@ -47,6 +47,10 @@ void glint_scene_free(glint_scene *s)
     free(s->materials);
     free(s->shapes);
     free(s->lights);
+    for (int i = 0; i < s->mesh_count; i++)
+        mesh_release(&s->meshes[i]);
+    free(s->meshes);
+    free(s->instances);
     free(s->output);
     free(s);
 }
@@ -283,6 +287,50 @@ const char *glint_scene_get_output(const glint_scene *scene)
 
 glint_scene_counts glint_scene_get_counts(const glint_scene *scene)
 {
-    glint_scene_counts c = {scene->texture_count, scene->material_count, scene->shape_count, scene->light_count};
+    glint_scene_counts c = {scene->texture_count, scene->material_count, scene->shape_count, scene->light_count,
+                            scene->mesh_count, scene->instance_count, 0};
+    for (int i = 0; i < scene->mesh_count; i++)
+        c.triangles += scene->meshes[i].triangle_count;
     return c;
+}
+
+int glint_scene_add_mesh(glint_scene *scene, const char *name, const glint_mesh_data *data, glint_error *err)
+{
+    if (grow((void **)&scene->meshes, &scene->mesh_cap, scene->mesh_count, sizeof(mesh), "meshes", err) ||
+        mesh_init(&scene->meshes[scene->mesh_count], name, data, scene->material_count, err))
+        return -1;
+    return scene->mesh_count++;
+}
+
+int glint_scene_add_instance(glint_scene *scene, int mesh_index, int mat, const glint_transform *xf,
+                             glint_error *err)
+{
+    if (mesh_index < 0 || mesh_index >= scene->mesh_count) {
+        error_set(err, GLINT_ERR_INVALID, "mesh %d does not exist", mesh_index);
+        return -1;
+    }
+    if (mat < -1 || mat >= scene->material_count) {
+        error_set(err, GLINT_ERR_INVALID, "material %d does not exist", mat);
+        return -1;
+    }
+    instance inst = {.mesh = mesh_index, .material = mat, .to_world = xf ? *xf : glint_transform_identity()};
+    if (!xf_invert(&inst.to_world, &inst.to_object)) {
+        error_set(err, GLINT_ERR_INVALID, "transform is singular or not finite");
+        return -1;
+    }
+    if (grow((void **)&scene->instances, &scene->instance_cap, scene->instance_count, sizeof inst, "instances",
+             err))
+        return -1;
+    scene->instances[scene->instance_count] = inst;
+    return scene->instance_count++;
+}
+
+glint_status glint_scene_mesh_bounds(const glint_scene *scene, int mesh_index, glint_vec3 *lo, glint_vec3 *hi,
+                                     glint_error *err)
+{
+    if (mesh_index < 0 || mesh_index >= scene->mesh_count)
+        return error_set(err, GLINT_ERR_INVALID, "mesh %d does not exist", mesh_index);
+    *lo = scene->meshes[mesh_index].lo;
+    *hi = scene->meshes[mesh_index].hi;
+    return GLINT_OK;
 }

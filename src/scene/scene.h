@@ -2,6 +2,7 @@
 #ifndef GLINT_SCENE_SCENE_H
 #define GLINT_SCENE_SCENE_H
 
+#include "geometry/mesh.h"
 #include "geometry/shape.h"
 #include "shading/light.h"
 #include "shading/material.h"
@@ -19,6 +20,10 @@ struct glint_scene {
     int shape_count, shape_cap;
     light *lights;
     int light_count, light_cap;
+    mesh *meshes;
+    int mesh_count, mesh_cap;
+    instance *instances;
+    int instance_count, instance_cap;
     char *output;             /* image path a scene file asked for, or NULL */
 };
 

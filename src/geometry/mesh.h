@@ -1,0 +1,47 @@
+/* mesh.h - triangle meshes and their instances. A mesh's triangles are
+ * stored once (and shared with Embree, not copied); each instance places
+ * the mesh with its own transform and, optionally, its own material. */
+#ifndef GLINT_GEOMETRY_MESH_H
+#define GLINT_GEOMETRY_MESH_H
+
+#include <stdint.h>
+#include "geometry/shape.h"
+
+typedef struct mesh {
+    char *name;               /* may be NULL */
+    float *positions;         /* 3 per vertex, then padding Embree may read */
+    float *normals;           /* 3 per vertex, or NULL: flat shading */
+    float *uvs;               /* 2 per vertex, or NULL */
+    uint32_t *indices;        /* 3 per triangle */
+    int *materials;           /* one per triangle, or NULL: `material` for all */
+    int material;
+    int vertex_count, triangle_count;
+    vec3 lo, hi;              /* bounds in the mesh's own coordinates */
+} mesh;
+
+typedef struct instance {
+    int mesh;
+    int material;             /* -1: the mesh's own */
+    transform to_world, to_object;
+} instance;
+
+/* Copies and checks d (finite positions, indices in range, materials below
+ * material_count) into *m. */
+glint_status mesh_init(mesh *m, const char *name, const glint_mesh_data *d, int material_count, glint_error *err);
+
+/* Frees what m owns. */
+void mesh_release(mesh *m);
+
+/* The material of triangle tri as placed by inst. */
+int mesh_material(const mesh *m, const instance *inst, unsigned tri);
+
+/* Describes the surface where world ray r hits triangle tri of m placed by
+ * inst, near barycentric coordinates (b1, b2) and ray parameter *t from
+ * Embree: *t is refined in double precision, out->n is the geometric normal
+ * (from the winding: counter-clockwise is the front), out->shading_n the
+ * interpolated vertex normal turned to the same side, u and v interpolated
+ * texture coordinates. */
+void mesh_surface(const mesh *m, const instance *inst, const ray *r, unsigned tri, double b1, double b2, double *t,
+                  surface *out);
+
+#endif
