@@ -1,0 +1,283 @@
+/* test_mesh.c - triangle meshes and instances: a tessellated sphere against
+ * the analytic one, a quad split either way, instancing memory, smooth
+ * normals, uv, per-triangle materials and bad mesh data. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+#include "accel/accel.h"
+#include "scene/scene.h"
+
+#define assert_near(a, b, eps) assert_true(fabs((double)(a) - (double)(b)) <= (eps))
+
+static glint_scene *new_scene(int w, int h, double fov)
+{
+    glint_scene *s = glint_scene_new();
+    assert_non_null(s);
+    glint_settings st = glint_settings_default();
+    st.width = w;
+    st.height = h;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_camera cam = {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, fov};
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    return s;
+}
+
+static int flat(glint_scene *s, double r, double g, double b)
+{
+    glint_material m = glint_material_default();
+    m.color = (glint_color){r, g, b};
+    m.ambient = 1;
+    m.diffuse = 0;
+    m.specular = 0;
+    int i = glint_scene_add_material(s, NULL, &m, NULL);
+    assert_true(i >= 0);
+    return i;
+}
+
+/* A unit sphere of rings x segments quads, each split in two triangles. */
+typedef struct sphere_mesh {
+    float *positions;
+    uint32_t *indices;
+    int vertices, triangles;
+} sphere_mesh;
+
+static sphere_mesh make_sphere(int rings, int segments)
+{
+    sphere_mesh m = {0};
+    m.vertices = (rings + 1) * (segments + 1);
+    m.triangles = rings * segments * 2;
+    m.positions = malloc(sizeof(float) * 3 * (size_t)m.vertices);
+    m.indices = malloc(sizeof(uint32_t) * 3 * (size_t)m.triangles);
+    assert_non_null(m.positions);
+    assert_non_null(m.indices);
+    int k = 0, t = 0;
+    for (int i = 0; i <= rings; i++)
+        for (int j = 0; j <= segments; j++, k++) {
+            double th = M_PI * i / rings, ph = 2 * M_PI * j / segments;
+            m.positions[3 * k] = (float)(sin(th) * cos(ph));
+            m.positions[3 * k + 1] = (float)cos(th);
+            m.positions[3 * k + 2] = (float)(sin(th) * sin(ph));
+        }
+    for (int i = 0; i < rings; i++)
+        for (int j = 0; j < segments; j++) {
+            uint32_t a = (uint32_t)(i * (segments + 1) + j), b = a + 1, c = a + (uint32_t)segments + 1, d = c + 1;
+            uint32_t tri[6] = {a, c, b, b, c, d};
+            memcpy(m.indices + t, tri, sizeof tri);
+            t += 6;
+        }
+    return m;
+}
+
+static int count_lit(const glint_image *img)
+{
+    int n = 0;
+    for (int i = 0; i < img->width * img->height; i++)
+        n += img->pixels[3 * i] > 0.5f;
+    return n;
+}
+
+static void test_tessellated_sphere_matches_analytic(void **state)
+{
+    glint_scene *a = new_scene(300, 300, 30), *b = new_scene(300, 300, 30);
+    glint_shape ball = {.kind = GLINT_SHAPE_SPHERE, .center = {0, 0, -10}, .radius = 1};
+    assert_true(glint_scene_add_shape(a, &ball, flat(a, 1, 1, 1), NULL, NULL) >= 0);
+    sphere_mesh sm = make_sphere(128, 256);
+    glint_mesh_data md = {sm.positions, NULL, NULL, sm.vertices, sm.indices, sm.triangles, NULL, flat(b, 1, 1, 1)};
+    int mesh_id = glint_scene_add_mesh(b, "ball", &md, NULL);
+    assert_int_equal(mesh_id, 0);
+    glint_transform t = glint_transform_translate(glint_transform_identity(), 0, 0, -10);
+    assert_int_equal(glint_scene_add_instance(b, mesh_id, -1, &t, NULL), 0);
+    glint_image ia, ib;
+    assert_int_equal(glint_render(a, NULL, &ia, NULL, NULL), GLINT_OK);
+    assert_int_equal(glint_render(b, NULL, &ib, NULL, NULL), GLINT_OK);
+    int na = count_lit(&ia), nb = count_lit(&ib), differ = 0;
+    for (int i = 0; i < ia.width * ia.height; i++)
+        differ += (ia.pixels[3 * i] > 0.5f) != (ib.pixels[3 * i] > 0.5f);
+    assert_true(na > 1000);
+    assert_true(differ <= na / 100);
+    assert_true(abs(na - nb) <= na / 100);
+    glint_image_free(&ia);
+    glint_image_free(&ib);
+    glint_scene_free(a);
+    glint_scene_free(b);
+    free(sm.positions);
+    free(sm.indices);
+}
+
+/* The quad (-1,-1)..(1,1) at z = -3, split along one diagonal or the other. */
+static glint_image render_quad(bool other_diagonal)
+{
+    glint_scene *s = new_scene(64, 64, 60);
+    static const float p[] = {-1, -1, -3, 1, -1, -3, 1, 1, -3, -1, 1, -3};
+    static const uint32_t one[] = {0, 1, 2, 0, 2, 3}, other[] = {0, 1, 3, 1, 2, 3};
+    static const float uv[] = {0, 1, 1, 1, 1, 0, 0, 0};
+    glint_mapping own = {.kind = GLINT_MAP_UV};
+    glint_material m = glint_material_default();
+    m.ambient = 1;
+    m.diffuse = m.specular = 0;
+    m.texture = glint_scene_add_checker(s, "c", (glint_color){1, 0, 0}, (glint_color){0, 0, 1}, 0.25, own, NULL);
+    glint_mesh_data md = {p, NULL, uv, 4, other_diagonal ? other : one, 2, NULL,
+                          glint_scene_add_material(s, NULL, &m, NULL)};
+    assert_int_equal(glint_scene_add_instance(s, glint_scene_add_mesh(s, NULL, &md, NULL), -1, NULL, NULL), 0);
+    glint_image img;
+    assert_int_equal(glint_render(s, NULL, &img, NULL, NULL), GLINT_OK);
+    glint_scene_free(s);
+    return img;
+}
+
+static void test_quad_split_either_way_gives_the_same_image(void **state)
+{
+    glint_image a = render_quad(false), b = render_quad(true);
+    int differ = 0;
+    for (int i = 0; i < a.width * a.height * 3; i++)
+        differ += fabsf(a.pixels[i] - b.pixels[i]) > 1e-4f;
+    assert_int_equal(differ, 0);
+    /* The checker follows the interpolated uv: 4 x 4 cells, red first at the top left. */
+    assert_true(a.pixels[3 * (20 * 64 + 20)] > 0.9f);
+    glint_image_free(&a);
+    glint_image_free(&b);
+}
+
+/* Resident memory in bytes, from /proc/self/statm. */
+static long resident(void)
+{
+    FILE *f = fopen("/proc/self/statm", "r");
+    long size = 0, pages = 0;
+    if (f) {
+        if (fscanf(f, "%ld %ld", &size, &pages) != 2)
+            pages = 0;
+        fclose(f);
+    }
+    return pages * sysconf(_SC_PAGESIZE);
+}
+
+/* Builds the accelerator over `count` instances of a 131k-triangle mesh and
+ * returns how much resident memory that took. */
+static long accel_memory(glint_scene *s, int count)
+{
+    sphere_mesh sm = make_sphere(256, 256);
+    glint_mesh_data md = {sm.positions, NULL, NULL, sm.vertices, sm.indices, sm.triangles, NULL, flat(s, 1, 1, 1)};
+    int mesh_id = glint_scene_add_mesh(s, NULL, &md, NULL);
+    free(sm.positions);
+    free(sm.indices);
+    for (int i = 0; i < count; i++) {
+        glint_transform t = glint_transform_translate(glint_transform_identity(), 3.0 * (i % 40), 3.0 * (i / 40), -50);
+        assert_true(glint_scene_add_instance(s, mesh_id, -1, &t, NULL) >= 0);
+    }
+    long before = resident();
+    accel *a;
+    accel_geometry g = {NULL, 0, s->meshes, s->mesh_count, s->instances, s->instance_count};
+    assert_int_equal(accel_build(&a, &g, NULL), GLINT_OK);
+    long used = resident() - before;
+    accel_free(a);
+    return used;
+}
+
+static void test_instances_share_their_mesh(void **state)
+{
+    glint_scene *one = new_scene(8, 8, 30), *many = new_scene(8, 8, 30);
+    long single = accel_memory(one, 1), thousand = accel_memory(many, 1000);
+    print_message("resident memory for the accelerator: 1 instance %ld KiB, 1000 instances %ld KiB\n", single / 1024, thousand / 1024);
+    /* 131k triangles take megabytes of BVH; a thousand placements add only
+     * a little top-level structure (a few KiB each, where copies would cost
+     * the whole mesh each). */
+    assert_true(single > 2 * 1024 * 1024);
+    assert_true(thousand < 2 * single);
+    assert_true((thousand - single) / 999 < 8 * 1024);
+    /* And a ray finds the far copies. */
+    assert_int_equal(many->instance_count, 1000);
+    glint_scene_free(one);
+    glint_scene_free(many);
+}
+
+static void test_smooth_normals_and_per_triangle_materials(void **state)
+{
+    glint_scene *s = new_scene(9, 9, 10);
+    /* One triangle facing +z whose vertex normals lean apart; two materials. */
+    static const float p[] = {-1, -1, -5, 1, -1, -5, 0, 1, -5, -1, -1, -6, 1, -1, -6, 0, 1, -6};
+    static const float n[] = {-1, 0, 1, 1, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+    static const uint32_t idx[] = {0, 1, 2, 3, 4, 5};
+    int mats[2] = {flat(s, 0, 1, 0), flat(s, 1, 0, 0)};
+    glint_mesh_data md = {p, n, NULL, 6, idx, 2, mats, 0};
+    int mesh_id = glint_scene_add_mesh(s, "two", &md, NULL);
+    assert_int_equal(glint_scene_add_instance(s, mesh_id, -1, NULL, NULL), 0);
+    accel *a;
+    accel_geometry g = {NULL, 0, s->meshes, s->mesh_count, s->instances, s->instance_count};
+    assert_int_equal(accel_build(&a, &g, NULL), GLINT_OK);
+    ray r = {{-0.5, -0.9, 0}, {0, 0, -1}};
+    accel_hit h;
+    assert_true(accel_intersect(a, &r, 0, INFINITY, &h));
+    assert_int_equal(h.triangle, 0);
+    assert_int_equal(mesh_material(&s->meshes[0], &s->instances[0], h.triangle), mats[0]);
+    surface sf;
+    mesh_surface(&s->meshes[0], &s->instances[0], &r, h.triangle, h.b1, h.b2, &h.t, &sf);
+    assert_near(h.t, 5, 1e-12);
+    assert_near(sf.n.z, 1, 1e-12);
+    /* Near vertex 0 the shading normal leans towards its (-1, 0, 1). */
+    assert_true(sf.shading_n.x < -0.3);
+    assert_near(v3_length(sf.shading_n), 1, 1e-9);
+    accel_free(a);
+    /* An instance's material overrides the mesh's. */
+    assert_int_equal(glint_scene_add_instance(s, mesh_id, mats[1], NULL, NULL), 1);
+    assert_int_equal(mesh_material(&s->meshes[0], &s->instances[1], 0), mats[1]);
+    glint_scene_counts c = glint_scene_get_counts(s);
+    assert_int_equal(c.meshes, 1);
+    assert_int_equal(c.instances, 2);
+    assert_int_equal(c.triangles, 2);
+    glint_scene_free(s);
+}
+
+static void test_bad_mesh_data(void **state)
+{
+    glint_scene *s = new_scene(8, 8, 30);
+    int m = flat(s, 1, 1, 1);
+    float p[] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    uint32_t idx[] = {0, 1, 3};
+    glint_error err;
+    glint_mesh_data md = {p, NULL, NULL, 3, idx, 1, NULL, m};
+    assert_int_equal(glint_scene_add_mesh(s, NULL, &md, &err), -1);
+    assert_string_equal(err.message, "mesh triangle 0 uses vertex 3 of 3");
+    idx[2] = 2;
+    p[4] = NAN;
+    assert_int_equal(glint_scene_add_mesh(s, NULL, &md, &err), -1);
+    assert_string_equal(err.message, "mesh vertex 1 is not finite");
+    p[4] = 0;
+    md.material = 7;
+    assert_int_equal(glint_scene_add_mesh(s, NULL, &md, &err), -1);
+    assert_string_equal(err.message, "material 7 does not exist");
+    md.material = m;
+    md.triangle_count = 0;
+    assert_int_equal(glint_scene_add_mesh(s, NULL, &md, &err), -1);
+    assert_string_equal(err.message, "mesh needs 1 to 1073741824 vertices and triangles, got 3 and 0");
+    md.triangle_count = 1;
+    assert_int_equal(glint_scene_add_mesh(s, NULL, &md, &err), 0);
+    assert_int_equal(glint_scene_add_instance(s, 1, -1, NULL, &err), -1);
+    assert_string_equal(err.message, "mesh 1 does not exist");
+    glint_transform flat_xf = glint_transform_scale(glint_transform_identity(), 0, 1, 1);
+    assert_int_equal(glint_scene_add_instance(s, 0, -1, &flat_xf, &err), -1);
+    assert_string_equal(err.message, "transform is singular or not finite");
+    glint_vec3 lo, hi;
+    assert_int_equal(glint_scene_mesh_bounds(s, 0, &lo, &hi, &err), GLINT_OK);
+    assert_near(hi.x, 1, 0);
+    assert_near(lo.y, 0, 0);
+    glint_scene_free(s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_tessellated_sphere_matches_analytic),
+        cmocka_unit_test(test_quad_split_either_way_gives_the_same_image),
+        cmocka_unit_test(test_instances_share_their_mesh),
+        cmocka_unit_test(test_smooth_normals_and_per_triangle_materials),
+        cmocka_unit_test(test_bad_mesh_data),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
