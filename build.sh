@@ -9,7 +9,7 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-PACKAGES=(gcc make cmake pkg-config libembree-dev zlib1g-dev libpng-dev libjpeg62-turbo-dev libyaml-dev libcmocka-dev
+PACKAGES=(gcc make cmake pkg-config libembree-dev zlib1g-dev libpng-dev libjpeg62-turbo-dev libyaml-dev libassimp-dev libcmocka-dev
           clang libclang-rt-14-dev)
 
 install_missing() {

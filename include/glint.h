@@ -331,6 +331,17 @@ int glint_scene_import_mesh_memory(glint_scene *scene, const void *data, size_t 
 glint_status glint_scene_mesh_bounds(const glint_scene *scene, int mesh, glint_vec3 *min, glint_vec3 *max,
                                      glint_error *err);
 
+/* Builds a scene for looking at one model file: the model as it is, a
+ * checkered floor under it (y is up), a camera that frames its bounding box
+ * from the front, above and to the right, a key and a fill light; 800x600,
+ * 4 samples per pixel. Returns NULL and fills err when the model cannot be
+ * imported. */
+glint_scene *glint_scene_for_model(const char *path, glint_error *err);
+
+/* True when path names a model file by its extension (.obj, .ply, .stl,
+ * .gltf, .glb, any case) rather than a scene file. */
+bool glint_is_model_path(const char *path);
+
 /* ------------------------------------------------------------ scene files */
 
 /* Called once for each problem found while loading a scene file, with a
