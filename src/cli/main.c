@@ -34,9 +34,10 @@ typedef struct options {
 } options;
 
 static const char USAGE[] =
-    "usage: glint [SCENE.yaml] [options]\n"
-    "Renders a scene file (docs/scene-format.md), or without one the built-in seed\n"
-    "room (the COSC363 scene), to an image. Flags override the file's settings.\n"
+    "usage: glint [SCENE.yaml | MODEL] [options]\n"
+    "Renders a scene file (docs/scene-format.md), a model file (.obj, .ply, .stl,\n"
+    ".gltf, .glb: framed on a floor, lit), or without either the built-in seed room\n"
+    "(the COSC363 scene), to an image. Flags override the file's settings.\n"
     "\n"
     "options:\n"
     "  -o, --output FILE      image to write, .png (8-bit sRGB) or .ppm (default: the\n"
@@ -257,11 +258,18 @@ static void print_problem(void *user, const char *message)
     fprintf(stderr, "%s\n", message);
 }
 
-/* Loads the scene file, printing every problem and a last line saying what
- * became of the run; NULL after reporting. */
+/* Loads the scene file (or builds a scene around a model file), printing
+ * every problem and a last line saying what became of the run; NULL after
+ * reporting. */
 static glint_scene *load_scene(const char *path, const char *outcome)
 {
     glint_error err = {{0}};
+    if (glint_is_model_path(path)) {
+        glint_scene *model = glint_scene_for_model(path, &err);
+        if (!model)
+            complain(EXIT_BAD_INPUT, "%s", err.message);
+        return model;
+    }
     int problems = 0;
     glint_load_options lo = {.report = print_problem, .report_user = &problems, .max_errors = MAX_PROBLEMS};
     glint_scene *scene = glint_scene_load_file(path, &lo, &err);
@@ -277,8 +285,11 @@ static int check_only(const options *o)
     if (!scene)
         return EXIT_BAD_INPUT;
     glint_scene_counts c = glint_scene_get_counts(scene);
-    printf("%s: ok: %d textures, %d materials, %d shapes, %d lights\n", o->scene, c.textures, c.materials,
-           c.shapes, c.lights);
+    printf("%s: ok: %d textures, %d materials, %d shapes, %d lights", o->scene, c.textures, c.materials, c.shapes,
+           c.lights);
+    if (c.meshes > 0)
+        printf(", %d meshes (%lld triangles) placed %d times", c.meshes, c.triangles, c.instances);
+    putchar('\n');
     glint_scene_free(scene);
     return EXIT_OK;
 }

@@ -36,8 +36,18 @@ typedef struct loader {
     ydoc *docs;                                  /* kept until the end: nodes name their file */
     int doc_count, doc_cap;
     int files;                                   /* files read so far */
+    struct imported *imports;                    /* models read so far: each once */
+    int import_count, import_cap;
     long bytes;                                  /* bytes read so far, all files */
 } loader;
+
+/* A model file already imported, so that every object placing it shares
+ * one mesh. */
+struct imported {
+    char *path;               /* canonical */
+    double crease_angle;
+    int mesh;
+};
 
 enum { FOG_TYPE = 1, FOG_START = 2, FOG_END = 4, FOG_DENSITY = 8 };
 
@@ -545,7 +555,8 @@ static bool read_transform(loader *l, const ynode *n, glint_transform *t)
 static void read_objects(loader *l, const ynode *list, const context *ctx);
 
 /* The keys of each shape beyond those every object has. */
-static const char *const SHAPE_NAMES[] = {"sphere", "plane", "polygon", "box", "cylinder", "cone", "group"};
+static const char *const SHAPE_NAMES[] = {"sphere", "plane", "polygon", "box", "cylinder", "cone", "group", "mesh"};
+enum { KIND_GROUP = 6, KIND_MESH = 7 };
 
 static bool read_shape(loader *l, const ynode *n, int kind, glint_shape *s)
 {
@@ -579,12 +590,67 @@ static bool read_shape(loader *l, const ynode *n, int kind, glint_shape *s)
     }
 }
 
+/* The mesh of a model file, imported on first use. */
+static int import_model(loader *l, const ynode *file, const char *path, double crease)
+{
+    char canonical[PATH_MAX];
+    if (!realpath(path, canonical)) {
+        diag_at(&l->d, file, "cannot read model '%s': %s", path, strerror(errno));
+        return -1;
+    }
+    for (int i = 0; i < l->import_count; i++)
+        if (l->imports[i].crease_angle == crease && strcmp(l->imports[i].path, canonical) == 0)
+            return l->imports[i].mesh;
+    glint_import_options o = {.crease_angle = crease, .default_material = -1};
+    glint_error err;
+    int mesh_index = glint_scene_import_mesh(l->scene, path, &o, &err);
+    if (mesh_index < 0) {
+        diag_at(&l->d, file, "%s", err.message);
+        return -1;
+    }
+    if (l->import_count == l->import_cap) {
+        int ncap = l->import_cap ? 2 * l->import_cap : 8;
+        struct imported *p = realloc(l->imports, (size_t)ncap * sizeof *p);
+        if (!p)
+            return mesh_index;
+        l->imports = p;
+        l->import_cap = ncap;
+    }
+    char *copy = strdup(canonical);
+    if (copy)
+        l->imports[l->import_count++] = (struct imported){copy, crease, mesh_index};
+    return mesh_index;
+}
+
+/* A mesh object: its model file's triangles, placed; `override` (>= 0)
+ * replaces the file's own materials. */
+static void place_mesh(loader *l, const ynode *n, int override, const glint_transform *to_world)
+{
+    const ynode *file = yr_need(&l->r, n, "file", "mesh");
+    const char *path;
+    double crease = 80;
+    if (!file || !yr_text(&l->r, file, "file", &path) ||
+        !ranged(l, n, "crease_angle", 0, 180, CLOSED, "from 0 to 180 degrees", &crease))
+        return;
+    char *full = relative_to(n->file, path);
+    if (!full) {
+        diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
+        return;
+    }
+    int mesh_index = import_model(l, file, full, crease);
+    free(full);
+    glint_error err;
+    if (mesh_index >= 0 && glint_scene_add_instance(l->scene, mesh_index, override, to_world, &err) < 0)
+        diag_at(&l->d, n, "%s", err.message);
+}
+
 static void read_object(loader *l, const ynode *n, const context *outer)
 {
     static const char *const common[] = {"type", "material", "transform"};
     static const char *const extra[][4] = {
         {"center", "radius"}, {"point", "normal"}, {"points"}, {"min", "max"},
         {"center", "radius", "height", "capped"}, {"center", "radius", "height", "capped"}, {"objects"},
+        {"file", "crease_angle"},
     };
     int kind = typed_map(l, n, "an object", SHAPE_NAMES, COUNT(SHAPE_NAMES));
     if (kind < 0)
@@ -607,7 +673,11 @@ static void read_object(loader *l, const ynode *n, const context *outer)
     if (mat && (ctx.material = object_material(l, mat)) < 0)
         return;
 
-    if (kind == 6) {
+    if (kind == KIND_MESH) {
+        place_mesh(l, n, mat ? ctx.material : -1, &ctx.to_world);
+        return;
+    }
+    if (kind == KIND_GROUP) {
         if (outer->depth >= MAX_GROUP_DEPTH) {
             diag_at(&l->d, n, "groups nested too deep (limit %d)", MAX_GROUP_DEPTH);
             return;
@@ -883,6 +953,9 @@ static glint_scene *load(const glint_load_options *o, glint_error *err, const ch
     for (int i = 0; i < l.doc_count; i++)
         ydoc_free(&l.docs[i]);
     free(l.docs);
+    for (int i = 0; i < l.import_count; i++)
+        free(l.imports[i].path);
+    free(l.imports);
     if (l.d.count > 0) {
         glint_scene_free(l.scene);
         return NULL;

@@ -270,6 +270,59 @@ static void test_bad_mesh_data(void **state)
     glint_scene_free(s);
 }
 
+/* Writes text to a file in the test's temporary directory; returns the path. */
+static const char *temp_file(const char *name, const char *text)
+{
+    static char path[4096];
+    const char *dir = getenv("GLINT_TEST_TMP");
+    snprintf(path, sizeof path, "%s/%s", dir ? dir : "/tmp", name);
+    FILE *f = fopen(path, "w");
+    assert_non_null(f);
+    fputs(text, f);
+    fclose(f);
+    return path;
+}
+
+static void test_scene_file_places_models(void **state)
+{
+    temp_file("mesh-quad.obj", "v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nf 1 4 3 2\n");
+    char scene_path[4096];
+    snprintf(scene_path, sizeof scene_path, "%s", temp_file("mesh-scene.yaml",
+        "materials:\n"
+        "  gold: {color: [1, 0.8, 0.2]}\n"
+        "objects:\n"
+        "  - {type: mesh, file: mesh-quad.obj}\n"
+        "  - {type: mesh, file: mesh-quad.obj, material: gold, transform: [{translate: [3, 0, 0]}]}\n"
+        "  - type: group\n"
+        "    material: gold\n"
+        "    objects: [{type: mesh, file: ./mesh-quad.obj, transform: [{scale: 2}]}]\n"));
+    glint_error err;
+    glint_scene *s = glint_scene_load_file(scene_path, NULL, &err);
+    if (!s)
+        fail_msg("%s", err.message);
+    /* One file, read once: one mesh of two triangles, three placements. */
+    glint_scene_counts c = glint_scene_get_counts(s);
+    assert_int_equal(c.meshes, 1);
+    assert_int_equal(c.triangles, 2);
+    assert_int_equal(c.instances, 3);
+    int gold = scene_find_material(s, "gold");
+    assert_int_equal(s->instances[0].material, -1);
+    assert_int_equal(s->instances[1].material, gold);
+    /* A group's material does not replace the file's own. */
+    assert_int_equal(s->instances[2].material, -1);
+    assert_near(s->instances[1].to_world.m[0][3], 3, 0);
+    assert_near(s->instances[2].to_world.m[1][1], 2, 0);
+    glint_scene_free(s);
+
+    snprintf(scene_path, sizeof scene_path, "%s",
+             temp_file("mesh-missing.yaml", "objects:\n  - {type: mesh, file: nowhere.obj, crease_angle: 30}\n"));
+    assert_null(glint_scene_load_file(scene_path, NULL, &err));
+    char want[4200];
+    snprintf(want, sizeof want, "%s:2:24: cannot read model '%.*s/nowhere.obj': No such file or directory",
+             scene_path, (int)(strrchr(scene_path, '/') - scene_path), scene_path);
+    assert_string_equal(err.message, want);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -278,6 +331,7 @@ int main(void)
         cmocka_unit_test(test_instances_share_their_mesh),
         cmocka_unit_test(test_smooth_normals_and_per_triangle_materials),
         cmocka_unit_test(test_bad_mesh_data),
+        cmocka_unit_test(test_scene_file_places_models),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

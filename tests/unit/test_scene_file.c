@@ -1505,13 +1505,13 @@ static const bad_scene BAD[] = {
      "  m: {}\n"
      "objects:\n"
      "  - {type: sphear, material: m, radius: 1}\n",
-     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone or group, got 'sphear' (did you mean 'sphere'?)", 1},
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, group or mesh, got 'sphear' (did you mean 'sphere'?)", 1},
     {"object_type_no_hint",
      "materials:\n"
      "  m: {}\n"
      "objects:\n"
      "  - {type: torus, material: m, radius: 1}\n",
-     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone or group, got 'torus'", 1},
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, group or mesh, got 'torus'", 1},
     {"light_type_no_hint",
      "lights:\n"
      "  - {type: area}\n",
