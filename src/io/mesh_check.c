@@ -2,10 +2,13 @@
  * model's bytes before Assimp parses them. Assimp picks its reader by
  * extension, but falls back to sniffing the content with every reader it has
  * when none claims the file; and its PLY reader allocates whatever element
- * counts the header claims. Both are stopped here, so only the five readers
- * glint documents ever see a file, and memory stays in proportion to it. */
+ * counts the header claims, and goes astray (heap corruption, endless
+ * loops) on headers and data that do not follow the format. So PLY files are
+ * checked in full here, header and data, and only the five readers glint
+ * documents ever see a file. */
 #include <ctype.h>
 #include <limits.h>
+#include <stdlib.h>
 #include <string.h>
 #include <strings.h>
 #include "core/error.h"
@@ -38,9 +41,13 @@ const char *mesh_import_extension(mesh_format f)
     return "";
 }
 
-/* A header line split into at most 4 words, each cut to fit. */
+#define PLY_MAX_WORDS 6
+#define PLY_MAX_ELEMENTS 64
+#define PLY_MAX_PROPERTIES 64
+
+/* A header line split into words, each cut to fit; n counts them all. */
 typedef struct line_words {
-    char w[4][40];
+    char w[PLY_MAX_WORDS][40];
     int n;
 } line_words;
 
@@ -56,7 +63,7 @@ static void next_line(const unsigned char *data, size_t size, size_t *pos, line_
             break;
         size_t len = 0;
         while (i < size && !isspace(data[i])) {
-            if (lw->n < 4 && len + 1 < sizeof lw->w[0])
+            if (lw->n < PLY_MAX_WORDS && len + 1 < sizeof lw->w[0])
                 lw->w[lw->n][len++] = isprint(data[i]) ? (char)data[i] : '?';
             i++;
         }
@@ -65,87 +72,273 @@ static void next_line(const unsigned char *data, size_t size, size_t *pos, line_
     *pos = i < size ? i + 1 : size;
 }
 
-/* Bytes one value of a PLY scalar type takes in a binary file. */
-static unsigned long long ply_type_size(const char *type)
+/* Bytes one value of a PLY scalar type takes in a binary file, 0 for an
+ * unknown type; *integer tells whether it may count a list. */
+static unsigned ply_type_size(const char *type, bool *integer)
 {
     static const struct {
         const char *name;
         unsigned size;
+        bool integer;
     } types[] = {
-        {"char", 1}, {"uchar", 1}, {"int8", 1}, {"uint8", 1}, {"short", 2}, {"ushort", 2},
-        {"int16", 2}, {"uint16", 2}, {"int", 4}, {"uint", 4}, {"int32", 4}, {"uint32", 4},
-        {"float", 4}, {"float32", 4}, {"double", 8}, {"float64", 8},
+        {"char", 1, true}, {"uchar", 1, true}, {"int8", 1, true}, {"uint8", 1, true},
+        {"short", 2, true}, {"ushort", 2, true}, {"int16", 2, true}, {"uint16", 2, true},
+        {"int", 4, true}, {"uint", 4, true}, {"int32", 4, true}, {"uint32", 4, true},
+        {"float", 4, false}, {"float32", 4, false}, {"double", 8, false}, {"float64", 8, false},
     };
     for (size_t i = 0; i < sizeof types / sizeof types[0]; i++)
-        if (strcmp(type, types[i].name) == 0)
+        if (strcmp(type, types[i].name) == 0) {
+            *integer = types[i].integer;
             return types[i].size;
-    return 1;
+        }
+    return 0;
 }
 
-/* A decimal count, ULLONG_MAX when it overflows, 0 when it is not a number
- * (Assimp then refuses the header itself). */
-static unsigned long long parse_count(const char *s)
+/* A decimal count of digits only, ULLONG_MAX when it overflows; false when
+ * it is not one. */
+static bool parse_count(const char *s, unsigned long long *out)
 {
     unsigned long long n = 0;
+    if (!*s)
+        return false;
     for (; *s; s++) {
         if (!isdigit((unsigned char)*s))
-            return 0;
+            return false;
         unsigned d = (unsigned)(*s - '0');
         n = n > (ULLONG_MAX - d) / 10 ? ULLONG_MAX : n * 10 + d;
     }
-    return n;
+    *out = n;
+    return true;
 }
+
+typedef struct ply_property {
+    unsigned count_size;      /* list: bytes of the length; 0 for a scalar */
+    unsigned size;            /* bytes of the value, or of each list item */
+    bool count_signed;
+} ply_property;
 
 typedef struct ply_element {
     char name[40];
     unsigned long long count;
-    unsigned long long min_bytes;   /* the least one item can take in the file */
+    ply_property props[PLY_MAX_PROPERTIES];
+    int prop_count;
 } ply_element;
 
-static glint_status check_element(const ply_element *e, size_t body, const char *file, glint_error *err)
+typedef struct ply_header {
+    int format;               /* 0 ascii, 1 binary little-endian, 2 binary big-endian */
+    ply_element elems[PLY_MAX_ELEMENTS];
+    int elem_count;
+    size_t body;              /* offset of the data */
+} ply_header;
+
+static glint_status header_error(const char *file, int line, glint_error *err)
 {
-    unsigned long long least = e->min_bytes ? e->min_bytes : 1;
-    if (e->count > body / least)
-        return error_set(err, GLINT_ERR_INVALID,
-                         "%s: PLY element '%s' claims %llu items, more than the file's %zu bytes of data can hold",
-                         file, e->name, e->count, body);
-    return GLINT_OK;
+    return error_set(err, GLINT_ERR_INVALID, "%s: PLY header line %d is not understood", file, line);
 }
 
-/* Walks the header; lines it cannot follow are left for Assimp to refuse. */
-static glint_status check_ply(const unsigned char *data, size_t size, const char *file, glint_error *err)
+/* Reads a "property" line into the last element. */
+static bool read_property(const line_words *lw, ply_header *h)
 {
+    if (h->elem_count == 0)
+        return false;
+    ply_element *e = &h->elems[h->elem_count - 1];
+    if (e->prop_count == PLY_MAX_PROPERTIES)
+        return false;
+    ply_property *p = &e->props[e->prop_count];
+    bool integer = false;
+    if (lw->n == 3) {
+        p->size = ply_type_size(lw->w[1], &integer);
+        p->count_size = 0;
+    } else if (lw->n == 5 && strcmp(lw->w[1], "list") == 0) {
+        p->count_size = ply_type_size(lw->w[2], &integer);
+        p->count_signed = lw->w[2][0] != 'u';
+        if (!integer)
+            return false;
+        p->size = ply_type_size(lw->w[3], &integer);
+    } else {
+        return false;
+    }
+    if (p->size == 0 || p->count_size > 4)
+        return false;
+    e->prop_count++;
+    return true;
+}
+
+/* Reads the header, line by line, accepting only the grammar of the PLY
+ * format: Assimp's reader goes astray on anything else. */
+static glint_status read_header(const unsigned char *data, size_t size, const char *file, ply_header *h,
+                                glint_error *err)
+{
+    static const char *const format_names[] = {"ascii", "binary_little_endian", "binary_big_endian"};
     size_t pos = 0;
     line_words lw;
-    bool binary = false;
-    ply_element elems[64];
-    int n = 0;
-    while (pos < size) {
+    h->format = -1;
+    h->elem_count = 0;
+    for (int line = 1; pos < size; line++) {
         next_line(data, size, &pos, &lw);
-        if (lw.n >= 2 && strcmp(lw.w[0], "format") == 0)
-            binary = strncmp(lw.w[1], "binary", 6) == 0;
-        else if (lw.n >= 3 && strcmp(lw.w[0], "element") == 0) {
-            if (n == (int)(sizeof elems / sizeof elems[0]))
-                return error_set(err, GLINT_ERR_INVALID, "%s: PLY header declares more than %d elements", file, n);
-            elems[n] = (ply_element){.count = parse_count(lw.w[2]), .min_bytes = 0};
-            memcpy(elems[n].name, lw.w[1], sizeof elems[n].name);
-            n++;
-        } else if (lw.n >= 3 && strcmp(lw.w[0], "property") == 0 && n > 0) {
-            bool list = strcmp(lw.w[1], "list") == 0;
-            /* ASCII takes at least a character and a separator a value; a
-             * list at least its length. */
-            elems[n - 1].min_bytes += binary ? ply_type_size(list ? lw.w[2] : lw.w[1]) : 2;
-        } else if (lw.n >= 1 && strcmp(lw.w[0], "end_header") == 0) {
-            for (int i = 0; i < n; i++) {
-                glint_status s = check_element(&elems[i], size - pos, file, err);
-                if (s)
-                    return s;
-            }
+        const char *key = lw.w[0];
+        bool ok = false;
+        if (line == 1) {
+            ok = lw.n == 1 && strcmp(key, "ply") == 0;
+        } else if (strcmp(key, "comment") == 0 || strcmp(key, "obj_info") == 0) {
+            ok = true;
+        } else if (strcmp(key, "format") == 0 && lw.n == 3 && h->format < 0 && strcmp(lw.w[2], "1.0") == 0) {
+            for (int f = 0; f < 3; f++)
+                if (strcmp(lw.w[1], format_names[f]) == 0)
+                    h->format = f;
+            ok = h->format >= 0;
+        } else if (strcmp(key, "element") == 0 && lw.n == 3) {
+            if (h->elem_count == PLY_MAX_ELEMENTS)
+                return error_set(err, GLINT_ERR_INVALID, "%s: PLY header declares more than %d elements", file,
+                                 PLY_MAX_ELEMENTS);
+            ply_element *e = &h->elems[h->elem_count];
+            ok = parse_count(lw.w[2], &e->count);
+            memcpy(e->name, lw.w[1], sizeof e->name);
+            e->prop_count = 0;
+            h->elem_count += ok;
+        } else if (strcmp(key, "property") == 0) {
+            ok = read_property(&lw, h);
+        } else if (strcmp(key, "end_header") == 0 && lw.n == 1 && h->format >= 0) {
+            h->body = pos;
             return GLINT_OK;
         }
+        if (!ok)
+            return header_error(file, line, err);
     }
     /* Assimp's reader loops for ever on a header cut short. */
     return error_set(err, GLINT_ERR_INVALID, "%s: PLY header has no end_header line", file);
+}
+
+static glint_status data_error(const char *file, const ply_element *e, unsigned long long item, glint_error *err)
+{
+    return error_set(err, GLINT_ERR_INVALID, "%s: PLY data of element '%s' item %llu does not match the header",
+                     file, e->name, item);
+}
+
+/* Reads an unsigned or signed little- or big-endian integer of n bytes. */
+static long long read_int(const unsigned char *p, unsigned n, bool big, bool is_signed)
+{
+    unsigned long long v = 0;
+    for (unsigned i = 0; i < n; i++)
+        v |= (unsigned long long)p[big ? n - 1 - i : i] << (8 * i);
+    if (is_signed && n < 8 && (v >> (8 * n - 1)) & 1)
+        return (long long)v - (1LL << (8 * n));
+    return (long long)v;
+}
+
+/* Walks every item of binary data, with each list's own length. */
+static glint_status check_binary(const unsigned char *data, size_t size, const ply_header *h, const char *file,
+                                 glint_error *err)
+{
+    size_t pos = h->body;
+    for (int i = 0; i < h->elem_count; i++) {
+        const ply_element *e = &h->elems[i];
+        for (unsigned long long k = 0; k < e->count; k++)
+            for (int j = 0; j < e->prop_count; j++) {
+                const ply_property *p = &e->props[j];
+                long long n = 1;
+                if (p->count_size) {
+                    if (size - pos < p->count_size)
+                        return data_error(file, e, k, err);
+                    n = read_int(data + pos, p->count_size, h->format == 2, p->count_signed);
+                    pos += p->count_size;
+                }
+                if (n < 0 || (unsigned long long)n > (size - pos) / p->size)
+                    return data_error(file, e, k, err);
+                pos += (size_t)n * p->size;
+            }
+    }
+    return GLINT_OK;
+}
+
+/* True for a token Assimp's number reader takes whole. */
+static bool is_number(const unsigned char *t, size_t len)
+{
+    if (len == 0)
+        return false;
+    for (size_t i = 0; i < len; i++)
+        if (!isdigit(t[i]) && !strchr("+-.eE", t[i]))
+            return false;
+    return true;
+}
+
+/* Walks every item of ASCII data: one line each, with a number for each
+ * value and a list's length before its values. */
+static glint_status check_ascii(const unsigned char *data, size_t size, const ply_header *h, const char *file,
+                                glint_error *err)
+{
+    size_t pos = h->body;
+    for (int i = 0; i < h->elem_count; i++) {
+        const ply_element *e = &h->elems[i];
+        for (unsigned long long k = 0; k < e->count; k++) {
+            size_t end = pos;
+            while (end < size && data[end] != '\n')
+                end++;
+            bool ok = true;
+            int prop = 0;             /* the property the next token starts */
+            long long left = 0;       /* values still due in the current list */
+            for (size_t t = pos; ok && t < end;) {
+                while (t < end && isspace(data[t]))
+                    t++;
+                if (t >= end)
+                    break;
+                size_t len = 0;
+                while (t + len < end && !isspace(data[t + len]))
+                    len++;
+                ok = is_number(data + t, len);
+                if (ok && left > 0) {
+                    left--;
+                } else if (ok && prop < e->prop_count) {
+                    if (e->props[prop].count_size) {
+                        unsigned long long n;
+                        char buf[24];
+                        ok = len < sizeof buf;
+                        if (ok) {
+                            memcpy(buf, data + t, len);
+                            buf[len] = '\0';
+                            ok = parse_count(buf, &n) && n <= (unsigned long long)(end - t) / 2;
+                            left = (long long)n;
+                        }
+                    }
+                    prop++;
+                } else {
+                    ok = false;
+                }
+                t += len;
+            }
+            if (!ok || prop != e->prop_count || left != 0)
+                return data_error(file, e, k, err);
+            pos = end < size ? end + 1 : size;
+        }
+    }
+    return GLINT_OK;
+}
+
+/* Checks the header's grammar, that no element claims more items than the
+ * data can hold (before walking them), and that the data matches it. */
+static glint_status check_ply(const unsigned char *data, size_t size, const char *file, glint_error *err)
+{
+    ply_header *h = malloc(sizeof *h);
+    if (!h)
+        return error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", file);
+    glint_status s = read_header(data, size, file, h, err);
+    size_t body = s ? 0 : size - h->body;
+    for (int i = 0; !s && i < h->elem_count; i++) {
+        const ply_element *e = &h->elems[i];
+        unsigned long long least = 0;
+        for (int j = 0; j < e->prop_count; j++)
+            least += h->format ? (e->props[j].count_size ? e->props[j].count_size : e->props[j].size) : 2;
+        if (least == 0)
+            least = 1;
+        if (e->count > body / least)
+            s = error_set(err, GLINT_ERR_INVALID,
+                          "%s: PLY element '%s' claims %llu items, more than the file's %zu bytes of data can hold",
+                          file, e->name, e->count, body);
+    }
+    if (!s)
+        s = h->format ? check_binary(data, size, h, file, err) : check_ascii(data, size, h, file, err);
+    free(h);
+    return s;
 }
 
 glint_status mesh_import_check(mesh_format f, const unsigned char *data, size_t size, const char *file,

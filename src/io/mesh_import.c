@@ -176,7 +176,39 @@ static void assimp_message(char *out, size_t size)
         snprintf(out, size, "Assimp could not read it");
 }
 
-/* Runs Assimp on src; on failure fills err with its message. */
+/* Checks what Assimp's reader makes of the file, before its post-processing,
+ * which trusts it: a face without vertices, or naming one out of range,
+ * sends some of its steps outside their arrays. Non-finite positions are
+ * refused here too, where Assimp would silently drop their parts. */
+static glint_status check_read(const struct aiScene *ai, const char *file, glint_error *err)
+{
+    for (unsigned i = 0; i < ai->mNumMeshes; i++) {
+        const struct aiMesh *m = ai->mMeshes[i];
+        if (!m || !m->mVertices || (m->mNumFaces && !m->mFaces))
+            return error_set(err, GLINT_ERR_INVALID, "%s: a part is incomplete", file);
+        for (unsigned v = 0; v < m->mNumVertices; v++) {
+            struct aiVector3D p = m->mVertices[v];
+            if (!isfinite(p.x) || !isfinite(p.y) || !isfinite(p.z))
+                return error_set(err, GLINT_ERR_INVALID, "%s: a vertex is not finite (%g %g %g)", file, p.x, p.y,
+                                 p.z);
+        }
+        for (unsigned f = 0; f < m->mNumFaces; f++) {
+            const struct aiFace *face = &m->mFaces[f];
+            if (face->mNumIndices == 0 || !face->mIndices)
+                return error_set(err, GLINT_ERR_INVALID, "%s: a face has no vertices", file);
+            for (unsigned k = 0; k < face->mNumIndices; k++)
+                if (face->mIndices[k] >= m->mNumVertices)
+                    return error_set(err, GLINT_ERR_INVALID, "%s: a face uses vertex %u of a part with %u", file,
+                                     face->mIndices[k], m->mNumVertices);
+        }
+    }
+    return GLINT_OK;
+}
+
+/* Reads src with Assimp twice: once without post-processing for
+ * check_read, then, when that passes, with it. (Applying the post-processing
+ * to the first reading, aiApplyPostProcessing, frees the scene twice when a
+ * step fails in Assimp 5.2.5.) On failure fills err. */
 static const struct aiScene *assimp_read(mesh_source *src, const char *file, double crease, glint_error *err)
 {
     const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
@@ -188,30 +220,35 @@ static const struct aiScene *assimp_read(mesh_source *src, const char *file, dou
     aiSetImportPropertyInteger(props, AI_CONFIG_IMPORT_NO_SKELETON_MESHES, 1);
     struct aiFileIO io;
     mesh_import_io(&io, src);
-    char msg[400];
+    char msg[400] = "";
+    glint_status s = GLINT_OK;
     pthread_mutex_lock(&assimp_lock);
     failed_assertion = NULL;
-    const struct aiScene *ai = aiImportFileExWithProperties(src->name, flags, &io, props);
-    if (!ai)
-        assimp_message(msg, sizeof msg);
-    pthread_mutex_unlock(&assimp_lock);
-    if (failed_assertion) {
-        if (ai)
-            aiReleaseImport(ai);
-        ai = NULL;
-        snprintf(msg, sizeof msg, "Assimp failed its own check '%s'", failed_assertion);
-    }
-    aiReleasePropertyStore(props);
-    bool empty = ai && (ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE || ai->mNumMeshes == 0);
-    if (empty) {
+    const struct aiScene *ai = aiImportFileExWithProperties(src->name, aiProcess_ValidateDataStructure, &io, props);
+    if (ai) {
+        if (!failed_assertion)
+            s = check_read(ai, file, err);
         aiReleaseImport(ai);
         ai = NULL;
+        if (!failed_assertion && !s)
+            ai = aiImportFileExWithProperties(src->name, flags, &io, props);
     }
-    if (ai)
+    if (!ai && !s)
+        assimp_message(msg, sizeof msg);
+    const char *assertion = failed_assertion;
+    pthread_mutex_unlock(&assimp_lock);
+    aiReleasePropertyStore(props);
+    if (ai && !assertion && !(ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) && ai->mNumMeshes > 0)
         return ai;
-    /* Assimp drops points, lines and parts with non-finite vertices, and
-     * says so in one of two ways. */
-    if (empty || strcmp(msg, "No meshes remaining") == 0 || strstr(msg, "mNumMeshes is 0"))
+    bool empty = ai != NULL;
+    if (ai)
+        aiReleaseImport(ai);
+    if (s)
+        return NULL;
+    if (assertion)
+        error_set(err, GLINT_ERR_INVALID, "%s: Assimp failed its own check '%s'", file, assertion);
+    /* Assimp drops points and lines, and fails when that leaves nothing. */
+    else if (empty || strcmp(msg, "No meshes remaining") == 0 || strstr(msg, "mNumMeshes is 0"))
         error_set(err, GLINT_ERR_INVALID, "%s: no triangles", file);
     else
         error_set(err, strstr(msg, "bad_alloc") ? GLINT_ERR_NOMEM : GLINT_ERR_INVALID, "%s: %s", file, msg);

@@ -28,8 +28,9 @@ const char *mesh_import_extension(mesh_format f);
 
 /* Refuses bytes that would send Assimp astray before it parses them: a GLB
  * without its magic or a glTF that is not JSON (Assimp would try every other
- * reader it has), and PLY element counts larger than the file can hold
- * (Assimp would allocate them all). `file` names the model in messages. */
+ * reader it has), and a PLY file whose header or data do not follow the
+ * format (Assimp's reader corrupts memory, loops or allocates whatever
+ * counts it claims). `file` names the model in messages. */
 glint_status mesh_import_check(mesh_format f, const unsigned char *data, size_t size, const char *file,
                                glint_error *err);
 
