@@ -4,8 +4,8 @@
 #   ./build.sh test                   install what is missing, build, run every test
 # Debian packages that are missing are installed with apt-get (through sudo
 # when not root). Builds go to build/ (Release), build-asan/ (the tests again
-# under ASan and UBSan) and build-fuzz/ (the scene loader's libFuzzer target,
-# run for GLINT_FUZZ_SECONDS, default 60).
+# under ASan and UBSan) and build-fuzz/ (libFuzzer targets for the scene
+# loader and the model importer, each run for GLINT_FUZZ_SECONDS, default 60).
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -34,6 +34,32 @@ build() { # build DIR [cmake args...]
     cmake --build "$dir" -j "$(nproc)"
 }
 
+# fuzz NAME MAX_LEN: runs build-fuzz/fuzz_NAME for GLINT_FUZZ_SECONDS on copies
+# of tests/fuzz/corpus/NAME and tests/fuzz/regressions/NAME, from inside the
+# corpus copy (so relative includes find seeds), with tests/fuzz/NAME.dict and,
+# when present, the LeakSanitizer suppressions tests/fuzz/NAME.supp. A failing
+# input is left in build-fuzz/artifacts-NAME/, the log in build-fuzz/fuzz-NAME.log.
+fuzz() {
+    local name=$1 max_len=$2 top=$PWD dir=build-fuzz/run-$name
+    rm -rf "$dir" "build-fuzz/artifacts-$name"
+    mkdir -p "$dir/regressions" "build-fuzz/artifacts-$name"
+    cp -R "tests/fuzz/corpus/$name" "$dir/corpus"
+    [ ! -d "tests/fuzz/regressions/$name" ] || cp -R "tests/fuzz/regressions/$name/." "$dir/regressions/"
+    local lsan=""
+    [ ! -f "tests/fuzz/$name.supp" ] || lsan="suppressions=$top/tests/fuzz/$name.supp"
+    if ! (cd "$dir/corpus" && LSAN_OPTIONS="$lsan" UBSAN_OPTIONS=print_stacktrace=1 \
+            "$top/build-fuzz/fuzz_$name" -max_total_time="${GLINT_FUZZ_SECONDS:-60}" -max_len="$max_len" \
+            -rss_limit_mb=2048 -timeout=10 -dict="$top/tests/fuzz/$name.dict" \
+            -artifact_prefix="$top/build-fuzz/artifacts-$name/" -print_final_stats=1 . ../regressions) \
+            >"build-fuzz/fuzz-$name.log" 2>&1; then
+        tail -n 60 "build-fuzz/fuzz-$name.log"
+        echo "fuzz $name: FAILED; input in build-fuzz/artifacts-$name/, log in build-fuzz/fuzz-$name.log" >&2
+        exit 1
+    fi
+    echo "fuzz $name: $(sed -n 's/^Done \([0-9]*\) runs in \([0-9]*\).*/\1 runs in \2 s/p' "build-fuzz/fuzz-$name.log")," \
+        "$(sed -n 's/^stat::average_exec_per_sec: *//p' "build-fuzz/fuzz-$name.log") exec/s, no crash"
+}
+
 case "${1:-}" in
 render)
     shift
@@ -48,24 +74,11 @@ test)
     build build-asan -DGLINT_WERROR=ON -DGLINT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
         ctest --test-dir build-asan --output-on-failure -j "$(nproc)"
-    # Fuzz the scene loader for a bounded time (tests/fuzz/README.md) on copies
-    # of the seed corpus and the saved regressions, from inside the corpus copy
-    # so relative includes find seeds; a crash, leak or timeout fails the test
-    # and leaves its input in build-fuzz/artifacts/.
+    # Fuzz the scene loader and the model importer for a bounded time each
+    # (tests/fuzz/README.md); a crash, leak or timeout fails the test.
     CC=clang build build-fuzz -DGLINT_WERROR=ON -DGLINT_FUZZ=ON -DGLINT_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
-    rm -rf build-fuzz/corpus build-fuzz/regressions build-fuzz/artifacts
-    mkdir -p build-fuzz/regressions build-fuzz/artifacts
-    cp -R tests/fuzz/corpus/scene build-fuzz/corpus
-    [ ! -d tests/fuzz/regressions/scene ] || cp -R tests/fuzz/regressions/scene/. build-fuzz/regressions/
-    if ! (cd build-fuzz/corpus && UBSAN_OPTIONS=print_stacktrace=1 ../fuzz_scene -max_total_time="${GLINT_FUZZ_SECONDS:-60}" \
-            -max_len=8192 -rss_limit_mb=2048 -timeout=10 -dict=../../tests/fuzz/scene.dict \
-            -artifact_prefix=../artifacts/ -print_final_stats=1 . ../regressions) >build-fuzz/fuzz.log 2>&1; then
-        tail -n 60 build-fuzz/fuzz.log
-        echo "fuzz: FAILED; input in build-fuzz/artifacts/, log in build-fuzz/fuzz.log" >&2
-        exit 1
-    fi
-    echo "fuzz: $(sed -n 's/^Done \([0-9]*\) runs in \([0-9]*\).*/\1 runs in \2 s/p' build-fuzz/fuzz.log)," \
-        "$(sed -n 's/^stat::average_exec_per_sec: *//p' build-fuzz/fuzz.log) exec/s, no crash"
+    fuzz scene 8192
+    fuzz mesh 16384
     ;;
 *)
     echo "usage: ./build.sh render [glint flags] | ./build.sh test" >&2
