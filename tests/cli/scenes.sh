@@ -34,6 +34,17 @@ if [ "$count" -lt 6 ]; then
     failed=$((failed + 1))
 fi
 
+# The model scenes need ../shared/data beside the repository; skipped without it.
+if [ -d "$here/../shared/data" ]; then
+    for scene in "$here"/scenes/models/*.yaml; do
+        name=models-$(basename "$scene" .yaml)
+        check "$name: --check" "$GLINT" --check "$scene"
+        check "$name: renders" "$GLINT" "$scene" -w 64 -h 48 --spp 1 -q -o "$work/$name.png"
+    done
+else
+    echo "skipped scenes/models/: ../shared/data is absent"
+fi
+
 # The seed room from its file and the built-in default: the same bytes.
 check "seed room file renders" "$GLINT" "$here/scenes/seed-room.yaml" -q -o "$work/file.png"
 check "built-in seed room renders" "$GLINT" -q -o "$work/builtin.png"
