@@ -313,11 +313,12 @@ typedef struct glint_import_options {
     int default_material;     /* for triangles whose file gives no material; -1: a matte grey */
 } glint_import_options;
 
-/* Imports a model file (OBJ+MTL, PLY, glTF 2.0 / GLB, STL) through Assimp
- * as one mesh: the file's node hierarchy is flattened, its materials become
- * scene materials (docs/meshes.md gives the mapping) and its diffuse or
- * base-colour textures image textures. Returns the mesh's index or -1 and
- * fills err with a message naming the file. options may be NULL. */
+/* Imports a model file (OBJ+MTL with glint's own reader; PLY, glTF 2.0 /
+ * GLB, STL through Assimp) as one mesh: the file's node hierarchy is
+ * flattened, its materials become scene materials (docs/meshes.md gives the
+ * mapping) and its diffuse or base-colour textures image textures. Returns
+ * the mesh's index or -1 and fills err with a message naming the file (and,
+ * for OBJ and MTL text, the line and column). options may be NULL. */
 int glint_scene_import_mesh(glint_scene *scene, const char *path, const glint_import_options *options,
                             glint_error *err);
 

@@ -1,6 +1,7 @@
-/* mesh_import.c - glint_scene_import_mesh: a model file (OBJ+MTL, PLY, STL,
- * glTF, GLB) through Assimp's C API into one glint mesh with its materials
- * and textures, built with the public API only (docs/meshes.md).
+/* mesh_import.c - glint_scene_import_mesh: a model file into one glint mesh
+ * with its materials and textures, built with the public API only
+ * (docs/meshes.md). OBJ (with MTL) goes to glint's own reader
+ * (obj_import.c); PLY, STL, glTF and GLB go through Assimp's C API.
  *
  * Assimp triangulates, flattens the node hierarchy into world positions,
  * generates missing normals, drops points and lines and validates; here its
@@ -12,13 +13,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include <assimp/cimport.h>
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include "core/error.h"
 #include "io/mesh_import.h"
 
-#define MAX_COUNT (1LL << 30)
 #define DEFAULT_CREASE_DEGREES 80.0
 
 /* Assimp's C API keeps the last error message in one global string. */
@@ -81,9 +82,9 @@ static glint_status merge_alloc(const struct aiScene *ai, const char *file, merg
         out->triangles += tris;
         normals |= m->mNormals != NULL;
         uvs |= m->mTextureCoords[0] != NULL;
-        if (out->vertices > MAX_COUNT || out->triangles > MAX_COUNT)
+        if (out->vertices > MESH_IMPORT_MAX_COUNT || out->triangles > MESH_IMPORT_MAX_COUNT)
             return error_set(err, GLINT_ERR_INVALID, "%s: too many %s (more than %lld)", file,
-                             out->vertices > MAX_COUNT ? "vertices" : "triangles", MAX_COUNT);
+                             out->vertices > MESH_IMPORT_MAX_COUNT ? "vertices" : "triangles", MESH_IMPORT_MAX_COUNT);
     }
     if (out->triangles == 0)
         return error_set(err, GLINT_ERR_INVALID, "%s: no triangles", file);
@@ -255,7 +256,17 @@ static const struct aiScene *assimp_read(mesh_source *src, const char *file, dou
     return NULL;
 }
 
-/* Builds the mesh of a read model: materials first, then the mesh. */
+int mesh_import_add_mesh(glint_scene *scene, const mesh_import_ctx *ctx, const glint_mesh_data *d, glint_error *err)
+{
+    glint_error inner;
+    int mesh = glint_scene_add_mesh(scene, ctx->stem, d, &inner);
+    if (mesh < 0)
+        error_set(err, strstr(inner.message, "out of memory") ? GLINT_ERR_NOMEM : GLINT_ERR_INVALID, "%s: %s",
+                  ctx->file, inner.message);
+    return mesh;
+}
+
+/* Builds the mesh of a model Assimp read: materials first, then the mesh. */
 static int build(glint_scene *scene, const struct aiScene *ai, const mesh_import_ctx *ctx, glint_error *err)
 {
     merged mg = {0};
@@ -279,11 +290,7 @@ static int build(glint_scene *scene, const struct aiScene *ai, const mesh_import
             .indices = mg.indices, .triangle_count = (int)mg.triangles, .materials = one ? NULL : mg.materials,
             .material = mg.materials[0],
         };
-        glint_error inner;
-        mesh = glint_scene_add_mesh(scene, ctx->stem, &d, &inner);
-        if (mesh < 0)
-            error_set(err, strstr(inner.message, "out of memory") ? GLINT_ERR_NOMEM : GLINT_ERR_INVALID, "%s: %s",
-                      ctx->file, inner.message);
+        mesh = mesh_import_add_mesh(scene, ctx, &d, err);
     }
     merged_free(&mg);
     free(used);
@@ -320,30 +327,48 @@ static glint_status name_parts(const char *file, bool disk, mesh_import_ctx *ctx
     return GLINT_OK;
 }
 
-/* Imports the model in data; `file` names it, `disk` says whether the files
- * it names may be read. */
-static int import(glint_scene *scene, const unsigned char *data, size_t size, const char *file, bool disk,
+/* Reads it through Assimp: the bytes of the file, checked, then read. */
+static int import_assimp(glint_scene *scene, int fd, const unsigned char *data, size_t size,
+                         const mesh_import_ctx *ctx, double crease, glint_error *err)
+{
+    unsigned char *read = NULL;
+    glint_status s = fd >= 0 ? mesh_import_read_fd(fd, size, ctx->file, &read, err) : GLINT_OK;
+    if (read)
+        data = read;
+    if (!s)
+        s = mesh_import_check(ctx->format, data, size, ctx->file, err);
+    char hint[32];
+    snprintf(hint, sizeof hint, "$glint-memory$.%s", mesh_import_extension(ctx->format));
+    mesh_source src = {.name = ctx->dir ? ctx->file : hint, .data = data, .size = size, .disk = ctx->dir != NULL};
+    const struct aiScene *ai = s ? NULL : assimp_read(&src, ctx->file, crease, err);
+    int mesh = -1;
+    if (ai) {
+        mesh = build(scene, ai, ctx, err);
+        aiReleaseImport(ai);
+    }
+    free(read);
+    return mesh;
+}
+
+/* Imports the model in the open file fd, of `size` bytes, or, when fd is
+ * -1, in the `size` bytes at data; `file` names it. Only a model from a
+ * file may read the files it names. */
+static int import(glint_scene *scene, int fd, const unsigned char *data, size_t size, const char *file,
                   const glint_import_options *options, glint_error *err)
 {
     mesh_import_ctx ctx = {.file = file, .format = mesh_import_format(file)};
     double crease;
-    char hint[32];
-    snprintf(hint, sizeof hint, "$glint-memory$.%s", mesh_import_extension(ctx.format));
-    mesh_source src = {.name = disk ? file : hint, .data = data, .size = size, .disk = disk};
     glint_status s = read_options(scene, options, file, &crease, &ctx, err);
     if (!s && ctx.format == MESH_FORMAT_NONE)
         s = error_set(err, GLINT_ERR_INVALID, "%s: unsupported format (glint imports .obj, .ply, .stl, .gltf and .glb)",
                       file);
     if (!s)
-        s = mesh_import_check(ctx.format, data, size, file, err);
-    if (!s)
-        s = name_parts(file, disk, &ctx, err);
-    const struct aiScene *ai = s ? NULL : assimp_read(&src, file, crease, err);
+        s = name_parts(file, fd >= 0, &ctx, err);
     int mesh = -1;
-    if (ai) {
-        mesh = build(scene, ai, &ctx, err);
-        aiReleaseImport(ai);
-    }
+    if (!s && ctx.format == MESH_FORMAT_OBJ)
+        mesh = mesh_import_obj(scene, &ctx, fd, data, size, crease, err);
+    else if (!s)
+        mesh = import_assimp(scene, fd, data, size, &ctx, crease, err);
     free(ctx.stem);
     free(ctx.dir);
     return mesh;
@@ -356,12 +381,12 @@ int glint_scene_import_mesh(glint_scene *scene, const char *path, const glint_im
         error_set(err, GLINT_ERR_INVALID, "import needs a scene and a file name");
         return -1;
     }
-    unsigned char *data;
+    int fd;
     size_t size;
-    if (mesh_import_read_file(path, &data, &size, err))
+    if (mesh_import_open(path, &fd, &size, err))
         return -1;
-    int mesh = import(scene, data, size, path, true, options, err);
-    free(data);
+    int mesh = import(scene, fd, NULL, size, path, options, err);
+    close(fd);
     return mesh;
 }
 
@@ -372,5 +397,5 @@ int glint_scene_import_mesh_memory(glint_scene *scene, const void *data, size_t 
         error_set(err, GLINT_ERR_INVALID, "import needs a scene, a name and data");
         return -1;
     }
-    return import(scene, data ? data : "", size, name, false, options, err);
+    return import(scene, -1, data ? data : "", size, name, options, err);
 }

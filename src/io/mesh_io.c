@@ -1,8 +1,8 @@
-/* mesh_io.c - reading a model file, and the file system Assimp reads the
- * model through: the model's own bytes from memory, so that it is read once
- * and checked before Assimp parses it, and the files it names (MTL, glTF
- * buffers) from disk only when the model came from disk. Only regular files
- * are opened, never for writing. */
+/* mesh_io.c - opening and reading a model file, and the file system Assimp
+ * reads the model through: the model's own bytes from memory, so that it is
+ * read once and checked before Assimp parses it, and the files it names
+ * (glTF buffers) from disk only when the model came from disk. Only regular
+ * files are opened, never for writing. */
 #include <errno.h>
 #include <fcntl.h>
 #include <limits.h>
@@ -15,16 +15,15 @@
 #include "core/error.h"
 #include "io/mesh_import.h"
 
-glint_status mesh_import_read_file(const char *path, unsigned char **data, size_t *size, glint_error *err)
+glint_status mesh_import_open(const char *path, int *fd, size_t *size, glint_error *err)
 {
-    *data = NULL;
     *size = 0;
-    int fd = open(path, O_RDONLY);
-    if (fd < 0)
+    *fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK); /* a FIFO must not block */
+    if (*fd < 0)
         return error_set(err, GLINT_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
     struct stat st;
     glint_status s = GLINT_OK;
-    if (fstat(fd, &st) != 0)
+    if (fstat(*fd, &st) != 0)
         s = error_set(err, GLINT_ERR_IO, "%s: cannot read: %s", path, strerror(errno));
     else if (S_ISDIR(st.st_mode))
         s = error_set(err, GLINT_ERR_IO, "%s: cannot read: %s", path, strerror(EISDIR));
@@ -32,12 +31,22 @@ glint_status mesh_import_read_file(const char *path, unsigned char **data, size_
         s = error_set(err, GLINT_ERR_IO, "%s: cannot read: not a regular file", path);
     else if ((uintmax_t)st.st_size >= SIZE_MAX)
         s = error_set(err, GLINT_ERR_NOMEM, "%s: too large to read", path);
-    unsigned char *buf = NULL;
-    size_t n = s ? 0 : (size_t)st.st_size, got = 0;
-    if (!s && !(buf = malloc(n ? n : 1)))
-        s = error_set(err, GLINT_ERR_NOMEM, "%s: out of memory reading it", path);
-    while (!s && got < n) {
-        ssize_t r = read(fd, buf + got, n - got);
+    if (s) {
+        close(*fd);
+        *fd = -1;
+        return s;
+    }
+    *size = (size_t)st.st_size;
+    return GLINT_OK;
+}
+
+glint_status mesh_import_read_fd(int fd, size_t size, const char *path, unsigned char **data, glint_error *err)
+{
+    unsigned char *buf = malloc(size ? size : 1);
+    size_t got = 0;
+    glint_status s = buf ? GLINT_OK : error_set(err, GLINT_ERR_NOMEM, "%s: out of memory reading it", path);
+    while (!s && got < size) {
+        ssize_t r = read(fd, buf + got, size - got);
         if (r < 0 && errno == EINTR)
             continue;
         if (r <= 0)
@@ -45,14 +54,43 @@ glint_status mesh_import_read_file(const char *path, unsigned char **data, size_
         else
             got += (size_t)r;
     }
-    close(fd);
     if (s) {
         free(buf);
-        return s;
+        buf = NULL;
     }
     *data = buf;
-    *size = n;
-    return GLINT_OK;
+    return s;
+}
+
+glint_status mesh_import_read_file(const char *path, unsigned char **data, size_t *size, glint_error *err)
+{
+    int fd;
+    *data = NULL;
+    glint_status s = mesh_import_open(path, &fd, size, err);
+    if (s)
+        return s;
+    s = mesh_import_read_fd(fd, *size, path, data, err);
+    close(fd);
+    if (s)
+        *size = 0;
+    return s;
+}
+
+char *mesh_import_path(const char *dir, const char *ref)
+{
+    size_t len = strlen(dir) + strlen(ref) + 2;
+    char *path = malloc(len);
+    if (!path)
+        return NULL;
+    size_t start = 0;
+    if (ref[0] != '/' && dir[0] != '\0')
+        start = (size_t)snprintf(path, len, "%s/", dir);
+    snprintf(path + start, len - start, "%s", ref);
+    /* Models made on Windows may separate folders with backslashes. */
+    for (char *c = path + start; *c; c++)
+        if (*c == '\\')
+            *c = '/';
+    return path;
 }
 
 /* An open file: a window on the model's bytes, or a stdio stream. */

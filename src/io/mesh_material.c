@@ -2,13 +2,13 @@
  * OBJ/MTL and glTF tables of docs/meshes.md, and their diffuse or
  * base-colour images as UV-mapped image textures, each added once. Values
  * out of glint's ranges are clamped into them, so a material never fails to
- * be added for what the file says. */
+ * be added for what the file says. MTL materials come from glint's own
+ * reader (mtl_read.c), glTF ones from Assimp. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <assimp/GltfMaterial.h>
-#include <assimp/ObjMaterial.h>
 #include <assimp/material.h>
 #include "core/error.h"
 #include "io/mesh_import.h"
@@ -21,7 +21,7 @@
 typedef struct texture_cache {
     const char **refs;
     int *index;
-    int count;
+    size_t count;
 } texture_cache;
 
 static double clamp(double x, double lo, double hi)
@@ -56,21 +56,14 @@ static bool get_string(const struct aiMaterial *m, const char *key, unsigned typ
     return aiGetMaterialString(m, key, type, index, out) == AI_SUCCESS && out->length > 0;
 }
 
-/* True for a material Assimp made up because the file gave none: OBJ's
- * "DefaultMaterial", glTF's unnamed last one, and every PLY and STL one. */
+/* True for a material Assimp made up because the file gave none: glTF's
+ * unnamed last one, and every PLY and STL one. */
 static bool is_made_up(const struct aiScene *ai, unsigned i, mesh_format f)
 {
     struct aiString name;
-    bool named = get_string(ai->mMaterials[i], AI_MATKEY_NAME, &name);
-    switch (f) {
-    case MESH_FORMAT_OBJ:
-        return named && strcmp(name.data, AI_DEFAULT_MATERIAL_NAME) == 0;
-    case MESH_FORMAT_GLTF:
-    case MESH_FORMAT_GLB:
-        return !named && i + 1 == ai->mNumMaterials;
-    default:
-        return true;
-    }
+    if (f == MESH_FORMAT_GLTF || f == MESH_FORMAT_GLB)
+        return !get_string(ai->mMaterials[i], AI_MATKEY_NAME, &name) && i + 1 == ai->mNumMaterials;
+    return true;
 }
 
 static glint_material grey(void)
@@ -80,26 +73,32 @@ static glint_material grey(void)
     return m;
 }
 
+/* A colour channel of a file: finite and not negative, or 0. */
+static double channel(double x)
+{
+    return isfinite(x) && x > 0 ? x : 0;
+}
+
+/* A number of a file, or fallback when it is not finite. */
+static double finite_or(double x, double fallback)
+{
+    return isfinite(x) ? x : fallback;
+}
+
 /* MTL: Kd is a display (sRGB) colour; Ks, Ns, d, Ni as they are; illum picks
  * mirror (3, 5) or refracting (4, 6, 7; 7 with Fresnel) behaviour. */
-static glint_material from_mtl(const struct aiMaterial *a)
+glint_material mesh_import_from_mtl(const mtl_material *a)
 {
     glint_material m = glint_material_default();
-    glint_color kd, ks = {0, 0, 0};
-    if (get_color(a, AI_MATKEY_COLOR_DIFFUSE, &kd))
-        m.color = (glint_color){glint_srgb_to_linear(kd.r), glint_srgb_to_linear(kd.g), glint_srgb_to_linear(kd.b)};
-    get_color(a, AI_MATKEY_COLOR_SPECULAR, &ks);
-    double ks_max = fmax(ks.r, fmax(ks.g, ks.b));
+    m.color = (glint_color){glint_srgb_to_linear(channel(a->kd[0])), glint_srgb_to_linear(channel(a->kd[1])),
+                            glint_srgb_to_linear(channel(a->kd[2]))};
+    double ks_max = fmax(channel(a->ks[0]), fmax(channel(a->ks[1]), channel(a->ks[2])));
     m.specular = ks_max;
-    m.shininess = clamp(get_float(a, AI_MATKEY_SHININESS, 0), 0, MAX_SHININESS);
-    double ni = get_float(a, AI_MATKEY_REFRACTI, 0);
-    if (ni > 0)
-        m.ior = ni;
-    double dissolved = 1 - clamp(get_float(a, AI_MATKEY_OPACITY, 1), 0, 1);
-    ai_int illum = 2;
-    unsigned n = 1;
-    aiGetMaterialIntegerArray(a, AI_MATKEY_OBJ_ILLUM, &illum, &n);
-    switch (illum) {
+    m.shininess = clamp(finite_or(a->ns, 0), 0, MAX_SHININESS);
+    if (a->ni > 0 && isfinite(a->ni))
+        m.ior = a->ni;
+    double dissolved = 1 - clamp(finite_or(a->d, 1), 0, 1);
+    switch (a->illum) {
     case 3:
     case 5:
         m.reflectivity = clamp(ks_max, 0, 1);
@@ -111,7 +110,7 @@ static glint_material from_mtl(const struct aiMaterial *a)
         /* A refracting surface that the file leaves opaque (d 1, as some
          * exporters write glass) refracts fully. */
         m.refraction = dissolved > 0 ? dissolved : 1;
-        m.fresnel = illum == 7;
+        m.fresnel = a->illum == 7;
         break;
     default:
         m.transparency = dissolved;
@@ -183,18 +182,9 @@ static glint_status add_embedded(glint_scene *scene, const struct aiScene *ai, c
 static glint_status add_file(glint_scene *scene, const char *ref, const mesh_import_ctx *ctx, int *out,
                              glint_error *err)
 {
-    size_t len = strlen(ctx->dir) + strlen(ref) + 2;
-    char *path = malloc(len);
+    char *path = mesh_import_path(ctx->dir, ref);
     if (!path)
         return error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", ctx->file);
-    if (ref[0] == '/' || ctx->dir[0] == '\0')
-        snprintf(path, len, "%s", ref);
-    else
-        snprintf(path, len, "%s/%s", ctx->dir, ref);
-    /* Models made on Windows may separate folders with backslashes. */
-    for (char *c = path; *c; c++)
-        if (*c == '\\')
-            *c = '/';
     glint_mapping uv = {.kind = GLINT_MAP_UV};
     glint_error inner;
     *out = glint_scene_add_image_file(scene, NULL, path, uv, &inner);
@@ -204,30 +194,24 @@ static glint_status add_file(glint_scene *scene, const char *ref, const mesh_imp
     return GLINT_OK;
 }
 
-/* Sets *out to the texture of material a's colour image, adding it the
- * first time: -1 when it has none or names a file that may not be read. */
-static glint_status material_texture(glint_scene *scene, const struct aiScene *ai, const struct aiMaterial *a,
-                                     const mesh_import_ctx *ctx, texture_cache *cache, int *out,
-                                     glint_error *err)
+/* Sets *out to the texture of image `ref`, adding it the first time: -1
+ * when ref is NULL or names a file that may not be read. */
+static glint_status material_texture(glint_scene *scene, const struct aiScene *ai, const char *ref,
+                                     const mesh_import_ctx *ctx, texture_cache *cache, int *out, glint_error *err)
 {
-    struct aiString ref;
     *out = -1;
-    if (!get_string(a, AI_MATKEY_TEXTURE(aiTextureType_BASE_COLOR, 0), &ref) &&
-        !get_string(a, AI_MATKEY_TEXTURE(aiTextureType_DIFFUSE, 0), &ref))
+    bool embedded = ai && ref && ref[0] == '*';
+    if (!ref || (!embedded && !ctx->dir))
         return GLINT_OK;
-    bool embedded = ref.data[0] == '*';
-    if (!embedded && !ctx->dir)
-        return GLINT_OK;
-    for (int i = 0; i < cache->count; i++)
-        if (strcmp(cache->refs[i], ref.data) == 0) {
+    for (size_t i = 0; i < cache->count; i++)
+        if (strcmp(cache->refs[i], ref) == 0) {
             *out = cache->index[i];
             return GLINT_OK;
         }
-    glint_status s = embedded ? add_embedded(scene, ai, ref.data, ctx, out, err) : add_file(scene, ref.data, ctx, out, err);
+    glint_status s = embedded ? add_embedded(scene, ai, ref, ctx, out, err) : add_file(scene, ref, ctx, out, err);
     if (s)
         return s;
-    if (!(cache->refs[cache->count] = strdup(ref.data)))
-        return error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", ctx->file);
+    cache->refs[cache->count] = ref;
     cache->index[cache->count++] = *out;
     return GLINT_OK;
 }
@@ -252,55 +236,84 @@ static glint_status add_material(glint_scene *scene, const char *what, const gli
     return GLINT_OK;
 }
 
-/* Adds the glint material for Assimp material i, which the file defines,
- * with texture tex. */
-static glint_status add_from_file(glint_scene *scene, const struct aiScene *ai, unsigned i, int tex,
-                                  const mesh_import_ctx *ctx, int *out, glint_error *err)
+glint_status mesh_import_add_materials(glint_scene *scene, const import_material *mats, size_t count,
+                                       const struct aiScene *ai, const mesh_import_ctx *ctx, int *index,
+                                       glint_error *err)
 {
-    const struct aiMaterial *a = ai->mMaterials[i];
-    bool gltf = ctx->format == MESH_FORMAT_GLTF || ctx->format == MESH_FORMAT_GLB;
-    glint_material m = gltf ? from_gltf(a) : from_mtl(a);
-    m.texture = tex;
-    struct aiString name;
-    char fallback[32];
-    snprintf(fallback, sizeof fallback, "material%u", i);
-    return add_material(scene, get_string(a, AI_MATKEY_NAME, &name) ? name.data : fallback, &m, ctx, out, err);
+    size_t n = count ? count : 1;
+    texture_cache cache = {calloc(n, sizeof *cache.refs), calloc(n, sizeof *cache.index), 0};
+    int *tex = calloc(n, sizeof *tex);
+    glint_status s = GLINT_OK;
+    if (!cache.refs || !cache.index || !tex)
+        s = error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", ctx->file);
+    /* Textures go first: they are what a good file most often fails on, and
+     * a failure then leaves behind only unnamed textures, never named
+     * materials. */
+    for (size_t i = 0; !s && i < count; i++)
+        s = material_texture(scene, ai, mats[i].name ? mats[i].texture : NULL, ctx, &cache, &tex[i], err);
+    int fallback = ctx->default_material;
+    for (size_t i = 0; !s && i < count; i++) {
+        if (mats[i].name) {
+            glint_material m = mats[i].m;
+            m.texture = tex[i];
+            s = add_material(scene, mats[i].name, &m, ctx, &index[i], err);
+            continue;
+        }
+        if (fallback < 0) {
+            glint_material m = grey();
+            s = add_material(scene, "default", &m, ctx, &fallback, err);
+        }
+        index[i] = fallback;
+    }
+    free(cache.refs);
+    free(cache.index);
+    free(tex);
+    return s;
 }
 
-/* Textures go first: they are what a good file most often fails on, and a
- * failure then leaves behind only unnamed textures, never named materials. */
+/* The diffuse or base-colour image Assimp material a names, into *ref;
+ * false when it names none. */
+static bool colour_image(const struct aiMaterial *a, struct aiString *ref)
+{
+    return get_string(a, AI_MATKEY_TEXTURE(aiTextureType_BASE_COLOR, 0), ref) ||
+           get_string(a, AI_MATKEY_TEXTURE(aiTextureType_DIFFUSE, 0), ref);
+}
+
 glint_status mesh_import_materials(glint_scene *scene, const struct aiScene *ai, const bool *used, int *index,
                                    const mesh_import_ctx *ctx, glint_error *err)
 {
     unsigned n = ai->mNumMaterials ? ai->mNumMaterials : 1;
-    texture_cache cache = {calloc(n, sizeof *cache.refs), calloc(n, sizeof *cache.index), 0};
-    bool *made_up = calloc(n, sizeof *made_up);
-    int *tex = calloc(n, sizeof *tex);
-    glint_status s = GLINT_OK;
-    if (!cache.refs || !cache.index || !made_up || !tex)
-        s = error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", ctx->file);
-    for (unsigned i = 0; !s && i < ai->mNumMaterials; i++)
-        if (used[i] && !(made_up[i] = is_made_up(ai, i, ctx->format)))
-            s = material_texture(scene, ai, ai->mMaterials[i], ctx, &cache, &tex[i], err);
-    int fallback = ctx->default_material;
-    for (unsigned i = 0; !s && i < ai->mNumMaterials; i++) {
+    import_material *mats = calloc(n, sizeof *mats);
+    struct aiString *names = calloc(n, sizeof *names), *refs = calloc(n, sizeof *refs);
+    int *added = calloc(n, sizeof *added);
+    if (!mats || !names || !refs || !added) {
+        free(mats);
+        free(names);
+        free(refs);
+        free(added);
+        return error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", ctx->file);
+    }
+    size_t count = 0;
+    for (unsigned i = 0; i < ai->mNumMaterials; i++) {
         if (!used[i])
             continue;
-        if (!made_up[i]) {
-            s = add_from_file(scene, ai, i, tex[i], ctx, &index[i], err);
-        } else {
-            if (fallback < 0) {
-                glint_material m = grey();
-                s = add_material(scene, "default", &m, ctx, &fallback, err);
-            }
-            index[i] = fallback;
-        }
+        import_material *m = &mats[count++];
+        if (is_made_up(ai, i, ctx->format))
+            continue;
+        const struct aiMaterial *a = ai->mMaterials[i];
+        if (!get_string(a, AI_MATKEY_NAME, &names[i]))
+            names[i].length = (ai_uint32)snprintf(names[i].data, sizeof names[i].data, "material%u", i);
+        m->name = names[i].data;
+        m->m = from_gltf(a);
+        m->texture = colour_image(a, &refs[i]) ? refs[i].data : NULL;
     }
-    for (int i = 0; i < cache.count; i++)
-        free((void *)cache.refs[i]);
-    free(cache.refs);
-    free(cache.index);
-    free(made_up);
-    free(tex);
+    glint_status s = mesh_import_add_materials(scene, mats, count, ai, ctx, added, err);
+    for (unsigned i = 0, k = 0; !s && i < ai->mNumMaterials; i++)
+        if (used[i])
+            index[i] = added[k++];
+    free(mats);
+    free(names);
+    free(refs);
+    free(added);
     return s;
 }

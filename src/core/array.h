@@ -1,0 +1,32 @@
+/* array.h - arrays that grow by doubling, with every size computed in
+ * checked arithmetic, for readers that append items one at a time. */
+#ifndef GLINT_CORE_ARRAY_H
+#define GLINT_CORE_ARRAY_H
+
+#include <stdbool.h>
+#include <stddef.h>
+
+/* Makes room for `need` items of `size` bytes in *items, whose room is *cap
+ * items, doubling it (from 16) until it fits. False, with *items and *cap
+ * unchanged, when the bytes would not fit in a size_t or memory runs out. */
+static inline bool array_reserve(void **items, size_t *cap, size_t need, size_t size);
+
+/* array_reserve when the room has to grow. */
+bool array_grow(void **items, size_t *cap, size_t need, size_t size);
+
+static inline bool array_reserve(void **items, size_t *cap, size_t need, size_t size)
+{
+    return need <= *cap || array_grow(items, cap, need, size);
+}
+
+/* malloc of count items of `size` bytes (at least one byte, so that
+ * NULL always means failure); NULL when the product overflows. */
+void *array_alloc(size_t count, size_t size);
+
+/* a * b into *out; false when it does not fit in a size_t. */
+static inline bool size_mul(size_t a, size_t b, size_t *out)
+{
+    return !__builtin_mul_overflow(a, b, out);
+}
+
+#endif
