@@ -1,10 +1,12 @@
 /* mesh_check.c - which formats the importer takes, and the checks made on a
- * model's bytes before Assimp parses them. Assimp picks its reader by
- * extension, but falls back to sniffing the content with every reader it has
- * when none claims the file; and its PLY reader allocates whatever element
- * counts the header claims, and goes astray (heap corruption, endless
- * loops) on headers and data that do not follow the format. So PLY files are
- * checked in full here, header and data, and only the five readers glint
+ * model's bytes before Assimp parses them (PLY, STL, glTF and GLB; OBJ has
+ * glint's own reader). Assimp picks its reader by extension, but falls back
+ * to sniffing the content with every reader it has when none claims the
+ * file; its PLY reader allocates whatever element counts the header claims,
+ * and goes astray (heap corruption, endless loops) on headers and data that
+ * do not follow the format; its GLB reader allocates whatever chunk lengths
+ * the file claims. So PLY files are checked in full here, header and data,
+ * GLB chunk lengths against the file, and only the four readers glint
  * documents ever see a file. */
 #include <ctype.h>
 #include <limits.h>
@@ -341,11 +343,30 @@ static glint_status check_ply(const unsigned char *data, size_t size, const char
     return s;
 }
 
+/* A GLB's JSON chunk, and its binary chunk when the file has one, must fit
+ * in the file: Assimp allocates whatever length they claim before reading
+ * them (fuzzing found a 2 GB one). */
+static glint_status check_glb(const unsigned char *data, size_t size, const char *file, glint_error *err)
+{
+    if (size < 4 || memcmp(data, "glTF", 4) != 0)
+        return error_set(err, GLINT_ERR_INVALID, "%s: not a binary glTF file (it does not start with 'glTF')", file);
+    size_t pos = 12;
+    for (int chunk = 0; chunk < 2 && pos <= size && size - pos >= 8; chunk++) {
+        unsigned long long length = (unsigned long long)read_int(data + pos, 4, false, false);
+        if (length > size - pos - 8)
+            return error_set(err, GLINT_ERR_INVALID,
+                             "%s: GLB chunk %d claims %llu bytes, more than the file's %zu after it", file, chunk,
+                             length, size - pos - 8);
+        pos += 8 + (size_t)(length + 3) / 4 * 4;
+    }
+    return GLINT_OK;
+}
+
 glint_status mesh_import_check(mesh_format f, const unsigned char *data, size_t size, const char *file,
                                glint_error *err)
 {
-    if (f == MESH_FORMAT_GLB && (size < 4 || memcmp(data, "glTF", 4) != 0))
-        return error_set(err, GLINT_ERR_INVALID, "%s: not a binary glTF file (it does not start with 'glTF')", file);
+    if (f == MESH_FORMAT_GLB)
+        return check_glb(data, size, file, err);
     if (f == MESH_FORMAT_GLTF) {
         size_t i = size >= 3 && memcmp(data, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;
         while (i < size && isspace(data[i]))

@@ -63,10 +63,12 @@ static glint_status read_illum(scan_line *l, scan_pos at, int *out, glint_error 
 {
     double x = 0;
     glint_status s = read_one(l, at, "illum", &x, err);
-    if (!s && !(x >= 0 && x <= 10 && x == floor(x)))
+    if (s)
+        return s;
+    if (!(x >= 0 && x <= 10 && x == floor(x)))
         return scan_error(l, at, err, "'illum' needs a whole number from 0 to 10, got %g", x);
     *out = (int)x;
-    return s;
+    return GLINT_OK;
 }
 
 /* Copies [s, e) into the library's text; *offset is where. */

@@ -1179,6 +1179,9 @@ static void test_mtl_errors(void **state)
         {"newmtl a\nNs\n", "2:1: 'Ns' needs 1 number, got 0"},
         {"newmtl a\nd 0.5 0.5\n", "2:1: 'd' needs 1 number, got 2"},
         {"newmtl a\nillum 2.5\n", "2:1: 'illum' needs a whole number from 0 to 10, got 2.5"},
+        /* found by fuzz_mesh (regressions/mesh/mtl-illum-count-error-float-to-int.mtl):
+         * the first number was made an int even when the count was wrong */
+        {"newmtl a\nillum 7e10 2\n", "2:1: 'illum' needs 1 number, got 2"},
         {"newmtl a\nmap_Kd -s 1 1 1\n", "2:1: 'map_Kd' needs a file name"},
         {"# lib\n\nnewmtl\n", "3:1: 'newmtl' needs a name"},
     };
@@ -1578,6 +1581,29 @@ static void test_fuzz_ply_assertion(void **state)
     expect_refused("assert.ply", NULL, "PLY header line 5 is not understood");
 }
 
+/* Found by fuzz_mesh (regressions/mesh/glb-json-chunk-length-assimp-2gb-alloc.glb):
+ * Assimp allocates a GLB chunk's claimed length before reading it. The
+ * lengths are checked against the file now. */
+static void test_fuzz_glb_chunk_length(void **state)
+{
+    unsigned char glb[4096];
+    size_t n = write_glb(NULL, textured_material, glb, sizeof glb);
+    uint32_t json, huge = 0x78000000;
+    memcpy(&json, glb + 12, 4);
+    char want[200];
+    memcpy(glb + 12, &huge, 4);
+    write_bytes("huge.glb", glb, n);
+    snprintf(want, sizeof want, "GLB chunk 0 claims 2013265920 bytes, more than the file's %zu after it", n - 20);
+    expect_refused("huge.glb", NULL, want);
+    memcpy(glb + 12, &json, 4);
+    size_t bin = 20 + (json + 3) / 4 * 4;
+    memcpy(glb + bin, &huge, 4);
+    write_bytes("huge.glb", glb, n);
+    snprintf(want, sizeof want, "GLB chunk 1 claims 2013265920 bytes, more than the file's %zu after it",
+             n - bin - 8);
+    expect_refused("huge.glb", NULL, want);
+}
+
 static void test_refused_by_assimp(void **state)
 {
     write_text("empty.stl", "");
@@ -1671,6 +1697,7 @@ int main(void)
         cmocka_unit_test(test_refused_options),
         cmocka_unit_test(test_refused_ply),
         cmocka_unit_test(test_refused_by_assimp),
+        cmocka_unit_test(test_fuzz_glb_chunk_length),
         cmocka_unit_test(test_fuzz_ply_assertion),
         cmocka_unit_test(test_silent),
     };
