@@ -11,7 +11,9 @@
 /* Scratch space, reused from one polygon to the next. Zero it to start. */
 typedef struct triangulate_work {
     double *xy;               /* corners projected on the plane, 2 each */
-    uint32_t *link;           /* previous and next corner still in the ring, 2 each */
+    uint32_t *link;           /* per corner: the previous and next corner still in the ring, and the
+                                 previous and next in the list of reflex corners */
+    unsigned char *reflex;    /* per corner: in that list */
     size_t cap;               /* corners there is room for */
 } triangulate_work;
 
@@ -21,7 +23,7 @@ typedef struct triangulate_work {
  * polygon becomes a fan from corner 0. A concave one is cut by ear
  * clipping in the plane of its Newell normal; where the polygon is
  * degenerate (no normal), crosses itself (no ear left) or is so large and
- * concave that clipping would cost more than about a thousand tests a
+ * concave that clipping would cost more than a million tests and 256 a
  * corner, the rest becomes a fan. False when out of memory. */
 bool triangulate_polygon(triangulate_work *w, const float *positions, const uint32_t *corners, size_t n,
                          uint32_t *out);

@@ -1044,6 +1044,48 @@ static void test_obj_sphere_normals(void **state)
     glint_scene_free(s);
 }
 
+/* Many faces at one point: a half disc of 500 triangles around the origin,
+ * a face tilted 60 degrees from it and a fin at 90 degrees to both. The
+ * disc's corners there and the tilted one count the same faces (the fin is
+ * past 80 degrees from all of them) and so share one vertex, with the
+ * angle-weighted normal; the fin's corner keeps its own. */
+static void test_obj_many_faces_at_a_point(void **state)
+{
+    int segments = 500;
+    size_t cap = 64 + (size_t)segments * 64, n = 0;
+    char *text = malloc(cap);
+    assert_non_null(text);
+    n += (size_t)snprintf(text, cap, "v 0 0 0\nv -1 -1 -1.7320508075688772\nv 1 -1 -1.7320508075688772\n"
+                                     "v 0 0 1\nv 0 -1 0\n");
+    for (int i = 0; i <= segments; i++)
+        n += (size_t)snprintf(text + n, cap - n, "v %.9f %.9f 0\n", cos(M_PI * i / segments),
+                              sin(M_PI * i / segments));
+    for (int i = 0; i < segments; i++)
+        n += (size_t)snprintf(text + n, cap - n, "f 1 %d %d\n", 6 + i, 7 + i);
+    n += (size_t)snprintf(text + n, cap - n, "f 1 2 3\nf 1 4 5\n");
+    assert_true(n < cap);
+    glint_scene *s = new_scene();
+    const mesh *m = import_text(s, "fan.obj", text);
+    free(text);
+    int at_origin = 0;
+    double tilt = acos(0.6), len = sqrt(M_PI * M_PI + tilt * tilt + 2 * M_PI * tilt * 0.5);
+    double want[3] = {0, -tilt * sqrt(0.75) / len, (M_PI + tilt * 0.5) / len};
+    for (int v = 0; v < m->vertex_count; v++) {
+        const float *p = m->positions + 3 * v, *nv = m->normals + 3 * v;
+        if (p[0] != 0 || p[1] != 0 || p[2] != 0)
+            continue;
+        at_origin++;
+        if (nv[0] > 0.5) {
+            assert_true(nv[0] == 1 && nv[1] == 0 && nv[2] == 0);
+        } else {
+            for (int k = 0; k < 3; k++)
+                assert_near(nv[k], want[k], 1e-6);
+        }
+    }
+    assert_int_equal(at_origin, 2);
+    glint_scene_free(s);
+}
+
 /* Faces with normals and without, in one file: each keeps its own kind. */
 static void test_obj_mixed_normals(void **state)
 {
@@ -1680,6 +1722,7 @@ int main(void)
         cmocka_unit_test(test_triangulate_concave),
         cmocka_unit_test(test_obj_concave_ngon),
         cmocka_unit_test(test_obj_sphere_normals),
+        cmocka_unit_test(test_obj_many_faces_at_a_point),
         cmocka_unit_test(test_obj_mixed_normals),
         cmocka_unit_test(test_mtl_mapping),
         cmocka_unit_test(test_mtl_libraries),
