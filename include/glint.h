@@ -407,7 +407,7 @@ typedef void (*glint_progress_fn)(void *user, int tiles_done, int tiles_total);
 
 typedef struct glint_render_options {
     int threads;              /* 0 means one per core */
-    int tile_size;            /* 0 means 32 */
+    int tile_size;            /* 0 means 32; rounded up to a multiple of 4 */
     glint_progress_fn progress;
     void *progress_user;
     const volatile int *cancel; /* when non-NULL and set non-zero, the render stops */

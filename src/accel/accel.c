@@ -4,8 +4,10 @@
  * the callbacks test shapes exactly with it. Each mesh is a triangle scene
  * over its own arrays, placed by Embree instances. */
 #include <embree3/rtcore.h>
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 #include "accel/accel.h"
 #include "core/error.h"
 
@@ -24,19 +26,112 @@ struct accel {
 /* Below this a shadow segment is taken as fully blocked. */
 #define TRANSMISSION_CUTOFF 1e-4f
 
-/* A query's state; Embree passes &ctx back to the callbacks, and ctx comes
- * first so the callbacks can recover the whole query from it. */
+/* The surfaces a shadow segment has already been filtered by: Embree may
+ * report the same primitive to a query more than once (packet traversal
+ * does, for user geometry), and each must filter the light only once. Keys
+ * are (geometry ID << 32 | primitive ID); the first few live inline. */
+#define SEEN_INLINE 16
+typedef struct seen_set {
+    uint64_t inline_keys[SEEN_INLINE];
+    uint64_t *keys;           /* inline_keys, or a heap array once those are full */
+    int count, cap;
+} seen_set;
+
+/* Adds key; false when it was there already. When memory runs out the key
+ * is not kept, and a repeat would filter twice. */
+static bool seen_add(seen_set *s, uint64_t key)
+{
+    if (!s->keys) {
+        s->keys = s->inline_keys;
+        s->cap = SEEN_INLINE;
+    }
+    for (int k = 0; k < s->count; k++)
+        if (s->keys[k] == key)
+            return false;
+    if (s->count == s->cap) {
+        uint64_t *grown = malloc(2 * (size_t)s->cap * sizeof *grown);
+        if (!grown)
+            return true;
+        memcpy(grown, s->keys, (size_t)s->count * sizeof *grown);
+        if (s->keys != s->inline_keys)
+            free(s->keys);
+        s->keys = grown;
+        s->cap *= 2;
+    }
+    s->keys[s->count++] = key;
+    return true;
+}
+
+static void seen_init(seen_set *s)
+{
+    s->keys = NULL;
+    s->count = s->cap = 0;
+}
+
+static void seen_free(seen_set *s)
+{
+    if (s->keys != s->inline_keys)
+        free(s->keys);
+}
+
+/* A query's state, for one ray or a packet of ACCEL_PACKET; Embree passes
+ * &ctx back to the callbacks, and ctx comes first so the callbacks can
+ * recover the whole query from it. Lane i holds the double-precision ray
+ * of Embree's lane i. */
 typedef struct query {
     struct RTCIntersectContext ctx;
     const accel *acc;
-    const ray *r;
-    double tmin, tmax;
-    int index;
-    shape_hit hit;
     accel_filter_fn filter;
     void *user;
-    color through;
+    const ray *r[ACCEL_PACKET];
+    double tmin[ACCEL_PACKET], tmax[ACCEL_PACKET];
+    int index[ACCEL_PACKET];
+    shape_hit hit[ACCEL_PACKET];
+    color through[ACCEL_PACKET];
+    seen_set *seen;           /* shadow queries: what each lane was filtered by */
 } query;
+
+/* Lane i of Embree's structure-of-arrays rays and hits, as its C++ helpers
+ * (RTCRayN_tfar, RTCHitN_u, RTCRayHitN_RayN, ...) index them: a ray is 12
+ * fields of n lanes, tfar the ninth; a hit is 8 fields, after the ray in a
+ * RTCRayHitN. */
+enum { RAY_TFAR = 8, RAY_FIELDS = 12, HIT_NG_X = 0, HIT_U = 3, HIT_V = 4, HIT_PRIM = 5, HIT_GEOM = 6, HIT_INST = 7 };
+static float *ray_lane_tfar(struct RTCRayN *rays, unsigned n, unsigned i) { return &((float *)rays)[RAY_TFAR * n + i]; }
+static unsigned *rayhit_lane_uint(struct RTCRayHitN *rh, unsigned n, unsigned field, unsigned i)
+{
+    return &((unsigned *)rh)[(RAY_FIELDS + field) * n + i];
+}
+static float hit_lane_float(const struct RTCHitN *hit, unsigned n, unsigned field, unsigned i)
+{
+    return ((const float *)hit)[field * n + i];
+}
+static unsigned hit_lane_uint(const struct RTCHitN *hit, unsigned n, unsigned field, unsigned i)
+{
+    return ((const unsigned *)hit)[field * n + i];
+}
+
+/* The next float above x, for finite x: nextafterf(x, INFINITY) without the
+ * library call (this runs for every ray). */
+static inline float float_up(float x)
+{
+    if (x == 0)
+        return FLT_TRUE_MIN;
+    uint32_t b;
+    memcpy(&b, &x, sizeof b);
+    b = x > 0 ? b + 1 : b - 1;
+    memcpy(&x, &b, sizeof x);
+    return x;
+}
+
+/* The next float towards zero from positive finite x: nextafterf(x, 0). */
+static inline float float_toward_zero(float x)
+{
+    uint32_t b;
+    memcpy(&b, &x, sizeof b);
+    b--;
+    memcpy(&x, &b, sizeof x);
+    return x;
+}
 
 /* Pads float bounds so the float ray in Embree's traversal never misses a
  * box that the exact double test would hit. */
@@ -60,79 +155,80 @@ static void bounds_fn(const struct RTCBoundsFunctionArguments *args)
 
 static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
 {
-    if (!args->valid[0])
-        return;
     query *q = (query *)args->context;
-    struct RTCRayHit *rh = (struct RTCRayHit *)args->rayhit;
-    shape_hit h;
-    /* A triangle found first may have shortened the ray below q->tmax. */
-    double tmax = fmin(q->tmax, (double)rh->ray.tfar);
-    if (!shape_intersect(&q->acc->shapes[args->primID], q->r, q->tmin, tmax, &h))
-        return;
-    q->tmax = h.t;
-    q->hit = h;
-    q->index = (int)args->primID;
-    rh->ray.tfar = nextafterf((float)h.t, INFINITY);
-    rh->hit.geomID = args->geomID;
-    rh->hit.primID = args->primID;
-    rh->hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
+    const shape *s = &q->acc->shapes[args->primID];
+    struct RTCRayHitN *rh = args->rayhit;
+    for (unsigned i = 0; i < args->N; i++) {
+        if (!args->valid[i])
+            continue;
+        float *tfar = ray_lane_tfar((struct RTCRayN *)rh, args->N, i);
+        shape_hit h;
+        /* A triangle found first may have shortened the ray below q->tmax. */
+        double tmax = fmin(q->tmax[i], (double)*tfar);
+        if (!shape_intersect(s, q->r[i], q->tmin[i], tmax, &h))
+            continue;
+        q->tmax[i] = h.t;
+        q->hit[i] = h;
+        q->index[i] = (int)args->primID;
+        *tfar = float_up((float)h.t);
+        *rayhit_lane_uint(rh, args->N, HIT_GEOM, i) = args->geomID;
+        *rayhit_lane_uint(rh, args->N, HIT_PRIM, i) = args->primID;
+        *rayhit_lane_uint(rh, args->N, HIT_INST, i) = RTC_INVALID_GEOMETRY_ID;
+    }
 }
 
-/* Multiplies in what one crossing passes; false once nothing passes. */
-static bool pass_through(query *q, const accel_hit *h)
+/* Multiplies into lane i what one crossing passes; false once nothing
+ * passes. */
+static bool pass_through(query *q, unsigned i, const accel_hit *h)
 {
-    q->through = rgb_mul(q->through, q->filter(q->user, q->r, h));
-    return rgb_max(q->through) >= TRANSMISSION_CUTOFF;
+    q->through[i] = rgb_mul(q->through[i], q->filter(q->user, q->r[i], h));
+    return rgb_max(q->through[i]) >= TRANSMISSION_CUTOFF;
 }
 
 static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
 {
-    if (!args->valid[0])
-        return;
     query *q = (query *)args->context;
     const shape *s = &q->acc->shapes[args->primID];
-    double tmin = q->tmin;
-    accel_hit h = {.shape = (int)args->primID, .instance = -1};
-    /* Shapes are convex, so a ray crosses one at most twice. */
-    for (int crossing = 0; crossing < 2 && shape_intersect(s, q->r, tmin, q->tmax, &h.on_shape); crossing++) {
-        h.t = h.on_shape.t;
-        if (!pass_through(q, &h)) {
-            ((struct RTCRay *)args->ray)->tfar = -INFINITY;
-            return;
+    for (unsigned i = 0; i < args->N; i++) {
+        if (!args->valid[i])
+            continue;
+        if (!seen_add(&q->seen[i], args->primID))
+            continue;
+        double tmin = q->tmin[i];
+        accel_hit h = {.shape = (int)args->primID, .instance = -1};
+        /* Shapes are convex, so a ray crosses one at most twice. */
+        for (int crossing = 0; crossing < 2 && shape_intersect(s, q->r[i], tmin, q->tmax[i], &h.on_shape);
+             crossing++) {
+            h.t = h.on_shape.t;
+            if (!pass_through(q, i, &h)) {
+                *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
+                break;
+            }
+            tmin = h.t;
         }
-        tmin = h.t;
     }
-}
-
-/* Lane i of Embree's structure-of-arrays rays and hits, as its C++ helpers
- * (RTCRayN_tfar, RTCHitN_u, ...) index them. */
-static float ray_lane_tfar(const struct RTCRayN *rays, unsigned n, unsigned i) { return ((const float *)rays)[8 * n + i]; }
-static float hit_lane_float(const struct RTCHitN *hit, unsigned n, unsigned field, unsigned i)
-{
-    return ((const float *)hit)[field * n + i];
-}
-static unsigned hit_lane_uint(const struct RTCHitN *hit, unsigned n, unsigned field, unsigned i)
-{
-    return ((const unsigned *)hit)[field * n + i];
 }
 
 /* Embree found a triangle on a shadow segment: reject the hit (so the
  * search goes on) while light still passes. */
 static void triangle_occlusion_filter(const struct RTCFilterFunctionNArguments *args)
 {
-    if (!args->valid[0])
-        return;
     query *q = (query *)args->context;
-    accel_hit h = {
-        .t = ray_lane_tfar(args->ray, args->N, 0),
-        .shape = -1,
-        .instance = (int)hit_lane_uint(args->hit, args->N, 7, 0) - 1, /* instID[0] */
-        .triangle = hit_lane_uint(args->hit, args->N, 5, 0),          /* primID */
-        .b1 = hit_lane_float(args->hit, args->N, 3, 0),               /* u */
-        .b2 = hit_lane_float(args->hit, args->N, 4, 0),               /* v */
-    };
-    if (pass_through(q, &h))
-        args->valid[0] = 0;
+    for (unsigned i = 0; i < args->N; i++) {
+        if (!args->valid[i])
+            continue;
+        accel_hit h = {
+            .t = *ray_lane_tfar(args->ray, args->N, i),
+            .shape = -1,
+            .instance = (int)hit_lane_uint(args->hit, args->N, HIT_INST, i) - 1,
+            .triangle = hit_lane_uint(args->hit, args->N, HIT_PRIM, i),
+            .b1 = hit_lane_float(args->hit, args->N, HIT_U, i),
+            .b2 = hit_lane_float(args->hit, args->N, HIT_V, i),
+        };
+        uint64_t key = (uint64_t)(h.instance + 1) << 32 | h.triangle;
+        if (!seen_add(&q->seen[i], key) || pass_through(q, i, &h))
+            args->valid[i] = 0;
+    }
 }
 
 static void error_fn(void *user, enum RTCError code, const char *str)
@@ -250,42 +346,146 @@ static void embree_ray(struct RTCRay *er, const ray *r, double tmin, double tmax
     er->dir_x = (float)r->d.x;
     er->dir_y = (float)r->d.y;
     er->dir_z = (float)r->d.z;
-    er->tnear = tmin > 0 ? nextafterf((float)tmin, 0) : 0;
-    er->tfar = isfinite(tmax) ? nextafterf((float)tmax, INFINITY) : INFINITY;
+    er->tnear = (float)tmin > 0 ? float_toward_zero((float)tmin) : 0;
+    er->tfar = isfinite(tmax) && (float)tmax < FLT_MAX ? float_up((float)tmax) : INFINITY;
     er->time = 0;
     er->mask = 0xFFFFFFFFu;
     er->id = 0;
     er->flags = 0;
 }
 
+/* The hit of lane i once Embree is done with it. */
+static bool lane_hit(const query *q, unsigned i, unsigned geom, unsigned inst, float tfar, unsigned prim, float u,
+                     float v, accel_hit *hit)
+{
+    if (geom == RTC_INVALID_GEOMETRY_ID)
+        return false;
+    if (inst == RTC_INVALID_GEOMETRY_ID)
+        *hit = (accel_hit){.t = q->hit[i].t, .shape = q->index[i], .on_shape = q->hit[i], .instance = -1};
+    else
+        *hit = (accel_hit){.t = tfar, .shape = -1, .instance = (int)inst - 1, .triangle = prim, .b1 = u, .b2 = v};
+    return true;
+}
+
+/* Sets up a query of one ray (lane 0) without touching the other lanes. */
+static void single_init(query *q, const accel *a, const ray *r, double tmin, double tmax)
+{
+    rtcInitIntersectContext(&q->ctx);
+    q->acc = a;
+    q->filter = NULL;
+    q->user = NULL;
+    q->seen = NULL;
+    q->r[0] = r;
+    q->tmin[0] = tmin;
+    q->tmax[0] = tmax;
+    q->index[0] = -1;
+    q->through[0] = rgb(1, 1, 1);
+}
+
 bool accel_intersect(const accel *a, const ray *r, double tmin, double tmax, accel_hit *hit)
 {
-    query q = {.acc = a, .r = r, .tmin = tmin, .tmax = tmax, .index = -1};
-    rtcInitIntersectContext(&q.ctx);
+    query q;
+    single_init(&q, a, r, tmin, tmax);
     struct RTCRayHit rh;
     embree_ray(&rh.ray, r, tmin, tmax);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(a->scene, &q.ctx, &rh);
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID)
-        return false;
-    if (rh.hit.instID[0] == RTC_INVALID_GEOMETRY_ID) {
-        *hit = (accel_hit){.t = q.hit.t, .shape = q.index, .on_shape = q.hit, .instance = -1};
-        return true;
-    }
-    *hit = (accel_hit){.t = rh.ray.tfar, .shape = -1, .instance = (int)rh.hit.instID[0] - 1,
-                       .triangle = rh.hit.primID, .b1 = rh.hit.u, .b2 = rh.hit.v};
-    return true;
+    return lane_hit(&q, 0, rh.hit.geomID, rh.hit.instID[0], rh.ray.tfar, rh.hit.primID, rh.hit.u, rh.hit.v, hit);
 }
 
 color accel_transmission(const accel *a, const ray *r, double tmin, double tmax, accel_filter_fn filter,
                          void *user)
 {
-    query q = {.acc = a, .r = r, .tmin = tmin, .tmax = tmax, .filter = filter, .user = user, .through = {1, 1, 1}};
-    rtcInitIntersectContext(&q.ctx);
+    query q;
+    seen_set seen;
+    single_init(&q, a, r, tmin, tmax);
+    seen_init(&seen);
+    q.filter = filter;
+    q.user = user;
+    q.seen = &seen;
     struct RTCRay er;
     embree_ray(&er, r, tmin, tmax);
     rtcOccluded1(a->scene, &q.ctx, &er);
-    return er.tfar == -INFINITY ? rgb(0, 0, 0) : q.through;
+    seen_free(&seen);
+    return er.tfar == -INFINITY ? rgb(0, 0, 0) : q.through[0];
+}
+
+/* Copies a single Embree ray into lane i of a packet. */
+static void set_lane(struct RTCRay8 *p, int i, const struct RTCRay *r)
+{
+    p->org_x[i] = r->org_x;
+    p->org_y[i] = r->org_y;
+    p->org_z[i] = r->org_z;
+    p->tnear[i] = r->tnear;
+    p->dir_x[i] = r->dir_x;
+    p->dir_y[i] = r->dir_y;
+    p->dir_z[i] = r->dir_z;
+    p->time[i] = r->time;
+    p->tfar[i] = r->tfar;
+    p->mask[i] = r->mask;
+    p->id[i] = r->id;
+    p->flags[i] = r->flags;
+}
+
+/* Fills the query's lanes and Embree's packet from the active rays; the
+ * inactive lanes get a harmless ray Embree skips. */
+static void packet_init(query *q, const ray r[ACCEL_PACKET], const double tmax[ACCEL_PACKET],
+                        const bool active[ACCEL_PACKET], int valid[ACCEL_PACKET], struct RTCRay8 *p)
+{
+    rtcInitIntersectContext(&q->ctx);
+    q->seen = NULL;
+    q->ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        valid[i] = active[i] ? -1 : 0;
+        q->r[i] = &r[i];
+        q->tmin[i] = 0;
+        q->tmax[i] = active[i] ? tmax[i] : 0;
+        q->index[i] = -1;
+        q->through[i] = rgb(1, 1, 1);
+        struct RTCRay er;
+        embree_ray(&er, &r[i], 0, q->tmax[i]);
+        set_lane(p, i, &er);
+    }
+}
+
+void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET],
+                      accel_hit hit[ACCEL_PACKET], bool found[ACCEL_PACKET])
+{
+    static const double far[ACCEL_PACKET] = {INFINITY, INFINITY, INFINITY, INFINITY,
+                                             INFINITY, INFINITY, INFINITY, INFINITY};
+    query q;
+    int valid[ACCEL_PACKET];
+    struct RTCRayHit8 rh;
+    packet_init(&q, r, far, active, valid, &rh.ray);
+    q.acc = a;
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        rh.hit.geomID[i] = rh.hit.primID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+    rtcIntersect8(valid, a->scene, &q.ctx, &rh);
+    for (unsigned i = 0; i < ACCEL_PACKET; i++)
+        found[i] = active[i] && lane_hit(&q, i, rh.hit.geomID[i], rh.hit.instID[0][i], rh.ray.tfar[i],
+                                         rh.hit.primID[i], rh.hit.u[i], rh.hit.v[i], &hit[i]);
+}
+
+void accel_transmission8(const accel *a, const ray r[ACCEL_PACKET], const double tmax[ACCEL_PACKET],
+                         const bool active[ACCEL_PACKET], accel_filter_fn filter, void *user,
+                         color through[ACCEL_PACKET])
+{
+    query q;
+    seen_set seen[ACCEL_PACKET];
+    int valid[ACCEL_PACKET];
+    struct RTCRay8 p;
+    packet_init(&q, r, tmax, active, valid, &p);
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        seen_init(&seen[i]);
+    q.acc = a;
+    q.filter = filter;
+    q.user = user;
+    q.seen = seen;
+    rtcOccluded8(valid, a->scene, &q.ctx, &p);
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        seen_free(&seen[i]);
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        through[i] = !active[i] || p.tfar[i] == -INFINITY ? rgb(0, 0, 0) : q.through[i];
 }

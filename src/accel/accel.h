@@ -12,6 +12,9 @@
 
 typedef struct accel accel;
 
+/* Rays in a packet query. */
+#define ACCEL_PACKET 8
+
 /* What a ray hit: an analytic shape, or a triangle of a mesh instance. */
 typedef struct accel_hit {
     double t;
@@ -51,5 +54,18 @@ typedef color (*accel_filter_fn)(void *user, const ray *r, const accel_hit *hit)
  * shadow segment. */
 color accel_transmission(const accel *a, const ray *r, double tmin, double tmax, accel_filter_fn filter,
                          void *user);
+
+/* As accel_intersect for up to ACCEL_PACKET rays at once, each with t in
+ * (0, inf), through Embree's packet traversal (faster for coherent rays such
+ * as a camera's): found[i] says whether ray i, if active[i], hit; hit[i] is
+ * then what accel_intersect would give. Inactive lanes find nothing. */
+void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET],
+                      accel_hit hit[ACCEL_PACKET], bool found[ACCEL_PACKET]);
+
+/* As accel_transmission for up to ACCEL_PACKET shadow segments (0, tmax[i])
+ * at once; through[i] is black for inactive lanes. */
+void accel_transmission8(const accel *a, const ray r[ACCEL_PACKET], const double tmax[ACCEL_PACKET],
+                         const bool active[ACCEL_PACKET], accel_filter_fn filter, void *user,
+                         color through[ACCEL_PACKET]);
 
 #endif

@@ -63,24 +63,65 @@ static color shadow_filter(void *user, const ray *r, const accel_hit *hit)
     return rgb_scale(material_filter(m, surface_color(scene, &h, m, &s)), amount);
 }
 
-/* Ambient light plus every light that reaches p. n is the geometric normal
- * on the viewer's side, which decides what is in front of the surface; ns
- * the shading normal on the same side. */
-static color direct_light(tracer *t, const glint_material *m, color base, vec3 p, vec3 n, vec3 ns, vec3 to_eye)
+/* What shading needs of a hit, between finding it and finishing its colour. */
+typedef struct shade_point {
+    accel_hit hit;
+    const glint_material *m;
+    surface s;
+    vec3 n, ns;               /* geometric and shading normals on the viewer's side */
+    vec3 origin;              /* where shadow rays start: p moved off the surface along n */
+    color base;               /* the surface colour */
+} shade_point;
+
+/* Describes the hit h of ray r for shading; for meshes this refines h's t. */
+static void shade_begin(const glint_scene *scene, const ray *r, const accel_hit *h, shade_point *sp)
+{
+    sp->hit = *h;
+    sp->m = hit_material(scene, h);
+    hit_surface(scene, r, &sp->hit, &sp->s);
+    bool front = v3_dot(r->d, sp->s.n) < 0;
+    sp->n = front ? sp->s.n : v3_neg(sp->s.n);
+    sp->ns = front ? sp->s.shading_n : v3_neg(sp->s.shading_n);
+    sp->origin = offset_point(sp->s.p, sp->n);
+    sp->base = surface_color(scene, &sp->hit, sp->m, &sp->s);
+}
+
+/* The shadow segment from sp towards light l, when l lights sp's front. */
+static bool shadow_segment(const light *l, const shade_point *sp, light_sample *ls, ray *shadow)
+{
+    if (!light_illuminate(l, sp->s.p, ls) || v3_dot(sp->n, ls->to_light) <= 0 || v3_dot(sp->ns, ls->to_light) <= 0)
+        return false;
+    *shadow = (ray){sp->origin, ls->to_light};
+    return true;
+}
+
+/* Light l's share at sp, given what passes the shadow segment. */
+static color light_share(const shade_point *sp, const light_sample *ls, color through, vec3 to_eye)
+{
+    if (!(rgb_max(through) > 0))
+        return rgb(0, 0, 0);
+    return phong_light(sp->m, sp->base, sp->ns, ls->to_light, to_eye, rgb_mul(ls->radiance, through));
+}
+
+/* The ambient term at sp. */
+static color ambient(const glint_scene *scene, const shade_point *sp)
+{
+    return rgb_scale(rgb_mul(sp->base, scene->settings.ambient_light), sp->m->ambient);
+}
+
+/* Ambient light plus every light that reaches sp, one shadow ray at a time. */
+static color direct_light(tracer *t, const shade_point *sp, vec3 to_eye)
 {
     const glint_scene *scene = t->scene;
-    color out = rgb_scale(rgb_mul(base, scene->settings.ambient_light), m->ambient);
-    vec3 origin = offset_point(p, n);
+    color out = ambient(scene, sp);
     for (int i = 0; i < scene->light_count; i++) {
         light_sample ls;
-        if (!light_illuminate(&scene->lights[i], p, &ls) || v3_dot(n, ls.to_light) <= 0 ||
-            v3_dot(ns, ls.to_light) <= 0)
+        ray shadow;
+        if (!shadow_segment(&scene->lights[i], sp, &ls, &shadow))
             continue;
-        ray shadow = {origin, ls.to_light};
         t->rays++;
         color through = accel_transmission(t->acc, &shadow, 0, ls.distance, shadow_filter, t);
-        if (rgb_max(through) > 0)
-            out = rgb_add(out, phong_light(m, base, ns, ls.to_light, to_eye, rgb_mul(ls.radiance, through)));
+        out = rgb_add(out, light_share(sp, &ls, through, to_eye));
     }
     return out;
 }
@@ -93,31 +134,24 @@ static color trace_from(tracer *t, vec3 p, vec3 n, vec3 d, int depth)
     return tracer_trace(t, &r, depth);
 }
 
-color tracer_trace(tracer *t, const ray *r, int depth)
+/* The colour of ray r at sp, given its direct light: transparency,
+ * refraction and reflection below max_depth, then fog. */
+static color shade_end(tracer *t, const ray *r, const shade_point *sp, color direct, int depth)
 {
     const glint_scene *scene = t->scene;
-    accel_hit hit;
-    t->rays++;
-    if (!accel_intersect(t->acc, r, 0, INFINITY, &hit))
-        return fog_apply(&scene->fog, scene->settings.background, INFINITY);
-
-    const glint_material *m = hit_material(scene, &hit);
-    surface s;
-    hit_surface(scene, r, &hit, &s);
-    bool front = v3_dot(r->d, s.n) < 0;
-    vec3 n = front ? s.n : v3_neg(s.n), ns = front ? s.shading_n : v3_neg(s.shading_n);
-    color base = surface_color(scene, &hit, m, &s);
-    double transmitted = m->transparency + m->refraction;
-    color out = rgb_scale(direct_light(t, m, base, s.p, n, ns, v3_neg(r->d)), 1 - transmitted);
+    const glint_material *m = sp->m;
+    vec3 n = sp->n, ns = sp->ns, p = sp->s.p;
+    bool front = v3_dot(r->d, sp->s.n) < 0;
+    color out = rgb_scale(direct, 1 - (m->transparency + m->refraction));
 
     if (depth < scene->settings.max_depth) {
         double mirror = m->reflectivity;
         /* Rays bend about the shading normal, unless interpolation turned it
          * away from the ray, where only the geometric one makes sense. */
         vec3 bend = v3_dot(r->d, ns) < 0 ? ns : n;
-        color filter = material_filter(m, base);
+        color filter = material_filter(m, sp->base);
         if (m->transparency > 0)
-            out = rgb_add(out, rgb_scale(rgb_mul(filter, trace_from(t, s.p, n, r->d, depth + 1)), m->transparency));
+            out = rgb_add(out, rgb_scale(rgb_mul(filter, trace_from(t, p, n, r->d, depth + 1)), m->transparency));
         if (m->refraction > 0) {
             double eta = front ? 1.0 / m->ior : m->ior;
             double share = 1;
@@ -127,13 +161,73 @@ color tracer_trace(tracer *t, const ray *r, int depth)
             else if (m->fresnel)
                 share = 1 - optics_fresnel(-v3_dot(r->d, bend), eta);
             if (share > 0) {
-                color refracted = trace_from(t, s.p, n, dir, depth + 1);
+                color refracted = trace_from(t, p, n, dir, depth + 1);
                 out = rgb_add(out, rgb_scale(rgb_mul(filter, refracted), m->refraction * share));
             }
             mirror += m->refraction * (1 - share);
         }
         if (mirror > 0)
-            out = rgb_madd(out, trace_from(t, s.p, n, optics_reflect(r->d, bend), depth + 1), mirror);
+            out = rgb_madd(out, trace_from(t, p, n, optics_reflect(r->d, bend), depth + 1), mirror);
     }
-    return fog_apply(&scene->fog, out, hit.t);
+    return fog_apply(&scene->fog, out, sp->hit.t);
+}
+
+/* What a ray that hits nothing brings back. */
+static color miss(const glint_scene *scene)
+{
+    return fog_apply(&scene->fog, scene->settings.background, INFINITY);
+}
+
+color tracer_trace(tracer *t, const ray *r, int depth)
+{
+    accel_hit hit;
+    t->rays++;
+    if (!accel_intersect(t->acc, r, 0, INFINITY, &hit))
+        return miss(t->scene);
+    shade_point sp;
+    shade_begin(t->scene, r, &hit, &sp);
+    return shade_end(t, r, &sp, direct_light(t, &sp, v3_neg(r->d)), depth);
+}
+
+void tracer_trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET],
+                   color out[ACCEL_PACKET])
+{
+    const glint_scene *scene = t->scene;
+    accel_hit hits[ACCEL_PACKET];
+    bool found[ACCEL_PACKET];
+    shade_point sp[ACCEL_PACKET];
+    color direct[ACCEL_PACKET];
+    accel_intersect8(t->acc, r, active, hits, found);
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        t->rays += active[i];
+        if (found[i]) {
+            shade_begin(scene, &r[i], &hits[i], &sp[i]);
+            direct[i] = ambient(scene, &sp[i]);
+        }
+    }
+    /* One packet of shadow segments per light, over the lanes it lights. */
+    for (int l = 0; l < scene->light_count; l++) {
+        light_sample ls[ACCEL_PACKET];
+        ray shadow[ACCEL_PACKET];
+        double dist[ACCEL_PACKET];
+        bool lit[ACCEL_PACKET], any = false;
+        for (int i = 0; i < ACCEL_PACKET; i++) {
+            lit[i] = found[i] && shadow_segment(&scene->lights[l], &sp[i], &ls[i], &shadow[i]);
+            dist[i] = lit[i] ? ls[i].distance : 0;
+            if (!lit[i])
+                shadow[i] = r[i];
+            t->rays += lit[i];
+            any |= lit[i];
+        }
+        if (!any)
+            continue;
+        color through[ACCEL_PACKET];
+        accel_transmission8(t->acc, shadow, dist, lit, shadow_filter, t, through);
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            if (lit[i])
+                direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i], v3_neg(r[i].d)));
+    }
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        if (active[i])
+            out[i] = found[i] ? shade_end(t, &r[i], &sp[i], direct[i], 0) : miss(scene);
 }

@@ -31,41 +31,73 @@ typedef struct worker {
     uint64_t rays;
 } worker;
 
-static color render_pixel(tracer *t, const job *j, int px, int py)
+/* Camera rays go in packets of 4 x 2 neighbouring pixels, the blocks
+ * aligned to the image (not to tiles), so each pixel's rays, and so its
+ * colour, do not depend on the tile size or the thread count. */
+#define BLOCK_W 4
+#define BLOCK_H (ACCEL_PACKET / BLOCK_W)
+_Static_assert(BLOCK_W % BLOCK_H == 0, "a tile size rounded to BLOCK_W must hold whole blocks");
+
+/* The position in pixel (px, py) of sample (sx, sy) of the n x n grid. */
+static void sample_offset(const glint_settings *s, int n, int px, int py, int sx, int sy, double *ox, double *oy)
+{
+    *ox = (sx + 0.5) / n;
+    *oy = (sy + 0.5) / n;
+    if (s->sampler == GLINT_SAMPLER_JITTERED) {
+        uint32_t h = hash4((uint32_t)px, (uint32_t)py, (uint32_t)(sy * n + sx), s->seed);
+        *ox = (sx + hash_unit(h)) / n;
+        *oy = (sy + hash_unit(hash_u32(h ^ 0x9e3779b9U))) / n;
+    }
+}
+
+/* Renders the pixels of the block at (x0, y0) that lie in the image: every
+ * sample of the grid as one packet over the block. */
+static void render_block(tracer *t, const job *j, int x0, int y0)
 {
     const glint_settings *s = &j->scene->settings;
     int n = j->grid;
-    color sum = rgb(0, 0, 0);
+    ray rays[ACCEL_PACKET];
+    bool active[ACCEL_PACKET];
+    color sum[ACCEL_PACKET], c[ACCEL_PACKET];
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        active[i] = x0 + i % BLOCK_W < s->width && y0 + i / BLOCK_W < s->height;
+        sum[i] = rgb(0, 0, 0);
+    }
     for (int sy = 0; sy < n; sy++) {
         for (int sx = 0; sx < n; sx++) {
-            double ox = (sx + 0.5) / n, oy = (sy + 0.5) / n;
-            if (s->sampler == GLINT_SAMPLER_JITTERED) {
-                uint32_t h = hash4((uint32_t)px, (uint32_t)py, (uint32_t)(sy * n + sx), s->seed);
-                ox = (sx + hash_unit(h)) / n;
-                oy = (sy + hash_unit(hash_u32(h ^ 0x9e3779b9U))) / n;
+            for (int i = 0; i < ACCEL_PACKET; i++) {
+                int px = x0 + i % BLOCK_W, py = y0 + i / BLOCK_W;
+                double ox, oy;
+                sample_offset(s, n, px, py, sx, sy, &ox, &oy);
+                rays[i] = camera_ray(&j->cam, px + ox, py + oy);
             }
-            ray r = camera_ray(&j->cam, px + ox, py + oy);
-            sum = rgb_add(sum, tracer_trace(t, &r, 0));
+            tracer_trace8(t, rays, active, c);
+            for (int i = 0; i < ACCEL_PACKET; i++)
+                if (active[i])
+                    sum[i] = rgb_add(sum[i], c[i]);
         }
     }
-    return rgb_scale(sum, 1.0 / (n * n));
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        if (!active[i])
+            continue;
+        color avg = rgb_scale(sum[i], 1.0 / (n * n));
+        float *p = j->pixels + 3 * ((size_t)(y0 + i / BLOCK_W) * s->width + x0 + i % BLOCK_W);
+        p[0] = (float)avg.r;
+        p[1] = (float)avg.g;
+        p[2] = (float)avg.b;
+    }
 }
 
+/* Tiles are whole blocks: tile_size is a multiple of BLOCK_W and BLOCK_H. */
 static void render_tile(tracer *t, job *j, int tile)
 {
     const glint_settings *s = &j->scene->settings;
     int x0 = (tile % j->tiles_x) * j->tile_size, y0 = (tile / j->tiles_x) * j->tile_size;
     int x1 = x0 + j->tile_size < s->width ? x0 + j->tile_size : s->width;
     int y1 = y0 + j->tile_size < s->height ? y0 + j->tile_size : s->height;
-    for (int y = y0; y < y1; y++) {
-        for (int x = x0; x < x1; x++) {
-            color c = render_pixel(t, j, x, y);
-            float *p = j->pixels + 3 * ((size_t)y * s->width + x);
-            p[0] = (float)c.r;
-            p[1] = (float)c.g;
-            p[2] = (float)c.b;
-        }
-    }
+    for (int y = y0; y < y1; y += BLOCK_H)
+        for (int x = x0; x < x1; x += BLOCK_W)
+            render_block(t, j, x, y);
 }
 
 static void *worker_run(void *arg)
@@ -139,7 +171,10 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
         return error_set(err, GLINT_ERR_INVALID, "tile size must be 0..65536, got %d", o->tile_size);
     double start = now_seconds();
 
-    job j = {.scene = scene, .opts = o, .tile_size = o->tile_size ? o->tile_size : 32};
+    /* Tiles hold whole blocks: the size is rounded up to a multiple of 4. */
+    int tile_size = o->tile_size ? o->tile_size : 32;
+    tile_size = (tile_size + BLOCK_W - 1) / BLOCK_W * BLOCK_W;
+    job j = {.scene = scene, .opts = o, .tile_size = tile_size};
     j.pixels = calloc((size_t)s->width * s->height * 3, sizeof(float));
     if (!j.pixels)
         return error_set(err, GLINT_ERR_NOMEM, "out of memory for a %dx%d image", s->width, s->height);

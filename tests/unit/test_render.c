@@ -369,12 +369,20 @@ static void test_progress_reports_every_tile_in_order(void **state)
     glint_scene *s = new_scene(100, 70, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 30);
     add_sphere(s, 0, 0, -10, 1, flat(s, 1, 1, 1));
     progress_log log = {.in_order = true};
-    glint_render_options o = {.threads = 4, .tile_size = 10, .progress = log_progress, .progress_user = &log};
+    glint_render_options o = {.threads = 4, .tile_size = 20, .progress = log_progress, .progress_user = &log};
     glint_image img;
     assert_int_equal(glint_render(s, &o, &img, NULL, NULL), GLINT_OK);
-    assert_int_equal(log.total, 70);
-    assert_int_equal(log.calls, 70);
-    assert_int_equal(log.last, 70);
+    assert_int_equal(log.total, 5 * 4);
+    assert_int_equal(log.calls, 5 * 4);
+    assert_int_equal(log.last, 5 * 4);
+    assert_true(log.in_order);
+    glint_image_free(&img);
+    /* Tiles hold whole 4 x 2 packets: 10 is rounded up to 12. */
+    log = (progress_log){.in_order = true};
+    o.tile_size = 10;
+    assert_int_equal(glint_render(s, &o, &img, NULL, NULL), GLINT_OK);
+    assert_int_equal(log.total, 9 * 6);
+    assert_int_equal(log.calls, 9 * 6);
     assert_true(log.in_order);
     glint_image_free(&img);
     glint_scene_free(s);
