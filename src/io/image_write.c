@@ -18,6 +18,7 @@
 #include <unistd.h>
 #include <png.h>
 #include "core/error.h"
+#include "io/srgb.h"
 
 typedef enum image_format { FORMAT_UNKNOWN, FORMAT_PNG, FORMAT_PPM } image_format;
 
@@ -63,7 +64,7 @@ static void to_srgb_bytes(unsigned char *dst, const glint_image *image)
 {
     size_t n = sample_count(image);
     for (size_t i = 0; i < n; i++)
-        dst[i] = (unsigned char)(int)(glint_linear_to_srgb(image->pixels[i]) * 255.0 + 0.5);
+        dst[i] = srgb_byte(image->pixels[i]);
 }
 
 static glint_status encode_ppm(const glint_image *image, encoded_file *out, const char *path,

@@ -21,6 +21,7 @@
 #include <zlib.h>
 
 #include "glint.h"
+#include "io/srgb.h"
 #include "io/texture_image.h"
 
 #define PATH_SIZE 1024
@@ -300,6 +301,47 @@ static void test_srgb_known_values(void **state)
     assert_near(glint_linear_to_srgb(NAN), 0.0, 0.0);
     assert_near(glint_linear_to_srgb(-INFINITY), 0.0, 0.0);
     assert_near(glint_linear_to_srgb(INFINITY), 1.0, 1e-12);
+}
+
+static int formula_byte(float x)
+{
+    return (int)(glint_linear_to_srgb(x) * 255.0 + 0.5);
+}
+
+/* The table-driven encoder gives exactly the formula's byte: on both sides
+ * of every step between codes, on a million spread values, and on the
+ * specials. */
+static void test_srgb_byte_matches_formula(void **state)
+{
+    for (int k = 1; k <= 255; k++) {
+        /* the step up to code k, found by bisection on the formula */
+        float lo = 0, hi = 1;
+        while (nextafterf(lo, 2) < hi) {
+            float mid = lo + (hi - lo) / 2;
+            if (mid <= lo || mid >= hi)
+                break;
+            if (formula_byte(mid) >= k)
+                hi = mid;
+            else
+                lo = mid;
+        }
+        for (float x = nextafterf(lo, -1), n = 0; n < 4; x = nextafterf(x, 2), n++)
+            assert_int_equal(srgb_byte(x), formula_byte(x));
+    }
+    uint32_t h = 12345;
+    for (int i = 0; i < 1000000; i++) {
+        h = h * 1664525u + 1013904223u;
+        float x = (float)(h >> 8) / (float)(1u << 24) * 1.1f - 0.05f;
+        assert_int_equal(srgb_byte(x), formula_byte(x));
+    }
+    assert_int_equal(srgb_byte(0), 0);
+    assert_int_equal(srgb_byte(-1), 0);
+    assert_int_equal(srgb_byte(NAN), 0);
+    assert_int_equal(srgb_byte(-INFINITY), 0);
+    assert_int_equal(srgb_byte(1), 255);
+    assert_int_equal(srgb_byte(7), 255);
+    assert_int_equal(srgb_byte(INFINITY), 255);
+    assert_int_equal(srgb_byte(0.5f), 188);
 }
 
 static void test_srgb_continuous_at_boundary(void **state)
@@ -876,6 +918,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_srgb_known_values),
+        cmocka_unit_test(test_srgb_byte_matches_formula),
         cmocka_unit_test(test_srgb_continuous_at_boundary),
         cmocka_unit_test(test_srgb_round_trips),
         cmocka_unit_test(test_write_ppm_bytes),
