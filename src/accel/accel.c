@@ -6,6 +6,7 @@
 #include <embree3/rtcore.h>
 #include <float.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "accel/accel.h"
@@ -292,7 +293,10 @@ glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *er
     }
     a->shapes = geo->shapes;
     a->shape_count = geo->shape_count;
-    a->device = rtcNewDevice(NULL);
+    char config[32] = "";
+    if (geo->threads > 0)
+        snprintf(config, sizeof config, "threads=%d", geo->threads);
+    a->device = rtcNewDevice(config);
     if (!a->device) {
         free(a->mesh_scenes);
         free(a);

@@ -27,6 +27,7 @@ typedef struct accel_hit {
 
 /* The geometry an accelerator is built over; it must outlive it. */
 typedef struct accel_geometry {
+    int threads;              /* threads Embree may build with (its own pool); 0: every core */
     const shape *shapes;
     int shape_count;
     const mesh *meshes;
@@ -37,7 +38,8 @@ typedef struct accel_geometry {
 
 /* Builds the Embree device and scenes: one user geometry for every shape,
  * one triangle scene per mesh sharing its arrays, one Embree instance per
- * placement. */
+ * placement. Embree's thread pool is limited to g->threads, the threads that
+ * will render, so its workers do not compete with them. */
 glint_status accel_build(accel **out, const accel_geometry *g, glint_error *err);
 
 /* Releases the Embree objects. NULL is allowed. */

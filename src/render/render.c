@@ -178,15 +178,6 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
     j.pixels = calloc((size_t)s->width * s->height * 3, sizeof(float));
     if (!j.pixels)
         return error_set(err, GLINT_ERR_NOMEM, "out of memory for a %dx%d image", s->width, s->height);
-    accel *acc;
-    accel_geometry geo = {scene->shapes, scene->shape_count, scene->meshes, scene->mesh_count, scene->instances,
-                          scene->instance_count};
-    glint_status st = accel_build(&acc, &geo, err);
-    if (st) {
-        free(j.pixels);
-        return st;
-    }
-    j.acc = acc;
     camera_init(&j.cam, &scene->camera, s->width, s->height);
     j.grid = 1;
     while (j.grid * j.grid < s->samples_per_pixel)
@@ -194,11 +185,20 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
     j.tiles_x = (s->width + j.tile_size - 1) / j.tile_size;
     j.tiles_total = j.tiles_x * ((s->height + j.tile_size - 1) / j.tile_size);
     atomic_init(&j.next_tile, 0);
-    pthread_mutex_init(&j.progress_lock, NULL);
     int threads = o->threads ? o->threads : default_threads();
     if (threads > j.tiles_total)
         threads = j.tiles_total;
 
+    accel *acc;
+    accel_geometry geo = {threads, scene->shapes, scene->shape_count, scene->meshes, scene->mesh_count,
+                          scene->instances, scene->instance_count};
+    glint_status st = accel_build(&acc, &geo, err);
+    if (st) {
+        free(j.pixels);
+        return st;
+    }
+    j.acc = acc;
+    pthread_mutex_init(&j.progress_lock, NULL);
     uint64_t rays = 0;
     st = run_workers(&j, threads, &rays, err);
     pthread_mutex_destroy(&j.progress_lock);

@@ -173,7 +173,8 @@ static long accel_memory(glint_scene *s, int count)
     }
     long before = resident();
     accel *a;
-    accel_geometry g = {NULL, 0, s->meshes, s->mesh_count, s->instances, s->instance_count};
+    accel_geometry g = {.meshes = s->meshes, .mesh_count = s->mesh_count, .instances = s->instances,
+                        .instance_count = s->instance_count};
     assert_int_equal(accel_build(&a, &g, NULL), GLINT_OK);
     long used = resident() - before;
     accel_free(a);
@@ -209,7 +210,8 @@ static void test_smooth_normals_and_per_triangle_materials(void **state)
     int mesh_id = glint_scene_add_mesh(s, "two", &md, NULL);
     assert_int_equal(glint_scene_add_instance(s, mesh_id, -1, NULL, NULL), 0);
     accel *a;
-    accel_geometry g = {NULL, 0, s->meshes, s->mesh_count, s->instances, s->instance_count};
+    accel_geometry g = {.meshes = s->meshes, .mesh_count = s->mesh_count, .instances = s->instances,
+                        .instance_count = s->instance_count};
     assert_int_equal(accel_build(&a, &g, NULL), GLINT_OK);
     ray r = {{-0.5, -0.9, 0}, {0, 0, -1}};
     accel_hit h;
