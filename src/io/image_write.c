@@ -62,9 +62,7 @@ static size_t sample_count(const glint_image *image)
 
 static void to_srgb_bytes(unsigned char *dst, const glint_image *image)
 {
-    size_t n = sample_count(image);
-    for (size_t i = 0; i < n; i++)
-        dst[i] = srgb_byte(image->pixels[i]);
+    srgb_encode(dst, image->pixels, sample_count(image));
 }
 
 static glint_status encode_ppm(const glint_image *image, encoded_file *out, const char *path,

@@ -36,9 +36,15 @@ static int code_of(float linear)
 
 /* thresholds[k - 1] is the smallest float whose code is k (k = 1..255).
  * The curve rises monotonically, so a value's code is the number of
- * thresholds at or below it: the same byte as code_of, without a pow. */
-static float thresholds[255];
-static pthread_once_t thresholds_once = PTHREAD_ONCE_INIT;
+ * thresholds at or below it. bucket_code[b] is the code of the smallest
+ * non-negative float whose bits shifted right by BUCKET_SHIFT are b; a bucket
+ * is narrower than the gap between two thresholds, so it holds at most one
+ * and a value's code is its bucket's, or one more. */
+#define BUCKET_SHIFT 14
+#define ONE_BITS 0x3f800000u
+static float thresholds[256];
+static unsigned char bucket_code[(ONE_BITS >> BUCKET_SHIFT) + 1];
+static pthread_once_t tables_once = PTHREAD_ONCE_INIT;
 
 static float float_of_bits(uint32_t b)
 {
@@ -47,12 +53,11 @@ static float float_of_bits(uint32_t b)
     return f;
 }
 
-static void find_thresholds(void)
+static void make_tables(void)
 {
     /* Non-negative floats sort as their bit patterns do. */
-    const uint32_t one = 0x3f800000u;
     for (int k = 1; k <= 255; k++) {
-        uint32_t lo = 0, hi = one; /* code_of(lo) < k <= code_of(hi) */
+        uint32_t lo = 0, hi = ONE_BITS; /* code_of(lo) < k <= code_of(hi) */
         while (hi - lo > 1) {
             uint32_t mid = lo + (hi - lo) / 2;
             if (code_of(float_of_bits(mid)) >= k)
@@ -62,20 +67,38 @@ static void find_thresholds(void)
         }
         thresholds[k - 1] = float_of_bits(hi);
     }
+    thresholds[255] = INFINITY; /* no code above 255 */
+    int code = 0;
+    for (uint32_t b = 0; b <= ONE_BITS >> BUCKET_SHIFT; b++) {
+        float lowest = float_of_bits(b << BUCKET_SHIFT);
+        while (code < 255 && thresholds[code] <= lowest)
+            code++;
+        bucket_code[b] = (unsigned char)code;
+    }
+}
+
+/* srgb_byte once the tables exist. */
+static inline unsigned char encode(float linear)
+{
+    if (!(linear > 0))
+        return 0;
+    if (linear >= 1)
+        return 255;
+    uint32_t bits;
+    memcpy(&bits, &linear, sizeof bits);
+    int code = bucket_code[bits >> BUCKET_SHIFT];
+    return (unsigned char)(code + (linear >= thresholds[code]));
 }
 
 unsigned char srgb_byte(float linear)
 {
-    pthread_once(&thresholds_once, find_thresholds);
-    if (!(linear > 0))
-        return 0;
-    int lo = 0, hi = 255; /* the answer lies in [lo, hi] */
-    while (lo < hi) {
-        int mid = (lo + hi + 1) / 2;
-        if (thresholds[mid - 1] <= linear)
-            lo = mid;
-        else
-            hi = mid - 1;
-    }
-    return (unsigned char)lo;
+    pthread_once(&tables_once, make_tables);
+    return encode(linear);
+}
+
+void srgb_encode(unsigned char *dst, const float *src, size_t n)
+{
+    pthread_once(&tables_once, make_tables);
+    for (size_t i = 0; i < n; i++)
+        dst[i] = encode(src[i]);
 }
