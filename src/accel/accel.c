@@ -165,7 +165,7 @@ static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
         float *tfar = ray_lane_tfar((struct RTCRayN *)rh, args->N, i);
         shape_hit h;
         /* A triangle found first may have shortened the ray below q->tmax. */
-        double tmax = fmin(q->tmax[i], (double)*tfar);
+        double tmax = q->tmax[i] < *tfar ? q->tmax[i] : (double)*tfar;
         if (!shape_intersect(s, q->r[i], q->tmin[i], tmax, &h))
             continue;
         q->tmax[i] = h.t;

@@ -10,7 +10,11 @@
  * the point, so they do not hit the surface they leave. */
 static vec3 offset_point(vec3 p, vec3 n)
 {
-    double scale = fmax(1.0, fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z))));
+    /* Comparisons, not fmax: this runs for every ray, and fmax is a call. */
+    double ax = fabs(p.x), ay = fabs(p.y), az = fabs(p.z);
+    double scale = ax > ay ? ax : ay;
+    scale = az > scale ? az : scale;
+    scale = scale > 1.0 ? scale : 1.0;
     return v3_madd(p, n, 1e-7 * scale);
 }
 
