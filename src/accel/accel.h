@@ -36,10 +36,13 @@ typedef struct accel_geometry {
     int instance_count;
 } accel_geometry;
 
-/* Builds the Embree device and scenes: one user geometry for every shape,
- * one triangle scene per mesh sharing its arrays, one Embree instance per
- * placement. Embree's thread pool is limited to g->threads, the threads that
- * will render, so its workers do not compete with them. */
+/* Builds the Embree device and scenes: one user geometry for every shape;
+ * a mesh placed once as world-space triangles in the top scene (its arrays
+ * shared when the placement is the identity, else a moved copy of its
+ * vertices); a mesh placed more often as one triangle scene sharing its
+ * arrays and one Embree instance per placement. Embree's thread pool is
+ * limited to g->threads, the threads that will render, so its workers do not
+ * compete with them. */
 glint_status accel_build(accel **out, const accel_geometry *g, glint_error *err);
 
 /* Releases the Embree objects. NULL is allowed. */

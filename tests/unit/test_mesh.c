@@ -111,6 +111,53 @@ static void test_tessellated_sphere_matches_analytic(void **state)
     free(sm.indices);
 }
 
+/* A lit sphere mesh, rotated and scaled, over a floor that takes its shadow;
+ * with `twice`, the mesh is also placed far out of view, so the visible one
+ * is an Embree instance rather than world-space triangles. */
+static glint_image render_placed(bool twice, sphere_mesh *sm)
+{
+    glint_scene *s = new_scene(160, 120, 40);
+    glint_material matte = glint_material_default();
+    matte.specular = 0;
+    int mat = glint_scene_add_material(s, NULL, &matte, NULL);
+    glint_mesh_data md = {sm->positions, NULL, NULL, sm->vertices, sm->indices, sm->triangles, NULL, mat};
+    int mesh_id = glint_scene_add_mesh(s, "ball", &md, NULL);
+    glint_transform t = glint_transform_scale(glint_transform_identity(), 1.5, 1, 1);
+    t = glint_transform_rotate(t, (glint_vec3){0, 1, 0}, 30);
+    t = glint_transform_translate(t, 0.3, 0, -8);
+    assert_int_equal(glint_scene_add_instance(s, mesh_id, -1, &t, NULL), 0);
+    if (twice) {
+        glint_transform far = glint_transform_translate(glint_transform_identity(), 0, 0, 500);
+        assert_int_equal(glint_scene_add_instance(s, mesh_id, -1, &far, NULL), 1);
+    }
+    glint_shape floor = {.kind = GLINT_SHAPE_PLANE, .center = {0, -1.2, 0}, .normal = {0, 1, 0}};
+    assert_true(glint_scene_add_shape(s, &floor, mat, NULL, NULL) >= 0);
+    glint_light l = {.kind = GLINT_LIGHT_POINT, .position = {-3, 6, -4}, .color = {1, 1, 1}};
+    assert_true(glint_scene_add_light(s, &l, NULL) >= 0);
+    glint_image img;
+    assert_int_equal(glint_render(s, NULL, &img, NULL, NULL), GLINT_OK);
+    glint_scene_free(s);
+    return img;
+}
+
+static void test_placed_once_or_instanced_look_the_same(void **state)
+{
+    sphere_mesh sm = make_sphere(48, 96);
+    glint_image flat_img = render_placed(false, &sm), inst_img = render_placed(true, &sm);
+    int differ = 0, lit = 0;
+    for (int i = 0; i < 3 * flat_img.width * flat_img.height; i++) {
+        differ += fabsf(flat_img.pixels[i] - inst_img.pixels[i]) > 1e-3f;
+        lit += flat_img.pixels[i] > 0.3f;
+    }
+    /* Only float rounding in Embree's hit parameters may differ. */
+    assert_true(lit > 1000);
+    assert_true(differ <= 3 * flat_img.width * flat_img.height / 1000);
+    glint_image_free(&flat_img);
+    glint_image_free(&inst_img);
+    free(sm.positions);
+    free(sm.indices);
+}
+
 /* The quad (-1,-1)..(1,1) at z = -3, split along one diagonal or the other. */
 static glint_image render_quad(bool other_diagonal)
 {
@@ -331,6 +378,7 @@ int main(void)
         cmocka_unit_test(test_tessellated_sphere_matches_analytic),
         cmocka_unit_test(test_quad_split_either_way_gives_the_same_image),
         cmocka_unit_test(test_instances_share_their_mesh),
+        cmocka_unit_test(test_placed_once_or_instanced_look_the_same),
         cmocka_unit_test(test_smooth_normals_and_per_triangle_materials),
         cmocka_unit_test(test_bad_mesh_data),
         cmocka_unit_test(test_scene_file_places_models),
