@@ -500,25 +500,9 @@ color accel_transmission(const accel *a, const ray *r, double tmin, double tmax,
     return er.tfar == -INFINITY ? rgb(0, 0, 0) : q.through[0];
 }
 
-/* Copies a single Embree ray into lane i of a packet. */
-static void set_lane(struct RTCRay8 *p, int i, const struct RTCRay *r)
-{
-    p->org_x[i] = r->org_x;
-    p->org_y[i] = r->org_y;
-    p->org_z[i] = r->org_z;
-    p->tnear[i] = r->tnear;
-    p->dir_x[i] = r->dir_x;
-    p->dir_y[i] = r->dir_y;
-    p->dir_z[i] = r->dir_z;
-    p->time[i] = r->time;
-    p->tfar[i] = r->tfar;
-    p->mask[i] = r->mask;
-    p->id[i] = r->id;
-    p->flags[i] = r->flags;
-}
-
-/* Fills the query's lanes and Embree's packet from the active rays; the
- * inactive lanes get a harmless ray Embree skips. */
+/* Fills the query's lanes and Embree's packet from the active rays, each
+ * covering (0, tmax[i]) as embree_ray would; inactive lanes are left for
+ * Embree to skip. */
 static void packet_init(query *q, const ray r[ACCEL_PACKET], const double tmax[ACCEL_PACKET],
                         const bool active[ACCEL_PACKET], int valid[ACCEL_PACKET], struct RTCRay8 *p)
 {
@@ -532,9 +516,19 @@ static void packet_init(query *q, const ray r[ACCEL_PACKET], const double tmax[A
         q->tmax[i] = active[i] ? tmax[i] : 0;
         q->index[i] = -1;
         q->through[i] = rgb(1, 1, 1);
-        struct RTCRay er;
-        embree_ray(&er, &r[i], 0, q->tmax[i]);
-        set_lane(p, i, &er);
+        p->org_x[i] = (float)r[i].o.x;
+        p->org_y[i] = (float)r[i].o.y;
+        p->org_z[i] = (float)r[i].o.z;
+        p->dir_x[i] = (float)r[i].d.x;
+        p->dir_y[i] = (float)r[i].d.y;
+        p->dir_z[i] = (float)r[i].d.z;
+        p->tnear[i] = 0;
+        float far = (float)q->tmax[i];
+        p->tfar[i] = far < FLT_MAX ? float_up(far) : INFINITY;
+        p->time[i] = 0;
+        p->mask[i] = 0xFFFFFFFFu;
+        p->id[i] = 0;
+        p->flags[i] = 0;
     }
 }
 

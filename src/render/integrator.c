@@ -146,9 +146,10 @@ static color shade_end(tracer *t, const ray *r, const shade_point *sp, color dir
     const glint_material *m = sp->m;
     vec3 n = sp->n, ns = sp->ns, p = sp->s.p;
     bool front = v3_dot(r->d, sp->s.n) < 0;
-    color out = rgb_scale(direct, 1 - (m->transparency + m->refraction));
+    double transmitted = m->transparency + m->refraction;
+    color out = transmitted > 0 ? rgb_scale(direct, 1 - transmitted) : direct;
 
-    if (depth < scene->settings.max_depth) {
+    if (depth < scene->settings.max_depth && (transmitted > 0 || m->reflectivity > 0)) {
         double mirror = m->reflectivity;
         /* Rays bend about the shading normal, unless interpolation turned it
          * away from the ray, where only the geometric one makes sense. */
