@@ -40,7 +40,8 @@ build() { # build DIR [cmake args...]
 # when present, the LeakSanitizer suppressions tests/fuzz/NAME.supp. A failing
 # input is left in build-fuzz/artifacts-NAME/, the log in build-fuzz/fuzz-NAME.log.
 fuzz() {
-    local name=$1 max_len=$2 top=$PWD dir=build-fuzz/run-$name
+    local name=$1 max_len=$2 top=$PWD
+    local dir=build-fuzz/run-$name
     rm -rf "$dir" "build-fuzz/artifacts-$name"
     mkdir -p "$dir/regressions" "build-fuzz/artifacts-$name"
     cp -R "tests/fuzz/corpus/$name" "$dir/corpus"
