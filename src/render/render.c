@@ -185,12 +185,13 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
     j.tiles_x = (s->width + j.tile_size - 1) / j.tile_size;
     j.tiles_total = j.tiles_x * ((s->height + j.tile_size - 1) / j.tile_size);
     atomic_init(&j.next_tile, 0);
-    int threads = o->threads ? o->threads : default_threads();
-    if (threads > j.tiles_total)
-        threads = j.tiles_total;
+    /* Embree builds with every thread asked for; tracing needs no more
+     * threads than tiles. */
+    int build_threads = o->threads ? o->threads : default_threads();
+    int threads = build_threads < j.tiles_total ? build_threads : j.tiles_total;
 
     accel *acc;
-    accel_geometry geo = {threads, scene->shapes, scene->shape_count, scene->meshes, scene->mesh_count,
+    accel_geometry geo = {build_threads, scene->shapes, scene->shape_count, scene->meshes, scene->mesh_count,
                           scene->instances, scene->instance_count};
     glint_status st = accel_build(&acc, &geo, err);
     if (st) {
