@@ -230,7 +230,7 @@ int glint_scene_add_material(glint_scene *scene, const char *name, const glint_m
 
 typedef enum glint_shape_kind {
     GLINT_SHAPE_SPHERE = 0,
-    GLINT_SHAPE_PLANE,      /* infinite (to +-1e6 units) plane through point with normal */
+    GLINT_SHAPE_PLANE,      /* infinite plane through point with normal */
     GLINT_SHAPE_POLYGON,    /* convex planar triangle or quad; its front faces the side from
                                which the points run anticlockwise */
     GLINT_SHAPE_BOX,        /* axis-aligned box between min and max */

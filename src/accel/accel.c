@@ -1,7 +1,9 @@
 /* accel.c - the Embree scenes. Analytic shapes are one user geometry, one
  * primitive per shape; Embree's rays are single precision, so each query
  * keeps the double-precision ray in an extended intersection context and
- * the callbacks test shapes exactly with it. A mesh placed once is a
+ * the callbacks test shapes exactly with it. Planes, unbounded, would be a
+ * candidate for every ray; the queries test them first, in double, and let
+ * Embree look only nearer. A mesh placed once is a
  * triangle geometry of the top scene, in world space; a mesh placed more
  * often is a triangle scene over its own arrays, placed by Embree instances.
  * Either way geometry 1 + i is instance i. */
@@ -26,6 +28,10 @@ struct accel {
     int instance_count;
     const shape *shapes;
     int shape_count;
+    int *prim_shape;          /* user geometry primitive -> shape index (planes left out) */
+    int prim_count;
+    int *planes;              /* shape indices of the planes, tested outside Embree */
+    int plane_count;
 };
 
 /* Below this a shadow segment is taken as fully blocked. */
@@ -147,7 +153,7 @@ static void bounds_fn(const struct RTCBoundsFunctionArguments *args)
 {
     const accel *a = args->geometryUserPtr;
     vec3 lo, hi;
-    shape_bounds(&a->shapes[args->primID], &lo, &hi);
+    shape_bounds(&a->shapes[a->prim_shape[args->primID]], &lo, &hi);
     double pad = 1e-6 * (v3_length(v3_sub(hi, lo)) + fmax(v3_length(lo), v3_length(hi)));
     struct RTCBounds *b = args->bounds_o;
     b->lower_x = pad_down(lo.x, pad);
@@ -161,7 +167,8 @@ static void bounds_fn(const struct RTCBoundsFunctionArguments *args)
 static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
 {
     query *q = (query *)args->context;
-    const shape *s = &q->acc->shapes[args->primID];
+    int index = q->acc->prim_shape[args->primID];
+    const shape *s = &q->acc->shapes[index];
     struct RTCRayHitN *rh = args->rayhit;
     for (unsigned i = 0; i < args->N; i++) {
         if (!args->valid[i])
@@ -174,7 +181,7 @@ static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
             continue;
         q->tmax[i] = h.t;
         q->hit[i] = h;
-        q->index[i] = (int)args->primID;
+        q->index[i] = index;
         *tfar = float_up((float)h.t);
         *rayhit_lane_uint(rh, args->N, HIT_GEOM, i) = args->geomID;
         *rayhit_lane_uint(rh, args->N, HIT_PRIM, i) = args->primID;
@@ -193,14 +200,15 @@ static bool pass_through(query *q, unsigned i, const accel_hit *h)
 static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
 {
     query *q = (query *)args->context;
-    const shape *s = &q->acc->shapes[args->primID];
+    int index = q->acc->prim_shape[args->primID];
+    const shape *s = &q->acc->shapes[index];
     for (unsigned i = 0; i < args->N; i++) {
         if (!args->valid[i])
             continue;
-        if (!seen_add(&q->seen[i], args->primID))
+        if (!seen_add(&q->seen[i], (uint64_t)index))
             continue;
         double tmin = q->tmin[i];
-        accel_hit h = {.shape = (int)args->primID, .instance = -1};
+        accel_hit h = {.shape = index, .instance = -1};
         /* Shapes are convex, so a ray crosses one at most twice. */
         for (int crossing = 0; crossing < 2 && shape_intersect(s, q->r[i], tmin, q->tmax[i], &h.on_shape);
              crossing++) {
@@ -251,10 +259,29 @@ static void error_fn(void *user, enum RTCError code, const char *str)
         error_set(err, GLINT_ERR_EMBREE, "embree error %d: %s", (int)code, str ? str : "");
 }
 
+/* Sorts the shapes into planes, which the queries test themselves (an
+ * unbounded plane would be a candidate for every ray, through a callback),
+ * and the rest, one user-geometry primitive each. False when memory runs
+ * out. */
+static bool sort_shapes(accel *a)
+{
+    a->prim_shape = malloc(((size_t)a->shape_count + 1) * sizeof *a->prim_shape);
+    a->planes = malloc(((size_t)a->shape_count + 1) * sizeof *a->planes);
+    if (!a->prim_shape || !a->planes)
+        return false;
+    for (int i = 0; i < a->shape_count; i++) {
+        if (a->shapes[i].desc.kind == GLINT_SHAPE_PLANE)
+            a->planes[a->plane_count++] = i;
+        else
+            a->prim_shape[a->prim_count++] = i;
+    }
+    return true;
+}
+
 static void add_shapes(accel *a)
 {
     RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_USER);
-    rtcSetGeometryUserPrimitiveCount(g, (unsigned)a->shape_count);
+    rtcSetGeometryUserPrimitiveCount(g, (unsigned)a->prim_count);
     rtcSetGeometryUserData(g, a);
     rtcSetGeometryBoundsFunction(g, bounds_fn, a);
     rtcSetGeometryIntersectFunction(g, intersect_fn);
@@ -386,13 +413,13 @@ glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *er
     rtcSetDeviceErrorFunction(a->device, error_fn, &embree_err);
     a->scene = rtcNewScene(a->device);
     if (a->scene) {
-        if (a->shape_count > 0)
-            add_shapes(a);
-        if (!add_meshes(a, geo)) {
+        if (!sort_shapes(a) || !add_meshes(a, geo)) {
             rtcSetDeviceErrorFunction(a->device, NULL, NULL);
             accel_free(a);
             return error_set(err, GLINT_ERR_NOMEM, "out of memory building the accelerator");
         }
+        if (a->prim_count > 0)
+            add_shapes(a);
         rtcCommitScene(a->scene);
     }
     rtcSetDeviceErrorFunction(a->device, NULL, NULL);
@@ -419,6 +446,8 @@ void accel_free(accel *a)
     for (int i = 0; i < a->instance_count; i++)
         free(a->flat_vertices[i]);
     free(a->flat_vertices);
+    free(a->prim_shape);
+    free(a->planes);
     if (a->device)
         rtcReleaseDevice(a->device);
     free(a);
@@ -445,13 +474,49 @@ static void embree_ray(struct RTCRay *er, const ray *r, double tmin, double tmax
 static bool lane_hit(const query *q, unsigned i, unsigned geom, unsigned inst, float tfar, unsigned prim, float u,
                      float v, accel_hit *hit)
 {
-    if (geom == RTC_INVALID_GEOMETRY_ID)
+    if (geom == RTC_INVALID_GEOMETRY_ID && q->index[i] < 0)
         return false;
-    if (geom == SHAPES_ID && inst == RTC_INVALID_GEOMETRY_ID)
+    if (geom == RTC_INVALID_GEOMETRY_ID || (geom == SHAPES_ID && inst == RTC_INVALID_GEOMETRY_ID))
         *hit = (accel_hit){.t = q->hit[i].t, .shape = q->index[i], .on_shape = q->hit[i], .instance = -1};
     else
         *hit = (accel_hit){.t = tfar, .shape = -1, .instance = instance_of(geom, inst), .triangle = prim, .b1 = u,
                            .b2 = v};
+    return true;
+}
+
+/* The nearest plane lane i crosses in (tmin, tmax): records it as the
+ * lane's hit and shortens the lane's tmax to just past it, so Embree looks
+ * only for something nearer, or as near: a shape touching the plane (a box
+ * standing on a floor) wins the tie, as it would inside Embree. */
+static void nearest_plane(query *q, unsigned i)
+{
+    const accel *a = q->acc;
+    double nearest = q->tmax[i];
+    for (int k = 0; k < a->plane_count; k++) {
+        shape_hit h;
+        if (shape_intersect(&a->shapes[a->planes[k]], q->r[i], q->tmin[i], nearest, &h)) {
+            nearest = h.t;
+            q->hit[i] = h;
+            q->index[i] = a->planes[k];
+        }
+    }
+    if (q->index[i] >= 0)
+        q->tmax[i] = nextafter(nearest, INFINITY);
+}
+
+/* Filters lane i's shadow segment through the planes it crosses; false once
+ * nothing passes. A plane is crossed at most once. */
+static bool through_planes(query *q, unsigned i)
+{
+    const accel *a = q->acc;
+    for (int k = 0; k < a->plane_count; k++) {
+        accel_hit h = {.shape = a->planes[k], .instance = -1};
+        if (shape_intersect(&a->shapes[h.shape], q->r[i], q->tmin[i], q->tmax[i], &h.on_shape)) {
+            h.t = h.on_shape.t;
+            if (!pass_through(q, i, &h))
+                return false;
+        }
+    }
     return true;
 }
 
@@ -474,8 +539,9 @@ bool accel_intersect(const accel *a, const ray *r, double tmin, double tmax, acc
 {
     query q;
     single_init(&q, a, r, tmin, tmax);
+    nearest_plane(&q, 0);
     struct RTCRayHit rh;
-    embree_ray(&rh.ray, r, tmin, tmax);
+    embree_ray(&rh.ray, r, tmin, q.tmax[0]);
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
@@ -493,6 +559,8 @@ color accel_transmission(const accel *a, const ray *r, double tmin, double tmax,
     q.filter = filter;
     q.user = user;
     q.seen = &seen;
+    if (!through_planes(&q, 0))
+        return rgb(0, 0, 0);
     struct RTCRay er;
     embree_ray(&er, r, tmin, tmax);
     rtcOccluded1(a->scene, &q.ctx, &er);
@@ -540,10 +608,15 @@ void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const bool acti
     query q;
     int valid[ACCEL_PACKET];
     struct RTCRayHit8 rh;
-    packet_init(&q, r, far, active, valid, &rh.ray);
     q.acc = a;
-    for (int i = 0; i < ACCEL_PACKET; i++)
+    packet_init(&q, r, far, active, valid, &rh.ray);
+    for (unsigned i = 0; i < ACCEL_PACKET; i++) {
         rh.hit.geomID[i] = rh.hit.primID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+        if (active[i] && a->plane_count > 0) {
+            nearest_plane(&q, i);
+            rh.ray.tfar[i] = q.tmax[i] < FLT_MAX ? float_up((float)q.tmax[i]) : INFINITY;
+        }
+    }
     rtcIntersect8(valid, a->scene, &q.ctx, &rh);
     for (unsigned i = 0; i < ACCEL_PACKET; i++)
         found[i] = active[i] && lane_hit(&q, i, rh.hit.geomID[i], rh.hit.instID[0][i], rh.ray.tfar[i],
@@ -558,16 +631,23 @@ void accel_transmission8(const accel *a, const ray r[ACCEL_PACKET], const double
     seen_set seen[ACCEL_PACKET];
     int valid[ACCEL_PACKET];
     struct RTCRay8 p;
-    packet_init(&q, r, tmax, active, valid, &p);
-    for (int i = 0; i < ACCEL_PACKET; i++)
-        seen_init(&seen[i]);
+    bool blocked[ACCEL_PACKET] = {false};
     q.acc = a;
+    packet_init(&q, r, tmax, active, valid, &p);
     q.filter = filter;
     q.user = user;
     q.seen = seen;
+    for (unsigned i = 0; i < ACCEL_PACKET; i++) {
+        seen_init(&seen[i]);
+        /* A lane a plane blocks needs no search. */
+        if (active[i] && a->plane_count > 0 && !through_planes(&q, i)) {
+            blocked[i] = true;
+            valid[i] = 0;
+        }
+    }
     rtcOccluded8(valid, a->scene, &q.ctx, &p);
     for (int i = 0; i < ACCEL_PACKET; i++)
         seen_free(&seen[i]);
     for (int i = 0; i < ACCEL_PACKET; i++)
-        through[i] = !active[i] || p.tfar[i] == -INFINITY ? rgb(0, 0, 0) : q.through[i];
+        through[i] = !active[i] || blocked[i] || p.tfar[i] == -INFINITY ? rgb(0, 0, 0) : q.through[i];
 }

@@ -134,6 +134,34 @@ static void test_shadow_ratio(void **state)
     glint_scene_free(shadowed);
 }
 
+/* Planes are tested outside Embree: they are infinite, seen from anywhere,
+ * and a shape touching a plane wins the tie where they meet. */
+static void test_planes_are_infinite_and_lose_ties(void **state)
+{
+    /* From three million units up, looking at a point 30 million away: the
+     * ray never comes within a million units of the origin. */
+    glint_scene *far = new_scene(5, 5, (glint_vec3){0, 3e6, 0}, (glint_vec3){3e7, 0, 0}, (glint_vec3){0, 1, 0}, 1);
+    glint_shape plane = {.kind = GLINT_SHAPE_PLANE, .center = {0, 0, 0}, .normal = {0, 1, 0}};
+    assert_true(glint_scene_add_shape(far, &plane, flat(far, 0, 1, 0), NULL, NULL) >= 0);
+    glint_image a = render(far, 1);
+    assert_near(centre(&a)[1], 1, 1e-6);
+    glint_image_free(&a);
+    glint_scene_free(far);
+    /* From inside a box standing on the floor, looking down: the box's
+     * bottom face and the floor are the same distance away; the box wins. */
+    glint_scene *tie = new_scene(5, 5, (glint_vec3){0, 0.5, 0}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, 30);
+    assert_true(glint_scene_add_shape(tie, &plane, flat(tie, 0, 1, 0), NULL, NULL) >= 0);
+    glint_shape box = {.kind = GLINT_SHAPE_BOX, .min = {-1, 0, -1}, .max = {1, 1, 1}};
+    assert_true(glint_scene_add_shape(tie, &box, flat(tie, 1, 0, 0), NULL, NULL) >= 0);
+    glint_image b = render(tie, 1);
+    for (int i = 0; i < 25; i++) {
+        assert_near(b.pixels[3 * i], 1, 1e-6);
+        assert_near(b.pixels[3 * i + 1], 0, 1e-6);
+    }
+    glint_image_free(&b);
+    glint_scene_free(tie);
+}
+
 static int red_glass(glint_scene *s)
 {
     glint_material m = glint_material_default();
@@ -433,6 +461,7 @@ int main(void)
         cmocka_unit_test(test_progress_reports_every_tile_in_order),
         cmocka_unit_test(test_cancel_flag_stops_the_render),
         cmocka_unit_test(test_bad_transforms_are_refused),
+        cmocka_unit_test(test_planes_are_infinite_and_lose_ties),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
