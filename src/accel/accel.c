@@ -500,8 +500,13 @@ static void nearest_plane(query *q, unsigned i)
             q->index[i] = a->planes[k];
         }
     }
-    if (q->index[i] >= 0)
-        q->tmax[i] = nextafter(nearest, INFINITY);
+    if (q->index[i] >= 0) {
+        /* nextafter(nearest, INFINITY) for positive finite nearest, inline */
+        uint64_t bits;
+        memcpy(&bits, &nearest, sizeof bits);
+        bits++;
+        memcpy(&q->tmax[i], &bits, sizeof bits);
+    }
 }
 
 /* Filters lane i's shadow segment through the planes it crosses; false once
