@@ -396,6 +396,79 @@ static void test_cornell_box(void **state)
     glint_scene_free(s);
 }
 
+/* Renders s (its meshes placed once each, as imported) at w x h with a
+ * white point light near the camera and a black background. */
+static glint_image render_imported(glint_scene *s, int w, int h, glint_camera cam, glint_vec3 lamp)
+{
+    glint_settings st = glint_settings_default();
+    st.width = w;
+    st.height = h;
+    st.background = (glint_color){0, 0, 0};
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    glint_light l = {.kind = GLINT_LIGHT_POINT, .position = lamp, .color = {1, 1, 1}};
+    assert_true(glint_scene_add_light(s, &l, NULL) >= 0);
+    for (int i = 0; i < s->mesh_count; i++)
+        assert_true(glint_scene_add_instance(s, i, -1, NULL, NULL) >= 0);
+    glint_image img;
+    assert_int_equal(glint_render(s, NULL, &img, NULL, NULL), GLINT_OK);
+    return img;
+}
+
+/* The bunny seen from the front: every pixel it covers lies inside its
+ * bounding box as the camera projects it, and it covers a plausible share
+ * of that box (a bunny, not a speck or a block). */
+static void test_bunny_renders_inside_its_bounds(void **state)
+{
+    glint_scene *s = new_scene();
+    const mesh *m = import_shared(s, "stanford-bunny.obj");
+    vec3 lo = m->lo, hi = m->hi, c = v3_scale(v3_add(lo, hi), 0.5);
+    glint_camera cam = {{c.x, c.y, c.z + 0.5}, {c.x, c.y, c.z}, {0, 1, 0}, 30};
+    const int w = 200, h = 200;
+    glint_image img = render_imported(s, w, h, cam, cam.position);
+    /* The box's corners through the pinhole: x, y in pixels. */
+    double half = tan(15 * M_PI / 180), x0 = w, x1 = 0, y0 = h, y1 = 0;
+    for (int k = 0; k < 8; k++) {
+        vec3 p = v3(k & 1 ? hi.x : lo.x, k & 2 ? hi.y : lo.y, k & 4 ? hi.z : lo.z);
+        double depth = cam.position.z - p.z;
+        double px = (1 + (p.x - c.x) / depth / half) * w / 2, py = (1 - (p.y - c.y) / depth / half) * h / 2;
+        x0 = fmin(x0, px);
+        x1 = fmax(x1, px);
+        y0 = fmin(y0, py);
+        y1 = fmax(y1, py);
+    }
+    int covered = 0, outside = 0;
+    for (int y = 0; y < h; y++)
+        for (int x = 0; x < w; x++) {
+            const float *p = img.pixels + 3 * ((size_t)y * w + x);
+            if (p[0] + p[1] + p[2] <= 0)
+                continue;
+            covered++;
+            outside += x + 1 < x0 || x > x1 + 1 || y + 1 < y0 || y > y1 + 1;
+        }
+    double box = (x1 - x0) * (y1 - y0);
+    print_message("bunny: %d pixels in a projected box of %.0f (%.0f%%)\n", covered, box, 100 * covered / box);
+    assert_int_equal(outside, 0);
+    assert_true(covered > 0.35 * box && covered < 0.9 * box);
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
+/* The Cornell box through its open front, lit from under the ceiling: the
+ * left wall renders red and the right wall green. */
+static void test_cornell_box_renders_red_and_green_walls(void **state)
+{
+    glint_scene *s = new_scene();
+    import_shared(s, "CornellBox-Original.obj");
+    glint_camera cam = {{0, 1, 3.9}, {0, 1, 0}, {0, 1, 0}, 37};
+    glint_image img = render_imported(s, 64, 64, cam, (glint_vec3){0, 1.9, 0});
+    const float *left = img.pixels + 3 * (32 * 64 + 3), *right = img.pixels + 3 * (32 * 64 + 60);
+    assert_true(left[0] > 0.05f && left[0] > 3 * left[1] && left[0] > 3 * left[2]);
+    assert_true(right[1] > 0.05f && right[1] > 2 * right[0] && right[1] > 2 * right[2]);
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
 /* ------------------------------------------------------------------- OBJ */
 
 static void test_obj_parts_and_mtl(void **state)
@@ -1703,6 +1776,8 @@ int main(void)
         cmocka_unit_test(test_bunny),
         cmocka_unit_test(test_teapot),
         cmocka_unit_test(test_cornell_box),
+        cmocka_unit_test(test_bunny_renders_inside_its_bounds),
+        cmocka_unit_test(test_cornell_box_renders_red_and_green_walls),
         cmocka_unit_test(test_obj_parts_and_mtl),
         cmocka_unit_test(test_obj_imported_twice),
         cmocka_unit_test(test_obj_without_mtl_file),
