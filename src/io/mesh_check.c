@@ -47,24 +47,40 @@ const char *mesh_import_extension(mesh_format f)
 #define PLY_MAX_ELEMENTS 64
 #define PLY_MAX_PROPERTIES 64
 
-/* A header line split into words, each cut to fit; n counts them all. */
+/* A header line split into words, each cut to fit; n counts them all.
+ * `control` is set when the line holds a control character other than a
+ * tab, or a carriage return just before its newline: Assimp ends lines at
+ * some of them (form feed, NUL) where this check would not, and the two
+ * would then read different headers. */
 typedef struct line_words {
     char w[PLY_MAX_WORDS][40];
     int n;
+    bool control;
 } line_words;
 
-/* Splits the line at data[*pos...] into words and moves *pos past it. */
+static bool is_blank(unsigned char c)
+{
+    return c == ' ' || c == '\t';
+}
+
+/* Splits the line at data[*pos...] into words at spaces and tabs and moves
+ * *pos past it. */
 static void next_line(const unsigned char *data, size_t size, size_t *pos, line_words *lw)
 {
     memset(lw, 0, sizeof *lw);
     size_t i = *pos;
+    for (size_t k = i; k < size && data[k] != '\n'; k++) {
+        bool crlf = data[k] == '\r' && k + 1 < size && data[k + 1] == '\n';
+        if ((data[k] < 0x20 && !is_blank(data[k]) && !crlf) || data[k] == 0x7f)
+            lw->control = true;
+    }
     while (i < size && data[i] != '\n') {
-        while (i < size && data[i] != '\n' && isspace(data[i]))
+        while (i < size && data[i] != '\n' && (is_blank(data[i]) || data[i] == '\r'))
             i++;
         if (i >= size || data[i] == '\n')
             break;
         size_t len = 0;
-        while (i < size && !isspace(data[i])) {
+        while (i < size && data[i] != '\n' && !is_blank(data[i]) && data[i] != '\r') {
             if (lw->n < PLY_MAX_WORDS && len + 1 < sizeof lw->w[0])
                 lw->w[lw->n][len++] = isprint(data[i]) ? (char)data[i] : '?';
             i++;
@@ -180,7 +196,9 @@ static glint_status read_header(const unsigned char *data, size_t size, const ch
         next_line(data, size, &pos, &lw);
         const char *key = lw.w[0];
         bool ok = false;
-        if (line == 1) {
+        if (lw.control) {
+            ok = false;
+        } else if (line == 1) {
             ok = lw.n == 1 && strcmp(key, "ply") == 0;
         } else if (strcmp(key, "comment") == 0 || strcmp(key, "obj_info") == 0) {
             ok = true;
