@@ -21,6 +21,7 @@
 #include <zlib.h>
 
 #include "glint.h"
+#include "tmp_tree.h"
 #include "io/srgb.h"
 #include "io/texture_image.h"
 
@@ -80,31 +81,6 @@ static int count_entries(const char *dir, const char *part)
             n++;
     closedir(d);
     return n;
-}
-
-static void remove_tree(const char *path)
-{
-    struct stat st;
-    if (lstat(path, &st) != 0)
-        return;
-    if (S_ISDIR(st.st_mode)) {
-        chmod(path, 0700);
-        DIR *d = opendir(path);
-        if (d) {
-            struct dirent *e;
-            char child[PATH_SIZE];
-            while ((e = readdir(d)) != NULL) {
-                if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
-                    continue;
-                snprintf(child, sizeof child, "%s/%s", path, e->d_name);
-                remove_tree(child);
-            }
-            closedir(d);
-        }
-        rmdir(path);
-    } else {
-        unlink(path);
-    }
 }
 
 static void expect_error(glint_status got, const glint_error *err, glint_status want,

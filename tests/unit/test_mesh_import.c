@@ -23,6 +23,7 @@
 #include <unistd.h>
 
 #include "glint.h"
+#include "tmp_tree.h"
 #include "io/text_scan.h"
 #include "io/triangulate.h"
 #include "scene/scene.h"
@@ -40,30 +41,6 @@ static void near_or_fail(double a, double b, double tolerance, const char *expr,
 {
     if (!(fabs(a - b) <= tolerance))
         fail_msg("%s:%d: %s = %.17g, expected %.17g within %g", file, line, expr, a, b, tolerance);
-}
-
-static void remove_tree(const char *path)
-{
-    struct stat st;
-    if (lstat(path, &st) != 0)
-        return;
-    if (S_ISDIR(st.st_mode)) {
-        DIR *d = opendir(path);
-        if (d) {
-            struct dirent *e;
-            char child[PATH_SIZE];
-            while ((e = readdir(d)) != NULL) {
-                if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
-                    continue;
-                snprintf(child, sizeof child, "%s/%s", path, e->d_name);
-                remove_tree(child);
-            }
-            closedir(d);
-        }
-        rmdir(path);
-    } else {
-        unlink(path);
-    }
 }
 
 static void tmp_path(char *buf, const char *name)

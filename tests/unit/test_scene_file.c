@@ -21,6 +21,7 @@
 #include <zlib.h>
 
 #include "glint.h"
+#include "tmp_tree.h"
 #include "scene/scene.h"
 
 #define PATH_SIZE 1024
@@ -277,29 +278,6 @@ static void write_table_pngs(void)
     write_tmp("empty.png", "");
     static const unsigned char green[3] = {0, 255, 0};
     write_png("one.png", 1, 1, green);
-}
-
-static void remove_tree(const char *path)
-{
-    struct stat st;
-    if (lstat(path, &st) != 0)
-        return;
-    if (S_ISDIR(st.st_mode)) {
-        DIR *d = opendir(path);
-        struct dirent *e;
-        while (d && (e = readdir(d)) != NULL) {
-            if (strcmp(e->d_name, ".") == 0 || strcmp(e->d_name, "..") == 0)
-                continue;
-            char child[PATH_SIZE];
-            snprintf(child, sizeof child, "%s/%s", path, e->d_name);
-            remove_tree(child);
-        }
-        if (d)
-            closedir(d);
-        rmdir(path);
-    } else {
-        unlink(path);
-    }
 }
 
 /* ------------------------------------------------------------- fixtures */
