@@ -173,7 +173,7 @@ static uint64_t trace_packets(bench *b, int x0, int y0, int x1, int y1, struct R
     uint64_t rays = 0;
     for (int y = y0; y < y1; y += 2) {
         for (int x = x0; x < x1; x += 4) {
-            int valid[8];
+            _Alignas(32) int valid[8];
             ray r[8];
             struct RTCRayHit8 rh;
             for (int i = 0; i < 8; i++) {
@@ -189,7 +189,7 @@ static uint64_t trace_packets(bench *b, int x0, int y0, int x1, int y1, struct R
             }
             rtcIntersect8(valid, b->rtc, ctx, &rh);
             for (int l = 0; l < b->scene->light_count; l++) {
-                int svalid[8];
+                _Alignas(32) int svalid[8];
                 struct RTCRay8 sr;
                 for (int i = 0; i < 8; i++) {
                     struct RTCRay one;

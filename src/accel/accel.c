@@ -611,7 +611,7 @@ void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const bool acti
     static const double far[ACCEL_PACKET] = {INFINITY, INFINITY, INFINITY, INFINITY,
                                              INFINITY, INFINITY, INFINITY, INFINITY};
     query q;
-    int valid[ACCEL_PACKET];
+    _Alignas(32) int valid[ACCEL_PACKET];
     struct RTCRayHit8 rh;
     q.acc = a;
     packet_init(&q, r, far, active, valid, &rh.ray);
@@ -634,7 +634,7 @@ void accel_transmission8(const accel *a, const ray r[ACCEL_PACKET], const double
 {
     query q;
     seen_set seen[ACCEL_PACKET];
-    int valid[ACCEL_PACKET];
+    _Alignas(32) int valid[ACCEL_PACKET];
     struct RTCRay8 p;
     bool blocked[ACCEL_PACKET] = {false};
     q.acc = a;
