@@ -32,7 +32,14 @@ struct accel {
     int prim_count;
     int *planes;              /* shape indices of the planes, tested outside Embree */
     int plane_count;
+    const bool *shape_opaque; /* per shape, or NULL */
 };
+
+/* True when shape `index` is known to block all light. */
+static bool shape_opaque(const accel *a, int index)
+{
+    return a->shape_opaque && a->shape_opaque[index];
+}
 
 /* Below this a shadow segment is taken as fully blocked. */
 #define TRANSMISSION_CUTOFF 1e-4f
@@ -202,9 +209,17 @@ static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
     query *q = (query *)args->context;
     int index = q->acc->prim_shape[args->primID];
     const shape *s = &q->acc->shapes[index];
+    bool opaque = shape_opaque(q->acc, index);
     for (unsigned i = 0; i < args->N; i++) {
         if (!args->valid[i])
             continue;
+        if (opaque) {
+            /* Blocking twice is harmless, so no record of it is kept. */
+            shape_hit h;
+            if (shape_intersect(s, q->r[i], q->tmin[i], q->tmax[i], &h))
+                *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
+            continue;
+        }
         if (!seen_add(&q->seen[i], (uint64_t)index))
             continue;
         double tmin = q->tmin[i];
@@ -291,25 +306,26 @@ static void add_shapes(accel *a)
     rtcReleaseGeometry(g);
 }
 
-/* A triangle geometry over the mesh's indices, with the given vertices and
- * the shadow filter. */
-static RTCGeometry triangles(accel *a, const mesh *m, const float *positions)
+/* A triangle geometry over the mesh's indices, with the given vertices and,
+ * unless every placement of it is opaque, the shadow filter. */
+static RTCGeometry triangles(accel *a, const mesh *m, const float *positions, bool opaque)
 {
     RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_TRIANGLE);
     rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, positions, 0, 3 * sizeof(float),
                                (size_t)m->vertex_count);
     rtcSetSharedGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, m->indices, 0, 3 * sizeof(uint32_t),
                                (size_t)m->triangle_count);
-    rtcSetGeometryOccludedFilterFunction(g, triangle_occlusion_filter);
+    if (!opaque)
+        rtcSetGeometryOccludedFilterFunction(g, triangle_occlusion_filter);
     rtcCommitGeometry(g);
     return g;
 }
 
 /* A triangle scene over the mesh's own arrays: shared, not copied. */
-static RTCScene mesh_scene(accel *a, const mesh *m)
+static RTCScene mesh_scene(accel *a, const mesh *m, bool opaque)
 {
     RTCScene s = rtcNewScene(a->device);
-    RTCGeometry g = triangles(a, m, m->positions);
+    RTCGeometry g = triangles(a, m, m->positions, opaque);
     rtcAttachGeometry(s, g);
     rtcReleaseGeometry(g);
     rtcCommitScene(s);
@@ -336,7 +352,7 @@ static void add_instance(accel *a, const instance *inst, unsigned id)
  * when the placement is the identity; otherwise the vertices are moved into
  * a copy (12 bytes a vertex, padded as Embree reads). False when memory
  * runs out. */
-static bool add_flat(accel *a, const mesh *m, const instance *inst, int index)
+static bool add_flat(accel *a, const mesh *m, const instance *inst, int index, bool opaque)
 {
     const float *positions = m->positions;
     if (!xf_is_identity(&inst->to_world)) {
@@ -354,33 +370,36 @@ static bool add_flat(accel *a, const mesh *m, const instance *inst, int index)
         a->flat_vertices[index] = v;
         positions = v;
     }
-    RTCGeometry g = triangles(a, m, positions);
+    RTCGeometry g = triangles(a, m, positions, opaque);
     rtcAttachGeometryByID(a->scene, g, 1u + (unsigned)index);
     rtcReleaseGeometry(g);
     return true;
 }
 
 /* Adds the meshes: each placed once flat, the others as instances of one
- * triangle scene per mesh. False when memory runs out. */
+ * triangle scene per mesh, which is opaque when every placement is. False
+ * when memory runs out. */
 static bool add_meshes(accel *a, const accel_geometry *geo)
 {
     int *uses = calloc((size_t)geo->mesh_count + 1, sizeof *uses);
-    if (!uses)
-        return false;
-    for (int i = 0; i < geo->instance_count; i++)
+    bool *see_through = calloc((size_t)geo->mesh_count + 1, sizeof *see_through);
+    bool ok = uses && see_through;
+    for (int i = 0; ok && i < geo->instance_count; i++) {
         uses[geo->instances[i].mesh]++;
-    bool ok = true;
-    for (; a->mesh_count < geo->mesh_count; a->mesh_count++)
+        see_through[geo->instances[i].mesh] |= !(geo->instance_opaque && geo->instance_opaque[i]);
+    }
+    for (; ok && a->mesh_count < geo->mesh_count; a->mesh_count++)
         if (uses[a->mesh_count] > 1)
-            a->mesh_scenes[a->mesh_count] = mesh_scene(a, &geo->meshes[a->mesh_count]);
+            a->mesh_scenes[a->mesh_count] = mesh_scene(a, &geo->meshes[a->mesh_count], !see_through[a->mesh_count]);
     for (int i = 0; ok && i < geo->instance_count; i++) {
         const instance *inst = &geo->instances[i];
         if (uses[inst->mesh] == 1)
-            ok = add_flat(a, &geo->meshes[inst->mesh], inst, i);
+            ok = add_flat(a, &geo->meshes[inst->mesh], inst, i, !see_through[inst->mesh]);
         else
             add_instance(a, inst, 1u + (unsigned)i);
     }
     free(uses);
+    free(see_through);
     return ok;
 }
 
@@ -398,6 +417,7 @@ glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *er
     a->instance_count = geo->instance_count;
     a->shapes = geo->shapes;
     a->shape_count = geo->shape_count;
+    a->shape_opaque = geo->shape_opaque;
     char config[32] = "";
     if (geo->threads > 0)
         snprintf(config, sizeof config, "threads=%d", geo->threads);
@@ -517,6 +537,8 @@ static bool through_planes(query *q, unsigned i)
     for (int k = 0; k < a->plane_count; k++) {
         accel_hit h = {.shape = a->planes[k], .instance = -1};
         if (shape_intersect(&a->shapes[h.shape], q->r[i], q->tmin[i], q->tmax[i], &h.on_shape)) {
+            if (shape_opaque(a, h.shape))
+                return false;
             h.t = h.on_shape.t;
             if (!pass_through(q, i, &h))
                 return false;

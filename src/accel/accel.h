@@ -34,6 +34,12 @@ typedef struct accel_geometry {
     int mesh_count;
     const instance *instances;
     int instance_count;
+    /* What the caller knows to block all light (NULL: nothing known): per
+     * shape, and per instance (every triangle of it). A shadow segment
+     * stops at an opaque surface without asking the filter, and an opaque
+     * mesh's triangles need no filter callback at all. */
+    const bool *shape_opaque;
+    const bool *instance_opaque;
 } accel_geometry;
 
 /* Builds the Embree device and scenes: one user geometry for every shape;

@@ -55,8 +55,7 @@ static color shadow_filter(void *user, const ray *r, const accel_hit *hit)
 {
     const glint_scene *scene = ((tracer *)user)->scene;
     const glint_material *m = hit_material(scene, hit);
-    double amount = m->transparency + m->refraction;
-    if (amount <= 0)
+    if (material_is_opaque(m))
         return rgb(0, 0, 0);
     accel_hit h = *hit;
     surface s;
@@ -64,7 +63,7 @@ static color shadow_filter(void *user, const ray *r, const accel_hit *hit)
     bool closed = h.shape < 0 || shape_is_closed(&scene->shapes[h.shape]);
     if (closed && v3_dot(r->d, s.n) > 0)
         return rgb(1, 1, 1);
-    return rgb_scale(material_filter(m, surface_color(scene, &h, m, &s)), amount);
+    return rgb_scale(material_filter(m, surface_color(scene, &h, m, &s)), m->transparency + m->refraction);
 }
 
 /* What shading needs of a hit, between finding it and finishing its colour. */

@@ -50,6 +50,11 @@ glint_status material_validate(const glint_material *m, int texture_count, glint
     return GLINT_OK;
 }
 
+bool material_is_opaque(const glint_material *m)
+{
+    return m->transparency + m->refraction <= 0;
+}
+
 color material_filter(const glint_material *m, color c)
 {
     return rgb_madd(rgb(1 - m->tint, 1 - m->tint, 1 - m->tint), c, m->tint);

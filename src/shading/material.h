@@ -14,6 +14,9 @@ typedef struct material {
  * the first bad value. */
 glint_status material_validate(const glint_material *m, int texture_count, glint_error *err);
 
+/* True when no light passes the material: no transparency, no refraction. */
+bool material_is_opaque(const glint_material *m);
+
 /* Colour a material transmits: (1 - tint) + tint * surface colour. */
 color material_filter(const glint_material *m, color surface_color);
 
