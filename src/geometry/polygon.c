@@ -49,6 +49,8 @@ glint_status polygon_init(shape *s, glint_error *err)
             return error_set(err, GLINT_ERR_INVALID, "polygon is not convex");
     }
     s->poly_normal = normal;
+    for (int i = 0; i < n; i++)
+        s->edge_in[i] = v3_cross(normal, v3_sub(p[(i + 1) % n], p[i]));
     s->plane_u = v3_normalize(v3_sub(p[1], p[0]));
     s->plane_v = v3_normalize(v3_sub(p[n - 1], p[0]));
     return GLINT_OK;
@@ -62,10 +64,10 @@ bool polygon_intersect(const shape *s, const ray *r, double tmin, double tmax, s
     if (!plane_hit(d->points[0], s->poly_normal, r, tmin, tmax, &t))
         return false;
     vec3 p = ray_at(r, t);
-    /* Inside a convex polygon is to the left of every edge; on an edge counts. */
+    /* Inside a convex polygon is to the left of every edge, on the side
+     * its inward normal points to; on an edge counts. */
     for (int i = 0; i < n; i++) {
-        vec3 a = d->points[i], b = d->points[(i + 1) % n];
-        if (v3_dot(v3_cross(v3_sub(b, a), v3_sub(p, a)), s->poly_normal) < 0)
+        if (v3_dot(v3_sub(p, d->points[i]), s->edge_in[i]) < 0)
             return false;
     }
     hit->t = t;

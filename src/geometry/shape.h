@@ -18,6 +18,7 @@ typedef struct shape {
     glint_shape desc;         /* object-space description, validated */
     vec3 poly_normal;         /* polygon: unit normal from the point order */
     vec3 plane_u, plane_v;    /* plane and polygon: unit tangents (u, v axes) */
+    vec3 edge_in[4];          /* polygon: poly_normal x edge i, pointing inside */
     transform to_world, to_object;
     bool has_transform;       /* false: to_world is the identity */
     int material;
