@@ -36,27 +36,33 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
     return KINDS[desc->kind].init(s, err);
 }
 
-/* The direction is mapped but not normalised, so a point's ray parameter t
- * is the same in both spaces and hits need no conversion back. */
+/* For a shape with a transform. The direction is mapped but not
+ * normalised, so a point's ray parameter t is the same in both spaces and
+ * hits need no conversion back. */
 static ray object_ray(const shape *s, const ray *r)
 {
-    if (!s->has_transform)
-        return *r;
     ray o = {xf_point(&s->to_object, r->o), xf_vector(&s->to_object, r->d)};
     return o;
 }
 
 bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
+    /* Most shapes have no transform: their rays need no copy. */
+    if (!s->has_transform)
+        return KINDS[s->desc.kind].intersect(s, r, tmin, tmax, hit);
     ray o = object_ray(s, r);
     return KINDS[s->desc.kind].intersect(s, &o, tmin, tmax, hit);
 }
 
 void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *out)
 {
-    ray o = object_ray(s, r);
     out->p = ray_at(r, hit->t);
-    out->p_obj = ray_at(&o, hit->t);
+    if (s->has_transform) {
+        ray o = object_ray(s, r);
+        out->p_obj = ray_at(&o, hit->t);
+    } else {
+        out->p_obj = out->p;
+    }
     out->part = hit->part;
     out->u = out->v = 0;
     KINDS[s->desc.kind].surface(s, hit->part, out);
