@@ -92,7 +92,7 @@ static void seen_free(seen_set *s)
         free(s->keys);
 }
 
-/* A query's state, for one ray or a packet of ACCEL_PACKET; Embree passes
+/* A query's state, for a packet of ACCEL_PACKET rays; Embree passes
  * &ctx back to the callbacks, and ctx comes first so the callbacks can
  * recover the whole query from it. Lane i holds the double-precision ray
  * of Embree's lane i. */
@@ -102,7 +102,7 @@ typedef struct query {
     accel_filter_fn filter;
     void *user;
     const ray *r[ACCEL_PACKET];
-    double tmin[ACCEL_PACKET], tmax[ACCEL_PACKET];
+    double tmax[ACCEL_PACKET];   /* every query starts at t = 0 */
     int index[ACCEL_PACKET];
     shape_hit hit[ACCEL_PACKET];
     color through[ACCEL_PACKET];
@@ -141,16 +141,6 @@ static inline float float_up(float x)
     return x;
 }
 
-/* The next float towards zero from positive finite x: nextafterf(x, 0). */
-static inline float float_toward_zero(float x)
-{
-    uint32_t b;
-    memcpy(&b, &x, sizeof b);
-    b--;
-    memcpy(&x, &b, sizeof x);
-    return x;
-}
-
 /* Pads float bounds so the float ray in Embree's traversal never misses a
  * box that the exact double test would hit. */
 static float pad_down(double v, double pad) { return nextafterf((float)(v - pad), -INFINITY); }
@@ -184,7 +174,7 @@ static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
         shape_hit h;
         /* A triangle found first may have shortened the ray below q->tmax. */
         double tmax = q->tmax[i] < *tfar ? q->tmax[i] : (double)*tfar;
-        if (!shape_intersect(s, q->r[i], q->tmin[i], tmax, &h))
+        if (!shape_intersect(s, q->r[i], 0, tmax, &h))
             continue;
         q->tmax[i] = h.t;
         q->hit[i] = h;
@@ -216,13 +206,13 @@ static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
         if (opaque) {
             /* Blocking twice is harmless, so no record of it is kept. */
             shape_hit h;
-            if (shape_intersect(s, q->r[i], q->tmin[i], q->tmax[i], &h))
+            if (shape_intersect(s, q->r[i], 0, q->tmax[i], &h))
                 *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
             continue;
         }
         if (!seen_add(&q->seen[i], (uint64_t)index))
             continue;
-        double tmin = q->tmin[i];
+        double tmin = 0;
         accel_hit h = {.shape = index, .instance = -1};
         /* Shapes are convex, so a ray crosses one at most twice. */
         for (int crossing = 0; crossing < 2 && shape_intersect(s, q->r[i], tmin, q->tmax[i], &h.on_shape);
@@ -473,23 +463,6 @@ void accel_free(accel *a)
     free(a);
 }
 
-/* Fills Embree's single-precision ray so that it covers [tmin, tmax]. */
-static void embree_ray(struct RTCRay *er, const ray *r, double tmin, double tmax)
-{
-    er->org_x = (float)r->o.x;
-    er->org_y = (float)r->o.y;
-    er->org_z = (float)r->o.z;
-    er->dir_x = (float)r->d.x;
-    er->dir_y = (float)r->d.y;
-    er->dir_z = (float)r->d.z;
-    er->tnear = (float)tmin > 0 ? float_toward_zero((float)tmin) : 0;
-    er->tfar = isfinite(tmax) && (float)tmax < FLT_MAX ? float_up((float)tmax) : INFINITY;
-    er->time = 0;
-    er->mask = 0xFFFFFFFFu;
-    er->id = 0;
-    er->flags = 0;
-}
-
 /* The hit of lane i once Embree is done with it. */
 static bool lane_hit(const query *q, unsigned i, unsigned geom, unsigned inst, float tfar, unsigned prim, float u,
                      float v, accel_hit *hit)
@@ -514,7 +487,7 @@ static void nearest_plane(query *q, unsigned i)
     double nearest = q->tmax[i];
     for (int k = 0; k < a->plane_count; k++) {
         shape_hit h;
-        if (shape_intersect(&a->shapes[a->planes[k]], q->r[i], q->tmin[i], nearest, &h)) {
+        if (shape_intersect(&a->shapes[a->planes[k]], q->r[i], 0, nearest, &h)) {
             nearest = h.t;
             q->hit[i] = h;
             q->index[i] = a->planes[k];
@@ -536,7 +509,7 @@ static bool through_planes(query *q, unsigned i)
     const accel *a = q->acc;
     for (int k = 0; k < a->plane_count; k++) {
         accel_hit h = {.shape = a->planes[k], .instance = -1};
-        if (shape_intersect(&a->shapes[h.shape], q->r[i], q->tmin[i], q->tmax[i], &h.on_shape)) {
+        if (shape_intersect(&a->shapes[h.shape], q->r[i], 0, q->tmax[i], &h.on_shape)) {
             if (shape_opaque(a, h.shape))
                 return false;
             h.t = h.on_shape.t;
@@ -545,54 +518,6 @@ static bool through_planes(query *q, unsigned i)
         }
     }
     return true;
-}
-
-/* Sets up a query of one ray (lane 0) without touching the other lanes. */
-static void single_init(query *q, const accel *a, const ray *r, double tmin, double tmax)
-{
-    rtcInitIntersectContext(&q->ctx);
-    q->acc = a;
-    q->filter = NULL;
-    q->user = NULL;
-    q->seen = NULL;
-    q->r[0] = r;
-    q->tmin[0] = tmin;
-    q->tmax[0] = tmax;
-    q->index[0] = -1;
-    q->through[0] = rgb(1, 1, 1);
-}
-
-bool accel_intersect(const accel *a, const ray *r, double tmin, double tmax, accel_hit *hit)
-{
-    query q;
-    single_init(&q, a, r, tmin, tmax);
-    nearest_plane(&q, 0);
-    struct RTCRayHit rh;
-    embree_ray(&rh.ray, r, tmin, q.tmax[0]);
-    rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.primID = RTC_INVALID_GEOMETRY_ID;
-    rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(a->scene, &q.ctx, &rh);
-    return lane_hit(&q, 0, rh.hit.geomID, rh.hit.instID[0], rh.ray.tfar, rh.hit.primID, rh.hit.u, rh.hit.v, hit);
-}
-
-color accel_transmission(const accel *a, const ray *r, double tmin, double tmax, accel_filter_fn filter,
-                         void *user)
-{
-    query q;
-    seen_set seen;
-    single_init(&q, a, r, tmin, tmax);
-    seen_init(&seen);
-    q.filter = filter;
-    q.user = user;
-    q.seen = &seen;
-    if (!through_planes(&q, 0))
-        return rgb(0, 0, 0);
-    struct RTCRay er;
-    embree_ray(&er, r, tmin, tmax);
-    rtcOccluded1(a->scene, &q.ctx, &er);
-    seen_free(&seen);
-    return er.tfar == -INFINITY ? rgb(0, 0, 0) : q.through[0];
 }
 
 /* Fills the query's lanes and Embree's packet from the active rays, each
@@ -607,7 +532,6 @@ static void packet_init(query *q, const ray r[ACCEL_PACKET], const double tmax[A
     for (int i = 0; i < ACCEL_PACKET; i++) {
         valid[i] = active[i] ? -1 : 0;
         q->r[i] = &r[i];
-        q->tmin[i] = 0;
         q->tmax[i] = active[i] ? tmax[i] : 0;
         q->index[i] = -1;
         q->through[i] = rgb(1, 1, 1);

@@ -54,27 +54,20 @@ glint_status accel_build(accel **out, const accel_geometry *g, glint_error *err)
 /* Releases the Embree objects. NULL is allowed. */
 void accel_free(accel *a);
 
-/* Finds the nearest hit of r with t in (tmin, tmax). */
-bool accel_intersect(const accel *a, const ray *r, double tmin, double tmax, accel_hit *hit);
-
 /* Returns what a surface crossing lets through: black for opaque. */
 typedef color (*accel_filter_fn)(void *user, const ray *r, const accel_hit *hit);
 
-/* Returns the product of filter() over the surface crossings of r with t
- * in (tmin, tmax), stopping early at black: the light that survives a
- * shadow segment. */
-color accel_transmission(const accel *a, const ray *r, double tmin, double tmax, accel_filter_fn filter,
-                         void *user);
-
-/* As accel_intersect for up to ACCEL_PACKET rays at once, each with t in
- * (0, inf), through Embree's packet traversal (faster for coherent rays such
- * as a camera's): found[i] says whether ray i, if active[i], hit; hit[i] is
- * then what accel_intersect would give. Inactive lanes find nothing. */
+/* Finds the nearest hit of each of up to ACCEL_PACKET rays with t in
+ * (0, inf), through Embree's packet traversal (fastest for coherent rays
+ * such as a camera's): found[i] says whether ray i, if active[i], hit, and
+ * hit[i] is then its nearest hit. Inactive lanes find nothing. */
 void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET],
                       accel_hit hit[ACCEL_PACKET], bool found[ACCEL_PACKET]);
 
-/* As accel_transmission for up to ACCEL_PACKET shadow segments (0, tmax[i])
- * at once; through[i] is black for inactive lanes. */
+/* The light that survives each of up to ACCEL_PACKET shadow segments
+ * (0, tmax[i]): the product of filter() over the surface crossings of
+ * segment i, black as soon as something opaque blocks it, and black for
+ * inactive lanes. */
 void accel_transmission8(const accel *a, const ray r[ACCEL_PACKET], const double tmax[ACCEL_PACKET],
                          const bool active[ACCEL_PACKET], accel_filter_fn filter, void *user,
                          color through[ACCEL_PACKET]);

@@ -112,68 +112,64 @@ static color ambient(const glint_scene *scene, const shade_point *sp)
     return rgb_scale(rgb_mul(sp->base, scene->settings.ambient_light), sp->m->ambient);
 }
 
-/* Ambient light plus every light that reaches sp, one shadow ray at a time. */
-static color direct_light(tracer *t, const shade_point *sp, vec3 to_eye)
+/* The rays a hit sends on, in the order their light is added: straight
+ * through, refracted, mirrored. Each brings back its colour times `filter`
+ * times `scale`. */
+enum { BRANCH_PASS, BRANCH_REFRACT, BRANCH_MIRROR, BRANCHES };
+
+typedef struct branches {
+    ray r[BRANCHES];
+    color filter[BRANCHES];
+    double scale[BRANCHES];
+    bool on[BRANCHES];
+} branches;
+
+/* Opens branch k of b: a ray leaving p along unit direction d, starting on
+ * the side of the surface that d points to. */
+static void branch(branches *b, int k, vec3 p, vec3 n, vec3 d, color filter, double scale)
 {
-    const glint_scene *scene = t->scene;
-    color out = ambient(scene, sp);
-    for (int i = 0; i < scene->light_count; i++) {
-        light_sample ls;
-        ray shadow;
-        if (!shadow_segment(&scene->lights[i], sp, &ls, &shadow))
-            continue;
-        t->rays++;
-        color through = accel_transmission(t->acc, &shadow, 0, ls.distance, shadow_filter, t);
-        out = rgb_add(out, light_share(sp, &ls, through, to_eye));
-    }
-    return out;
+    b->r[k] = (ray){offset_point(p, v3_dot(d, n) > 0 ? n : v3_neg(n)), d};
+    b->filter[k] = filter;
+    b->scale[k] = scale;
+    b->on[k] = true;
 }
 
-/* Traces a secondary ray leaving p along unit direction d, starting on the
- * side of the surface that d points to. */
-static color trace_from(tracer *t, vec3 p, vec3 n, vec3 d, int depth)
+/* What ray r keeps at sp of its direct light, the rest being passed on;
+ * below max_depth, fills *b with the rays that carry transparency,
+ * refraction and reflection. */
+static color shade_local(const glint_scene *scene, const ray *r, const shade_point *sp, color direct, int depth,
+                         branches *b)
 {
-    ray r = {offset_point(p, v3_dot(d, n) > 0 ? n : v3_neg(n)), d};
-    return tracer_trace(t, &r, depth);
-}
-
-/* The colour of ray r at sp, given its direct light: transparency,
- * refraction and reflection below max_depth, then fog. */
-static color shade_end(tracer *t, const ray *r, const shade_point *sp, color direct, int depth)
-{
-    const glint_scene *scene = t->scene;
     const glint_material *m = sp->m;
     vec3 n = sp->n, ns = sp->ns, p = sp->s.p;
-    bool front = v3_dot(r->d, sp->s.n) < 0;
     double transmitted = m->transparency + m->refraction;
-    color out = transmitted > 0 ? rgb_scale(direct, 1 - transmitted) : direct;
+    b->on[BRANCH_PASS] = b->on[BRANCH_REFRACT] = b->on[BRANCH_MIRROR] = false;
+    if (depth >= scene->settings.max_depth || (transmitted <= 0 && m->reflectivity <= 0))
+        return transmitted > 0 ? rgb_scale(direct, 1 - transmitted) : direct;
 
-    if (depth < scene->settings.max_depth && (transmitted > 0 || m->reflectivity > 0)) {
-        double mirror = m->reflectivity;
-        /* Rays bend about the shading normal, unless interpolation turned it
-         * away from the ray, where only the geometric one makes sense. */
-        vec3 bend = v3_dot(r->d, ns) < 0 ? ns : n;
-        color filter = material_filter(m, sp->base);
-        if (m->transparency > 0)
-            out = rgb_add(out, rgb_scale(rgb_mul(filter, trace_from(t, p, n, r->d, depth + 1)), m->transparency));
-        if (m->refraction > 0) {
-            double eta = front ? 1.0 / m->ior : m->ior;
-            double share = 1;
-            vec3 dir;
-            if (!optics_refract(r->d, bend, eta, &dir))
-                share = 0;
-            else if (m->fresnel)
-                share = 1 - optics_fresnel(-v3_dot(r->d, bend), eta);
-            if (share > 0) {
-                color refracted = trace_from(t, p, n, dir, depth + 1);
-                out = rgb_add(out, rgb_scale(rgb_mul(filter, refracted), m->refraction * share));
-            }
-            mirror += m->refraction * (1 - share);
-        }
-        if (mirror > 0)
-            out = rgb_madd(out, trace_from(t, p, n, optics_reflect(r->d, bend), depth + 1), mirror);
+    double mirror = m->reflectivity;
+    /* Rays bend about the shading normal, unless interpolation turned it
+     * away from the ray, where only the geometric one makes sense. */
+    vec3 bend = v3_dot(r->d, ns) < 0 ? ns : n;
+    color filter = material_filter(m, sp->base);
+    if (m->transparency > 0)
+        branch(b, BRANCH_PASS, p, n, r->d, filter, m->transparency);
+    if (m->refraction > 0) {
+        bool front = v3_dot(r->d, sp->s.n) < 0;
+        double eta = front ? 1.0 / m->ior : m->ior;
+        double share = 1;
+        vec3 dir;
+        if (!optics_refract(r->d, bend, eta, &dir))
+            share = 0;
+        else if (m->fresnel)
+            share = 1 - optics_fresnel(-v3_dot(r->d, bend), eta);
+        if (share > 0)
+            branch(b, BRANCH_REFRACT, p, n, dir, filter, m->refraction * share);
+        mirror += m->refraction * (1 - share);
     }
-    return fog_apply(&scene->fog, out, sp->hit.t);
+    if (mirror > 0)
+        branch(b, BRANCH_MIRROR, p, n, optics_reflect(r->d, bend), rgb(1, 1, 1), mirror);
+    return transmitted > 0 ? rgb_scale(direct, 1 - transmitted) : direct;
 }
 
 /* What a ray that hits nothing brings back. */
@@ -182,34 +178,13 @@ static color miss(const glint_scene *scene)
     return fog_apply(&scene->fog, scene->settings.background, INFINITY);
 }
 
-color tracer_trace(tracer *t, const ray *r, int depth)
-{
-    accel_hit hit;
-    t->rays++;
-    if (!accel_intersect(t->acc, r, 0, INFINITY, &hit))
-        return miss(t->scene);
-    shade_point sp;
-    shade_begin(t->scene, r, &hit, &sp);
-    return shade_end(t, r, &sp, direct_light(t, &sp, v3_neg(r->d)), depth);
-}
-
-void tracer_trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET],
-                   color out[ACCEL_PACKET])
+/* Adds to direct[i] the light of every light source that reaches the hit
+ * sp[i] of each lane found[i]: one packet of shadow segments per light,
+ * over the lanes it lights. */
+static void direct_light8(tracer *t, const ray r[ACCEL_PACKET], const bool found[ACCEL_PACKET],
+                          const shade_point sp[ACCEL_PACKET], color direct[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
-    accel_hit hits[ACCEL_PACKET];
-    bool found[ACCEL_PACKET];
-    shade_point sp[ACCEL_PACKET];
-    color direct[ACCEL_PACKET];
-    accel_intersect8(t->acc, r, active, hits, found);
-    for (int i = 0; i < ACCEL_PACKET; i++) {
-        t->rays += active[i];
-        if (found[i]) {
-            shade_begin(scene, &r[i], &hits[i], &sp[i]);
-            direct[i] = ambient(scene, &sp[i]);
-        }
-    }
-    /* One packet of shadow segments per light, over the lanes it lights. */
     for (int l = 0; l < scene->light_count; l++) {
         light_sample ls[ACCEL_PACKET];
         ray shadow[ACCEL_PACKET];
@@ -231,7 +206,55 @@ void tracer_trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL
             if (lit[i])
                 direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i], v3_neg(r[i].d)));
     }
+}
+
+/* The colours of up to ACCEL_PACKET rays at recursion depth `depth`. The
+ * rays each hit sends on are traced as packets too, one per kind of
+ * branch, over the lanes that send one. */
+static void trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET], int depth,
+                   color out[ACCEL_PACKET])
+{
+    const glint_scene *scene = t->scene;
+    accel_hit hits[ACCEL_PACKET];
+    bool found[ACCEL_PACKET];
+    shade_point sp[ACCEL_PACKET];
+    color local[ACCEL_PACKET];
+    branches b[ACCEL_PACKET];
+    accel_intersect8(t->acc, r, active, hits, found);
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        t->rays += active[i];
+        if (found[i]) {
+            shade_begin(scene, &r[i], &hits[i], &sp[i]);
+            local[i] = ambient(scene, &sp[i]);
+        }
+    }
+    direct_light8(t, r, found, sp, local);
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        if (found[i])
+            local[i] = shade_local(scene, &r[i], &sp[i], local[i], depth, &b[i]);
+    for (int k = 0; k < BRANCHES; k++) {
+        ray next[ACCEL_PACKET];
+        bool on[ACCEL_PACKET], any = false;
+        for (int i = 0; i < ACCEL_PACKET; i++) {
+            on[i] = found[i] && b[i].on[k];
+            next[i] = on[i] ? b[i].r[k] : r[i];
+            any |= on[i];
+        }
+        if (!any)
+            continue;
+        color c[ACCEL_PACKET];
+        trace8(t, next, on, depth + 1, c);
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            if (on[i])
+                local[i] = rgb_add(local[i], rgb_scale(rgb_mul(b[i].filter[k], c[i]), b[i].scale[k]));
+    }
     for (int i = 0; i < ACCEL_PACKET; i++)
         if (active[i])
-            out[i] = found[i] ? shade_end(t, &r[i], &sp[i], direct[i], 0) : miss(scene);
+            out[i] = found[i] ? fog_apply(&scene->fog, local[i], sp[i].hit.t) : miss(scene);
+}
+
+void tracer_trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET],
+                   color out[ACCEL_PACKET])
+{
+    trace8(t, r, active, 0, out);
 }

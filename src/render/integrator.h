@@ -13,14 +13,11 @@ typedef struct tracer {
     uint64_t rays;            /* every ray this tracer has cast */
 } tracer;
 
-/* The colour seen along unit-direction ray r, at recursion depth `depth`
- * (0 for camera rays). */
-color tracer_trace(tracer *t, const ray *r, int depth);
-
-/* The colours seen along up to ACCEL_PACKET camera rays (depth 0) at once:
- * out[i] for each active[i], as tracer_trace would give them, with the
- * camera rays and their shadow rays traced as packets. Coherent rays (a
- * block of neighbouring pixels) gain most. */
+/* The colours seen along up to ACCEL_PACKET unit-direction camera rays
+ * (recursion depth 0): out[i] for each active[i]. The rays, their shadow
+ * rays and the reflected, refracted and transmitted rays they lead to are
+ * all traced as packets; coherent rays (a block of neighbouring pixels)
+ * gain most. */
 void tracer_trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET],
                    color out[ACCEL_PACKET]);
 

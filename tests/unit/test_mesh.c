@@ -261,8 +261,13 @@ static void test_smooth_normals_and_per_triangle_materials(void **state)
                         .instance_count = s->instance_count};
     assert_int_equal(accel_build(&a, &g, NULL), GLINT_OK);
     ray r = {{-0.5, -0.9, 0}, {0, 0, -1}};
-    accel_hit h;
-    assert_true(accel_intersect(a, &r, 0, INFINITY, &h));
+    ray rays[ACCEL_PACKET] = {r, r, r, r, r, r, r, r};
+    bool active[ACCEL_PACKET] = {true}, found[ACCEL_PACKET];
+    accel_hit hits[ACCEL_PACKET];
+    accel_intersect8(a, rays, active, hits, found);
+    assert_true(found[0]);
+    assert_false(found[1]);
+    accel_hit h = hits[0];
     assert_int_equal(h.triangle, 0);
     assert_int_equal(mesh_material(&s->meshes[0], &s->instances[0], h.triangle), mats[0]);
     surface sf;
