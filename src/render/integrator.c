@@ -235,13 +235,12 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL
     for (int k = 0; k < BRANCHES; k++) {
         ray next[ACCEL_PACKET];
         bool on[ACCEL_PACKET], any = false;
-        for (int i = 0; i < ACCEL_PACKET; i++) {
-            on[i] = found[i] && b[i].on[k];
-            next[i] = on[i] ? b[i].r[k] : r[i];
-            any |= on[i];
-        }
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            any |= on[i] = found[i] && b[i].on[k];
         if (!any)
             continue;
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            next[i] = on[i] ? b[i].r[k] : r[i];
         color c[ACCEL_PACKET];
         trace8(t, next, on, depth + 1, c);
         for (int i = 0; i < ACCEL_PACKET; i++)
