@@ -101,7 +101,7 @@ typedef struct query {
     const accel *acc;
     accel_filter_fn filter;
     void *user;
-    const ray *r[ACCEL_PACKET];
+    const ray *r;             /* the packet's rays, lane i at r + i */
     double tmax[ACCEL_PACKET];   /* every query starts at t = 0 */
     int index[ACCEL_PACKET];
     shape_hit hit[ACCEL_PACKET];
@@ -174,7 +174,7 @@ static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
         shape_hit h;
         /* A triangle found first may have shortened the ray below q->tmax. */
         double tmax = q->tmax[i] < *tfar ? q->tmax[i] : (double)*tfar;
-        if (!shape_intersect(s, q->r[i], 0, tmax, &h))
+        if (!shape_intersect(s, q->r + i, 0, tmax, &h))
             continue;
         q->tmax[i] = h.t;
         q->hit[i] = h;
@@ -190,7 +190,7 @@ static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
  * passes. */
 static bool pass_through(query *q, unsigned i, const accel_hit *h)
 {
-    q->through[i] = rgb_mul(q->through[i], q->filter(q->user, q->r[i], h));
+    q->through[i] = rgb_mul(q->through[i], q->filter(q->user, q->r + i, h));
     return rgb_max(q->through[i]) >= TRANSMISSION_CUTOFF;
 }
 
@@ -206,7 +206,7 @@ static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
         if (opaque) {
             /* Blocking twice is harmless, so no record of it is kept. */
             shape_hit h;
-            if (shape_intersect(s, q->r[i], 0, q->tmax[i], &h))
+            if (shape_intersect(s, q->r + i, 0, q->tmax[i], &h))
                 *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
             continue;
         }
@@ -215,7 +215,7 @@ static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
         double tmin = 0;
         accel_hit h = {.shape = index, .instance = -1};
         /* Shapes are convex, so a ray crosses one at most twice. */
-        for (int crossing = 0; crossing < 2 && shape_intersect(s, q->r[i], tmin, q->tmax[i], &h.on_shape);
+        for (int crossing = 0; crossing < 2 && shape_intersect(s, q->r + i, tmin, q->tmax[i], &h.on_shape);
              crossing++) {
             h.t = h.on_shape.t;
             if (!pass_through(q, i, &h)) {
@@ -487,7 +487,7 @@ static void nearest_plane(query *q, unsigned i)
     double nearest = q->tmax[i];
     for (int k = 0; k < a->plane_count; k++) {
         shape_hit h;
-        if (shape_intersect(&a->shapes[a->planes[k]], q->r[i], 0, nearest, &h)) {
+        if (shape_intersect(&a->shapes[a->planes[k]], q->r + i, 0, nearest, &h)) {
             nearest = h.t;
             q->hit[i] = h;
             q->index[i] = a->planes[k];
@@ -509,7 +509,7 @@ static bool through_planes(query *q, unsigned i)
     const accel *a = q->acc;
     for (int k = 0; k < a->plane_count; k++) {
         accel_hit h = {.shape = a->planes[k], .instance = -1};
-        if (shape_intersect(&a->shapes[h.shape], q->r[i], 0, q->tmax[i], &h.on_shape)) {
+        if (shape_intersect(&a->shapes[h.shape], q->r + i, 0, q->tmax[i], &h.on_shape)) {
             if (shape_opaque(a, h.shape))
                 return false;
             h.t = h.on_shape.t;
@@ -521,29 +521,36 @@ static bool through_planes(query *q, unsigned i)
 }
 
 /* Fills the query's lanes and Embree's packet from the active rays, each
- * covering (0, tmax[i]) as embree_ray would; inactive lanes are left for
- * Embree to skip. */
+ * covering (0, tmax[i]): Embree's float tfar is rounded up so the float
+ * traversal never stops short of the exact double test. Inactive lanes are
+ * left for Embree to skip. */
 static void packet_init(query *q, const ray r[ACCEL_PACKET], const double tmax[ACCEL_PACKET],
                         const bool active[ACCEL_PACKET], int valid[ACCEL_PACKET], struct RTCRay8 *p)
 {
     rtcInitIntersectContext(&q->ctx);
     q->seen = NULL;
     q->ctx.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    q->r = r;
+    /* One field at a time, so the compiler can fill several lanes at once. */
     for (int i = 0; i < ACCEL_PACKET; i++) {
         valid[i] = active[i] ? -1 : 0;
-        q->r[i] = &r[i];
         q->tmax[i] = active[i] ? tmax[i] : 0;
         q->index[i] = -1;
-        q->through[i] = rgb(1, 1, 1);
+    }
+    for (int i = 0; i < ACCEL_PACKET; i++) {
         p->org_x[i] = (float)r[i].o.x;
         p->org_y[i] = (float)r[i].o.y;
         p->org_z[i] = (float)r[i].o.z;
         p->dir_x[i] = (float)r[i].d.x;
         p->dir_y[i] = (float)r[i].d.y;
         p->dir_z[i] = (float)r[i].d.z;
-        p->tnear[i] = 0;
+    }
+    for (int i = 0; i < ACCEL_PACKET; i++) {
         float far = (float)q->tmax[i];
         p->tfar[i] = far < FLT_MAX ? float_up(far) : INFINITY;
+    }
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        p->tnear[i] = 0;
         p->time[i] = 0;
         p->mask[i] = 0xFFFFFFFFu;
         p->id[i] = 0;
@@ -589,6 +596,7 @@ void accel_transmission8(const accel *a, const ray r[ACCEL_PACKET], const double
     q.user = user;
     q.seen = seen;
     for (unsigned i = 0; i < ACCEL_PACKET; i++) {
+        q.through[i] = rgb(1, 1, 1);
         seen_init(&seen[i]);
         /* A lane a plane blocks needs no search. */
         if (active[i] && a->plane_count > 0 && !through_planes(&q, i)) {
