@@ -432,6 +432,47 @@ static void test_write_png_round_trip(void **state)
     assert_int_equal(count_entries(tmp_dir, ".tmp-"), 0);
 }
 
+/* Every byte libpng decodes is the film's sRGB byte: over many rows (so the
+ * row filter matters), smooth ramps and incompressible noise (so the file
+ * spans several IDAT chunks and outgrows the encoder's first buffer), and
+ * values that clamp. */
+static void test_write_png_decodes_to_srgb_bytes(void **state)
+{
+    enum { width = 301, height = 203 };
+    char path[PATH_SIZE];
+    glint_error err = {{0}};
+    glint_image img = noise_image(width, height);
+    for (int y = 0; y < height / 2; y++)
+        for (int x = 0; x < width; x++)
+            for (int c = 0; c < 3; c++)
+                img.pixels[3 * (y * width + x) + c] = (float)(x + c * y) / (width + 2 * height);
+    memcpy(img.pixels, sample_linear, sizeof sample_linear);
+    size_t n = 3 * (size_t)width * height;
+    unsigned char *want = malloc(n), *got = malloc(n);
+    assert_true(want && got);
+    srgb_encode(want, img.pixels, n);
+    tmp_path(path, "bytes.png");
+    assert_int_equal(glint_image_write(&img, path, &err), GLINT_OK);
+    glint_image_free(&img);
+
+    size_t size;
+    unsigned char *bytes = read_bytes(path, &size);
+    assert_non_null(bytes);
+    assert_true(size > 64 * 1024);
+    png_image png;
+    memset(&png, 0, sizeof png);
+    png.version = PNG_IMAGE_VERSION;
+    assert_true(png_image_begin_read_from_memory(&png, bytes, size));
+    assert_int_equal(png.width, width);
+    assert_int_equal(png.height, height);
+    png.format = PNG_FORMAT_RGB;
+    assert_true(png_image_finish_read(&png, NULL, got, 0, NULL));
+    assert_memory_equal(got, want, n);
+    free(bytes);
+    free(want);
+    free(got);
+}
+
 static void test_write_extension_any_case(void **state)
 {
     char path[PATH_SIZE];
@@ -600,6 +641,22 @@ static void test_write_empty_image(void **state)
     expect_error(glint_image_write(&empty, "empty.png", &err), &err, GLINT_ERR_INVALID,
                  "cannot write 'empty.png': the image is empty");
     assert_int_equal(access("empty.png", F_OK), -1);
+}
+
+/* libpng refuses rows over a million pixels; its message comes back and
+ * nothing is left behind. */
+static void test_write_png_too_wide(void **state)
+{
+    char path[PATH_SIZE], want[2 * PATH_SIZE];
+    glint_error err = {{0}};
+    glint_image img = {1000001, 1, calloc(3 * 1000001, sizeof(float))};
+    assert_non_null(img.pixels);
+    tmp_path(path, "wide.png");
+    snprintf(want, sizeof want, "cannot write '%s': Invalid IHDR data", path);
+    expect_error(glint_image_write(&img, path, &err), &err, GLINT_ERR_IO, want);
+    glint_image_free(&img);
+    assert_int_equal(access(path, F_OK), -1);
+    assert_int_equal(count_entries(tmp_dir, ".tmp-"), 0);
 }
 
 static void test_image_free(void **state)
@@ -899,6 +956,7 @@ int main(void)
         cmocka_unit_test(test_srgb_round_trips),
         cmocka_unit_test(test_write_ppm_bytes),
         cmocka_unit_test(test_write_png_round_trip),
+        cmocka_unit_test(test_write_png_decodes_to_srgb_bytes),
         cmocka_unit_test(test_write_extension_any_case),
         cmocka_unit_test(test_write_replaces_existing_file),
         cmocka_unit_test(test_write_missing_directory),
@@ -908,6 +966,7 @@ int main(void)
         cmocka_unit_test(test_check_path_parent_is_file),
         cmocka_unit_test(test_unknown_extension),
         cmocka_unit_test(test_write_empty_image),
+        cmocka_unit_test(test_write_png_too_wide),
         cmocka_unit_test(test_image_free),
         cmocka_unit_test(test_load_missing_file),
         cmocka_unit_test(test_load_directory),
