@@ -105,6 +105,12 @@ static void test_spotlight(void **state)
     light hard = make_spot(8.5, 0);
     assert_near(spot_factor(&hard, cos(8.49 * M_PI / 180)), 1, 0);
     assert_near(spot_factor(&hard, cos(8.51 * M_PI / 180)), 0, 0);
+    /* The same edge through light_illuminate, whose quick rejection of
+     * points outside the cone must leave those just inside lit. */
+    assert_true(light_illuminate(&hard, v3(10 * tan(8.4999 * M_PI / 180), 0, 0), &s));
+    assert_near(s.radiance.r, 1, 0);
+    assert_false(light_illuminate(&hard, v3(10 * tan(8.5001 * M_PI / 180), 0, 0), &s));
+    assert_false(light_illuminate(&hard, v3(0, 10, 5), &s));
     /* Behind the spot: nothing. */
     assert_false(light_illuminate(&l, v3(0, 20, 0), &s));
 }
