@@ -288,6 +288,64 @@ static void test_smooth_normals_and_per_triangle_materials(void **state)
     glint_scene_free(s);
 }
 
+/* Two quads facing down, at x in [-4, -3] and [0, 1], 2 above a white floor,
+ * each with its own material, under light slanting down to +x: each casts
+ * its shadow on the floor 2 to the right. `instanced`: one mesh placed
+ * twice; otherwise two meshes placed once each (Embree's other path).
+ * Returns the floor's brightness in the two shadows and in the open. */
+static void shadows_of_quads(bool instanced, const glint_material *a, const glint_material *b, double out[3])
+{
+    glint_scene *s = new_scene(64, 64, 60);
+    glint_camera cam = {{0, 10, 0}, {0, 0, 0}, {0, 0, -1}, 60};
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    glint_material white = glint_material_default();
+    white.specular = 0;
+    glint_shape floor = {.kind = GLINT_SHAPE_PLANE, .normal = {0, 1, 0}};
+    assert_true(glint_scene_add_shape(s, &floor, glint_scene_add_material(s, NULL, &white, NULL), NULL, NULL) >= 0);
+    glint_light sun = {.kind = GLINT_LIGHT_DIRECTIONAL, .direction = {1, -1, 0}, .color = {1, 1, 1}};
+    assert_true(glint_scene_add_light(s, &sun, NULL) >= 0);
+    static const float p[] = {-0.5f, 0, -1, 0.5f, 0, -1, 0.5f, 0, 1, -0.5f, 0, 1};
+    static const uint32_t idx[] = {0, 1, 2, 0, 2, 3};
+    glint_mesh_data md = {p, NULL, NULL, 4, idx, 2, NULL, glint_scene_add_material(s, NULL, &white, NULL)};
+    const glint_material *mats[2] = {a, b};
+    double x[2] = {-3.5, 0.5};
+    int shared = glint_scene_add_mesh(s, NULL, &md, NULL);
+    for (int k = 0; k < 2; k++) {
+        glint_transform t = glint_transform_translate(glint_transform_identity(), x[k], 2, 0);
+        int placed = instanced || k == 0 ? shared : glint_scene_add_mesh(s, NULL, &md, NULL);
+        int m = glint_scene_add_material(s, NULL, mats[k], NULL);
+        assert_int_equal(glint_scene_add_instance(s, placed, m, &t, NULL), k);
+    }
+    glint_image img;
+    assert_int_equal(glint_render(s, NULL, &img, NULL, NULL), GLINT_OK);
+    /* Floor points x = -1.5, 2.5 and 4.5 (z = 0): pixel columns 23, 45, 56. */
+    int columns[3] = {23, 45, 56};
+    for (int k = 0; k < 3; k++)
+        out[k] = img.pixels[3 * (32 * 64 + columns[k])];
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
+static void test_opaque_and_see_through_meshes_cast_their_shadows(void **state)
+{
+    glint_material opaque = glint_material_default(), clear = glint_material_default();
+    clear.transparency = 0.5;
+    /* Ambient 0.2, plus the light at 45 degrees: cos = 0.7071. */
+    double lit = 0.2 + sqrt(0.5), half = 0.2 + 0.5 * sqrt(0.5);
+    for (int instanced = 0; instanced < 2; instanced++) {
+        double v[3];
+        shadows_of_quads(instanced, &opaque, &clear, v);
+        assert_near(v[0], 0.2, 1e-6);
+        assert_near(v[1], half, 1e-6);
+        assert_near(v[2], lit, 1e-6);
+        /* Both opaque: a mesh with no see-through placement needs no filter. */
+        shadows_of_quads(instanced, &opaque, &opaque, v);
+        assert_near(v[0], 0.2, 1e-6);
+        assert_near(v[1], 0.2, 1e-6);
+        assert_near(v[2], lit, 1e-6);
+    }
+}
+
 static void test_bad_mesh_data(void **state)
 {
     glint_scene *s = new_scene(8, 8, 30);
@@ -383,6 +441,7 @@ int main(void)
         cmocka_unit_test(test_tessellated_sphere_matches_analytic),
         cmocka_unit_test(test_quad_split_either_way_gives_the_same_image),
         cmocka_unit_test(test_instances_share_their_mesh),
+        cmocka_unit_test(test_opaque_and_see_through_meshes_cast_their_shadows),
         cmocka_unit_test(test_placed_once_or_instanced_look_the_same),
         cmocka_unit_test(test_smooth_normals_and_per_triangle_materials),
         cmocka_unit_test(test_bad_mesh_data),
