@@ -6,8 +6,10 @@
 
 typedef struct camera {
     vec3 position, forward, right, up;   /* orthonormal frame */
-    double half_height, half_width;      /* of the image plane at distance 1 */
     int width, height;
+    /* Half the image plane's width (at distance 1) over the image width,
+     * and likewise its height: a pixel is twice these across. */
+    double per_x, per_y;
 } camera;
 
 /* Sets up the frame for an image of width x height pixels; the camera must
