@@ -103,6 +103,7 @@ typedef struct query {
     void *user;
     const ray *r;             /* the packet's rays, lane i at r + i */
     double tmax[ACCEL_PACKET];   /* every query starts at t = 0 */
+    int skip[ACCEL_PACKET];      /* a shape lane i cannot meet, or -1 */
     int index[ACCEL_PACKET];
     shape_hit hit[ACCEL_PACKET];
     color through[ACCEL_PACKET];
@@ -168,7 +169,7 @@ static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
     const shape *s = &q->acc->shapes[index];
     struct RTCRayHitN *rh = args->rayhit;
     for (unsigned i = 0; i < args->N; i++) {
-        if (!args->valid[i])
+        if (!args->valid[i] || q->skip[i] == index)
             continue;
         float *tfar = ray_lane_tfar((struct RTCRayN *)rh, args->N, i);
         shape_hit h;
@@ -201,7 +202,7 @@ static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
     const shape *s = &q->acc->shapes[index];
     bool opaque = shape_opaque(q->acc, index);
     for (unsigned i = 0; i < args->N; i++) {
-        if (!args->valid[i])
+        if (!args->valid[i] || q->skip[i] == index)
             continue;
         if (opaque) {
             /* Blocking twice is harmless, so no record of it is kept. */
@@ -487,7 +488,7 @@ static void nearest_plane(query *q, unsigned i)
     double nearest = q->tmax[i];
     for (int k = 0; k < a->plane_count; k++) {
         shape_hit h;
-        if (shape_intersect(&a->shapes[a->planes[k]], q->r + i, 0, nearest, &h)) {
+        if (a->planes[k] != q->skip[i] && shape_intersect(&a->shapes[a->planes[k]], q->r + i, 0, nearest, &h)) {
             nearest = h.t;
             q->hit[i] = h;
             q->index[i] = a->planes[k];
@@ -509,7 +510,7 @@ static bool through_planes(query *q, unsigned i)
     const accel *a = q->acc;
     for (int k = 0; k < a->plane_count; k++) {
         accel_hit h = {.shape = a->planes[k], .instance = -1};
-        if (shape_intersect(&a->shapes[h.shape], q->r + i, 0, q->tmax[i], &h.on_shape)) {
+        if (h.shape != q->skip[i] && shape_intersect(&a->shapes[h.shape], q->r + i, 0, q->tmax[i], &h.on_shape)) {
             if (shape_opaque(a, h.shape))
                 return false;
             h.t = h.on_shape.t;
@@ -525,7 +526,8 @@ static bool through_planes(query *q, unsigned i)
  * traversal never stops short of the exact double test. Inactive lanes are
  * left for Embree to skip. */
 static void packet_init(query *q, const ray r[ACCEL_PACKET], const double tmax[ACCEL_PACKET],
-                        const bool active[ACCEL_PACKET], int valid[ACCEL_PACKET], struct RTCRay8 *p)
+                        const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET], int valid[ACCEL_PACKET],
+                        struct RTCRay8 *p)
 {
     rtcInitIntersectContext(&q->ctx);
     q->seen = NULL;
@@ -535,6 +537,7 @@ static void packet_init(query *q, const ray r[ACCEL_PACKET], const double tmax[A
     for (int i = 0; i < ACCEL_PACKET; i++) {
         valid[i] = active[i] ? -1 : 0;
         q->tmax[i] = active[i] ? tmax[i] : 0;
+        q->skip[i] = skip[i];
         q->index[i] = -1;
     }
     for (int i = 0; i < ACCEL_PACKET; i++) {
@@ -558,8 +561,8 @@ static void packet_init(query *q, const ray r[ACCEL_PACKET], const double tmax[A
     }
 }
 
-void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET],
-                      accel_hit hit[ACCEL_PACKET], bool found[ACCEL_PACKET])
+void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const int skip[ACCEL_PACKET],
+                      const bool active[ACCEL_PACKET], accel_hit hit[ACCEL_PACKET], bool found[ACCEL_PACKET])
 {
     static const double far[ACCEL_PACKET] = {INFINITY, INFINITY, INFINITY, INFINITY,
                                              INFINITY, INFINITY, INFINITY, INFINITY};
@@ -567,7 +570,7 @@ void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const bool acti
     _Alignas(32) int valid[ACCEL_PACKET];
     struct RTCRayHit8 rh;
     q.acc = a;
-    packet_init(&q, r, far, active, valid, &rh.ray);
+    packet_init(&q, r, far, skip, active, valid, &rh.ray);
     for (unsigned i = 0; i < ACCEL_PACKET; i++) {
         rh.hit.geomID[i] = rh.hit.primID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
         if (active[i] && a->plane_count > 0) {
@@ -582,8 +585,8 @@ void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const bool acti
 }
 
 void accel_transmission8(const accel *a, const ray r[ACCEL_PACKET], const double tmax[ACCEL_PACKET],
-                         const bool active[ACCEL_PACKET], accel_filter_fn filter, void *user,
-                         color through[ACCEL_PACKET])
+                         const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET], accel_filter_fn filter,
+                         void *user, color through[ACCEL_PACKET])
 {
     query q;
     seen_set seen[ACCEL_PACKET];
@@ -591,7 +594,7 @@ void accel_transmission8(const accel *a, const ray r[ACCEL_PACKET], const double
     struct RTCRay8 p;
     bool blocked[ACCEL_PACKET] = {false};
     q.acc = a;
-    packet_init(&q, r, tmax, active, valid, &p);
+    packet_init(&q, r, tmax, skip, active, valid, &p);
     q.filter = filter;
     q.user = user;
     q.seen = seen;

@@ -102,6 +102,12 @@ void shape_bounds(const shape *s, vec3 *lo, vec3 *hi)
     }
 }
 
+bool shape_is_left_behind(const shape *s, vec3 n, vec3 d)
+{
+    glint_shape_kind k = s->desc.kind;
+    return k == GLINT_SHAPE_PLANE || k == GLINT_SHAPE_POLYGON || v3_dot(n, d) > 0;
+}
+
 bool shape_is_closed(const shape *s)
 {
     switch (s->desc.kind) {

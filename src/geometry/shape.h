@@ -66,6 +66,11 @@ void shape_surface_uv(const shape *s, surface *out);
 /* World-space axis-aligned bounds. */
 void shape_bounds(const shape *s, vec3 *lo, vec3 *hi);
 
+/* True when a ray leaving the surface of s at a point whose outward normal
+ * is n, along d, can never meet s again: s is flat (a plane or polygon), or
+ * d points out of s, which is convex (every analytic shape is). */
+bool shape_is_left_behind(const shape *s, vec3 n, vec3 d);
+
 /* True for shapes that enclose a volume (sphere, box, capped cylinder,
  * cone with its base cap): a ray enters and leaves them. */
 bool shape_is_closed(const shape *s);

@@ -119,16 +119,28 @@ enum { BRANCH_PASS, BRANCH_REFRACT, BRANCH_MIRROR, BRANCHES };
 
 typedef struct branches {
     ray r[BRANCHES];
+    int skip[BRANCHES];       /* the shape each cannot meet again, or -1 */
     color filter[BRANCHES];
     double scale[BRANCHES];
     bool on[BRANCHES];
 } branches;
 
-/* Opens branch k of b: a ray leaving p along unit direction d, starting on
- * the side of the surface that d points to. */
-static void branch(branches *b, int k, vec3 p, vec3 n, vec3 d, color filter, double scale)
+/* The shape a ray leaving sp along d cannot meet again, which the
+ * accelerator need not test, or -1. */
+static int left_behind(const glint_scene *scene, const shade_point *sp, vec3 d)
 {
-    b->r[k] = (ray){offset_point(p, v3_dot(d, n) > 0 ? n : v3_neg(n)), d};
+    int k = sp->hit.shape;
+    return k >= 0 && shape_is_left_behind(&scene->shapes[k], sp->s.n, d) ? k : -1;
+}
+
+/* Opens branch k of b: a ray leaving sp along unit direction d, starting on
+ * the side of the surface that d points to. */
+static void branch(const glint_scene *scene, const shade_point *sp, branches *b, int k, vec3 d, color filter,
+                   double scale)
+{
+    vec3 n = sp->n;
+    b->r[k] = (ray){offset_point(sp->s.p, v3_dot(d, n) > 0 ? n : v3_neg(n)), d};
+    b->skip[k] = left_behind(scene, sp, d);
     b->filter[k] = filter;
     b->scale[k] = scale;
     b->on[k] = true;
@@ -141,7 +153,7 @@ static color shade_local(const glint_scene *scene, const ray *r, const shade_poi
                          branches *b)
 {
     const glint_material *m = sp->m;
-    vec3 n = sp->n, ns = sp->ns, p = sp->s.p;
+    vec3 n = sp->n, ns = sp->ns;
     double transmitted = m->transparency + m->refraction;
     b->on[BRANCH_PASS] = b->on[BRANCH_REFRACT] = b->on[BRANCH_MIRROR] = false;
     if (depth >= scene->settings.max_depth || (transmitted <= 0 && m->reflectivity <= 0))
@@ -153,7 +165,7 @@ static color shade_local(const glint_scene *scene, const ray *r, const shade_poi
     vec3 bend = v3_dot(r->d, ns) < 0 ? ns : n;
     color filter = material_filter(m, sp->base);
     if (m->transparency > 0)
-        branch(b, BRANCH_PASS, p, n, r->d, filter, m->transparency);
+        branch(scene, sp, b, BRANCH_PASS, r->d, filter, m->transparency);
     if (m->refraction > 0) {
         bool front = v3_dot(r->d, sp->s.n) < 0;
         double eta = front ? 1.0 / m->ior : m->ior;
@@ -164,11 +176,11 @@ static color shade_local(const glint_scene *scene, const ray *r, const shade_poi
         else if (m->fresnel)
             share = 1 - optics_fresnel(-v3_dot(r->d, bend), eta);
         if (share > 0)
-            branch(b, BRANCH_REFRACT, p, n, dir, filter, m->refraction * share);
+            branch(scene, sp, b, BRANCH_REFRACT, dir, filter, m->refraction * share);
         mirror += m->refraction * (1 - share);
     }
     if (mirror > 0)
-        branch(b, BRANCH_MIRROR, p, n, optics_reflect(r->d, bend), rgb(1, 1, 1), mirror);
+        branch(scene, sp, b, BRANCH_MIRROR, optics_reflect(r->d, bend), rgb(1, 1, 1), mirror);
     return transmitted > 0 ? rgb_scale(direct, 1 - transmitted) : direct;
 }
 
@@ -189,10 +201,12 @@ static void direct_light8(tracer *t, const ray r[ACCEL_PACKET], const bool found
         light_sample ls[ACCEL_PACKET];
         ray shadow[ACCEL_PACKET];
         double dist[ACCEL_PACKET];
+        int skip[ACCEL_PACKET];
         bool lit[ACCEL_PACKET], any = false;
         for (int i = 0; i < ACCEL_PACKET; i++) {
             lit[i] = found[i] && shadow_segment(&scene->lights[l], &sp[i], &ls[i], &shadow[i]);
             dist[i] = lit[i] ? ls[i].distance : 0;
+            skip[i] = lit[i] ? left_behind(scene, &sp[i], ls[i].to_light) : -1;
             if (!lit[i])
                 shadow[i] = r[i];
             t->rays += lit[i];
@@ -201,7 +215,7 @@ static void direct_light8(tracer *t, const ray r[ACCEL_PACKET], const bool found
         if (!any)
             continue;
         color through[ACCEL_PACKET];
-        accel_transmission8(t->acc, shadow, dist, lit, shadow_filter, t, through);
+        accel_transmission8(t->acc, shadow, dist, skip, lit, shadow_filter, t, through);
         for (int i = 0; i < ACCEL_PACKET; i++)
             if (lit[i])
                 direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i], v3_neg(r[i].d)));
@@ -211,8 +225,8 @@ static void direct_light8(tracer *t, const ray r[ACCEL_PACKET], const bool found
 /* The colours of up to ACCEL_PACKET rays at recursion depth `depth`. The
  * rays each hit sends on are traced as packets too, one per kind of
  * branch, over the lanes that send one. */
-static void trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET], int depth,
-                   color out[ACCEL_PACKET])
+static void trace8(tracer *t, const ray r[ACCEL_PACKET], const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET],
+                   int depth, color out[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
     accel_hit hits[ACCEL_PACKET];
@@ -220,7 +234,7 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL
     shade_point sp[ACCEL_PACKET];
     color local[ACCEL_PACKET];
     branches b[ACCEL_PACKET];
-    accel_intersect8(t->acc, r, active, hits, found);
+    accel_intersect8(t->acc, r, skip, active, hits, found);
     for (int i = 0; i < ACCEL_PACKET; i++) {
         t->rays += active[i];
         if (found[i]) {
@@ -234,15 +248,18 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL
             local[i] = shade_local(scene, &r[i], &sp[i], local[i], depth, &b[i]);
     for (int k = 0; k < BRANCHES; k++) {
         ray next[ACCEL_PACKET];
+        int next_skip[ACCEL_PACKET];
         bool on[ACCEL_PACKET], any = false;
         for (int i = 0; i < ACCEL_PACKET; i++)
             any |= on[i] = found[i] && b[i].on[k];
         if (!any)
             continue;
-        for (int i = 0; i < ACCEL_PACKET; i++)
+        for (int i = 0; i < ACCEL_PACKET; i++) {
             next[i] = on[i] ? b[i].r[k] : r[i];
+            next_skip[i] = on[i] ? b[i].skip[k] : -1;
+        }
         color c[ACCEL_PACKET];
-        trace8(t, next, on, depth + 1, c);
+        trace8(t, next, next_skip, on, depth + 1, c);
         for (int i = 0; i < ACCEL_PACKET; i++)
             if (on[i])
                 local[i] = rgb_add(local[i], rgb_scale(rgb_mul(b[i].filter[k], c[i]), b[i].scale[k]));
@@ -255,5 +272,6 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL
 void tracer_trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET],
                    color out[ACCEL_PACKET])
 {
-    trace8(t, r, active, 0, out);
+    static const int none[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
+    trace8(t, r, none, active, 0, out);
 }

@@ -1012,10 +1012,60 @@ static void test_is_closed(void **state)
     assert_false(shape_is_closed(&(shape){.desc = test_triangle()}));
 }
 
+/* A ray leaving a shape outward never meets it again, and a flat shape is
+ * never met again at all; so shape_is_left_behind may skip them. Checked
+ * from points all over each shape, plain and skewed, in many directions. */
+static void test_left_behind(void **state)
+{
+    glint_shape descs[] = {test_sphere(), test_box(), test_cylinder(true), test_cylinder(false),
+                           test_cone(true), test_cone(false), test_triangle(), test_quad()};
+    glint_transform skew = m_skew();
+    int checked = 0;
+    for (size_t k = 0; k < sizeof descs / sizeof descs[0]; k++) {
+        for (int transformed = 0; transformed < 2; transformed++) {
+            shape s = MAKE(descs[k], transformed ? &skew : NULL);
+            vec3 lo, hi;
+            shape_bounds(&s, &lo, &hi);
+            vec3 mid = v3_scale(v3_add(lo, hi), 0.5);
+            bool flat = descs[k].kind == GLINT_SHAPE_POLYGON;
+            for (int a = 0; a < 64; a++) {
+                /* Rays from far away towards the middle, from all around. */
+                double th = 0.3 + 2.4 * (a % 8) / 8.0, ph = 2 * M_PI * (a / 8) / 8.0 + 0.1;
+                vec3 dir = v3(sin(th) * cos(ph), cos(th), sin(th) * sin(ph));
+                ray in = {v3_add(mid, v3_scale(dir, 100)), v3_neg(dir)};
+                shape_hit h;
+                if (!shape_intersect(&s, &in, 0, INFINITY, &h))
+                    continue;
+                surface sf;
+                shape_surface(&s, &in, &h, &sf);
+                for (int b = 0; b < 64; b++) {
+                    double t2 = 0.2 + 2.7 * (b % 8) / 8.0, p2 = 2 * M_PI * (b / 8) / 8.0 + 0.3;
+                    vec3 d = v3(sin(t2) * cos(p2), cos(t2), sin(t2) * sin(p2));
+                    double out = v3_dot(sf.n, d);
+                    if (fabs(out) < 1e-3)
+                        continue;
+                    assert_int_equal(shape_is_left_behind(&s, sf.n, d), flat || out > 0);
+                    if (!shape_is_left_behind(&s, sf.n, d))
+                        continue;
+                    ray leave = {sf.p, d};
+                    shape_hit again;
+                    if (shape_intersect(&s, &leave, 1e-9 * (1 + v3_length(sf.p)), INFINITY, &again)) {
+                        print_error("shape %zu%s: met again at t = %g\n", k, transformed ? " (skewed)" : "", again.t);
+                        fail();
+                    }
+                    checked++;
+                }
+            }
+        }
+    }
+    assert_true(checked > 5000);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sphere_hit),
+        cmocka_unit_test(test_left_behind),
         cmocka_unit_test(test_sphere_miss),
         cmocka_unit_test(test_sphere_grazing),
         cmocka_unit_test(test_sphere_inside),

@@ -264,7 +264,8 @@ static void test_smooth_normals_and_per_triangle_materials(void **state)
     ray rays[ACCEL_PACKET] = {r, r, r, r, r, r, r, r};
     bool active[ACCEL_PACKET] = {true}, found[ACCEL_PACKET];
     accel_hit hits[ACCEL_PACKET];
-    accel_intersect8(a, rays, active, hits, found);
+    int skip[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
+    accel_intersect8(a, rays, skip, active, hits, found);
     assert_true(found[0]);
     assert_false(found[1]);
     accel_hit h = hits[0];
