@@ -155,9 +155,10 @@ static color shade_local(const glint_scene *scene, const ray *r, const shade_poi
     const glint_material *m = sp->m;
     vec3 n = sp->n, ns = sp->ns;
     double transmitted = m->transparency + m->refraction;
+    color kept = transmitted > 0 ? rgb_scale(direct, 1 - transmitted) : direct;
     b->on[BRANCH_PASS] = b->on[BRANCH_REFRACT] = b->on[BRANCH_MIRROR] = false;
     if (depth >= scene->settings.max_depth || (transmitted <= 0 && m->reflectivity <= 0))
-        return transmitted > 0 ? rgb_scale(direct, 1 - transmitted) : direct;
+        return kept;
 
     double mirror = m->reflectivity;
     /* Rays bend about the shading normal, unless interpolation turned it
@@ -181,7 +182,7 @@ static color shade_local(const glint_scene *scene, const ray *r, const shade_poi
     }
     if (mirror > 0)
         branch(scene, sp, b, BRANCH_MIRROR, optics_reflect(r->d, bend), rgb(1, 1, 1), mirror);
-    return transmitted > 0 ? rgb_scale(direct, 1 - transmitted) : direct;
+    return kept;
 }
 
 /* What a ray that hits nothing brings back. */
