@@ -6,10 +6,12 @@
  * and goes astray (heap corruption, endless loops) on headers and data that
  * do not follow the format; its GLB reader allocates whatever chunk lengths
  * the file claims. So PLY files are checked in full here, header and data,
- * GLB chunk lengths against the file, and only the four readers glint
- * documents ever see a file. */
+ * GLB chunk lengths against the file, glTF and GLB image media types in
+ * gltf_check.c, and only the four readers glint documents ever see a
+ * file. */
 #include <ctype.h>
 #include <limits.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
@@ -377,7 +379,13 @@ static glint_status check_glb(const unsigned char *data, size_t size, const char
                              length, size - pos - 8);
         pos += 8 + (size_t)(length + 3) / 4 * 4;
     }
-    return GLINT_OK;
+    if (size < 20)
+        return GLINT_OK;
+    /* Chunk 0 is the JSON; positions in messages are within it. */
+    size_t json = (size_t)read_int(data + 12, 4, false, false);
+    char where[PATH_MAX + 32];
+    snprintf(where, sizeof where, "%s: JSON chunk ", file);
+    return gltf_check_media_types(data + 20, json, where, err);
 }
 
 glint_status mesh_import_check(mesh_format f, const unsigned char *data, size_t size, const char *file,
@@ -392,6 +400,9 @@ glint_status mesh_import_check(mesh_format f, const unsigned char *data, size_t 
         if (i == size || data[i] != '{')
             return error_set(err, GLINT_ERR_INVALID, "%s: not a glTF file (it does not start with a JSON object)",
                              file);
+        char where[PATH_MAX + 2];
+        snprintf(where, sizeof where, "%s:", file);
+        return gltf_check_media_types(data, size, where, err);
     }
     if (f == MESH_FORMAT_PLY)
         return check_ply(data, size, file, err);

@@ -33,11 +33,18 @@ const char *mesh_import_extension(mesh_format f);
 
 /* Refuses bytes that would send Assimp astray before it parses them: a GLB
  * without its magic or a glTF that is not JSON (Assimp would try every other
- * reader it has), and a PLY file whose header or data do not follow the
- * format (Assimp's reader corrupts memory, loops or allocates whatever
- * counts it claims). `file` names the model in messages. */
+ * reader it has), a glTF or GLB image media type without its '/', and a PLY
+ * file whose header or data do not follow the format (Assimp's reader
+ * corrupts memory, loops or allocates whatever counts it claims). `file`
+ * names the model in messages. */
 glint_status mesh_import_check(mesh_format f, const unsigned char *data, size_t size, const char *file,
                                glint_error *err);
+
+/* Refuses glTF JSON text (size bytes) in which an image's mimeType, or a
+ * data URI's media type, has no '/': Assimp's reader crashes on them.
+ * Messages start with `where` and then "line:column: ", the position in
+ * the text. */
+glint_status gltf_check_media_types(const unsigned char *text, size_t size, const char *where, glint_error *err);
 
 /* Opens `path` for reading into *fd: a regular file (opening a FIFO does
  * not block, and it is refused); *size is its size. */

@@ -1711,6 +1711,79 @@ static void test_fuzz_glb_chunk_length(void **state)
     expect_refused("huge.glb", NULL, want);
 }
 
+/* Replaces the first `from` in text (which must hold it) by `to`. */
+static void replace_in(char *text, size_t size, const char *from, const char *to)
+{
+    char *at = strstr(text, from);
+    assert_non_null(at);
+    size_t tail = strlen(at + strlen(from));
+    assert_true((size_t)(at - text) + strlen(to) + tail < size);
+    memmove(at + strlen(to), at + strlen(from), tail + 1);
+    memcpy(at, to, strlen(to));
+}
+
+/* The textured quad as glTF text, its buffer in a data URI and its image
+ * given by `image` (a JSON object), written as tmp_dir/name. Returns the
+ * column (from 1, on the one line) where `mark` starts. */
+static int write_textured_gltf(const char *name, const char *image, const char *mark)
+{
+    unsigned char bin[1024];
+    size_t n = gltf_buffer(bin, true);
+    char uri[2048] = "data:application/octet-stream;base64,", json[16384];
+    base64(bin, n, uri + strlen(uri));
+    gltf_json(json, sizeof json, uri, n, true, textured_material);
+    replace_in(json, sizeof json, "{\"bufferView\":3,\"mimeType\":\"image/png\"}", image);
+    write_text(name, json);
+    return mark ? (int)(strstr(json, mark) - json) + 1 : 0;
+}
+
+/* Found by fuzz_mesh (regressions/mesh/glb-mimetype-without-slash-assimp-segv.glb):
+ * Assimp's glTF reader takes what follows the '/' of an embedded image's
+ * media type without looking for one, and reads from address 1. Such media
+ * types are refused, wherever JSON escapes hide them. */
+static void test_fuzz_gltf_media_type_without_slash(void **state)
+{
+    char want[300], png64[512], image[700];
+    base64(png_red_over_blue, sizeof png_red_over_blue, png64);
+
+    int col = write_textured_gltf("mime.gltf", "{\"bufferView\":3,\"mimeType\":\"image_png\"}", "\"image_png");
+    snprintf(want, sizeof want, "1:%d: image mimeType 'image_png' has no '/' (as in image/png)", col);
+    expect_refused_at("mime.gltf", want);
+    col = write_textured_gltf("escaped.gltf", "{\"bufferView\":3,\"mime\\u0054ype\":\"image_png\"}", "\"image_png");
+    snprintf(want, sizeof want, "1:%d: image mimeType 'image_png' has no '/' (as in image/png)", col);
+    expect_refused_at("escaped.gltf", want);
+    snprintf(image, sizeof image, "{\"uri\":\"data:image_png;base64,%s\"}", png64);
+    col = write_textured_gltf("uri.gltf", image, "\"data:image_png");
+    snprintf(want, sizeof want, "1:%d: data URI media type 'image_png' has no '/' (as in image/png)", col);
+    expect_refused_at("uri.gltf", want);
+
+    /* Escaped slashes count, and a data URI may name the image's type. */
+    write_textured_gltf("slash.gltf", "{\"bufferView\":3,\"mimeType\":\"image\\/png\"}", NULL);
+    snprintf(image, sizeof image, "{\"uri\":\"data:image/png;base64,%s\"}", png64);
+    write_textured_gltf("good-uri.gltf", image, NULL);
+    const char *good[] = {"slash.gltf", "good-uri.gltf"};
+    for (int k = 0; k < 2; k++) {
+        glint_scene *s = new_scene();
+        import_ok(s, good[k], NULL);
+        assert_int_equal(s->texture_count, 1);
+        glint_scene_free(s);
+    }
+
+    /* In a GLB, the position is within its JSON chunk. */
+    unsigned char glb[4096];
+    size_t n = write_glb(NULL, textured_material, glb, sizeof glb);
+    unsigned char *at = NULL;
+    for (size_t k = 0; !at && k + 11 <= n; k++)
+        if (memcmp(glb + k, "\"image/png\"", 11) == 0)
+            at = glb + k;
+    assert_non_null(at);
+    at[6] = '_';
+    write_bytes("mime.glb", glb, n);
+    snprintf(want, sizeof want, "JSON chunk 1:%d: image mimeType 'image_png' has no '/' (as in image/png)",
+             (int)(at - glb) - 20 + 1);
+    expect_refused("mime.glb", NULL, want);
+}
+
 static void test_refused_by_assimp(void **state)
 {
     write_text("empty.stl", "");
@@ -1808,6 +1881,7 @@ int main(void)
         cmocka_unit_test(test_refused_ply),
         cmocka_unit_test(test_refused_by_assimp),
         cmocka_unit_test(test_fuzz_glb_chunk_length),
+        cmocka_unit_test(test_fuzz_gltf_media_type_without_slash),
         cmocka_unit_test(test_fuzz_ply_assertion),
         cmocka_unit_test(test_silent),
     };
