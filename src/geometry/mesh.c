@@ -116,9 +116,13 @@ void mesh_surface(const mesh *m, const instance *inst, const ray *r, unsigned tr
     if (m->normals) {
         vec3 ns = v3_add(v3_add(v3_scale(vertex3(m->normals, idx[0]), b0), v3_scale(vertex3(m->normals, idx[1]), b1)),
                          v3_scale(vertex3(m->normals, idx[2]), b2));
-        ns = v3_normalize(xf_normal(&inst->to_object, ns));
-        if (v3_length(ns) > 0.5)
+        ns = xf_normal(&inst->to_object, ns);
+        /* Vertex normals that cancel out leave the geometric normal. */
+        double length = v3_length(ns);
+        if (length > 0) {
+            ns = v3_scale(ns, 1.0 / length);
             out->shading_n = v3_dot(ns, out->n) < 0 ? v3_neg(ns) : ns;
+        }
     }
     out->u = out->v = 0;
     if (m->uvs) {
