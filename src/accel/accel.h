@@ -58,20 +58,21 @@ void accel_free(accel *a);
 typedef color (*accel_filter_fn)(void *user, const ray *r, const accel_hit *hit);
 
 /* Finds the nearest hit of each of up to ACCEL_PACKET rays with t in
- * (0, inf), through Embree's packet traversal (fastest for coherent rays
- * such as a camera's): found[i] says whether ray i, if active[i], hit, and
- * hit[i] is then its nearest hit. Inactive lanes find nothing. skip[i] is a
- * shape ray i cannot meet (the one it leaves, when shape_is_left_behind
- * says so), which is then not tested at all, or -1. */
-void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const int skip[ACCEL_PACKET],
+ * (0, inf): found[i] says whether ray i, if active[i], hit, and hit[i] is
+ * then its nearest hit. Inactive lanes find nothing. skip[i] is a shape
+ * ray i cannot meet (the one it leaves, when shape_is_left_behind says
+ * so), which is then not tested at all, or -1. `coherent` says the rays
+ * are neighbours (a camera's, and their shadow rays), which Embree's
+ * packet traversal can exploit. */
+void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const int skip[ACCEL_PACKET], bool coherent,
                       const bool active[ACCEL_PACKET], accel_hit hit[ACCEL_PACKET], bool found[ACCEL_PACKET]);
 
 /* The light that survives each of up to ACCEL_PACKET shadow segments
  * (0, tmax[i]): the product of filter() over the surface crossings of
  * segment i, black as soon as something opaque blocks it, and black for
- * inactive lanes. skip[i] as for accel_intersect8. */
+ * inactive lanes. skip[i] and `coherent` as for accel_intersect8. */
 void accel_transmission8(const accel *a, const ray r[ACCEL_PACKET], const double tmax[ACCEL_PACKET],
-                         const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET], accel_filter_fn filter,
-                         void *user, color through[ACCEL_PACKET]);
+                         const int skip[ACCEL_PACKET], bool coherent, const bool active[ACCEL_PACKET],
+                         accel_filter_fn filter, void *user, color through[ACCEL_PACKET]);
 
 #endif

@@ -193,9 +193,9 @@ static color miss(const glint_scene *scene)
 
 /* Adds to direct[i] the light of every light source that reaches the hit
  * sp[i] of each lane found[i]: one packet of shadow segments per light,
- * over the lanes it lights. */
+ * over the lanes it lights, for hits of rays at recursion depth `depth`. */
 static void direct_light8(tracer *t, const ray r[ACCEL_PACKET], const bool found[ACCEL_PACKET],
-                          const shade_point sp[ACCEL_PACKET], color direct[ACCEL_PACKET])
+                          const shade_point sp[ACCEL_PACKET], int depth, color direct[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
     for (int l = 0; l < scene->light_count; l++) {
@@ -216,7 +216,7 @@ static void direct_light8(tracer *t, const ray r[ACCEL_PACKET], const bool found
         if (!any)
             continue;
         color through[ACCEL_PACKET];
-        accel_transmission8(t->acc, shadow, dist, skip, lit, shadow_filter, t, through);
+        accel_transmission8(t->acc, shadow, dist, skip, depth == 0, lit, shadow_filter, t, through);
         for (int i = 0; i < ACCEL_PACKET; i++)
             if (lit[i])
                 direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i], v3_neg(r[i].d)));
@@ -235,7 +235,7 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const int skip[ACCEL_PA
     shade_point sp[ACCEL_PACKET];
     color local[ACCEL_PACKET];
     branches b[ACCEL_PACKET];
-    accel_intersect8(t->acc, r, skip, active, hits, found);
+    accel_intersect8(t->acc, r, skip, depth == 0, active, hits, found);
     for (int i = 0; i < ACCEL_PACKET; i++) {
         t->rays += active[i];
         if (found[i]) {
@@ -243,7 +243,7 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const int skip[ACCEL_PA
             local[i] = ambient(scene, &sp[i]);
         }
     }
-    direct_light8(t, r, found, sp, local);
+    direct_light8(t, r, found, sp, depth, local);
     for (int i = 0; i < ACCEL_PACKET; i++)
         if (found[i])
             local[i] = shade_local(scene, &r[i], &sp[i], local[i], depth, &b[i]);
