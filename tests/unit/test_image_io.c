@@ -363,18 +363,25 @@ static glint_image sample_image(void)
     return img;
 }
 
+/* Writes img (then frees it) to tmp_dir/name, which path receives, and
+ * returns the file's bytes and *size: the caller frees them. */
+static unsigned char *write_and_read(glint_image *img, const char *name, char *path, size_t *size)
+{
+    glint_error err = {{0}};
+    tmp_path(path, name);
+    assert_int_equal(glint_image_write(img, path, &err), GLINT_OK);
+    glint_image_free(img);
+    unsigned char *bytes = read_bytes(path, size);
+    assert_non_null(bytes);
+    return bytes;
+}
+
 static void test_write_ppm_bytes(void **state)
 {
     char path[PATH_SIZE];
-    glint_error err = {{0}};
     glint_image img = sample_image();
-    tmp_path(path, "sample.ppm");
-    assert_int_equal(glint_image_write(&img, path, &err), GLINT_OK);
-    glint_image_free(&img);
-
     size_t size;
-    unsigned char *bytes = read_bytes(path, &size);
-    assert_non_null(bytes);
+    unsigned char *bytes = write_and_read(&img, "sample.ppm", path, &size);
     static const char header[] = "P6\n3 2\n255\n";
     assert_int_equal(size, strlen(header) + 18);
     assert_memory_equal(bytes, header, strlen(header));
@@ -395,13 +402,8 @@ static void test_write_png_round_trip(void **state)
     char path[PATH_SIZE];
     glint_error err = {{0}};
     glint_image img = sample_image();
-    tmp_path(path, "sample.png");
-    assert_int_equal(glint_image_write(&img, path, &err), GLINT_OK);
-    glint_image_free(&img);
-
     size_t size;
-    unsigned char *bytes = read_bytes(path, &size);
-    assert_non_null(bytes);
+    unsigned char *bytes = write_and_read(&img, "sample.png", path, &size);
     assert_true(size > 33);
     assert_memory_equal(bytes + 12, "IHDR", 4);
     assert_int_equal(bytes[24], 8); /* bit depth */
@@ -440,7 +442,6 @@ static void test_write_png_decodes_to_srgb_bytes(void **state)
 {
     enum { width = 301, height = 203 };
     char path[PATH_SIZE];
-    glint_error err = {{0}};
     glint_image img = noise_image(width, height);
     for (int y = 0; y < height / 2; y++)
         for (int x = 0; x < width; x++)
@@ -451,13 +452,8 @@ static void test_write_png_decodes_to_srgb_bytes(void **state)
     unsigned char *want = malloc(n), *got = malloc(n);
     assert_true(want && got);
     srgb_encode(want, img.pixels, n);
-    tmp_path(path, "bytes.png");
-    assert_int_equal(glint_image_write(&img, path, &err), GLINT_OK);
-    glint_image_free(&img);
-
     size_t size;
-    unsigned char *bytes = read_bytes(path, &size);
-    assert_non_null(bytes);
+    unsigned char *bytes = write_and_read(&img, "bytes.png", path, &size);
     assert_true(size > 64 * 1024);
     png_image png;
     memset(&png, 0, sizeof png);
@@ -717,12 +713,8 @@ static void test_load_truncated_png(void **state)
     char path[PATH_SIZE], cut[PATH_SIZE], want[2 * PATH_SIZE];
     glint_error err = {{0}};
     glint_image img = noise_image(16, 16);
-    tmp_path(path, "whole.png");
-    assert_int_equal(glint_image_write(&img, path, &err), GLINT_OK);
-    glint_image_free(&img);
     size_t size;
-    unsigned char *bytes = read_bytes(path, &size);
-    assert_non_null(bytes);
+    unsigned char *bytes = write_and_read(&img, "whole.png", path, &size);
     tmp_path(cut, "truncated.png");
     write_bytes(cut, bytes, size / 2);
     free(bytes);
