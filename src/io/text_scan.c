@@ -148,7 +148,7 @@ int scan_numbers(scan_line *l, double *out, scan_pos *at, int keep, glint_error 
 {
     int n = 0;
     for (;;) {
-        double x;
+        double x = 0;
         if (!scan_more(l))
             return n;
         scan_pos here = scan_here(l);
