@@ -3,8 +3,8 @@
 #   ./build.sh render [glint flags]   install what is missing, build, render glint.png
 #   ./build.sh test                   install what is missing, build, run every test
 # Debian packages that are missing are installed with apt-get (through sudo
-# when not root). Builds go to build/ (Release; for render, optimised from a
-# profile of training renders by cmake/pgo-build.sh), build-asan/ (the tests again
+# when not root). Builds go to build/ (Release, optimised from a profile of
+# training renders by cmake/pgo-build.sh), build-asan/ (the tests again
 # under ASan and UBSan) and build-fuzz/ (libFuzzer targets for the scene
 # loader and the model importer, each run for GLINT_FUZZ_SECONDS, default 60).
 set -euo pipefail
@@ -71,7 +71,8 @@ render)
     ;;
 test)
     install_missing
-    build build -DGLINT_WERROR=ON -DGLINT_PGO=
+    # The same profile-guided build as render, so the tests check what users run.
+    cmake/pgo-build.sh build -DGLINT_WERROR=ON
     ctest --test-dir build --output-on-failure -j "$(nproc)"
     build build-asan -DGLINT_WERROR=ON -DGLINT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
