@@ -92,6 +92,16 @@ static vec3 vertex3(const float *a, uint32_t i)
     return v3(a[3 * i], a[3 * i + 1], a[3 * i + 2]);
 }
 
+void mesh_prefetch(const mesh *m, unsigned tri)
+{
+    const uint32_t *idx = m->indices + 3 * (size_t)tri;
+    for (int k = 0; k < 3; k++) {
+        __builtin_prefetch(m->positions + 3 * (size_t)idx[k]);
+        if (m->normals)
+            __builtin_prefetch(m->normals + 3 * (size_t)idx[k]);
+    }
+}
+
 void mesh_surface(const mesh *m, const instance *inst, const ray *r, unsigned tri, double b1, double b2, double *t,
                   surface *out)
 {

@@ -35,6 +35,10 @@ void mesh_release(mesh *m);
 /* The material of triangle tri as placed by inst. */
 int mesh_material(const mesh *m, const instance *inst, unsigned tri);
 
+/* Asks the processor to start loading what mesh_surface will read of
+ * triangle tri, so that the loads of several hits overlap. */
+void mesh_prefetch(const mesh *m, unsigned tri);
+
 /* Describes the surface where world ray r hits triangle tri of m placed by
  * inst, near barycentric coordinates (b1, b2) and ray parameter *t from
  * Embree: *t is refined in double precision, out->n is the geometric normal
