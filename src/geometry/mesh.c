@@ -109,8 +109,10 @@ void mesh_surface(const mesh *m, const instance *inst, const ray *r, unsigned tr
     vec3 p0 = vertex3(m->positions, idx[0]), p1 = vertex3(m->positions, idx[1]), p2 = vertex3(m->positions, idx[2]);
     vec3 ng = v3_cross(v3_sub(p1, p0), v3_sub(p2, p0));
     /* Embree's t is single precision; redo it in double against the
-     * triangle's plane so new rays can start close to the surface. */
-    ray o = {xf_point(&inst->to_object, r->o), xf_vector(&inst->to_object, r->d)};
+     * triangle's plane so new rays can start close to the surface. A mesh
+     * placed as it is (the usual case) needs no ray or normal mapped. */
+    bool moved = inst->has_transform;
+    ray o = moved ? (ray){xf_point(&inst->to_object, r->o), xf_vector(&inst->to_object, r->d)} : *r;
     double denom = v3_dot(ng, o.d);
     if (denom != 0) {
         double exact = v3_dot(ng, v3_sub(p0, o.o)) / denom;
@@ -120,13 +122,14 @@ void mesh_surface(const mesh *m, const instance *inst, const ray *r, unsigned tr
     out->p_obj = ray_at(&o, *t);
     out->p = ray_at(r, *t);
     out->part = 0;
-    out->n = v3_normalize(xf_normal(&inst->to_object, ng));
+    out->n = v3_normalize(moved ? xf_normal(&inst->to_object, ng) : ng);
     out->shading_n = out->n;
     double b0 = 1 - b1 - b2;
     if (m->normals) {
         vec3 ns = v3_add(v3_add(v3_scale(vertex3(m->normals, idx[0]), b0), v3_scale(vertex3(m->normals, idx[1]), b1)),
                          v3_scale(vertex3(m->normals, idx[2]), b2));
-        ns = xf_normal(&inst->to_object, ns);
+        if (moved)
+            ns = xf_normal(&inst->to_object, ns);
         /* Vertex normals that cancel out leave the geometric normal. */
         double length = v3_length(ns);
         if (length > 0) {

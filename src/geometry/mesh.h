@@ -23,6 +23,7 @@ typedef struct instance {
     int mesh;
     int material;             /* -1: the mesh's own */
     transform to_world, to_object;
+    bool has_transform;       /* false: to_world is the identity */
 } instance;
 
 /* Copies and checks d (finite positions, indices in range, materials below

@@ -318,6 +318,7 @@ int glint_scene_add_instance(glint_scene *scene, int mesh_index, int mat, const 
         error_set(err, GLINT_ERR_INVALID, "transform is singular or not finite");
         return -1;
     }
+    inst.has_transform = !xf_is_identity(&inst.to_world);
     if (grow((void **)&scene->instances, &scene->instance_cap, scene->instance_count, sizeof inst, "instances",
              err))
         return -1;
