@@ -249,17 +249,22 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const int skip[ACCEL_PA
         }
     }
     direct_light8(t, r, found, sp, depth, local);
-    for (int i = 0; i < ACCEL_PACKET; i++)
-        if (found[i])
+    bool sent[BRANCHES] = {false}; /* whether any lane sends a ray of each kind */
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        if (found[i]) {
             local[i] = shade_local(scene, &r[i], &sp[i], local[i], depth, &b[i]);
+            for (int k = 0; k < BRANCHES; k++)
+                sent[k] |= b[i].on[k];
+        }
+    }
     for (int k = 0; k < BRANCHES; k++) {
+        if (!sent[k])
+            continue;
         ray next[ACCEL_PACKET];
         int next_skip[ACCEL_PACKET];
-        bool on[ACCEL_PACKET], any = false;
+        bool on[ACCEL_PACKET];
         for (int i = 0; i < ACCEL_PACKET; i++)
-            any |= on[i] = found[i] && b[i].on[k];
-        if (!any)
-            continue;
+            on[i] = found[i] && b[i].on[k];
         for (int i = 0; i < ACCEL_PACKET; i++) {
             next[i] = on[i] ? b[i].r[k] : r[i];
             next_skip[i] = on[i] ? b[i].skip[k] : -1;
@@ -270,9 +275,10 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const int skip[ACCEL_PA
             if (on[i])
                 local[i] = rgb_add(local[i], rgb_scale(rgb_mul(b[i].filter[k], c[i]), b[i].scale[k]));
     }
+    /* Inactive lanes get the sky too, which nothing reads. */
+    color sky = miss(scene);
     for (int i = 0; i < ACCEL_PACKET; i++)
-        if (active[i])
-            out[i] = found[i] ? fog_apply(&scene->fog, local[i], sp[i].hit.t) : miss(scene);
+        out[i] = found[i] ? fog_apply(&scene->fog, local[i], sp[i].hit.t) : sky;
 }
 
 void tracer_trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET],
