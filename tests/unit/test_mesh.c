@@ -245,6 +245,42 @@ static void test_instances_share_their_mesh(void **state)
     glint_scene_free(many);
 }
 
+/* A mesh placed as it is shades without mapping through its identity
+ * transform, and must give exactly what mapping through it gives. */
+static void test_placed_as_it_is_skips_the_identity_exactly(void **state)
+{
+    glint_scene *s = new_scene(9, 9, 10);
+    static const float p[] = {-1, -1, -5, 1, -1, -5.5f, 0, 1, -5.25f};
+    static const float n[] = {-1, 0, 1, 1, 0.5f, 1, 0, 0.25f, 1};
+    static const uint32_t idx[] = {0, 1, 2};
+    glint_mesh_data md = {p, n, NULL, 3, idx, 1, NULL, flat(s, 1, 1, 1)};
+    int mesh_id = glint_scene_add_mesh(s, "tilted", &md, NULL);
+    glint_transform identity = glint_transform_identity(), moved = glint_transform_identity();
+    moved.m[0][3] = 2;
+    assert_int_equal(glint_scene_add_instance(s, mesh_id, -1, NULL, NULL), 0);
+    assert_int_equal(glint_scene_add_instance(s, mesh_id, -1, &identity, NULL), 1);
+    assert_int_equal(glint_scene_add_instance(s, mesh_id, -1, &moved, NULL), 2);
+    assert_false(s->instances[0].has_transform);
+    assert_false(s->instances[1].has_transform);
+    assert_true(s->instances[2].has_transform);
+    instance through = s->instances[0];
+    through.has_transform = true;
+    ray r = {{0.1, -0.2, 0.3}, v3_normalize(v3(0.05, 0.02, -1))};
+    for (int k = 0; k < 5; k++) {
+        double b1 = 0.1 + 0.15 * k, b2 = 0.3 - 0.05 * k, t0 = 5.4 + 0.01 * k, t1 = t0;
+        surface direct, mapped;
+        mesh_surface(&s->meshes[0], &s->instances[0], &r, 0, b1, b2, &t0, &direct);
+        mesh_surface(&s->meshes[0], &through, &r, 0, b1, b2, &t1, &mapped);
+        assert_true(t0 == t1);
+        assert_true(v3_dot(v3_sub(direct.p, mapped.p), v3_sub(direct.p, mapped.p)) == 0);
+        assert_true(v3_dot(v3_sub(direct.p_obj, mapped.p_obj), v3_sub(direct.p_obj, mapped.p_obj)) == 0);
+        assert_true(direct.n.x == mapped.n.x && direct.n.y == mapped.n.y && direct.n.z == mapped.n.z);
+        assert_true(direct.shading_n.x == mapped.shading_n.x && direct.shading_n.y == mapped.shading_n.y &&
+                    direct.shading_n.z == mapped.shading_n.z);
+    }
+    glint_scene_free(s);
+}
+
 static void test_smooth_normals_and_per_triangle_materials(void **state)
 {
     glint_scene *s = new_scene(9, 9, 10);
@@ -442,6 +478,7 @@ int main(void)
         cmocka_unit_test(test_tessellated_sphere_matches_analytic),
         cmocka_unit_test(test_quad_split_either_way_gives_the_same_image),
         cmocka_unit_test(test_instances_share_their_mesh),
+        cmocka_unit_test(test_placed_as_it_is_skips_the_identity_exactly),
         cmocka_unit_test(test_opaque_and_see_through_meshes_cast_their_shadows),
         cmocka_unit_test(test_placed_once_or_instanced_look_the_same),
         cmocka_unit_test(test_smooth_normals_and_per_triangle_materials),
