@@ -6,7 +6,7 @@
 #   2. render the training set below with it (a few seconds);
 #   3. configure with GLINT_PGO=use and build everything from that record.
 # The images do not change (no floating-point option differs); renders are
-# about 7% faster (bench/README.md). With another compiler CMake ignores
+# 5 to 15% faster (bench/README.md). With another compiler CMake ignores
 # GLINT_PGO and this is a plain Release build. build.sh render and
 # bench/run build through here.
 set -euo pipefail
