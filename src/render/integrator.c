@@ -18,13 +18,18 @@ static vec3 offset_point(vec3 p, vec3 n)
     return v3_madd(p, n, 1e-7 * scale);
 }
 
+/* The mesh of a mesh hit (h->shape < 0). */
+static const mesh *hit_mesh(const glint_scene *scene, const accel_hit *h)
+{
+    return &scene->meshes[scene->instances[h->instance].mesh];
+}
+
 /* The material hit, whether a shape or a mesh triangle. */
 static const glint_material *hit_material(const glint_scene *scene, const accel_hit *h)
 {
     if (h->shape >= 0)
         return &scene->materials[scene->shapes[h->shape].material].m;
-    const instance *inst = &scene->instances[h->instance];
-    return &scene->materials[mesh_material(&scene->meshes[inst->mesh], inst, h->triangle)].m;
+    return &scene->materials[mesh_material(hit_mesh(scene, h), &scene->instances[h->instance], h->triangle)].m;
 }
 
 /* Describes the surface at a hit; for meshes this refines h->t. */
@@ -34,8 +39,7 @@ static void hit_surface(const glint_scene *scene, const ray *r, accel_hit *h, su
         shape_surface(&scene->shapes[h->shape], r, &h->on_shape, s);
         return;
     }
-    const instance *inst = &scene->instances[h->instance];
-    mesh_surface(&scene->meshes[inst->mesh], inst, r, h->triangle, h->b1, h->b2, &h->t, s);
+    mesh_surface(hit_mesh(scene, h), &scene->instances[h->instance], r, h->triangle, h->b1, h->b2, &h->t, s);
 }
 
 static color surface_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s)
@@ -240,7 +244,7 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const int skip[ACCEL_PA
      * together rather than one lane's at a time. */
     for (int i = 0; i < ACCEL_PACKET; i++)
         if (found[i] && hits[i].shape < 0)
-            mesh_prefetch(&scene->meshes[scene->instances[hits[i].instance].mesh], hits[i].triangle);
+            mesh_prefetch(hit_mesh(scene, &hits[i]), hits[i].triangle);
     for (int i = 0; i < ACCEL_PACKET; i++) {
         t->rays += active[i];
         if (found[i]) {
