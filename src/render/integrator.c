@@ -245,12 +245,22 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const int skip[ACCEL_PA
     for (int i = 0; i < ACCEL_PACKET; i++)
         if (found[i] && hits[i].shape < 0)
             mesh_prefetch(hit_mesh(scene, &hits[i]), hits[i].triangle);
+    /* A hit the fog hides completely looks like a miss, the fog colour
+     * exactly (fog_apply gives it at factor 1 whatever the light), so it
+     * is not shaded. A mesh hit's distance is exact only once refined. */
     for (int i = 0; i < ACCEL_PACKET; i++) {
         t->rays += active[i];
-        if (found[i]) {
-            shade_begin(scene, &r[i], &hits[i], &sp[i]);
-            local[i] = ambient(scene, &sp[i]);
+        if (!found[i])
+            continue;
+        if (hits[i].shape >= 0 && fog_hides(&scene->fog, hits[i].t)) {
+            found[i] = false;
+            continue;
         }
+        shade_begin(scene, &r[i], &hits[i], &sp[i]);
+        if (hits[i].shape < 0 && fog_hides(&scene->fog, sp[i].hit.t))
+            found[i] = false;
+        else
+            local[i] = ambient(scene, &sp[i]);
     }
     direct_light8(t, r, found, sp, depth, local);
     bool sent[BRANCHES] = {false}; /* whether any lane sends a ray of each kind */

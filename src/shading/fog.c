@@ -43,3 +43,9 @@ color fog_apply(const glint_fog *f, color c, double d)
     double t = fog_factor(f, d);
     return t > 0 ? rgb_lerp(c, f->color, t) : c;
 }
+
+bool fog_hides(const glint_fog *f, double d)
+{
+    /* At factor 1, c * 0 + fog * 1 is the fog colour to the bit. */
+    return f->kind != GLINT_FOG_NONE && fog_factor(f, d) >= 1;
+}

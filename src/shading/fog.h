@@ -2,6 +2,7 @@
 #ifndef GLINT_SHADING_FOG_H
 #define GLINT_SHADING_FOG_H
 
+#include <stdbool.h>
 #include "core/color.h"
 
 /* Checks a fog description; fills err naming a bad value. */
@@ -13,5 +14,10 @@ double fog_factor(const glint_fog *fog, double d);
 
 /* Blends c towards the fog colour for a segment of length d. */
 color fog_apply(const glint_fog *fog, color c, double d);
+
+/* True when the fog hides whatever lies at the end of a segment of length
+ * d: fog_apply then gives exactly the fog colour for any finite c, so
+ * nothing there needs shading. */
+bool fog_hides(const glint_fog *fog, double d);
 
 #endif

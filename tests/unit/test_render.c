@@ -345,6 +345,48 @@ static void test_fresnel_reflects_more_at_grazing_angles(void **state)
     assert_true(blue[1] > 0.9);
 }
 
+/* A wall 50 away under a light, behind linear fog that ends at fog_end. */
+static glint_scene *fogged_wall(double fog_end)
+{
+    glint_scene *s = new_scene(10, 10, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 30);
+    add_quad(s, (glint_vec3){-100, -100, -50}, (glint_vec3){100, -100, -50}, (glint_vec3){100, 100, -50},
+             (glint_vec3){-100, 100, -50}, matte(s, 0.3, 0.6, 0.9));
+    glint_light l = {.kind = GLINT_LIGHT_POINT, .position = {0, 0, -10}, .color = {1, 1, 1}};
+    assert_true(glint_scene_add_light(s, &l, NULL) >= 0);
+    glint_fog f = {.kind = GLINT_FOG_LINEAR, .color = {0.7, 0.2, 0.1}, .start = 0, .end = fog_end};
+    assert_int_equal(glint_scene_set_fog(s, &f, NULL), GLINT_OK);
+    return s;
+}
+
+/* Fog that hides a surface completely shows exactly its colour there, and
+ * the surface is not shaded: no shadow ray is traced for it. */
+static void test_fog_hides_unshaded(void **state)
+{
+    for (int pass = 0; pass < 2; pass++) {
+        glint_scene *s = fogged_wall(pass == 0 ? 40 : 80);
+        glint_image img;
+        glint_render_stats st;
+        glint_render_options o = {.threads = 1};
+        assert_int_equal(glint_render(s, &o, &img, &st, NULL), GLINT_OK);
+        const float *p = pixel(&img, 4, 6);
+        if (pass == 0) {
+            /* 100 camera rays and nothing else. */
+            assert_int_equal(st.rays, 100);
+            for (int i = 0; i < img.width * img.height; i++) {
+                assert_true(img.pixels[3 * i] == 0.7f);
+                assert_true(img.pixels[3 * i + 1] == 0.2f);
+                assert_true(img.pixels[3 * i + 2] == 0.1f);
+            }
+        } else {
+            /* Partly hidden: the wall shows through, lit by shadow rays. */
+            assert_int_equal(st.rays, 200);
+            assert_true(p[2] > 0.1f + 0.05f);
+        }
+        glint_image_free(&img);
+        glint_scene_free(s);
+    }
+}
+
 static void test_identical_bytes_for_any_thread_count(void **state)
 {
     glint_error err;
@@ -457,6 +499,7 @@ int main(void)
         cmocka_unit_test(test_transparency_passes_light_straight_through),
         cmocka_unit_test(test_supersamples_are_four_distinct_points),
         cmocka_unit_test(test_fresnel_reflects_more_at_grazing_angles),
+        cmocka_unit_test(test_fog_hides_unshaded),
         cmocka_unit_test(test_identical_bytes_for_any_thread_count),
         cmocka_unit_test(test_progress_reports_every_tile_in_order),
         cmocka_unit_test(test_cancel_flag_stops_the_render),

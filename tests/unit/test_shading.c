@@ -277,6 +277,27 @@ static void test_fog(void **state)
     assert_string_equal(err.message, "fog density must be positive, got 0");
 }
 
+/* Where fog hides a surface completely, fog_apply gives exactly the fog
+ * colour, whatever the surface showed, so shading can be skipped. */
+static void test_fog_hides(void **state)
+{
+    glint_fog f = {.kind = GLINT_FOG_LINEAR, .color = {0.8, 0.3, 0.1}, .start = -16, .end = 284};
+    assert_false(fog_hides(&f, 283.999));
+    assert_true(fog_hides(&f, 284));
+    assert_true(fog_hides(&f, INFINITY));
+    const color shown[] = {{0, 0, 0}, {0.123456789, 7.5, 1e-300}, {1e300, 0.3, 0.8}};
+    for (int i = 0; i < 3; i++) {
+        color c = fog_apply(&f, shown[i], 300);
+        assert_true(c.r == 0.8 && c.g == 0.3 && c.b == 0.1);
+    }
+    glint_fog e = {.kind = GLINT_FOG_EXPONENTIAL, .color = {1, 1, 1}, .density = 0.1};
+    assert_false(fog_hides(&e, 10));
+    assert_false(fog_hides(&e, 300));          /* 1 - exp(-30) rounds below 1 */
+    assert_true(fog_hides(&e, 1e4));           /* exp(-1000) is 0 */
+    glint_fog none = {.kind = GLINT_FOG_NONE};
+    assert_false(fog_hides(&none, INFINITY));
+}
+
 static void test_phong(void **state)
 {
     glint_material m = glint_material_default();
@@ -341,6 +362,7 @@ int main(void)
         cmocka_unit_test(test_planar_and_cylindrical_mapping),
         cmocka_unit_test(test_image_lookup),
         cmocka_unit_test(test_fog),
+        cmocka_unit_test(test_fog_hides),
         cmocka_unit_test(test_phong),
         cmocka_unit_test(test_material_validation),
     };
