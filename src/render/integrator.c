@@ -93,10 +93,12 @@ static void shade_begin(const glint_scene *scene, const ray *r, const accel_hit 
     sp->base = surface_color(scene, &sp->hit, sp->m, &sp->s);
 }
 
-/* The shadow segment from sp towards light l, when l lights sp's front. */
-static bool shadow_segment(const light *l, const shade_point *sp, light_sample *ls, ray *shadow)
+/* The shadow segment from sp, seen along ray r, towards light l, when l
+ * lights sp's front and its light there is not black before any shadow. */
+static bool shadow_segment(const light *l, const ray *r, const shade_point *sp, light_sample *ls, ray *shadow)
 {
-    if (!light_illuminate(l, sp->s.p, ls) || v3_dot(sp->n, ls->to_light) <= 0 || v3_dot(sp->ns, ls->to_light) <= 0)
+    if (!light_illuminate(l, sp->s.p, ls) || v3_dot(sp->n, ls->to_light) <= 0 || v3_dot(sp->ns, ls->to_light) <= 0 ||
+        !phong_reaches(sp->m, sp->base, sp->ns, ls->to_light, v3_neg(r->d), ls->radiance))
         return false;
     *shadow = (ray){sp->origin, ls->to_light};
     return true;
@@ -209,7 +211,7 @@ static void direct_light8(tracer *t, const ray r[ACCEL_PACKET], const bool found
         int skip[ACCEL_PACKET];
         bool lit[ACCEL_PACKET], any = false;
         for (int i = 0; i < ACCEL_PACKET; i++) {
-            lit[i] = found[i] && shadow_segment(&scene->lights[l], &sp[i], &ls[i], &shadow[i]);
+            lit[i] = found[i] && shadow_segment(&scene->lights[l], &r[i], &sp[i], &ls[i], &shadow[i]);
             dist[i] = lit[i] ? ls[i].distance : 0;
             skip[i] = lit[i] ? left_behind(scene, &sp[i], ls[i].to_light) : -1;
             if (!lit[i])

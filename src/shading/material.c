@@ -91,3 +91,15 @@ color phong_light(const glint_material *m, color c, vec3 n, vec3 to_light, vec3 
     }
     return out;
 }
+
+bool phong_reaches(const glint_material *m, color c, vec3 n, vec3 to_light, vec3 to_eye, color radiance)
+{
+    /* A zero factor in every channel makes the diffuse term exactly zero. */
+    if (m->diffuse > 0 &&
+        ((c.r > 0 && radiance.r > 0) || (c.g > 0 && radiance.g > 0) || (c.b > 0 && radiance.b > 0)))
+        return true;
+    if (!(m->specular > 0) || !(rgb_max(radiance) > 0))
+        return false;
+    /* phong_light adds the specular term only where this is positive. */
+    return v3_dot(optics_reflect(v3_neg(to_light), n), to_eye) > 0;
+}

@@ -25,4 +25,11 @@ color material_filter(const glint_material *m, color surface_color);
 color phong_light(const glint_material *m, color surface_color, vec3 n, vec3 to_light,
                   vec3 to_eye, color radiance);
 
+/* False only when phong_light with these arguments, n . to_light > 0, is
+ * exactly black, and stays so for any radiance that is black wherever
+ * `radiance` is (what a shadow ray lets through only dims it): then the
+ * light adds nothing there, and its shadow ray need not be traced. */
+bool phong_reaches(const glint_material *m, color surface_color, vec3 n, vec3 to_light, vec3 to_eye,
+                   color radiance);
+
 #endif

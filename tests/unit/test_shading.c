@@ -318,6 +318,42 @@ static void test_phong(void **state)
     assert_near(rgb_max(out), 0, 0);
 }
 
+/* phong_reaches says no only where phong_light is black, and stays black
+ * however a shadow dims the light: then no shadow ray is traced. */
+static void test_phong_reaches(void **state)
+{
+    glint_material m = glint_material_default();
+    color black = {0, 0, 0}, red = {1, 0, 0}, green_light = {0, 1, 0}, white = {1, 1, 1};
+    vec3 n = v3(0, 1, 0), l = v3(sin(M_PI / 3), cos(M_PI / 3), 0);
+    vec3 facing = v3(-sin(M_PI / 3), cos(M_PI / 3), 0); /* on the mirror direction: r.v = 1 */
+    vec3 behind = v3(sin(M_PI / 3), cos(M_PI / 3), 0);  /* r.v = -0.5: no highlight */
+    struct {
+        double specular, diffuse;
+        color c, radiance;
+        vec3 eye;
+        bool reaches;
+    } cases[] = {
+        {1, 1, red, white, behind, true},          /* diffuse */
+        {0, 1, red, green_light, facing, false},   /* red surface, green light, no highlight */
+        {1, 1, red, green_light, facing, true},    /* ... but a highlight of the green light */
+        {1, 1, black, white, facing, true},        /* a black mirror's highlight */
+        {1, 1, black, white, behind, false},       /* and away from it */
+        {0, 0, red, white, facing, false},         /* neither diffuse nor specular */
+        {1, 1, red, black, facing, false},         /* no light */
+    };
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        m.specular = cases[i].specular;
+        m.diffuse = cases[i].diffuse;
+        assert_int_equal(phong_reaches(&m, cases[i].c, n, l, cases[i].eye, cases[i].radiance), cases[i].reaches);
+        color dimmed = rgb_scale(cases[i].radiance, 0.37);
+        color out = phong_light(&m, cases[i].c, n, l, cases[i].eye, dimmed);
+        if (!cases[i].reaches)
+            assert_true(out.r == 0 && out.g == 0 && out.b == 0);
+        else
+            assert_true(rgb_max(out) > 0);
+    }
+}
+
 static void test_material_validation(void **state)
 {
     glint_error err;
@@ -364,6 +400,7 @@ int main(void)
         cmocka_unit_test(test_fog),
         cmocka_unit_test(test_fog_hides),
         cmocka_unit_test(test_phong),
+        cmocka_unit_test(test_phong_reaches),
         cmocka_unit_test(test_material_validation),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
