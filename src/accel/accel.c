@@ -89,7 +89,8 @@ static void seen_init(seen_set *s)
 
 static void seen_free(seen_set *s)
 {
-    if (s->keys != s->inline_keys)
+    /* Most sets were never used: no call to free(NULL) for them. */
+    if (s->keys && s->keys != s->inline_keys)
         free(s->keys);
 }
 

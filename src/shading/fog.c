@@ -46,6 +46,10 @@ color fog_apply(const glint_fog *f, color c, double d)
 
 bool fog_hides(const glint_fog *f, double d)
 {
-    /* At factor 1, c * 0 + fog * 1 is the fog colour to the bit. */
+    /* At factor 1, c * 0 + fog * 1 is the fog colour to the bit. Linear
+     * fog's factor is (d - start) / (end - start), at least 1 when the
+     * numerator is at least the denominator: no division needed. */
+    if (f->kind == GLINT_FOG_LINEAR)
+        return d - f->start >= f->end - f->start;
     return f->kind != GLINT_FOG_NONE && fog_factor(f, d) >= 1;
 }
