@@ -21,4 +21,9 @@ void camera_init(camera *c, const glint_camera *desc, int width, int height);
  * bottom-right. */
 ray camera_ray(const camera *c, double x, double y);
 
+/* camera_ray for the image positions (x[i], y[i]) of count rays, into
+ * out[i], with exactly its results; written lane by lane so the compiler
+ * can compute several rays at once. */
+void camera_rays(const camera *c, int count, const double *x, const double *y, ray *out);
+
 #endif

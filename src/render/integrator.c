@@ -250,16 +250,17 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const int skip[ACCEL_PA
     /* A hit the fog hides completely looks like a miss, the fog colour
      * exactly (fog_apply gives it at factor 1 whatever the light), so it
      * is not shaded. A mesh hit's distance is exact only once refined. */
+    bool fog = scene->fog.kind != GLINT_FOG_NONE;
     for (int i = 0; i < ACCEL_PACKET; i++) {
         t->rays += active[i];
         if (!found[i])
             continue;
-        if (hits[i].shape >= 0 && fog_hides(&scene->fog, hits[i].t)) {
+        if (fog && hits[i].shape >= 0 && fog_hides(&scene->fog, hits[i].t)) {
             found[i] = false;
             continue;
         }
         shade_begin(scene, &r[i], &hits[i], &sp[i]);
-        if (hits[i].shape < 0 && fog_hides(&scene->fog, sp[i].hit.t))
+        if (fog && hits[i].shape < 0 && fog_hides(&scene->fog, sp[i].hit.t))
             found[i] = false;
         else
             local[i] = ambient(scene, &sp[i]);

@@ -56,32 +56,41 @@ static void render_block(tracer *t, const job *j, int x0, int y0)
 {
     const glint_settings *s = &j->scene->settings;
     int n = j->grid;
+    bool jittered = s->sampler == GLINT_SAMPLER_JITTERED;
     ray rays[ACCEL_PACKET];
     bool active[ACCEL_PACKET];
+    int px[ACCEL_PACKET], py[ACCEL_PACKET];
     color sum[ACCEL_PACKET], c[ACCEL_PACKET];
     for (int i = 0; i < ACCEL_PACKET; i++) {
-        active[i] = x0 + i % BLOCK_W < s->width && y0 + i / BLOCK_W < s->height;
+        px[i] = x0 + i % BLOCK_W;
+        py[i] = y0 + i / BLOCK_W;
+        active[i] = px[i] < s->width && py[i] < s->height;
         sum[i] = rgb(0, 0, 0);
     }
     for (int sy = 0; sy < n; sy++) {
         for (int sx = 0; sx < n; sx++) {
+            double x[ACCEL_PACKET], y[ACCEL_PACKET], ox, oy;
+            /* The regular grid's offsets are the same for every lane. */
+            sample_offset(s, n, px[0], py[0], sx, sy, &ox, &oy);
             for (int i = 0; i < ACCEL_PACKET; i++) {
-                int px = x0 + i % BLOCK_W, py = y0 + i / BLOCK_W;
-                double ox, oy;
-                sample_offset(s, n, px, py, sx, sy, &ox, &oy);
-                rays[i] = camera_ray(&j->cam, px + ox, py + oy);
+                if (jittered)
+                    sample_offset(s, n, px[i], py[i], sx, sy, &ox, &oy);
+                x[i] = px[i] + ox;
+                y[i] = py[i] + oy;
             }
+            camera_rays(&j->cam, ACCEL_PACKET, x, y, rays);
             tracer_trace8(t, rays, active, c);
             for (int i = 0; i < ACCEL_PACKET; i++)
                 if (active[i])
                     sum[i] = rgb_add(sum[i], c[i]);
         }
     }
+    double share = 1.0 / (n * n);
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (!active[i])
             continue;
-        color avg = rgb_scale(sum[i], 1.0 / (n * n));
-        float *p = j->pixels + 3 * ((size_t)(y0 + i / BLOCK_W) * s->width + x0 + i % BLOCK_W);
+        color avg = rgb_scale(sum[i], share);
+        float *p = j->pixels + 3 * ((size_t)py[i] * s->width + px[i]);
         p[0] = (float)avg.r;
         p[1] = (float)avg.g;
         p[2] = (float)avg.b;
