@@ -492,7 +492,7 @@ static void nearest_plane(query *q, unsigned i)
     double nearest = q->tmax[i];
     for (int k = 0; k < a->plane_count; k++) {
         shape_hit h;
-        if (a->planes[k] != q->skip[i] && shape_intersect(&a->shapes[a->planes[k]], q->r + i, 0, nearest, &h)) {
+        if (a->planes[k] != q->skip[i] && shape_intersect_plane(&a->shapes[a->planes[k]], q->r + i, 0, nearest, &h)) {
             nearest = h.t;
             q->hit[i] = h;
             q->index[i] = a->planes[k];
@@ -514,7 +514,8 @@ static bool through_planes(query *q, unsigned i)
     const accel *a = q->acc;
     for (int k = 0; k < a->plane_count; k++) {
         accel_hit h = {.shape = a->planes[k], .instance = -1};
-        if (h.shape != q->skip[i] && shape_intersect(&a->shapes[h.shape], q->r + i, 0, q->tmax[i], &h.on_shape)) {
+        if (h.shape != q->skip[i] &&
+            shape_intersect_plane(&a->shapes[h.shape], q->r + i, 0, q->tmax[i], &h.on_shape)) {
             if (shape_opaque(a, h.shape))
                 return false;
             h.t = h.on_shape.t;

@@ -54,6 +54,14 @@ bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, sha
     return KINDS[s->desc.kind].intersect(s, &o, tmin, tmax, hit);
 }
 
+bool shape_intersect_plane(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+{
+    if (!s->has_transform)
+        return plane_intersect(s, r, tmin, tmax, hit);
+    ray o = object_ray(s, r);
+    return plane_intersect(s, &o, tmin, tmax, hit);
+}
+
 void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *out)
 {
     out->p = ray_at(r, hit->t);

@@ -56,6 +56,10 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
  * starts inside a closed shape finds the surface on its way out. */
 bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
 
+/* shape_intersect for a plane (s must be one), without looking up its
+ * kind's test: for the callers that test planes themselves, often. */
+bool shape_intersect_plane(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
+
 /* Describes the surface at hit on world ray r, all but u and v. */
 void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *out);
 

@@ -273,6 +273,28 @@ static void test_plane_miss(void **state)
     MISS(s, R(v3(3, -1, 3), v3(0, 1, 0)));
 }
 
+/* shape_intersect_plane, the accelerator's shortcut, answers exactly as
+ * shape_intersect, with and without a transform. */
+static void test_plane_shortcut_is_the_same_test(void **state)
+{
+    glint_transform m = glint_transform_translate(glint_transform_rotate(glint_transform_identity(), (glint_vec3){1, 0, 0}, 30),
+                                                  0.5, -2, 3);
+    shape plain = MAKE(test_floor(), NULL), moved = MAKE(test_floor(), &m);
+    const shape *planes[] = {&plain, &moved};
+    int hits = 0;
+    for (int k = 0; k < 2; k++) {
+        for (int i = 0; i < 50; i++) {
+            ray r = R(v3(0.3 * i - 7, 5 - 0.2 * i, 0.1 * i), v3(sin(i), -cos(0.7 * i), 0.2 * (i % 5) - 0.4));
+            shape_hit a = {0, -1}, b = {0, -1};
+            bool ha = shape_intersect(planes[k], &r, 0.01, 20, &a), hb = shape_intersect_plane(planes[k], &r, 0.01, 20, &b);
+            assert_int_equal(ha, hb);
+            assert_memory_equal(&a, &b, sizeof a);
+            hits += ha;
+        }
+    }
+    assert_true(hits > 20 && hits < 80); /* both hits and misses were tried */
+}
+
 static void test_plane_uv_axes(void **state)
 {
     /* A wall facing +z: u runs along +x and v down, like an image seen
@@ -1075,6 +1097,7 @@ int main(void)
         cmocka_unit_test(test_plane_hit),
         cmocka_unit_test(test_plane_from_below),
         cmocka_unit_test(test_plane_miss),
+        cmocka_unit_test(test_plane_shortcut_is_the_same_test),
         cmocka_unit_test(test_plane_uv_axes),
         cmocka_unit_test(test_plane_normal_scale),
         cmocka_unit_test(test_triangle_hit),
