@@ -348,7 +348,7 @@ static void add_instance(accel *a, const instance *inst, unsigned id)
 static bool add_flat(accel *a, const mesh *m, const instance *inst, int index, bool opaque)
 {
     const float *positions = m->positions;
-    if (!xf_is_identity(&inst->to_world)) {
+    if (inst->has_transform) {
         float *v = malloc((3 * (size_t)m->vertex_count + 1) * sizeof *v);
         if (!v)
             return false;

@@ -17,19 +17,16 @@ void camera_init(camera *c, const glint_camera *d, int width, int height)
 
 ray camera_ray(const camera *c, double x, double y)
 {
-    /* No division (this runs for every camera ray), and the image centre
-     * and every pixel edge there map exactly onto the view axis. */
-    double sx = (2 * x - c->width) * c->per_x;
-    double sy = (c->height - 2 * y) * c->per_y;
-    vec3 d = v3_add(c->forward, v3_add(v3_scale(c->right, sx), v3_scale(c->up, sy)));
-    ray r = {c->position, v3_normalize(d)};
+    ray r;
+    camera_rays(c, 1, &x, &y, &r);
     return r;
 }
 
 void camera_rays(const camera *c, int count, const double *x, const double *y, ray *out)
 {
-    /* The operations of camera_ray and v3_normalize, in their order, a few
-     * rays at a time through arrays the compiler can turn into vectors. */
+    /* No division but the normalisation's, and the image centre and every
+     * pixel edge there map exactly onto the view axis. A few rays at a time
+     * go through arrays the compiler can turn into vectors. */
     enum { CHUNK = 8 };
     vec3 f = c->forward, r = c->right, u = c->up;
     for (int base = 0; base < count; base += CHUNK) {

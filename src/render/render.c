@@ -71,7 +71,8 @@ static void render_block(tracer *t, const job *j, int x0, int y0)
         for (int sx = 0; sx < n; sx++) {
             double x[ACCEL_PACKET], y[ACCEL_PACKET], ox, oy;
             /* The regular grid's offsets are the same for every lane. */
-            sample_offset(s, n, px[0], py[0], sx, sy, &ox, &oy);
+            if (!jittered)
+                sample_offset(s, n, px[0], py[0], sx, sy, &ox, &oy);
             for (int i = 0; i < ACCEL_PACKET; i++) {
                 if (jittered)
                     sample_offset(s, n, px[i], py[i], sx, sy, &ox, &oy);

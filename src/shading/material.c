@@ -78,6 +78,13 @@ static double lobe_pow(double x, double e)
     return result;
 }
 
+/* The cosine between the mirror direction of the light about n and the
+ * eye, the base of the specular lobe: it shows only where positive. */
+static double lobe_cos(vec3 n, vec3 to_light, vec3 to_eye)
+{
+    return v3_dot(optics_reflect(v3_neg(to_light), n), to_eye);
+}
+
 color phong_light(const glint_material *m, color c, vec3 n, vec3 to_light, vec3 to_eye, color radiance)
 {
     double n_dot_l = v3_dot(n, to_light);
@@ -85,7 +92,7 @@ color phong_light(const glint_material *m, color c, vec3 n, vec3 to_light, vec3 
         return rgb(0, 0, 0);
     color out = rgb_scale(rgb_mul(c, radiance), m->diffuse * n_dot_l);
     if (m->specular > 0) {
-        double r_dot_v = v3_dot(optics_reflect(v3_neg(to_light), n), to_eye);
+        double r_dot_v = lobe_cos(n, to_light, to_eye);
         if (r_dot_v > 0)
             out = rgb_madd(out, radiance, m->specular * lobe_pow(r_dot_v, m->shininess));
     }
@@ -100,6 +107,5 @@ bool phong_reaches(const glint_material *m, color c, vec3 n, vec3 to_light, vec3
         return true;
     if (!(m->specular > 0) || !(rgb_max(radiance) > 0))
         return false;
-    /* phong_light adds the specular term only where this is positive. */
-    return v3_dot(optics_reflect(v3_neg(to_light), n), to_eye) > 0;
+    return lobe_cos(n, to_light, to_eye) > 0;
 }
