@@ -69,7 +69,7 @@ static void render_block(tracer *t, const job *j, int x0, int y0)
     }
     for (int sy = 0; sy < n; sy++) {
         for (int sx = 0; sx < n; sx++) {
-            double x[ACCEL_PACKET], y[ACCEL_PACKET], ox, oy;
+            double x[ACCEL_PACKET], y[ACCEL_PACKET], ox = 0, oy = 0;
             /* The regular grid's offsets are the same for every lane. */
             if (!jittered)
                 sample_offset(s, n, px[0], py[0], sx, sy, &ox, &oy);
