@@ -65,17 +65,17 @@ static float finite_or_zero(double x)
     return isfinite(f) ? f : 0.0f;
 }
 
-/* Reads a v, vt or vn statement (`what`), whose keyword is at `at`, and
- * appends its item to the model's positions, uvs or normals. */
-static glint_status read_item(obj_reader *r, scan_line *l, scan_pos at, part what, glint_error *err)
+/* Reads the numbers of a v, vt or vn statement (`what`), whose keyword is
+ * at `at`, as the item it adds: x y z, u and glint's v, or x y z. */
+static glint_status parse_item(scan_line *l, scan_pos at, part what, float item[3], glint_error *err)
 {
     static const struct {
         const char *keyword, *needs;
-        int least, most, floats;
+        int least, most;
     } kinds[] = {
-        {"v", "at least 3 numbers (x y z)", 3, INT32_MAX, 3},
-        {"vt", "1 to 3 numbers (u [v [w]])", 1, 3, 2},
-        {"vn", "3 numbers (x y z)", 3, 3, 3},
+        {"v", "at least 3 numbers (x y z)", 3, INT32_MAX},
+        {"vt", "1 to 3 numbers (u [v [w]])", 1, 3},
+        {"vn", "3 numbers (x y z)", 3, 3},
     };
     double c[3] = {0, 0, 0};
     scan_pos where[3];
@@ -84,7 +84,8 @@ static glint_status read_item(obj_reader *r, scan_line *l, scan_pos at, part wha
         return GLINT_ERR_INVALID;
     if (n < kinds[what].least || n > kinds[what].most)
         return scan_error(l, at, err, "'%s' needs %s, got %d", kinds[what].keyword, kinds[what].needs, n);
-    float item[3] = {(float)c[0], (float)c[1], (float)c[2]};
+    for (int k = 0; k < 3; k++)
+        item[k] = (float)c[k];
     for (int k = 0; what == PART_V && k < 3; k++)
         if (!isfinite(item[k]))
             return scan_error(l, where[k], err, "a vertex is not finite (%g %g %g)", item[0], item[1], item[2]);
@@ -92,18 +93,41 @@ static glint_status read_item(obj_reader *r, scan_line *l, scan_pos at, part wha
         c[1] = 1 - c[1]; /* OBJ's v = 0 is the image's bottom row, glint's its top */
     for (int k = 0; what != PART_V && k < 3; k++)
         item[k] = finite_or_zero(c[k]);
-    obj_model *m = r->m;
+    return GLINT_OK;
+}
+
+/* Appends an item of part `what` to the model's positions, uvs or normals;
+ * false when memory runs out. The count is below MESH_IMPORT_MAX_COUNT. */
+static bool add_item(obj_model *m, part what, const float item[3])
+{
     float **items[] = {&m->positions, &m->uvs, &m->normals};
     size_t *counts[] = {&m->position_count, &m->uv_count, &m->normal_count};
     size_t *caps[] = {&m->position_cap, &m->uv_cap, &m->normal_cap};
-    size_t floats = (size_t)kinds[what].floats, *count = counts[what];
-    if (*count >= MESH_IMPORT_MAX_COUNT)
-        return too_many(l, at, part_names[what], err);
+    size_t floats = what == PART_VT ? 2 : 3, *count = counts[what];
     if (!array_reserve((void **)items[what], caps[what], *count + 1, floats * sizeof(float)))
-        return out_of_memory(r, err);
+        return false;
     memcpy(*items[what] + floats * *count, item, floats * sizeof(float));
     ++*count;
-    return GLINT_OK;
+    return true;
+}
+
+/* The number of items of part `what` read so far. */
+static size_t item_count(const obj_model *m, part what)
+{
+    return what == PART_V ? m->position_count : what == PART_VT ? m->uv_count : m->normal_count;
+}
+
+/* Reads a v, vt or vn statement (`what`), whose keyword is at `at`, and
+ * appends its item to the model's positions, uvs or normals. */
+static glint_status read_item(obj_reader *r, scan_line *l, scan_pos at, part what, glint_error *err)
+{
+    float item[3];
+    glint_status s = parse_item(l, at, what, item, err);
+    if (s)
+        return s;
+    if (item_count(r->m, what) >= MESH_IMPORT_MAX_COUNT)
+        return too_many(l, at, part_names[what], err);
+    return add_item(r->m, what, item) ? GLINT_OK : out_of_memory(r, err);
 }
 
 /* Reads [+-]digits at *p, before end, moving past them; a value too large
@@ -125,6 +149,17 @@ static bool parse_index(const char **p, const char *end, long long *out)
     return true;
 }
 
+/* An index as written made absolute among the `count` items read so far:
+ * false when it names none of them. */
+static bool absolute_index(long long index, size_t count, int32_t *out)
+{
+    long long i = index > 0 ? index - 1 : (long long)count + index;
+    if (index == 0 || i < 0 || i >= (long long)count)
+        return false;
+    *out = (int32_t)i;
+    return true;
+}
+
 /* The index `text` (len bytes at column `at`) of a part, made absolute
  * and checked against the `count` items read so far. */
 static glint_status resolve(const scan_line *l, scan_pos at, const char *text, size_t len, long long index,
@@ -132,15 +167,54 @@ static glint_status resolve(const scan_line *l, scan_pos at, const char *text, s
 {
     if (index == 0)
         return scan_error(l, at, err, "%s index 0 is not valid (indices count from 1)", part_name[what]);
-    long long i = index > 0 ? index - 1 : (long long)count + index;
-    if (i >= 0 && i < (long long)count) {
-        *out = (int32_t)i;
+    if (absolute_index(index, count, out))
         return GLINT_OK;
-    }
     char q[32];
     scan_quote(text, len, q, sizeof q);
     return scan_error(l, at, err, "%s index %s is out of range (the file has %zu %s so far)", part_name[what], q,
                       count, count == 1 ? part_name[what] : part_names[what]);
+}
+
+/* A face corner as written: the text of each index it has (start[k] NULL
+ * for a part it lacks) and their values. */
+typedef struct raw_corner {
+    const char *word;         /* the whole word, len bytes */
+    size_t len;
+    const char *start[3], *stop[3];
+    long long index[3];
+    unsigned form;            /* the parts it has, a bit each */
+} raw_corner;
+
+/* Reads the word at l->p as a face corner into *rc, moving past it; false
+ * when the word is not a face corner. */
+static bool scan_corner(scan_line *l, raw_corner *rc)
+{
+    const char *word = l->p, *p = word, *end = l->end;
+    bool ok = true;
+    rc->start[0] = rc->start[1] = rc->start[2] = NULL;
+    for (int k = 0; k < 3 && ok && p < end; k++) {
+        if (k > 0) {
+            if (*p != '/')
+                break;
+            if (++p < end && k == 1 && *p == '/')
+                continue; /* v//vn */
+        }
+        rc->start[k] = p;
+        ok = parse_index(&p, end, &rc->index[k]);
+        rc->stop[k] = p;
+    }
+    /* Parsed in place; the word's end is looked for only now. */
+    bool whole = ok && scan_at_break(l, p);
+    size_t len;
+    l->p = p;
+    if (!whole)
+        scan_word(l, &len);
+    rc->word = word;
+    rc->len = (size_t)(l->p - word);
+    rc->form = 0;
+    for (int k = 0; k < 3; k++)
+        rc->form |= (rc->start[k] != NULL) << k;
+    return whole;
 }
 
 /* Reads one face corner, the word at l->p (at place `at`), moving past
@@ -149,48 +223,27 @@ static glint_status resolve(const scan_line *l, scan_pos at, const char *text, s
 static glint_status read_corner(obj_reader *r, scan_line *l, scan_pos at, obj_corner *c, unsigned *form,
                                 const char **word_out, size_t *len_out, glint_error *err)
 {
-    const char *word = l->p, *p = word, *end = l->end;
-    const char *start[3] = {NULL, NULL, NULL}, *stop[3];
-    long long index[3];
-    bool ok = true;
-    for (int k = 0; k < 3 && ok && p < end; k++) {
-        if (k > 0) {
-            if (*p != '/')
-                break;
-            if (++p < end && k == 1 && *p == '/')
-                continue; /* v//vn */
-        }
-        start[k] = p;
-        ok = parse_index(&p, end, &index[k]);
-        stop[k] = p;
-    }
-    /* Parsed in place; the word's end is looked for only now. */
-    bool whole = ok && scan_at_break(l, p);
-    size_t len;
-    l->p = p;
-    if (!whole)
-        scan_word(l, &len);
-    *word_out = word;
-    *len_out = len = (size_t)(l->p - word);
+    raw_corner rc;
+    bool whole = scan_corner(l, &rc);
+    *word_out = rc.word;
+    *len_out = rc.len;
     if (!whole) {
         char q[32];
-        scan_quote(word, len, q, sizeof q);
+        scan_quote(rc.word, rc.len, q, sizeof q);
         return scan_error(l, at, err, "'%s' is not a face corner (v, v/vt, v//vn or v/vt/vn)", q);
     }
     const obj_model *m = r->m;
-    const size_t counts[3] = {m->position_count, m->uv_count, m->normal_count};
     int32_t *out[3] = {&c->v, &c->vt, &c->vn};
     *c = (obj_corner){-1, -1, -1};
-    *form = 0;
+    *form = rc.form;
     for (int k = 0; k < 3; k++) {
-        if (!start[k])
+        if (!rc.start[k])
             continue;
-        scan_pos here = {at.line, at.column + (long)(start[k] - word)};
-        glint_status s = resolve(l, here, start[k], (size_t)(stop[k] - start[k]), index[k], counts[k], (part)k,
-                                 out[k], err);
+        scan_pos here = {at.line, at.column + (long)(rc.start[k] - rc.word)};
+        glint_status s = resolve(l, here, rc.start[k], (size_t)(rc.stop[k] - rc.start[k]), rc.index[k],
+                                 item_count(m, (part)k), (part)k, out[k], err);
         if (s)
             return s;
-        *form |= 1u << k;
     }
     return GLINT_OK;
 }
@@ -273,9 +326,36 @@ static const char *form_text(unsigned form)
     return forms[form & 7];
 }
 
-static glint_status read_face(obj_reader *r, scan_line *l, scan_pos at, glint_error *err)
+/* Adds the triangles of the face of n corners of form `form` whose ids are
+ * in r->face (and their vertices in r->face_at), read at `at`. */
+static glint_status add_face(obj_reader *r, const scan_line *l, scan_pos at, size_t n, unsigned form,
+                             glint_error *err)
 {
     obj_model *m = r->m;
+    glint_status s = GLINT_OK;
+    m->generate |= !(form & 1u << PART_VN);
+    m->textured |= (form & 1u << PART_VT) != 0;
+    if (n == 3)
+        return add_triangle(r, l, at, r->face[0], r->face[1], r->face[2], err);
+    if (!array_reserve((void **)&r->split, &r->split_cap, 3 * (n - 2), sizeof *r->split) ||
+        !triangulate_polygon(&r->work, m->positions, r->face_at, n, r->split))
+        return out_of_memory(r, err);
+    for (size_t t = 0; !s && t < n - 2; t++)
+        s = add_triangle(r, l, at, r->face[r->split[3 * t]], r->face[r->split[3 * t + 1]],
+                         r->face[r->split[3 * t + 2]], err);
+    return s;
+}
+
+/* Room for n corners in r->face and r->face_at. */
+static bool face_room(obj_reader *r, size_t n)
+{
+    size_t cap = r->face_cap;
+    return array_reserve((void **)&r->face, &cap, n, sizeof *r->face) &&
+           array_reserve((void **)&r->face_at, &r->face_cap, n, sizeof *r->face_at);
+}
+
+static glint_status read_face(obj_reader *r, scan_line *l, scan_pos at, glint_error *err)
+{
     size_t n = 0;
     unsigned first_form = 0;
     glint_status s = GLINT_OK;
@@ -297,9 +377,7 @@ static glint_status read_face(obj_reader *r, scan_line *l, scan_pos at, glint_er
         }
         if (n >= MESH_IMPORT_MAX_COUNT)
             return too_many(l, here, "corners in one face", err);
-        size_t cap = r->face_cap;
-        if (!array_reserve((void **)&r->face, &cap, n + 1, sizeof *r->face) ||
-            !array_reserve((void **)&r->face_at, &r->face_cap, n + 1, sizeof *r->face_at))
+        if (!face_room(r, n + 1))
             return out_of_memory(r, err);
         r->face_at[n] = (uint32_t)c.v;
         s = corner_id(r, l, here, &c, &r->face[n++], err);
@@ -308,17 +386,7 @@ static glint_status read_face(obj_reader *r, scan_line *l, scan_pos at, glint_er
         return s;
     if (n < 3)
         return scan_error(l, at, err, "a face needs at least 3 corners, got %zu", n);
-    m->generate |= !(first_form & 1u << PART_VN);
-    m->textured |= (first_form & 1u << PART_VT) != 0;
-    if (n == 3)
-        return add_triangle(r, l, at, r->face[0], r->face[1], r->face[2], err);
-    if (!array_reserve((void **)&r->split, &r->split_cap, 3 * (n - 2), sizeof *r->split) ||
-        !triangulate_polygon(&r->work, m->positions, r->face_at, n, r->split))
-        return out_of_memory(r, err);
-    for (size_t t = 0; !s && t < n - 2; t++)
-        s = add_triangle(r, l, at, r->face[r->split[3 * t]], r->face[r->split[3 * t + 1]],
-                         r->face[r->split[3 * t + 2]], err);
-    return s;
+    return add_face(r, l, at, n, first_form, err);
 }
 
 /* Copies the rest of the line into the model's text; *offset is where. */
