@@ -1,8 +1,11 @@
 /* obj_read.h - glint's own reader of Wavefront OBJ text (docs/meshes.md):
- * one pass over the bytes, from memory or from a file read a chunk at a
- * time, into flat arrays that grow by doubling. Face corners with the same
- * (v, vt, vn) indices are joined as they are read, polygons are split into
- * triangles, and every problem is an error naming file:line:column. */
+ * from memory or from a file read a block at a time, into flat arrays that
+ * grow by doubling. A large text's lines are parsed by a thread per
+ * processor, a piece of each block each, and merged in the file's order.
+ * Face corners with the same (v, vt, vn) indices are joined as they are
+ * read, polygons are split into triangles, and every problem is an error
+ * naming file:line:column; the model and the messages do not depend on the
+ * threads. */
 #ifndef GLINT_IO_OBJ_READ_H
 #define GLINT_IO_OBJ_READ_H
 
@@ -53,6 +56,17 @@ typedef struct obj_model {
  * still needs obj_model_free. */
 glint_status obj_read_memory(obj_model *m, const unsigned char *data, size_t size, const char *file,
                              glint_error *err);
+
+/* As obj_read_memory, with `threads` threads (1 to 16) parsing ahead
+ * pieces of about `piece` bytes each however small: the model and any
+ * message are the same whatever the two are. For tests; obj_read_memory
+ * and obj_read_fd use a thread per processor, with pieces of 4 MiB, for
+ * text that gives each thread at least 256 KiB. */
+glint_status obj_read_memory_split(obj_model *m, const unsigned char *data, size_t size, const char *file,
+                                   int threads, size_t piece, glint_error *err);
+
+/* As obj_read_fd, with threads and pieces as for obj_read_memory_split. */
+glint_status obj_read_fd_split(obj_model *m, int fd, const char *file, int threads, size_t piece, glint_error *err);
 
 /* As obj_read_memory, from the open file fd, read to its end a chunk at a
  * time, so that the file is never in memory whole. */

@@ -7,7 +7,9 @@
  * From memory no other file is read, so runs do not depend on the
  * directory; MTL text, which only files name, goes to glint's MTL reader
  * directly when the first byte is 'M', and every material it reads is
- * mapped to glint's. */
+ * mapped to glint's. OBJ text is also read by glint's OBJ reader with
+ * three threads parsing ahead in pieces of a few bytes, which must give
+ * the model and the message of reading it in one pass. */
 #include <stddef.h>
 #include <stdint.h>
 #include <stdlib.h>
@@ -15,6 +17,7 @@
 #include "glint.h"
 #include "io/mesh_import.h"
 #include "io/mtl_read.h"
+#include "io/obj_read.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
@@ -34,6 +37,40 @@ static void fuzz_mtl(const uint8_t *data, size_t size)
     mtl_free(&lib);
 }
 
+/* Whether two readings of the same array hold the same count of items of
+ * `size` bytes. */
+static bool same_array(const void *a, size_t a_count, const void *b, size_t b_count, size_t size)
+{
+    return a_count == b_count && (a_count == 0 || memcmp(a, b, a_count * size) == 0);
+}
+
+/* Reads OBJ text in one pass and parsed ahead by threads, and aborts
+ * unless both give the same model or the same message. */
+static void fuzz_obj_split(const uint8_t *data, size_t size)
+{
+    obj_model a, b;
+    glint_error ea, eb;
+    ea.message[0] = eb.message[0] = '\0';
+    glint_status sa = obj_read_memory_split(&a, data, size, "model.obj", 1, (size_t)1 << 40, &ea);
+    glint_status sb = obj_read_memory_split(&b, data, size, "model.obj", 3, 1 + size % 17, &eb);
+    bool same = sa == sb && strcmp(ea.message, eb.message) == 0;
+    if (same && !sa)
+        same = same_array(a.positions, a.position_count, b.positions, b.position_count, 3 * sizeof(float)) &&
+               same_array(a.uvs, a.uv_count, b.uvs, b.uv_count, 2 * sizeof(float)) &&
+               same_array(a.normals, a.normal_count, b.normals, b.normal_count, 3 * sizeof(float)) &&
+               same_array(a.corners, a.corner_count, b.corners, b.corner_count, sizeof(obj_corner)) &&
+               same_array(a.triangles, a.triangle_count, b.triangles, b.triangle_count, 3 * sizeof(uint32_t)) &&
+               same_array(a.runs, a.run_count, b.runs, b.run_count, sizeof(obj_run)) &&
+               same_array(a.text, a.text_len, b.text, b.text_len, 1) &&
+               same_array(a.materials, a.material_count, b.materials, b.material_count, sizeof(size_t)) &&
+               same_array(a.libraries, a.library_count, b.libraries, b.library_count, sizeof(size_t)) &&
+               a.generate == b.generate && a.textured == b.textured;
+    obj_model_free(&a);
+    obj_model_free(&b);
+    if (!same)
+        abort();
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static const char *const names[] = {"model.obj", "model.ply", "model.stl", "model.glb", "model.gltf"};
@@ -44,6 +81,8 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     }
     const char *name = names[data[0] % (sizeof names / sizeof names[0])];
+    if (name == names[0])
+        fuzz_obj_split(data + 1, size - 1);
     glint_scene *scene = glint_scene_new();
     if (!scene)
         return 0;

@@ -24,6 +24,7 @@
 
 #include "glint.h"
 #include "tmp_tree.h"
+#include "io/obj_read.h"
 #include "io/text_scan.h"
 #include "io/triangulate.h"
 #include "scene/scene.h"
@@ -1372,10 +1373,136 @@ static void test_obj_chunks(void **state)
     /* an error near the end is placed by its line among all of them */
     text = grid_obj(150, 10, "f 1 2 x\n", &size, &lines);
     write_bytes("grid.obj", text, size);
-    char where[64];
+    char where[96];
     snprintf(where, sizeof where, "%ld:7: 'x' is not a face corner (v, v/vt, v//vn or v/vt/vn)", lines + 1);
     expect_refused_at("grid.obj", where);
     free(text);
+}
+
+/* ------------------------------------------------ OBJ parsed ahead by threads */
+
+/* Checks that m is one to the byte. */
+static void expect_same_model(const obj_model *m, const obj_model *one)
+{
+    assert_int_equal(m->position_count, one->position_count);
+    assert_int_equal(m->uv_count, one->uv_count);
+    assert_int_equal(m->normal_count, one->normal_count);
+    assert_int_equal(m->corner_count, one->corner_count);
+    assert_int_equal(m->triangle_count, one->triangle_count);
+    assert_int_equal(m->run_count, one->run_count);
+    assert_int_equal(m->text_len, one->text_len);
+    assert_int_equal(m->material_count, one->material_count);
+    assert_int_equal(m->library_count, one->library_count);
+    assert_int_equal(m->generate, one->generate);
+    assert_int_equal(m->textured, one->textured);
+    if (one->position_count)
+        assert_memory_equal(m->positions, one->positions, 3 * one->position_count * sizeof(float));
+    if (one->uv_count)
+        assert_memory_equal(m->uvs, one->uvs, 2 * one->uv_count * sizeof(float));
+    if (one->normal_count)
+        assert_memory_equal(m->normals, one->normals, 3 * one->normal_count * sizeof(float));
+    if (one->corner_count)
+        assert_memory_equal(m->corners, one->corners, one->corner_count * sizeof(obj_corner));
+    if (one->triangle_count)
+        assert_memory_equal(m->triangles, one->triangles, 3 * one->triangle_count * sizeof(uint32_t));
+    if (one->run_count)
+        assert_memory_equal(m->runs, one->runs, one->run_count * sizeof(obj_run));
+    if (one->text_len)
+        assert_memory_equal(m->text, one->text, one->text_len);
+    if (one->material_count)
+        assert_memory_equal(m->materials, one->materials, one->material_count * sizeof(size_t));
+    if (one->library_count)
+        assert_memory_equal(m->libraries, one->libraries, one->library_count * sizeof(size_t));
+}
+
+/* Reads text, from memory and from a file, with every thread count and
+ * piece size given and checks that each reading gives the model and the
+ * message of reading it in one pass: the same arrays to the byte, or the
+ * same refusal. */
+static void expect_split_same(const char *text, size_t size, const size_t *pieces, size_t piece_count)
+{
+    obj_model one;
+    glint_error one_err = {{0}};
+    glint_status one_s = obj_read_memory_split(&one, (const unsigned char *)text, size, "split.obj", 1,
+                                               (size_t)1 << 40, &one_err);
+    char path[PATH_SIZE];
+    tmp_path(path, "split.obj");
+    write_bytes("split.obj", text, size);
+    for (int threads = 2; threads <= 4; threads++) {
+        for (size_t k = 0; k < piece_count; k++) {
+            for (int from_file = 0; from_file < 2; from_file++) {
+                obj_model m;
+                glint_error err = {{0}};
+                glint_status s;
+                if (from_file) {
+                    int fd = open(path, O_RDONLY);
+                    assert_true(fd >= 0);
+                    s = obj_read_fd_split(&m, fd, "split.obj", threads, pieces[k], &err);
+                    close(fd);
+                } else {
+                    s = obj_read_memory_split(&m, (const unsigned char *)text, size, "split.obj", threads, pieces[k],
+                                              &err);
+                }
+                assert_int_equal(s, one_s);
+                assert_string_equal(err.message, one_err.message);
+                if (!s)
+                    expect_same_model(&m, &one);
+                obj_model_free(&m);
+            }
+        }
+    }
+    obj_model_free(&one);
+}
+
+/* Small texts of every statement, and every kind of error at every place,
+ * cut at every byte and into pieces of every size. */
+static void test_obj_split_same(void **state)
+{
+    static const char *const texts[] = {
+        "mtllib a.mtl b.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0 1\nv 0 1 0 0.5 0.5 0.5\nvt 0 0\nvt 1\nvt 1 1 0\n"
+        "vn 0 0 1\nvn nan 0 inf\n# comment\n\n  \t\ng group\no thing\ns off\nusemtl red\nf 1/1/1 2/2/1 3/3/2\n"
+        "usemtl blue\nf -4/-3/-2 -3/-2/-1 -2/-1/-1 -1/-1/-1\nusemtl red\nf 1//1 3//1 4//2\nl 1 2\np 3\nf 1 2 3",
+        "v 0 0 0\r\nv 1 0 0\r\nv 1 1 \\\r\n 0\r\nv 0 1 0\nf 1 2 \\\n3 4\r\nf 4 3 \\\n\n# x \\\nf 1 2 3\\",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 0.5 0.2 0\nv 1 1 0\nf 1 2 5 4 3\nf 1 2 3 4 5 1 2\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 0\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 4\nv 1 1 1\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf -1 -2 -4\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 99999999999999999999999\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3000000000\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1/1 2/1 3/1\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nvt 0 0\nf 1/1 2 3\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 x\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nusemtl\nf 1 2 3\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 inf\nf 1 2 3\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1\nf 1 2 3\n",
+        "vt 0 0 0 0\n",
+        "vn 0 0\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\nv 0 0 1e999\n",
+        "v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3 # the end\nf 3 2 1\nf 1 2 3 extra\n",
+        "",
+        "\n\n\n",
+        "\\\n\\\n\\",
+    };
+    static const size_t pieces[] = {1, 2, 3, 5, 8, 13, 40};
+    for (size_t i = 0; i < sizeof texts / sizeof texts[0]; i++)
+        expect_split_same(texts[i], strlen(texts[i]), pieces, sizeof pieces / sizeof pieces[0]);
+}
+
+/* A large grid, whole and with an error near its end, in pieces of the
+ * sizes real reads use and others. */
+static void test_obj_split_grid(void **state)
+{
+    static const size_t pieces[] = {4096, 100000, 1 << 20};
+    static const char *const tails[] = {"", "usemtl a\nf 1 2 3\nusemtl b\nf -1 -2 -3\n", "f 1 2 x\n",
+                                        "f 1/1/1 2/2/2 999999/1/1\n"};
+    for (size_t i = 0; i < sizeof tails / sizeof tails[0]; i++) {
+        size_t size;
+        long lines;
+        char *text = grid_obj(120, 1000, tails[i], &size, &lines);
+        expect_split_same(text, size, pieces, sizeof pieces / sizeof pieces[0]);
+        free(text);
+    }
 }
 
 /* ------------------------------------------------------------- PLY, STL */
@@ -1869,6 +1996,8 @@ int main(void)
         cmocka_unit_test(test_mtl_errors),
         cmocka_unit_test(test_obj_material_runs),
         cmocka_unit_test(test_obj_chunks),
+        cmocka_unit_test(test_obj_split_same),
+        cmocka_unit_test(test_obj_split_grid),
         cmocka_unit_test(test_ply_ascii_and_binary),
         cmocka_unit_test(test_stl_ascii_and_binary),
         cmocka_unit_test(test_gltf_data_uri),
