@@ -708,11 +708,10 @@ static bool merge_face(obj_reader *r, const text_piece *pc, const ahead *a, long
     return true;
 }
 
-/* Applies the records of a piece to the model in order. */
+/* Applies the records of a piece to the model in order; memory that ran
+ * out while parsing it counts after the lines it parsed. */
 static glint_status merge_piece(obj_reader *r, const text_piece *pc, glint_error *err)
 {
-    if (pc->no_memory)
-        return out_of_memory(r, err);
     long base = r->line;
     glint_status s = GLINT_OK;
     for (size_t i = 0; !s && i < pc->count; i++) {
@@ -722,6 +721,8 @@ static glint_status merge_piece(obj_reader *r, const text_piece *pc, glint_error
         else if (a->kind != AHEAD_FACE || !merge_face(r, pc, a, base, &s, err))
             s = merge_line(r, pc, a, base, err);
     }
+    if (!s && pc->no_memory)
+        s = out_of_memory(r, err);
     r->line = base + pc->rows;
     return s;
 }
