@@ -44,7 +44,6 @@ typedef struct obj_reader {
     triangulate_work work;
     int threads;              /* threads that parse ahead (below), 1 for none */
     size_t piece_min;         /* the least text worth a thread */
-    size_t block;             /* the text parsed ahead at a time */
 } obj_reader;
 
 /* What a face corner names: a part of the vertex data, and its nouns. */
@@ -834,7 +833,9 @@ static glint_status fill(obj_reader *r, source *src, block *b, size_t size, cons
 static void parse_start(const obj_reader *r, block *b)
 {
     b->parsed = false;
-    b->count = r->threads;
+    /* Records place their lines in 32 bits: a block beyond that (a line
+     * of gigabytes) is read in one pass. */
+    b->count = b->whole > UINT32_MAX ? 1 : r->threads;
     while (b->count > 1 && b->whole / (size_t)b->count < r->piece_min)
         b->count--;
     if (b->count <= 1)
