@@ -1,5 +1,6 @@
 /* texture_image.c - decoding PNG (libpng's simplified API) and JPEG
- * (libjpeg-turbo) files or buffers into linear float RGB for image textures.
+ * (libjpeg-turbo) files or buffers into 8-bit sRGB RGB for image textures,
+ * with the table that makes their bytes linear.
  *
  * Texture files may come from anywhere, so a corrupt or truncated file is an
  * error value, never a crash, an exit or a line on stderr, and the size in a
@@ -49,30 +50,34 @@ static glint_status check_size(unsigned long width, unsigned long height, const 
     return GLINT_OK;
 }
 
-/* Sizes must have passed check_size, which keeps the product in range. */
-static glint_status image_alloc(texture_image *img, unsigned long width, unsigned long height,
+/* Room for `bytes` bytes a pixel; sizes must have passed check_size, which
+ * keeps the product in range. */
+static glint_status image_alloc(texture_image *img, unsigned long width, unsigned long height, size_t bytes,
                                 const char *what, glint_error *err)
 {
-    img->rgb = malloc((size_t)width * height * 3 * sizeof *img->rgb);
-    if (!img->rgb)
+    img->srgb = malloc((size_t)width * height * bytes);
+    if (!img->srgb)
         return error_set(err, GLINT_ERR_NOMEM, "cannot decode texture '%s': out of memory", what);
     img->width = (int)width;
     img->height = (int)height;
+    img->linear = srgb_byte_to_linear;
     return GLINT_OK;
 }
 
-/* libpng has decoded RGBA bytes into the front of the float buffer. Going
- * from the last pixel back, each pixel's floats only land on bytes of pixels
- * already converted (or its own, read first), so no second buffer is needed. */
-static void png_rgba_to_linear(texture_image *img)
+/* libpng has decoded RGBA bytes: each pixel moves down to its RGB place,
+ * which never lies past its RGBA one, and the room left over is given back. */
+static void png_rgba_to_rgb(texture_image *img)
 {
-    const unsigned char *rgba = (const unsigned char *)img->rgb;
-    for (size_t i = (size_t)img->width * img->height; i-- > 0;) {
-        unsigned char r = rgba[4 * i], g = rgba[4 * i + 1], b = rgba[4 * i + 2];
-        img->rgb[3 * i] = srgb_byte_to_linear[r];
-        img->rgb[3 * i + 1] = srgb_byte_to_linear[g];
-        img->rgb[3 * i + 2] = srgb_byte_to_linear[b];
+    size_t n = (size_t)img->width * img->height;
+    unsigned char *p = img->srgb;
+    for (size_t i = 0; i < n; i++) {
+        p[3 * i] = p[4 * i];
+        p[3 * i + 1] = p[4 * i + 1];
+        p[3 * i + 2] = p[4 * i + 2];
     }
+    unsigned char *fit = realloc(p, n ? 3 * n : 1);
+    if (fit)
+        img->srgb = fit;
 }
 
 static glint_status decode_png(texture_image *out, const void *data, size_t size,
@@ -85,7 +90,7 @@ static glint_status decode_png(texture_image *out, const void *data, size_t size
         return corrupt(what, png.message, err);
     glint_status st = check_size(png.width, png.height, what, err);
     if (st == GLINT_OK)
-        st = image_alloc(out, png.width, png.height, what, err);
+        st = image_alloc(out, png.width, png.height, 4, what, err);
     if (st != GLINT_OK) {
         png_image_free(&png);
         return st;
@@ -96,12 +101,12 @@ static glint_status decode_png(texture_image *out, const void *data, size_t size
     /* Otherwise libpng takes 16-bit files without gamma information to be
      * linear, when in practice they are sRGB like 8-bit ones. */
     png.flags |= PNG_IMAGE_FLAG_16BIT_sRGB;
-    if (!png_image_finish_read(&png, NULL, out->rgb, 0, NULL)) {
+    if (!png_image_finish_read(&png, NULL, out->srgb, 0, NULL)) {
         png_image_free(&png);
         texture_image_free(out);
         return corrupt(what, png.message, err);
     }
-    png_rgba_to_linear(out);
+    png_rgba_to_rgb(out);
     return GLINT_OK;
 }
 
@@ -174,21 +179,17 @@ static glint_status decode_jpeg(texture_image *out, const void *data, size_t siz
     else
         st = check_size(cinfo.image_width, cinfo.image_height, what, err);
     if (st == GLINT_OK)
-        st = image_alloc(out, cinfo.image_width, cinfo.image_height, what, err);
+        st = image_alloc(out, cinfo.image_width, cinfo.image_height, 3, what, err);
     if (st != GLINT_OK) {
         jpeg_destroy_decompress(&cinfo);
         return st;
     }
     cinfo.out_color_space = JCS_RGB;
     jpeg_start_decompress(&cinfo);
-    JSAMPARRAY row = cinfo.mem->alloc_sarray((j_common_ptr)&cinfo, JPOOL_IMAGE,
-                                             cinfo.output_width * 3, 1);
-    size_t row_floats = (size_t)cinfo.output_width * 3;
+    size_t row_bytes = (size_t)cinfo.output_width * 3;
     while (cinfo.output_scanline < cinfo.output_height) {
-        float *dst = out->rgb + row_floats * cinfo.output_scanline;
-        jpeg_read_scanlines(&cinfo, row, 1);
-        for (size_t i = 0; i < row_floats; i++)
-            dst[i] = srgb_byte_to_linear[row[0][i]];
+        JSAMPROW row = out->srgb + row_bytes * cinfo.output_scanline;
+        jpeg_read_scanlines(&cinfo, &row, 1);
     }
     jpeg_finish_decompress(&cinfo);
     jpeg_destroy_decompress(&cinfo);
@@ -272,6 +273,6 @@ void texture_image_free(texture_image *img)
 {
     if (!img)
         return;
-    free(img->rgb);
+    free(img->srgb);
     *img = (texture_image){0};
 }

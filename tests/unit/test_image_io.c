@@ -425,12 +425,12 @@ static void test_write_png_round_trip(void **state)
     assert_int_equal(tex.width, 3);
     assert_int_equal(tex.height, 2);
     for (int i = 0; i < 18; i++) {
-        assert_true(tex.rgb[i] == (float)glint_srgb_to_linear(sample_srgb[i] / 255.0));
-        assert_near(glint_linear_to_srgb(tex.rgb[i]), glint_linear_to_srgb(sample_linear[i]),
+        assert_true(texture_image_at(&tex, i) == (float)glint_srgb_to_linear(sample_srgb[i] / 255.0));
+        assert_near(glint_linear_to_srgb(texture_image_at(&tex, i)), glint_linear_to_srgb(sample_linear[i]),
                             0.5 / 255 + 1e-6);
     }
     texture_image_free(&tex);
-    assert_null(tex.rgb);
+    assert_null(tex.srgb);
     assert_int_equal(count_entries(tmp_dir, ".tmp-"), 0);
 }
 
@@ -672,11 +672,11 @@ static void test_load_missing_file(void **state)
 {
     char path[PATH_SIZE], want[2 * PATH_SIZE];
     glint_error err = {{0}};
-    texture_image tex = {1, 1, NULL};
+    texture_image tex = {1, 1, NULL, NULL};
     tmp_path(path, "missing.png");
     snprintf(want, sizeof want, "cannot open texture '%s': No such file or directory", path);
     expect_error(texture_image_load_file(&tex, path, &err), &err, GLINT_ERR_IO, want);
-    assert_null(tex.rgb);
+    assert_null(tex.srgb);
     assert_int_equal(tex.width, 0);
 }
 
@@ -723,7 +723,7 @@ static void test_load_truncated_png(void **state)
     snprintf(want, sizeof want, "texture '%s' is corrupt: ", cut);
     assert_int_equal(texture_image_load_file(&tex, cut, &err), GLINT_ERR_INVALID);
     expect_prefix(err.message, want);
-    assert_null(tex.rgb);
+    assert_null(tex.srgb);
 }
 
 static void test_load_png_bad_crc(void **state)
@@ -747,7 +747,7 @@ static void test_load_oversized_png(void **state)
     expect_error(texture_image_load_memory(&tex, buf, n, "huge.png", &err), &err,
                  GLINT_ERR_INVALID,
                  "texture 'huge.png' is too large: 100000x100000 (limit 32768 a side, 268435456 pixels)");
-    assert_null(tex.rgb);
+    assert_null(tex.srgb);
     n = forge_png(buf, 16385, 16385);
     expect_error(texture_image_load_memory(&tex, buf, n, "many.png", &err), &err,
                  GLINT_ERR_INVALID,
@@ -771,7 +771,7 @@ static void test_load_grey_png(void **state)
     assert_int_equal(tex.height, 2);
     for (int i = 0; i < 4; i++)
         for (int c = 0; c < 3; c++)
-            assert_true(tex.rgb[3 * i + c] == (float)glint_srgb_to_linear(grey[i] / 255.0));
+            assert_true(texture_image_at(&tex, 3 * i + c) == (float)glint_srgb_to_linear(grey[i] / 255.0));
     texture_image_free(&tex);
 }
 
@@ -790,7 +790,7 @@ static void test_load_palette_and_alpha_png(void **state)
     assert_int_equal(texture_image_load_file(&tex, path, &err), GLINT_OK);
     for (int i = 0; i < 4; i++)
         for (int c = 0; c < 3; c++)
-            assert_true(tex.rgb[3 * i + c]
+            assert_true(texture_image_at(&tex, 3 * i + c)
                         == (float)glint_srgb_to_linear(colormap[3 * indices[i] + c] / 255.0));
     texture_image_free(&tex);
 
@@ -799,7 +799,7 @@ static void test_load_palette_and_alpha_png(void **state)
     assert_int_equal(texture_image_load_file(&tex, path, &err), GLINT_OK);
     for (int i = 0; i < 2; i++)
         for (int c = 0; c < 3; c++)
-            assert_true(tex.rgb[3 * i + c] == (float)glint_srgb_to_linear(rgba[4 * i + c] / 255.0));
+            assert_true(texture_image_at(&tex, 3 * i + c) == (float)glint_srgb_to_linear(rgba[4 * i + c] / 255.0));
     texture_image_free(&tex);
 }
 
@@ -819,8 +819,8 @@ static void test_load_16bit_png(void **state)
     assert_int_equal(tex.height, 2);
     for (int i = 0; i < 12; i++)
         /* read as sRGB like an 8-bit file, to the nearest 8-bit step */
-        assert_near(glint_linear_to_srgb(tex.rgb[i]), rgb[i] / 65535.0, 0.5 / 255 + 1e-6);
-    assert_true(tex.rgb[1] == (float)glint_srgb_to_linear(128 / 255.0));
+        assert_near(glint_linear_to_srgb(texture_image_at(&tex, i)), rgb[i] / 65535.0, 0.5 / 255 + 1e-6);
+    assert_true(texture_image_at(&tex, 1) == (float)glint_srgb_to_linear(128 / 255.0));
     texture_image_free(&tex);
 }
 
@@ -841,7 +841,7 @@ static void test_load_jpeg_memory(void **state)
     assert_int_equal(tex.height, 16);
     for (int i = 0; i < 24 * 16; i++)
         for (int c = 0; c < 3; c++)
-            assert_near(glint_linear_to_srgb(tex.rgb[3 * i + c]), colour[c] / 255.0, 3.0 / 255);
+            assert_near(glint_linear_to_srgb(texture_image_at(&tex, 3 * i + c)), colour[c] / 255.0, 3.0 / 255);
     texture_image_free(&tex);
 
     pixels = uniform_pixels(8 * 8, 1, grey);
@@ -850,8 +850,8 @@ static void test_load_jpeg_memory(void **state)
     assert_int_equal(texture_image_load_memory(&tex, jpeg, size, "grey.jpg", &err), GLINT_OK);
     free(jpeg);
     for (int i = 0; i < 8 * 8; i++) {
-        assert_true(tex.rgb[3 * i] == tex.rgb[3 * i + 1] && tex.rgb[3 * i] == tex.rgb[3 * i + 2]);
-        assert_near(glint_linear_to_srgb(tex.rgb[3 * i]), 128 / 255.0, 1.0 / 255);
+        assert_true(texture_image_at(&tex, 3 * i) == texture_image_at(&tex, 3 * i + 1) && texture_image_at(&tex, 3 * i) == texture_image_at(&tex, 3 * i + 2));
+        assert_near(glint_linear_to_srgb(texture_image_at(&tex, 3 * i)), 128 / 255.0, 1.0 / 255);
     }
     texture_image_free(&tex);
 }
@@ -880,7 +880,7 @@ static void test_load_truncated_jpeg(void **state)
     free(jpeg);
     snprintf(want, sizeof want, "texture '%s' is corrupt: Premature end of JPEG file", path);
     expect_error(texture_image_load_file(&tex, path, &err), &err, GLINT_ERR_INVALID, want);
-    assert_null(tex.rgb);
+    assert_null(tex.srgb);
 
     /* cut inside the header, so libjpeg's error (not a warning) fires */
     expect_error(texture_image_load_memory(&tex, "\xff\xd8\xff\xe0\x00\x10JF", 8, "head.jpg", &err),
@@ -910,7 +910,7 @@ static void test_load_refused_jpegs(void **state)
                  GLINT_ERR_INVALID,
                  "texture 'wide.jpg' is too large: 40000x1 (limit 32768 a side, 268435456 pixels)");
     free(jpeg);
-    assert_null(tex.rgb);
+    assert_null(tex.srgb);
 }
 
 static void test_load_moon(void **state)
@@ -930,7 +930,7 @@ static void test_load_moon(void **state)
     double mean[3] = {0, 0, 0};
     for (size_t i = 0; i < (size_t)1024 * 512; i++)
         for (int c = 0; c < 3; c++)
-            mean[c] += tex.rgb[3 * i + c] / (1024.0 * 512.0);
+            mean[c] += texture_image_at(&tex, 3 * i + c) / (1024.0 * 512.0);
     texture_image_free(&tex);
     /* a mid grey with the map's slight warm tint (means 0.33, 0.32, 0.30) */
     double grey = (mean[0] + mean[1] + mean[2]) / 3;

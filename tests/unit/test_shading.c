@@ -232,9 +232,13 @@ static void test_planar_and_cylindrical_mapping(void **state)
 
 static void test_image_lookup(void **state)
 {
-    /* A 2x1 image: red then blue. Texel centres are at u = 0.25 and 0.75. */
-    float px[6] = {1, 0, 0, 0, 0, 1};
-    texture_image img = {2, 1, px};
+    /* A 2x1 image: red then blue. Texel centres are at u = 0.25 and 0.75.
+     * Its bytes map to linear values through the image's own table. */
+    unsigned char px[6] = {255, 0, 0, 0, 0, 255};
+    float linear[256];
+    for (int i = 0; i < 256; i++)
+        linear[i] = (float)i / 255;
+    texture_image img = {2, 1, px, linear};
     color c = image_eval(&img, 0.25, 0.5);
     assert_near(c.r, 1, 1e-7);
     assert_near(c.b, 0, 1e-7);
