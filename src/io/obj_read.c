@@ -15,6 +15,7 @@
 #include <unistd.h>
 #include "core/array.h"
 #include "core/error.h"
+#include "core/processors.h"
 #include "io/id_table.h"
 #include "io/mesh_import.h"
 #include "io/obj_read.h"
@@ -928,13 +929,6 @@ static glint_status read_source(obj_reader *r, source *src, size_t size, glint_e
     return s;
 }
 
-/* The threads that parse ahead: one per processor, at most THREADS_MAX. */
-static int parse_threads(void)
-{
-    long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return n < 1 ? 1 : n > THREADS_MAX ? THREADS_MAX : (int)n;
-}
-
 /* Reads the text of src into *m with `threads` threads (1 to THREADS_MAX)
  * parsing ahead pieces of `piece` bytes (at least 1), `piece_min` bytes
  * the least worth a thread. */
@@ -960,7 +954,7 @@ glint_status obj_read_memory(obj_model *m, const unsigned char *data, size_t siz
                              glint_error *err)
 {
     source src = {.data = (const char *)data, .size = size, .fd = -1};
-    return read_all(m, &src, file, parse_threads(), PIECE, PIECE_MIN, err);
+    return read_all(m, &src, file, processors_online(THREADS_MAX), PIECE, PIECE_MIN, err);
 }
 
 glint_status obj_read_memory_split(obj_model *m, const unsigned char *data, size_t size, const char *file,
@@ -979,7 +973,7 @@ glint_status obj_read_fd_split(obj_model *m, int fd, const char *file, int threa
 glint_status obj_read_fd(obj_model *m, int fd, const char *file, glint_error *err)
 {
     source src = {.fd = fd};
-    return read_all(m, &src, file, parse_threads(), PIECE, PIECE_MIN, err);
+    return read_all(m, &src, file, processors_online(THREADS_MAX), PIECE, PIECE_MIN, err);
 }
 
 void obj_model_drop(void **array, size_t *count, size_t *cap)

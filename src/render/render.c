@@ -5,9 +5,9 @@
 #include <stdatomic.h>
 #include <stdlib.h>
 #include <time.h>
-#include <unistd.h>
 #include "core/error.h"
 #include "core/hash.h"
+#include "core/processors.h"
 #include "render/camera.h"
 #include "render/integrator.h"
 
@@ -163,12 +163,6 @@ static double now_seconds(void)
     return ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-static int default_threads(void)
-{
-    long n = sysconf(_SC_NPROCESSORS_ONLN);
-    return n < 1 ? 1 : n > MAX_THREADS ? MAX_THREADS : (int)n;
-}
-
 /* Runs the job on `count` threads, the caller's being the first. */
 static glint_status run_workers(job *j, int count, uint64_t *rays, glint_error *err)
 {
@@ -222,7 +216,7 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
     atomic_init(&j.next_tile, 0);
     /* Embree builds with every thread asked for; tracing needs no more
      * threads than tiles. */
-    int build_threads = o->threads ? o->threads : default_threads();
+    int build_threads = o->threads ? o->threads : processors_online(MAX_THREADS);
     int threads = build_threads < j.tiles_total ? build_threads : j.tiles_total;
 
     accel *acc = NULL;
