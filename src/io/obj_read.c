@@ -35,7 +35,11 @@ typedef struct obj_reader {
     const char *file;
     long line;                /* number of the next line */
     int32_t material;         /* the usemtl in force, or -1 */
-    id_table corner_index;    /* corner ids by (v, vt, vn) */
+    id_table corner_index;    /* corner ids by (v, vt, vn), but for those below */
+    uint32_t *by_vertex;      /* ids of corners in `relation` by their v; UINT32_MAX for none yet */
+    size_t by_vertex_len, by_vertex_cap;
+    int64_t relation[2];      /* vt - v and vn - v of the first corner read (NO_PART for none) */
+    bool related;             /* relation is set */
     id_table name_index;      /* usemtl names by text */
     uint32_t *face;           /* the corner ids of the face being read */
     uint32_t *face_at;        /* and their positions */
@@ -285,26 +289,72 @@ static bool corner_equal(const void *keys, uint32_t id, const void *key)
     return a->v == b->v && a->vt == b->vt && a->vn == b->vn;
 }
 
-/* The id of corner c, entering it when it is new. */
+/* The difference of a corner's index of a part from its vertex index, or
+ * NO_PART when it lacks the part. */
+#define NO_PART INT64_MIN
+static int64_t part_offset(int32_t index, int32_t v)
+{
+    return index < 0 ? NO_PART : (int64_t)index - v;
+}
+
+/* The id of a new corner c. */
+static glint_status corner_new(obj_reader *r, const scan_line *l, scan_pos at, const obj_corner *c, uint32_t *id,
+                               glint_error *err)
+{
+    obj_model *m = r->m;
+    if (m->corner_count >= MESH_IMPORT_MAX_COUNT)
+        return too_many(l, at, "vertices", err);
+    if (!array_reserve((void **)&m->corners, &m->corner_cap, m->corner_count + 1, sizeof *m->corners))
+        return out_of_memory(r, err);
+    *id = (uint32_t)m->corner_count;
+    m->corners[m->corner_count++] = *c;
+    return GLINT_OK;
+}
+
+/* The id of corner c, entering it when it is new. Most files number a
+ * corner's texture coordinate and normal the same way against its vertex
+ * throughout (the same index, or none): corners related to their vertex
+ * as the first corner read was are found by vertex in an array, the rest
+ * by hashing. Ids go in the order corners first appear either way. */
 static glint_status corner_id(obj_reader *r, const scan_line *l, scan_pos at, const obj_corner *c, uint32_t *id,
                               glint_error *err)
 {
     obj_model *m = r->m;
+    int64_t vt = part_offset(c->vt, c->v), vn = part_offset(c->vn, c->v);
+    if (!r->related) {
+        r->relation[0] = vt;
+        r->relation[1] = vn;
+        r->related = true;
+    }
+    if (vt == r->relation[0] && vn == r->relation[1]) {
+        /* Vertices may still come after faces: room for all read so far. */
+        if ((size_t)c->v >= r->by_vertex_len) {
+            if (!array_reserve((void **)&r->by_vertex, &r->by_vertex_cap, m->position_count, sizeof *r->by_vertex))
+                return out_of_memory(r, err);
+            for (size_t i = r->by_vertex_len; i < m->position_count; i++)
+                r->by_vertex[i] = UINT32_MAX;
+            r->by_vertex_len = m->position_count;
+        }
+        uint32_t *known = &r->by_vertex[c->v];
+        if (*known != UINT32_MAX) {
+            *id = *known;
+            return GLINT_OK;
+        }
+        glint_status s = corner_new(r, l, at, c, id, err);
+        if (!s)
+            *known = *id;
+        return s;
+    }
     /* Sized from the vertices read so far: most files give them all first. */
     if (!r->corner_index.slots &&
         !id_table_reserve(&r->corner_index, m->position_count, corner_hash, m->corners))
         return out_of_memory(r, err);
-    if (!array_reserve((void **)&m->corners, &m->corner_cap, m->corner_count + 1, sizeof *m->corners))
-        return out_of_memory(r, err);
-    if (!id_table_intern(&r->corner_index, corner_key_hash(c), c, (uint32_t)m->corner_count, corner_hash,
-                         corner_equal, m->corners, id))
-        return out_of_memory(r, err);
-    if (*id == m->corner_count) {
-        if (m->corner_count >= MESH_IMPORT_MAX_COUNT)
-            return too_many(l, at, "vertices", err);
-        m->corners[m->corner_count++] = *c;
-    }
-    return GLINT_OK;
+    if (id_table_find(&r->corner_index, corner_key_hash(c), c, corner_equal, m->corners, id))
+        return GLINT_OK;
+    glint_status s = corner_new(r, l, at, c, id, err);
+    if (!s && !id_table_add(&r->corner_index, corner_key_hash(c), *id, corner_hash, m->corners))
+        s = out_of_memory(r, err);
+    return s;
 }
 
 static glint_status add_triangle(obj_reader *r, const scan_line *l, scan_pos at, uint32_t a, uint32_t b,
@@ -942,6 +992,7 @@ static glint_status read_all(obj_model *m, source *src, const char *file, int th
     r = (obj_reader){.m = m, .file = file, .line = 1, .material = -1, .threads = threads, .piece_min = piece_min};
     glint_status s = read_source(&r, src, (size_t)threads * piece, err);
     id_table_free(&r.corner_index);
+    free(r.by_vertex);
     id_table_free(&r.name_index);
     free(r.face);
     free(r.face_at);

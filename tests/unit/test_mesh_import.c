@@ -1489,6 +1489,31 @@ static void test_obj_split_same(void **state)
         expect_split_same(texts[i], strlen(texts[i]), pieces, sizeof pieces / sizeof pieces[0]);
 }
 
+/* Corner ids go in the order corners first appear, whether a corner is
+ * found by its vertex (numbered as the first corner was: here vn = v) or
+ * by hashing (the rest), and with vertices read after faces. */
+static void test_obj_corner_ids_in_order(void **state)
+{
+    static const char text[] = "v 0 0 0\nv 1 0 0\nv 0 1 0\nvn 0 0 1\nvn 0 0 1\nvn 0 0 1\nf 1//1 2//2 3//3\n"
+                               "v 1 1 0\nvn 0 0 1\nf 2//2 4//4 3//3\nf -1//-1 -3//-3 -2//-2\nf 1 2 4\n"
+                               "f 1//2 2//3 3//1\n";
+    static const obj_corner corners[] = {{0, -1, 0}, {1, -1, 1}, {2, -1, 2}, {3, -1, 3}, {0, -1, -1},
+                                         {1, -1, -1}, {3, -1, -1}, {0, -1, 1}, {1, -1, 2}, {2, -1, 0}};
+    static const uint32_t triangles[] = {0, 1, 2, 1, 3, 2, 3, 1, 2, 4, 5, 6, 7, 8, 9};
+    obj_model m;
+    glint_error err = {{0}};
+    assert_int_equal(obj_read_memory_split(&m, (const unsigned char *)text, strlen(text), "ids.obj", 1,
+                                           (size_t)1 << 40, &err),
+                     GLINT_OK);
+    assert_int_equal(m.corner_count, sizeof corners / sizeof corners[0]);
+    assert_memory_equal(m.corners, corners, sizeof corners);
+    assert_int_equal(m.triangle_count, 5);
+    assert_memory_equal(m.triangles, triangles, sizeof triangles);
+    obj_model_free(&m);
+    static const size_t pieces[] = {1, 7, 30};
+    expect_split_same(text, strlen(text), pieces, sizeof pieces / sizeof pieces[0]);
+}
+
 /* A large grid, whole and with an error near its end, in pieces of the
  * sizes real reads use and others. */
 static void test_obj_split_grid(void **state)
@@ -1998,6 +2023,7 @@ int main(void)
         cmocka_unit_test(test_obj_chunks),
         cmocka_unit_test(test_obj_split_same),
         cmocka_unit_test(test_obj_split_grid),
+        cmocka_unit_test(test_obj_corner_ids_in_order),
         cmocka_unit_test(test_ply_ascii_and_binary),
         cmocka_unit_test(test_stl_ascii_and_binary),
         cmocka_unit_test(test_gltf_data_uri),
