@@ -44,6 +44,8 @@ typedef struct obj_reader {
     uint32_t *face;           /* the corner ids of the face being read */
     uint32_t *face_at;        /* and their positions */
     size_t face_cap;
+    obj_corner *resolved;     /* a face parsed ahead, its corners resolved before any is entered */
+    size_t resolved_cap;
     uint32_t *split;          /* its triangles as corner numbers */
     size_t split_cap;
     triangulate_work work;
@@ -724,20 +726,25 @@ static glint_status merge_line(obj_reader *r, const text_piece *pc, const ahead 
 /* Adds the face of record a as read_face would; false, with nothing
  * changed, when its indices do not all resolve or it could pass a limit:
  * then statement() is to read its line. */
-static bool merge_face(obj_reader *r, const text_piece *pc, const ahead *a, long base, glint_status *s, glint_error *err)
+static bool merge_face(obj_reader *r, const text_piece *pc, const ahead *a, long base, glint_status *s,
+                       glint_error *err)
 {
     obj_model *m = r->m;
     size_t n = a->corners;
     const int32_t *raw = pc->corners + a->u.first;
-    int32_t unused;
     if (m->corner_count + n >= MESH_IMPORT_MAX_COUNT || m->triangle_count + n >= MESH_IMPORT_MAX_COUNT)
         return false;
-    for (size_t k = 0; k < 3 * n; k++)
-        if ((a->what & 1u << k % 3) && !absolute_index(raw[k], item_count(m, (part)(k % 3)), &unused))
-            return false;
-    if (!face_room(r, n)) {
+    if (!face_room(r, n) || !array_reserve((void **)&r->resolved, &r->resolved_cap, n, sizeof *r->resolved)) {
         *s = out_of_memory(r, err);
         return true;
+    }
+    for (size_t k = 0; k < n; k++) {
+        obj_corner *c = &r->resolved[k];
+        int32_t *out[3] = {&c->v, &c->vt, &c->vn};
+        *c = (obj_corner){-1, -1, -1};
+        for (int j = 0; j < 3; j++)
+            if ((a->what & 1u << j) && !absolute_index(raw[3 * k + j], item_count(m, (part)j), out[j]))
+                return false;
     }
     /* Nothing below can fail but for memory: the place is for form's sake. */
     scan_line l;
@@ -745,13 +752,8 @@ static bool merge_face(obj_reader *r, const text_piece *pc, const ahead *a, long
     scan_start(&l, p, p, base + a->row, r->file);
     scan_pos at = {base + a->row, 1};
     for (size_t k = 0; k < n; k++) {
-        obj_corner c = {-1, -1, -1};
-        int32_t *out[3] = {&c.v, &c.vt, &c.vn};
-        for (int j = 0; j < 3; j++)
-            if (a->what & 1u << j)
-                absolute_index(raw[3 * k + j], item_count(m, (part)j), out[j]);
-        r->face_at[k] = (uint32_t)c.v;
-        if ((*s = corner_id(r, &l, at, &c, &r->face[k], err)))
+        r->face_at[k] = (uint32_t)r->resolved[k].v;
+        if ((*s = corner_id(r, &l, at, &r->resolved[k], &r->face[k], err)))
             return true;
     }
     *s = add_face(r, &l, at, n, a->what, err);
@@ -996,6 +998,7 @@ static glint_status read_all(obj_model *m, source *src, const char *file, int th
     id_table_free(&r.name_index);
     free(r.face);
     free(r.face_at);
+    free(r.resolved);
     free(r.split);
     triangulate_free(&r.work);
     return s;

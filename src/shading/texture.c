@@ -76,8 +76,8 @@ color checker_eval(color a, color b, double cell, double u, double v)
 
 static color texel(const texture_image *img, int x, int y)
 {
-    const unsigned char *p = img->srgb + 3 * ((size_t)y * img->width + x);
-    return rgb(img->linear[p[0]], img->linear[p[1]], img->linear[p[2]]);
+    size_t i = 3 * ((size_t)y * img->width + x);
+    return rgb(texture_image_at(img, i), texture_image_at(img, i + 1), texture_image_at(img, i + 2));
 }
 
 color image_eval(const texture_image *img, double u, double v)
