@@ -854,8 +854,8 @@ static glint_status fill(obj_reader *r, source *src, block *b, size_t size, cons
             size = size <= SIZE_MAX / 2 ? 2 * size : SIZE_MAX; /* a line longer than a block */
         }
     }
-    if ((b->cap < size && !array_reserve((void **)&b->buf, &b->cap, size, 1)) ||
-        (carry_len > 0 && !array_reserve((void **)&b->buf, &b->cap, carry_len + 1, 1)))
+    /* Room for the block, and past the carry for at least one more byte. */
+    if (!array_reserve((void **)&b->buf, &b->cap, carry_len < size ? size : carry_len + 1, 1))
         return out_of_memory(r, err);
     if (carry_len > 0)
         memmove(b->buf, carry, carry_len);
