@@ -22,6 +22,7 @@
 
 #include "glint.h"
 #include "tmp_tree.h"
+#include "io/png_encode.h"
 #include "io/srgb.h"
 #include "io/texture_image.h"
 
@@ -376,6 +377,23 @@ static unsigned char *write_and_read(glint_image *img, const char *name, char *p
     return bytes;
 }
 
+/* libpng's decoding of bytes, which must be a width x height RGB PNG
+ * (free the result). */
+static unsigned char *decode_png(const unsigned char *bytes, size_t size, int width, int height)
+{
+    png_image png;
+    memset(&png, 0, sizeof png);
+    png.version = PNG_IMAGE_VERSION;
+    assert_true(png_image_begin_read_from_memory(&png, bytes, size));
+    assert_int_equal(png.width, width);
+    assert_int_equal(png.height, height);
+    png.format = PNG_FORMAT_RGB;
+    unsigned char *pixels = malloc(PNG_IMAGE_SIZE(png));
+    assert_non_null(pixels);
+    assert_true(png_image_finish_read(&png, NULL, pixels, 0, NULL));
+    return pixels;
+}
+
 static void test_write_ppm_bytes(void **state)
 {
     char path[PATH_SIZE];
@@ -435,9 +453,8 @@ static void test_write_png_round_trip(void **state)
 }
 
 /* Every byte libpng decodes is the film's sRGB byte: over many rows (so the
- * row filter matters), smooth ramps and incompressible noise (so the file
- * spans several IDAT chunks and outgrows the encoder's first buffer), and
- * values that clamp. */
+ * row filter matters), smooth ramps and incompressible noise, and values
+ * that clamp. */
 static void test_write_png_decodes_to_srgb_bytes(void **state)
 {
     enum { width = 301, height = 203 };
@@ -449,20 +466,13 @@ static void test_write_png_decodes_to_srgb_bytes(void **state)
                 img.pixels[3 * (y * width + x) + c] = (float)(x + c * y) / (width + 2 * height);
     memcpy(img.pixels, sample_linear, sizeof sample_linear);
     size_t n = 3 * (size_t)width * height;
-    unsigned char *want = malloc(n), *got = malloc(n);
-    assert_true(want && got);
+    unsigned char *want = malloc(n);
+    assert_non_null(want);
     srgb_encode(want, img.pixels, n);
     size_t size;
     unsigned char *bytes = write_and_read(&img, "bytes.png", path, &size);
     assert_true(size > 64 * 1024);
-    png_image png;
-    memset(&png, 0, sizeof png);
-    png.version = PNG_IMAGE_VERSION;
-    assert_true(png_image_begin_read_from_memory(&png, bytes, size));
-    assert_int_equal(png.width, width);
-    assert_int_equal(png.height, height);
-    png.format = PNG_FORMAT_RGB;
-    assert_true(png_image_finish_read(&png, NULL, got, 0, NULL));
+    unsigned char *got = decode_png(bytes, size, width, height);
     assert_memory_equal(got, want, n);
     free(bytes);
     free(want);
@@ -639,20 +649,133 @@ static void test_write_empty_image(void **state)
     assert_int_equal(access("empty.png", F_OK), -1);
 }
 
-/* libpng refuses rows over a million pixels; its message comes back and
- * nothing is left behind. */
-static void test_write_png_too_wide(void **state)
+/* Images libpng would refuse to read (over a million pixels wide or high)
+ * are refused with the limit named, and nothing is left behind. */
+static void test_write_png_too_large(void **state)
 {
-    char path[PATH_SIZE], want[2 * PATH_SIZE];
-    glint_error err = {{0}};
-    glint_image img = {1000001, 1, calloc(3 * 1000001, sizeof(float))};
-    assert_non_null(img.pixels);
-    tmp_path(path, "wide.png");
-    snprintf(want, sizeof want, "cannot write '%s': Invalid IHDR data", path);
-    expect_error(glint_image_write(&img, path, &err), &err, GLINT_ERR_IO, want);
+    static const int sizes[2][2] = {{1000001, 1}, {1, 1000001}};
+    for (int k = 0; k < 2; k++) {
+        char path[PATH_SIZE], want[2 * PATH_SIZE];
+        glint_error err = {{0}};
+        glint_image img = {sizes[k][0], sizes[k][1], calloc(3 * 1000001, sizeof(float))};
+        assert_non_null(img.pixels);
+        tmp_path(path, "large.png");
+        snprintf(want, sizeof want,
+                 "cannot write '%s': a PNG image is at most 1000000 pixels wide and high, got %dx%d", path,
+                 sizes[k][0], sizes[k][1]);
+        expect_error(glint_image_write(&img, path, &err), &err, GLINT_ERR_INVALID, want);
+        glint_image_free(&img);
+        assert_int_equal(access(path, F_OK), -1);
+        assert_int_equal(count_entries(tmp_dir, ".tmp-"), 0);
+    }
+}
+
+/* The chunk types of a PNG file in order, as one string ("IHDRsRGB..."),
+ * each chunk's CRC checked on the way. */
+static void chunk_types(const unsigned char *bytes, size_t size, char *types, size_t capacity)
+{
+    static const unsigned char signature[8] = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1a, '\n'};
+    assert_true(size >= 8);
+    assert_memory_equal(bytes, signature, 8);
+    size_t n = 0;
+    for (size_t i = 8; i < size;) {
+        assert_true(i + 12 <= size);
+        uint32_t len = (uint32_t)bytes[i] << 24 | (uint32_t)bytes[i + 1] << 16 | (uint32_t)bytes[i + 2] << 8 |
+                       bytes[i + 3];
+        assert_true(i + 12 + len <= size);
+        const unsigned char *c = bytes + i + 8 + len;
+        uint32_t crc = (uint32_t)c[0] << 24 | (uint32_t)c[1] << 16 | (uint32_t)c[2] << 8 | c[3];
+        assert_int_equal(crc, (uint32_t)crc32(0, bytes + i + 4, 4 + len));
+        assert_true(n + 5 <= capacity);
+        memcpy(types + n, bytes + i + 4, 4);
+        n += 4;
+        i += 12 + (size_t)len;
+    }
+    types[n] = '\0';
+}
+
+/* The file is the same bytes on any number of threads, and decodes to the
+ * film's sRGB bytes: over shapes of image that cut into one slice, several,
+ * and slices of a single row wider than the 32 KiB window; a repeating ramp
+ * in the top half, where matches reach back into the slice before, and
+ * noise below. */
+static void test_png_encode_any_thread_count(void **state)
+{
+    static const int shapes[][2] = {{1, 1}, {3, 2}, {301, 900}, {640, 1000}, {12000, 5}, {100000, 3}};
+    for (size_t k = 0; k < sizeof shapes / sizeof shapes[0]; k++) {
+        int width = shapes[k][0], height = shapes[k][1];
+        size_t n = 3 * (size_t)width * height;
+        glint_image img = noise_image(width, height);
+        for (int y = 0; y < (height + 1) / 2; y++)
+            for (int x = 0; x < width; x++)
+                for (int c = 0; c < 3; c++)
+                    img.pixels[3 * ((size_t)y * width + x) + c] = (float)((x / 7 + c * y) % 50) / 50;
+        unsigned char *want = malloc(n);
+        assert_non_null(want);
+        srgb_encode(want, img.pixels, n);
+        unsigned char *first = NULL;
+        size_t first_size = 0;
+        for (int threads = 1; threads <= 5; threads += 2) {
+            unsigned char *bytes;
+            size_t size;
+            assert_true(png_encode(&img, threads, &bytes, &size));
+            if (!first) {
+                first = bytes;
+                first_size = size;
+                unsigned char *got = decode_png(bytes, size, width, height);
+                assert_memory_equal(got, want, n);
+                free(got);
+                continue;
+            }
+            assert_int_equal(size, first_size);
+            assert_memory_equal(bytes, first, size);
+            free(bytes);
+        }
+        free(first);
+        free(want);
+        glint_image_free(&img);
+    }
+}
+
+/* A file whose stream outgrows one IDAT chunk (1 MiB) spans several, each
+ * with its own CRC, between IHDR and sRGB before and IEND after; the zlib
+ * stream's own Adler-32 is checked by zlib, inflating it whole. */
+static void test_png_encode_chunks(void **state)
+{
+    enum { width = 700, height = 600 };
+    glint_image img = noise_image(width, height);
+    unsigned char *bytes;
+    size_t size;
+    assert_true(png_encode(&img, 2, &bytes, &size));
+    char types[64];
+    chunk_types(bytes, size, types, sizeof types);
+    assert_string_equal(types, "IHDRsRGBIDATIDATIEND");
+    assert_int_equal(bytes[8 + 8 + 13 + 4 + 8], 0); /* sRGB: perceptual */
+
+    /* The IDAT data joined is one zlib stream that inflates to the
+     * filtered rows: each a filter byte (None first, then Up) and 2100
+     * bytes. */
+    unsigned char *stream = malloc(size), *rows = malloc((size_t)height * (1 + 3 * width) + 1);
+    assert_true(stream && rows);
+    size_t stream_size = 0;
+    for (size_t i = 8; i < size;) {
+        uint32_t len = (uint32_t)bytes[i] << 24 | (uint32_t)bytes[i + 1] << 16 | (uint32_t)bytes[i + 2] << 8 |
+                       bytes[i + 3];
+        if (memcmp(bytes + i + 4, "IDAT", 4) == 0) {
+            memcpy(stream + stream_size, bytes + i + 8, len);
+            stream_size += len;
+        }
+        i += 12 + (size_t)len;
+    }
+    uLongf rows_size = (uLongf)height * (1 + 3 * width) + 1;
+    assert_int_equal(uncompress(rows, &rows_size, stream, (uLong)stream_size), Z_OK);
+    assert_int_equal(rows_size, (uLongf)height * (1 + 3 * width));
+    for (int y = 0; y < height; y++)
+        assert_int_equal(rows[(size_t)y * (1 + 3 * width)], y == 0 ? 0 : 2);
+    free(rows);
+    free(stream);
+    free(bytes);
     glint_image_free(&img);
-    assert_int_equal(access(path, F_OK), -1);
-    assert_int_equal(count_entries(tmp_dir, ".tmp-"), 0);
 }
 
 static void test_image_free(void **state)
@@ -958,7 +1081,9 @@ int main(void)
         cmocka_unit_test(test_check_path_parent_is_file),
         cmocka_unit_test(test_unknown_extension),
         cmocka_unit_test(test_write_empty_image),
-        cmocka_unit_test(test_write_png_too_wide),
+        cmocka_unit_test(test_write_png_too_large),
+        cmocka_unit_test(test_png_encode_any_thread_count),
+        cmocka_unit_test(test_png_encode_chunks),
         cmocka_unit_test(test_image_free),
         cmocka_unit_test(test_load_missing_file),
         cmocka_unit_test(test_load_directory),
