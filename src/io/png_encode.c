@@ -13,12 +13,12 @@
  * Work runs in two rounds, each over the slices in parallel: sRGB encoding
  * of the rows, then filtering and deflating, which reads the rows before a
  * slice for its Up filter and its window. */
-#include <pthread.h>
 #include <stdatomic.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
 #include <zlib.h>
+#include "core/parallel.h"
 #include "io/png_encode.h"
 #include "io/srgb.h"
 
@@ -38,7 +38,6 @@ typedef struct slice {
     unsigned char *deflated;  /* malloc'd */
     size_t deflated_size;
     uLong adler;              /* Adler-32 of the slice's filtered bytes alone */
-    size_t filtered_size;
 } slice;
 
 typedef struct encoder {
@@ -93,8 +92,8 @@ static void deflate_slice(encoder *e, slice *s)
     for (int k = 0; k < before + s->rows; k++)
         filter_row(e, s->first_row - before + k, filtered + (size_t)k * stride);
     unsigned char *own = filtered + (size_t)before * stride;
-    s->filtered_size = (size_t)s->rows * stride;
-    s->adler = adler32_z(adler32_z(0, NULL, 0), own, s->filtered_size);
+    size_t own_size = (size_t)s->rows * stride;
+    s->adler = adler32_z(adler32_z(0, NULL, 0), own, own_size);
 
     z_stream z = {0};
     bool last = s->first_row + s->rows == e->image->height;
@@ -103,11 +102,11 @@ static void deflate_slice(encoder *e, slice *s)
         ok = deflateSetDictionary(&z, own - window, (uInt)window) == Z_OK;
     /* The bound covers the final block; a sync flush adds an empty stored
      * block of 5 bytes at most instead. */
-    size_t bound = ok ? deflateBound(&z, (uLong)s->filtered_size) + 16 : 0;
+    size_t bound = ok ? deflateBound(&z, (uLong)own_size) + 16 : 0;
     s->deflated = ok ? malloc(bound) : NULL;
     if (s->deflated) {
         z.next_in = own;
-        z.avail_in = (uInt)s->filtered_size;
+        z.avail_in = (uInt)own_size;
         z.next_out = s->deflated;
         z.avail_out = (uInt)bound;
         int r = deflate(&z, last ? Z_FINISH : Z_SYNC_FLUSH);
@@ -129,23 +128,12 @@ static void *run(void *arg)
     return NULL;
 }
 
-/* Runs e->work over every slice on up to `threads` threads, the caller's
- * among them; a thread that cannot start leaves its share to the others. */
+/* Runs work over every slice on up to `threads` threads. */
 static void for_each_slice(encoder *e, int threads, void (*work)(encoder *e, slice *s))
 {
-    enum { MOST = 64 };
-    pthread_t ids[MOST];
-    bool started[MOST] = {false};
     e->work = work;
     atomic_store(&e->next, 0);
-    threads = threads < e->slice_count ? threads : e->slice_count;
-    threads = threads < MOST ? threads : MOST;
-    for (int t = 1; t < threads; t++)
-        started[t] = pthread_create(&ids[t], NULL, run, e) == 0;
-    run(e);
-    for (int t = 1; t < threads; t++)
-        if (started[t])
-            pthread_join(ids[t], NULL);
+    parallel_run(threads < e->slice_count ? threads : e->slice_count, run, e, 0);
 }
 
 static void put32(unsigned char *p, uint32_t v)
@@ -175,7 +163,7 @@ static bool assemble(const encoder *e, unsigned char **bytes, size_t *size)
     uLong adler = adler32_z(0, NULL, 0);
     for (int k = 0; k < e->slice_count; k++) {
         stream_size += e->slices[k].deflated_size;
-        adler = adler32_combine(adler, e->slices[k].adler, (z_off_t)e->slices[k].filtered_size);
+        adler = adler32_combine(adler, e->slices[k].adler, (z_off_t)(e->slices[k].rows * (e->row_bytes + 1)));
     }
     unsigned char *stream = malloc(stream_size);
     size_t idats = (stream_size + IDAT_MAX - 1) / IDAT_MAX;

@@ -7,6 +7,7 @@
 #include <time.h>
 #include "core/error.h"
 #include "core/hash.h"
+#include "core/parallel.h"
 #include "core/processors.h"
 #include "render/camera.h"
 #include "render/integrator.h"
@@ -27,7 +28,6 @@ typedef struct job {
 
 typedef struct worker {
     job *job;
-    pthread_t thread;
     uint64_t rays;
 } worker;
 
@@ -169,19 +169,12 @@ static glint_status run_workers(job *j, int count, uint64_t *rays, glint_error *
     worker *ws = calloc((size_t)count, sizeof *ws);
     if (!ws)
         return error_set(err, GLINT_ERR_NOMEM, "out of memory starting threads");
-    int started = 1;
     for (int i = 0; i < count; i++)
         ws[i].job = j;
-    for (; started < count; started++)
-        if (pthread_create(&ws[started].thread, NULL, worker_run, &ws[started]) != 0)
-            break;
-    worker_run(&ws[0]);
+    parallel_run(count, worker_run, ws, sizeof *ws);
     *rays = 0;
-    for (int i = 0; i < started; i++) {
-        if (i > 0)
-            pthread_join(ws[i].thread, NULL);
+    for (int i = 0; i < count; i++)
         *rays += ws[i].rays;
-    }
     free(ws);
     return GLINT_OK;
 }
