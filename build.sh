@@ -62,6 +62,37 @@ fuzz() {
         "$(sed -n 's/^stat::average_exec_per_sec: *//p' "build-fuzz/fuzz-$name.log") exec/s, no crash"
 }
 
+# same_images A B: glint programs A and B (one optimised for this processor
+# from a profile, one a generic sanitizer build at -O2) render the default
+# scene and every example scene to the same bytes: no optimisation or vector
+# width changes an image. A scene both refuse alike (a model missing with
+# the shared data folder) is skipped.
+same_images() {
+    local a=$1 b=$2 out=build/same-images scenes=("") n=0
+    mkdir -p "$out"
+    for f in scenes/*.yaml scenes/models/*.yaml; do
+        scenes+=("$f")
+    done
+    for f in "${scenes[@]}"; do
+        local args=(-w 160 -h 120 --threads 2 --quiet)
+        [ -z "$f" ] || args=("$f" "${args[@]}")
+        local sa=0 sb=0
+        "$a" "${args[@]}" -o "$out/a.ppm" 2>/dev/null || sa=$?
+        "$b" "${args[@]}" -o "$out/b.ppm" 2>/dev/null || sb=$?
+        if [ "$sa" -ne "$sb" ]; then
+            echo "same images: ${f:-the default scene} exits $sa with $a, $sb with $b" >&2
+            exit 1
+        fi
+        [ "$sa" -eq 0 ] || continue
+        if ! cmp -s "$out/a.ppm" "$out/b.ppm"; then
+            echo "same images: ${f:-the default scene} renders differently with $a and $b" >&2
+            exit 1
+        fi
+        n=$((n + 1))
+    done
+    echo "same images: $n scenes render the same bytes with $a and $b"
+}
+
 case "${1:-}" in
 render)
     shift
@@ -77,6 +108,7 @@ test)
     build build-asan -DGLINT_WERROR=ON -DGLINT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
         ctest --test-dir build-asan --output-on-failure -j "$(nproc)"
+    same_images build/glint build-asan/glint
     # Fuzz the scene loader and the model importer for a bounded time each
     # (tests/fuzz/README.md); a crash, leak or timeout fails the test.
     CC=clang build build-fuzz -DGLINT_WERROR=ON -DGLINT_FUZZ=ON -DGLINT_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
