@@ -103,11 +103,12 @@ typedef struct query {
     const accel *acc;
     accel_filter_fn filter;
     void *user;
-    const ray *r;             /* the packet's rays, lane i at r + i */
+    const ray8 *r;            /* the packet's rays */
     double tmax[ACCEL_PACKET];   /* every query starts at t = 0 */
     int skip[ACCEL_PACKET];      /* a shape lane i cannot meet, or -1 */
-    int index[ACCEL_PACKET];
-    shape_hit hit[ACCEL_PACKET];
+    int index[ACCEL_PACKET];     /* the shape lane i hit, or -1 */
+    double hit_t[ACCEL_PACKET];  /* and where: its shape_hit, by field */
+    int hit_part[ACCEL_PACKET];
     color through[ACCEL_PACKET];
     seen_set *seen;           /* shadow queries: what each lane was filtered by */
 } query;
@@ -177,10 +178,12 @@ static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
         shape_hit h;
         /* A triangle found first may have shortened the ray below q->tmax. */
         double tmax = q->tmax[i] < *tfar ? q->tmax[i] : (double)*tfar;
-        if (!shape_intersect(s, q->r + i, 0, tmax, &h))
+        ray r = ray8_get(q->r, (int)i);
+        if (!shape_intersect(s, &r, 0, tmax, &h))
             continue;
         q->tmax[i] = h.t;
-        q->hit[i] = h;
+        q->hit_t[i] = h.t;
+        q->hit_part[i] = h.part;
         q->index[i] = index;
         *tfar = float_up((float)h.t);
         *rayhit_lane_uint(rh, args->N, HIT_GEOM, i) = args->geomID;
@@ -193,7 +196,8 @@ static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
  * passes. */
 static bool pass_through(query *q, unsigned i, const accel_hit *h)
 {
-    q->through[i] = rgb_mul(q->through[i], q->filter(q->user, q->r + i, h));
+    ray r = ray8_get(q->r, (int)i);
+    q->through[i] = rgb_mul(q->through[i], q->filter(q->user, &r, h));
     return rgb_max(q->through[i]) >= TRANSMISSION_CUTOFF;
 }
 
@@ -206,10 +210,11 @@ static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
     for (unsigned i = 0; i < args->N; i++) {
         if (!args->valid[i] || q->skip[i] == index)
             continue;
+        ray r = ray8_get(q->r, (int)i);
         if (opaque) {
             /* Blocking twice is harmless, so no record of it is kept. */
             shape_hit h;
-            if (shape_intersect(s, q->r + i, 0, q->tmax[i], &h))
+            if (shape_intersect(s, &r, 0, q->tmax[i], &h))
                 *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
             continue;
         }
@@ -218,7 +223,7 @@ static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
         double tmin = 0;
         accel_hit h = {.shape = index, .instance = -1};
         /* Shapes are convex, so a ray crosses one at most twice. */
-        for (int crossing = 0; crossing < 2 && shape_intersect(s, q->r + i, tmin, q->tmax[i], &h.on_shape);
+        for (int crossing = 0; crossing < 2 && shape_intersect(s, &r, tmin, q->tmax[i], &h.on_shape);
              crossing++) {
             h.t = h.on_shape.t;
             if (!pass_through(q, i, &h)) {
@@ -475,62 +480,111 @@ static bool lane_hit(const query *q, unsigned i, unsigned geom, unsigned inst, f
     if (geom == RTC_INVALID_GEOMETRY_ID && q->index[i] < 0)
         return false;
     if (geom == RTC_INVALID_GEOMETRY_ID || (geom == SHAPES_ID && inst == RTC_INVALID_GEOMETRY_ID))
-        *hit = (accel_hit){.t = q->hit[i].t, .shape = q->index[i], .on_shape = q->hit[i], .instance = -1};
+        *hit = (accel_hit){.t = q->hit_t[i], .shape = q->index[i], .on_shape = {q->hit_t[i], q->hit_part[i]},
+                           .instance = -1};
     else
         *hit = (accel_hit){.t = tfar, .shape = -1, .instance = instance_of(geom, inst), .triangle = prim, .b1 = u,
                            .b2 = v};
     return true;
 }
 
-/* The nearest plane lane i crosses in (tmin, tmax): records it as the
+/* Where each lane of r meets the plane through p with unit normal n, for
+ * t[i], and whether it does so within (0, tmax[i]): plane_hit's arithmetic,
+ * for every lane at once. */
+static void plane_lanes(vec3 p, vec3 n, const ray8 *r, const double tmax[ACCEL_PACKET], double t[ACCEL_PACKET],
+                        bool hit[ACCEL_PACKET])
+{
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        double along = r->dx[i] * n.x + r->dy[i] * n.y + r->dz[i] * n.z;
+        t[i] = ((p.x - r->ox[i]) * n.x + (p.y - r->oy[i]) * n.y + (p.z - r->oz[i]) * n.z) / along;
+        hit[i] = along != 0 && t[i] > 0 && t[i] < tmax[i];
+    }
+}
+
+/* Plane k (of a->planes) for every lane: t[i] and hit[i] as plane_lanes
+ * gives them, never for the lane's skipped shape. A moved plane is tested
+ * lane by lane in its own space, as shape_intersect_plane does. */
+static void plane_test(const query *q, int k, const double tmax[ACCEL_PACKET], double t[ACCEL_PACKET],
+                       bool hit[ACCEL_PACKET])
+{
+    int index = q->acc->planes[k];
+    const shape *s = &q->acc->shapes[index];
+    if (!s->has_transform) {
+        plane_lanes(s->desc.center, s->desc.normal, q->r, tmax, t, hit);
+    } else {
+        for (int i = 0; i < ACCEL_PACKET; i++) {
+            ray r = ray8_get(q->r, i);
+            shape_hit h;
+            hit[i] = shape_intersect_plane(s, &r, 0, tmax[i], &h);
+            t[i] = h.t;
+        }
+    }
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        hit[i] = hit[i] && q->skip[i] != index;
+}
+
+/* The nearest plane each lane crosses in (0, tmax): records it as the
  * lane's hit and shortens the lane's tmax to just past it, so Embree looks
  * only for something nearer, or as near: a shape touching the plane (a box
  * standing on a floor) wins the tie, as it would inside Embree. */
-static void nearest_plane(query *q, unsigned i)
+static void nearest_planes(query *q)
 {
     const accel *a = q->acc;
-    double nearest = q->tmax[i];
+    double nearest[ACCEL_PACKET];
+    memcpy(nearest, q->tmax, sizeof nearest);
     for (int k = 0; k < a->plane_count; k++) {
-        shape_hit h;
-        if (a->planes[k] != q->skip[i] && shape_intersect_plane(&a->shapes[a->planes[k]], q->r + i, 0, nearest, &h)) {
-            nearest = h.t;
-            q->hit[i] = h;
-            q->index[i] = a->planes[k];
+        double t[ACCEL_PACKET];
+        bool hit[ACCEL_PACKET];
+        plane_test(q, k, nearest, t, hit);
+        for (int i = 0; i < ACCEL_PACKET; i++) {
+            nearest[i] = hit[i] ? t[i] : nearest[i];
+            q->hit_t[i] = hit[i] ? t[i] : q->hit_t[i];
+            q->hit_part[i] = hit[i] ? 0 : q->hit_part[i];
+            q->index[i] = hit[i] ? a->planes[k] : q->index[i];
         }
     }
-    if (q->index[i] >= 0) {
+    for (int i = 0; i < ACCEL_PACKET; i++) {
         /* nextafter(nearest, INFINITY) for positive finite nearest, inline */
         uint64_t bits;
-        memcpy(&bits, &nearest, sizeof bits);
-        bits++;
+        memcpy(&bits, &nearest[i], sizeof bits);
+        bits += q->index[i] >= 0;
         memcpy(&q->tmax[i], &bits, sizeof bits);
     }
 }
 
-/* Filters lane i's shadow segment through the planes it crosses; false once
- * nothing passes. A plane is crossed at most once. */
-static bool through_planes(query *q, unsigned i)
+/* Filters each lane's shadow segment through the planes it crosses, a plane
+ * at most once, in the planes' order; blocked[i] once nothing passes. */
+static void through_planes(query *q, bool blocked[ACCEL_PACKET])
 {
     const accel *a = q->acc;
     for (int k = 0; k < a->plane_count; k++) {
-        accel_hit h = {.shape = a->planes[k], .instance = -1};
-        if (h.shape != q->skip[i] &&
-            shape_intersect_plane(&a->shapes[h.shape], q->r + i, 0, q->tmax[i], &h.on_shape)) {
-            if (shape_opaque(a, h.shape))
-                return false;
-            h.t = h.on_shape.t;
-            if (!pass_through(q, i, &h))
-                return false;
+        double t[ACCEL_PACKET];
+        bool hit[ACCEL_PACKET];
+        plane_test(q, k, q->tmax, t, hit);
+        for (unsigned i = 0; i < ACCEL_PACKET; i++) {
+            if (!hit[i] || blocked[i])
+                continue;
+            accel_hit h = {.t = t[i], .shape = a->planes[k], .on_shape = {t[i], 0}, .instance = -1};
+            blocked[i] = shape_opaque(a, h.shape) || !pass_through(q, i, &h);
         }
     }
-    return true;
+}
+
+/* Embree's far ends from the query's: rounded up, so the float traversal
+ * never stops short of the exact double test. */
+static void packet_far(const query *q, struct RTCRay8 *p)
+{
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        float far = (float)q->tmax[i];
+        p->tfar[i] = far < FLT_MAX ? float_up(far) : INFINITY;
+    }
 }
 
 /* Fills the query's lanes and Embree's packet from the active rays, each
  * covering (0, tmax[i]): Embree's float tfar is rounded up so the float
  * traversal never stops short of the exact double test. Inactive lanes are
  * left for Embree to skip. */
-static void packet_init(query *q, const ray r[ACCEL_PACKET], const double tmax[ACCEL_PACKET],
+static void packet_init(query *q, const ray8 *r, const double tmax[ACCEL_PACKET],
                         const int skip[ACCEL_PACKET], bool coherent, const bool active[ACCEL_PACKET],
                         int valid[ACCEL_PACKET], struct RTCRay8 *p)
 {
@@ -555,17 +609,14 @@ static void packet_init(query *q, const ray r[ACCEL_PACKET], const double tmax[A
         q->index[i] = -1;
     }
     for (int i = 0; i < ACCEL_PACKET; i++) {
-        p->org_x[i] = (float)r[i].o.x;
-        p->org_y[i] = (float)r[i].o.y;
-        p->org_z[i] = (float)r[i].o.z;
-        p->dir_x[i] = (float)r[i].d.x;
-        p->dir_y[i] = (float)r[i].d.y;
-        p->dir_z[i] = (float)r[i].d.z;
+        p->org_x[i] = (float)r->ox[i];
+        p->org_y[i] = (float)r->oy[i];
+        p->org_z[i] = (float)r->oz[i];
+        p->dir_x[i] = (float)r->dx[i];
+        p->dir_y[i] = (float)r->dy[i];
+        p->dir_z[i] = (float)r->dz[i];
     }
-    for (int i = 0; i < ACCEL_PACKET; i++) {
-        float far = (float)q->tmax[i];
-        p->tfar[i] = far < FLT_MAX ? float_up(far) : INFINITY;
-    }
+    packet_far(q, p);
     for (int i = 0; i < ACCEL_PACKET; i++) {
         p->tnear[i] = 0;
         p->time[i] = 0;
@@ -575,7 +626,7 @@ static void packet_init(query *q, const ray r[ACCEL_PACKET], const double tmax[A
     }
 }
 
-void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const int skip[ACCEL_PACKET], bool coherent,
+void accel_intersect8(const accel *a, const ray8 *r, const int skip[ACCEL_PACKET], bool coherent,
                       const bool active[ACCEL_PACKET], accel_hit hit[ACCEL_PACKET], bool found[ACCEL_PACKET])
 {
     static const double far[ACCEL_PACKET] = {INFINITY, INFINITY, INFINITY, INFINITY,
@@ -585,12 +636,11 @@ void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const int skip[
     struct RTCRayHit8 rh;
     q.acc = a;
     packet_init(&q, r, far, skip, coherent, active, valid, &rh.ray);
-    for (unsigned i = 0; i < ACCEL_PACKET; i++) {
+    for (unsigned i = 0; i < ACCEL_PACKET; i++)
         rh.hit.geomID[i] = rh.hit.primID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
-        if (active[i] && a->plane_count > 0) {
-            nearest_plane(&q, i);
-            rh.ray.tfar[i] = q.tmax[i] < FLT_MAX ? float_up((float)q.tmax[i]) : INFINITY;
-        }
+    if (a->plane_count > 0) {
+        nearest_planes(&q);
+        packet_far(&q, &rh.ray);
     }
     rtcIntersect8(valid, a->scene, &q.ctx, &rh);
     for (unsigned i = 0; i < ACCEL_PACKET; i++)
@@ -598,7 +648,7 @@ void accel_intersect8(const accel *a, const ray r[ACCEL_PACKET], const int skip[
                                          rh.hit.primID[i], rh.hit.u[i], rh.hit.v[i], &hit[i]);
 }
 
-void accel_transmission8(const accel *a, const ray r[ACCEL_PACKET], const double tmax[ACCEL_PACKET],
+void accel_transmission8(const accel *a, const ray8 *r, const double tmax[ACCEL_PACKET],
                          const int skip[ACCEL_PACKET], bool coherent, const bool active[ACCEL_PACKET],
                          accel_filter_fn filter, void *user, color through[ACCEL_PACKET])
 {
@@ -615,11 +665,12 @@ void accel_transmission8(const accel *a, const ray r[ACCEL_PACKET], const double
     for (unsigned i = 0; i < ACCEL_PACKET; i++) {
         q.through[i] = rgb(1, 1, 1);
         seen_init(&seen[i]);
-        /* A lane a plane blocks needs no search. */
-        if (active[i] && a->plane_count > 0 && !through_planes(&q, i)) {
-            blocked[i] = true;
-            valid[i] = 0;
-        }
+    }
+    /* A lane a plane blocks needs no search. */
+    if (a->plane_count > 0) {
+        through_planes(&q, blocked);
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            valid[i] = blocked[i] ? 0 : valid[i];
     }
     rtcOccluded8(valid, a->scene, &q.ctx, &p);
     for (int i = 0; i < ACCEL_PACKET; i++)

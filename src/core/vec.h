@@ -37,4 +37,33 @@ static inline vec3 v3_madd(vec3 a, vec3 b, double s) { return v3(a.x + b.x * s, 
 static inline vec3 ray_at(const ray *r, double t) { return v3_madd(r->o, r->d, t); }
 static inline int v3_is_finite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
+/* Rays side by side in a packet. */
+#define RAY8 8
+
+/* RAY8 rays as a structure of arrays: lane i has origin (ox[i], oy[i],
+ * oz[i]) and direction (dx[i], dy[i], dz[i]), so that a loop over the lanes
+ * can be one vector operation per step. */
+typedef struct ray8 {
+    double ox[RAY8], oy[RAY8], oz[RAY8];
+    double dx[RAY8], dy[RAY8], dz[RAY8];
+} ray8;
+
+/* Lane i of a packet as a ray. */
+static inline ray ray8_get(const ray8 *p, int i)
+{
+    ray r = {{p->ox[i], p->oy[i], p->oz[i]}, {p->dx[i], p->dy[i], p->dz[i]}};
+    return r;
+}
+
+/* Stores r in lane i of a packet. */
+static inline void ray8_set(ray8 *p, int i, ray r)
+{
+    p->ox[i] = r.o.x;
+    p->oy[i] = r.o.y;
+    p->oz[i] = r.o.z;
+    p->dx[i] = r.d.x;
+    p->dy[i] = r.d.y;
+    p->dz[i] = r.d.z;
+}
+
 #endif

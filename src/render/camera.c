@@ -15,35 +15,37 @@ void camera_init(camera *c, const glint_camera *d, int width, int height)
     c->per_y = half_height / height;
 }
 
+/* The unit direction through image position (x, y): no division but the
+ * normalisation's, and the image centre and every pixel edge there map
+ * exactly onto the view axis. */
+static inline void direction(const camera *c, double x, double y, double *dx, double *dy, double *dz)
+{
+    vec3 f = c->forward, r = c->right, u = c->up;
+    double sx = (2 * x - c->width) * c->per_x;
+    double sy = (c->height - 2 * y) * c->per_y;
+    double ex = f.x + (r.x * sx + u.x * sy);
+    double ey = f.y + (r.y * sx + u.y * sy);
+    double ez = f.z + (r.z * sx + u.z * sy);
+    double l = sqrt(ex * ex + ey * ey + ez * ez);
+    double inv = l > 0 ? 1.0 / l : 1.0;
+    *dx = ex * inv;
+    *dy = ey * inv;
+    *dz = ez * inv;
+}
+
 ray camera_ray(const camera *c, double x, double y)
 {
-    ray r;
-    camera_rays(c, 1, &x, &y, &r);
+    ray r = {c->position, {0, 0, 0}};
+    direction(c, x, y, &r.d.x, &r.d.y, &r.d.z);
     return r;
 }
 
-void camera_rays(const camera *c, int count, const double *x, const double *y, ray *out)
+void camera_rays8(const camera *c, const double x[RAY8], const double y[RAY8], ray8 *out)
 {
-    /* No division but the normalisation's, and the image centre and every
-     * pixel edge there map exactly onto the view axis. A few rays at a time
-     * go through arrays the compiler can turn into vectors. */
-    enum { CHUNK = 8 };
-    vec3 f = c->forward, r = c->right, u = c->up;
-    for (int base = 0; base < count; base += CHUNK) {
-        int m = count - base < CHUNK ? count - base : CHUNK;
-        double dx[CHUNK], dy[CHUNK], dz[CHUNK], inv[CHUNK];
-        for (int i = 0; i < m; i++) {
-            double sx = (2 * x[base + i] - c->width) * c->per_x;
-            double sy = (c->height - 2 * y[base + i]) * c->per_y;
-            dx[i] = f.x + (r.x * sx + u.x * sy);
-            dy[i] = f.y + (r.y * sx + u.y * sy);
-            dz[i] = f.z + (r.z * sx + u.z * sy);
-            double l = sqrt(dx[i] * dx[i] + dy[i] * dy[i] + dz[i] * dz[i]);
-            inv[i] = l > 0 ? 1.0 / l : 1.0;
-        }
-        for (int i = 0; i < m; i++) {
-            out[base + i].o = c->position;
-            out[base + i].d = v3(dx[i] * inv[i], dy[i] * inv[i], dz[i] * inv[i]);
-        }
+    for (int i = 0; i < RAY8; i++) {
+        out->ox[i] = c->position.x;
+        out->oy[i] = c->position.y;
+        out->oz[i] = c->position.z;
+        direction(c, x[i], y[i], &out->dx[i], &out->dy[i], &out->dz[i]);
     }
 }

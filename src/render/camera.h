@@ -21,9 +21,9 @@ void camera_init(camera *c, const glint_camera *desc, int width, int height);
  * bottom-right. */
 ray camera_ray(const camera *c, double x, double y);
 
-/* camera_ray for the image positions (x[i], y[i]) of count rays, into
- * out[i], with exactly its results; written lane by lane so the compiler
- * can compute several rays at once. */
-void camera_rays(const camera *c, int count, const double *x, const double *y, ray *out);
+/* camera_ray for the image positions (x[i], y[i]) of a packet's RAY8
+ * lanes, into lane i of *out, with exactly its results; the lanes are
+ * computed side by side, as vectors where the compiler can. */
+void camera_rays8(const camera *c, const double x[RAY8], const double y[RAY8], ray8 *out);
 
 #endif

@@ -200,39 +200,41 @@ static color miss(const glint_scene *scene)
 /* Adds to direct[i] the light of every light source that reaches the hit
  * sp[i] of each lane found[i]: one packet of shadow segments per light,
  * over the lanes it lights, for hits of rays at recursion depth `depth`. */
-static void direct_light8(tracer *t, const ray r[ACCEL_PACKET], const bool found[ACCEL_PACKET],
+static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
                           const shade_point sp[ACCEL_PACKET], int depth, color direct[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
     for (int l = 0; l < scene->light_count; l++) {
         light_sample ls[ACCEL_PACKET];
-        ray shadow[ACCEL_PACKET];
+        ray8 shadow;
         double dist[ACCEL_PACKET];
         int skip[ACCEL_PACKET];
         bool lit[ACCEL_PACKET], any = false;
         for (int i = 0; i < ACCEL_PACKET; i++) {
-            lit[i] = found[i] && shadow_segment(&scene->lights[l], &r[i], &sp[i], &ls[i], &shadow[i]);
+            ray ri = ray8_get(r, i), si = ri;
+            lit[i] = found[i] && shadow_segment(&scene->lights[l], &ri, &sp[i], &ls[i], &si);
             dist[i] = lit[i] ? ls[i].distance : 0;
             skip[i] = lit[i] ? left_behind(scene, &sp[i], ls[i].to_light) : -1;
-            if (!lit[i])
-                shadow[i] = r[i];
+            ray8_set(&shadow, i, si);
             t->rays += lit[i];
             any |= lit[i];
         }
         if (!any)
             continue;
         color through[ACCEL_PACKET];
-        accel_transmission8(t->acc, shadow, dist, skip, depth == 0, lit, shadow_filter, t, through);
-        for (int i = 0; i < ACCEL_PACKET; i++)
+        accel_transmission8(t->acc, &shadow, dist, skip, depth == 0, lit, shadow_filter, t, through);
+        for (int i = 0; i < ACCEL_PACKET; i++) {
+            vec3 to_eye = v3(-r->dx[i], -r->dy[i], -r->dz[i]);
             if (lit[i])
-                direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i], v3_neg(r[i].d)));
+                direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i], to_eye));
+        }
     }
 }
 
 /* The colours of up to ACCEL_PACKET rays at recursion depth `depth`. The
  * rays each hit sends on are traced as packets too, one per kind of
  * branch, over the lanes that send one. */
-static void trace8(tracer *t, const ray r[ACCEL_PACKET], const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET],
+static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET],
                    int depth, color out[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
@@ -259,7 +261,8 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const int skip[ACCEL_PA
             found[i] = false;
             continue;
         }
-        shade_begin(scene, &r[i], &hits[i], &sp[i]);
+        ray ri = ray8_get(r, i);
+        shade_begin(scene, &ri, &hits[i], &sp[i]);
         if (fog && hits[i].shape < 0 && fog_hides(&scene->fog, sp[i].hit.t))
             found[i] = false;
         else
@@ -269,7 +272,8 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const int skip[ACCEL_PA
     bool sent[BRANCHES] = {false}; /* whether any lane sends a ray of each kind */
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (found[i]) {
-            local[i] = shade_local(scene, &r[i], &sp[i], local[i], depth, &b[i]);
+            ray ri = ray8_get(r, i);
+            local[i] = shade_local(scene, &ri, &sp[i], local[i], depth, &b[i]);
             for (int k = 0; k < BRANCHES; k++)
                 sent[k] |= b[i].on[k];
         }
@@ -277,17 +281,17 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const int skip[ACCEL_PA
     for (int k = 0; k < BRANCHES; k++) {
         if (!sent[k])
             continue;
-        ray next[ACCEL_PACKET];
+        ray8 next;
         int next_skip[ACCEL_PACKET];
         bool on[ACCEL_PACKET];
         for (int i = 0; i < ACCEL_PACKET; i++)
             on[i] = found[i] && b[i].on[k];
         for (int i = 0; i < ACCEL_PACKET; i++) {
-            next[i] = on[i] ? b[i].r[k] : r[i];
+            ray8_set(&next, i, on[i] ? b[i].r[k] : ray8_get(r, i));
             next_skip[i] = on[i] ? b[i].skip[k] : -1;
         }
         color c[ACCEL_PACKET];
-        trace8(t, next, next_skip, on, depth + 1, c);
+        trace8(t, &next, next_skip, on, depth + 1, c);
         for (int i = 0; i < ACCEL_PACKET; i++)
             if (on[i])
                 local[i] = rgb_add(local[i], rgb_scale(rgb_mul(b[i].filter[k], c[i]), b[i].scale[k]));
@@ -298,7 +302,7 @@ static void trace8(tracer *t, const ray r[ACCEL_PACKET], const int skip[ACCEL_PA
         out[i] = found[i] ? fog_apply(&scene->fog, local[i], sp[i].hit.t) : sky;
 }
 
-void tracer_trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET],
+void tracer_trace8(tracer *t, const ray8 *r, const bool active[ACCEL_PACKET],
                    color out[ACCEL_PACKET])
 {
     static const int none[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};

@@ -13,12 +13,12 @@ typedef struct tracer {
     uint64_t rays;            /* every ray this tracer has cast */
 } tracer;
 
-/* The colours seen along up to ACCEL_PACKET unit-direction camera rays
- * (recursion depth 0): out[i] for each active[i]. The rays, their shadow
+/* The colours seen along up to ACCEL_PACKET unit-direction camera rays, the
+ * lanes of *r (recursion depth 0): out[i] for each active[i]. The rays, their shadow
  * rays and the reflected, refracted and transmitted rays they lead to are
  * all traced as packets; coherent rays (a block of neighbouring pixels)
  * gain most. */
-void tracer_trace8(tracer *t, const ray r[ACCEL_PACKET], const bool active[ACCEL_PACKET],
+void tracer_trace8(tracer *t, const ray8 *r, const bool active[ACCEL_PACKET],
                    color out[ACCEL_PACKET]);
 
 #endif

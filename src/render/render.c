@@ -57,7 +57,7 @@ static void render_block(tracer *t, const job *j, int x0, int y0)
     const glint_settings *s = &j->scene->settings;
     int n = j->grid;
     bool jittered = s->sampler == GLINT_SAMPLER_JITTERED;
-    ray rays[ACCEL_PACKET];
+    ray8 rays;
     bool active[ACCEL_PACKET];
     int px[ACCEL_PACKET], py[ACCEL_PACKET];
     color sum[ACCEL_PACKET], c[ACCEL_PACKET];
@@ -79,8 +79,8 @@ static void render_block(tracer *t, const job *j, int x0, int y0)
                 x[i] = px[i] + ox;
                 y[i] = py[i] + oy;
             }
-            camera_rays(&j->cam, ACCEL_PACKET, x, y, rays);
-            tracer_trace8(t, rays, active, c);
+            camera_rays8(&j->cam, x, y, &rays);
+            tracer_trace8(t, &rays, active, c);
             for (int i = 0; i < ACCEL_PACKET; i++)
                 if (active[i])
                     sum[i] = rgb_add(sum[i], c[i]);

@@ -297,11 +297,13 @@ static void test_smooth_normals_and_per_triangle_materials(void **state)
                         .instance_count = s->instance_count};
     assert_int_equal(accel_build(&a, &g, NULL), GLINT_OK);
     ray r = {{-0.5, -0.9, 0}, {0, 0, -1}};
-    ray rays[ACCEL_PACKET] = {r, r, r, r, r, r, r, r};
+    ray8 rays;
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        ray8_set(&rays, i, r);
     bool active[ACCEL_PACKET] = {true}, found[ACCEL_PACKET];
     accel_hit hits[ACCEL_PACKET];
     int skip[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
-    accel_intersect8(a, rays, skip, false, active, hits, found);
+    accel_intersect8(a, &rays, skip, false, active, hits, found);
     assert_true(found[0]);
     assert_false(found[1]);
     accel_hit h = hits[0];
