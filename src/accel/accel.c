@@ -626,11 +626,12 @@ static void packet_init(query *q, const ray8 *r, const double tmax[ACCEL_PACKET]
     }
 }
 
-void accel_intersect8(const accel *a, const ray8 *r, const int skip[ACCEL_PACKET], bool coherent,
+void accel_intersect8(const accel *a, const ray8 *r, double tmax, const int skip[ACCEL_PACKET], bool coherent,
                       const bool active[ACCEL_PACKET], accel_hit hit[ACCEL_PACKET], bool found[ACCEL_PACKET])
 {
-    static const double far[ACCEL_PACKET] = {INFINITY, INFINITY, INFINITY, INFINITY,
-                                             INFINITY, INFINITY, INFINITY, INFINITY};
+    double far[ACCEL_PACKET];
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        far[i] = tmax;
     query q;
     _Alignas(32) int valid[ACCEL_PACKET];
     struct RTCRayHit8 rh;

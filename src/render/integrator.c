@@ -243,7 +243,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     shade_point sp[ACCEL_PACKET];
     color local[ACCEL_PACKET];
     branches b[ACCEL_PACKET];
-    accel_intersect8(t->acc, r, skip, depth == 0, active, hits, found);
+    accel_intersect8(t->acc, r, t->reach, skip, depth == 0, active, hits, found);
     /* A large mesh's vertices are seldom in cache: fetch every lane's
      * together rather than one lane's at a time. */
     for (int i = 0; i < ACCEL_PACKET; i++)
@@ -300,6 +300,16 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     color sky = miss(scene);
     for (int i = 0; i < ACCEL_PACKET; i++)
         out[i] = found[i] ? fog_apply(&scene->fog, local[i], sp[i].hit.t) : sky;
+}
+
+double tracer_reach(const glint_scene *scene)
+{
+    double reach = fog_reach(&scene->fog);
+    /* mesh_surface moves Embree's t by up to 1e-3 t + 1e-6 when it refines
+     * it, so a hit Embree puts that far past the reach may still lie
+     * nearer; twice that margin covers it. */
+    reach += 2e-3 * fabs(reach) + 2e-6;
+    return reach > 0 ? reach : 0;
 }
 
 void tracer_trace8(tracer *t, const ray8 *r, const bool active[ACCEL_PACKET],

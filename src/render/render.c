@@ -114,7 +114,7 @@ static void *worker_run(void *arg)
 {
     worker *w = arg;
     job *j = w->job;
-    tracer t = {j->scene, j->acc, 0};
+    tracer t = {j->scene, j->acc, 0, tracer_reach(j->scene)};
     int tile;
     while ((tile = atomic_fetch_add(&j->next_tile, 1)) < j->tiles_total) {
         if (j->opts->cancel && *j->opts->cancel)

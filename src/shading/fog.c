@@ -53,3 +53,11 @@ bool fog_hides(const glint_fog *f, double d)
         return d - f->start >= f->end - f->start;
     return f->kind != GLINT_FOG_NONE && fog_factor(f, d) >= 1;
 }
+
+double fog_reach(const glint_fog *f)
+{
+    /* d - start >= end - start for every d >= end: rounding keeps the
+     * order of the differences. Exponential fog would hide everything
+     * only where exp underflows; it is not worth the care. */
+    return f->kind == GLINT_FOG_LINEAR ? f->end : INFINITY;
+}

@@ -20,4 +20,10 @@ color fog_apply(const glint_fog *fog, color c, double d);
  * nothing there needs shading. */
 bool fog_hides(const glint_fog *fog, double d);
 
+/* A distance from which on the fog hides everything: fog_hides is true for
+ * every d >= fog_reach, and a ray that hits nothing shows the same fog
+ * colour, so nothing that far along a ray needs to be found. INFINITY when
+ * the fog never hides anything completely. */
+double fog_reach(const glint_fog *fog);
+
 #endif

@@ -387,6 +387,59 @@ static void test_fog_hides_unshaded(void **state)
     }
 }
 
+/* A wall facing the camera at distance -z, as an analytic quad or as a
+ * two-triangle mesh, under a light, behind linear fog that ends at 50. */
+static glint_scene *wall_at_fog_end(double z, bool mesh)
+{
+    glint_scene *s = new_scene(11, 11, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 30);
+    int mat = matte(s, 0.3, 0.6, 0.9);
+    if (mesh) {
+        float p[] = {-100, -100, (float)z, 100, -100, (float)z, 100, 100, (float)z, -100, 100, (float)z};
+        static const uint32_t idx[] = {0, 1, 2, 0, 2, 3};
+        glint_mesh_data md = {p, NULL, NULL, 4, idx, 2, NULL, mat};
+        int m = glint_scene_add_mesh(s, "wall", &md, NULL);
+        assert_true(m >= 0);
+        assert_true(glint_scene_add_instance(s, m, -1, NULL, NULL) >= 0);
+    } else {
+        add_quad(s, (glint_vec3){-100, -100, z}, (glint_vec3){100, -100, z}, (glint_vec3){100, 100, z},
+                 (glint_vec3){-100, 100, z}, mat);
+    }
+    glint_light l = {.kind = GLINT_LIGHT_POINT, .position = {0, 0, -10}, .color = {1, 1, 1}};
+    assert_true(glint_scene_add_light(s, &l, NULL) >= 0);
+    glint_fog f = {.kind = GLINT_FOG_LINEAR, .color = {0.7, 0.2, 0.1}, .start = 0, .end = 50};
+    assert_int_equal(glint_scene_set_fog(s, &f, NULL), GLINT_OK);
+    return s;
+}
+
+/* Hits are looked for only as far as linear fog leaves anything to see: a
+ * wall just short of the fog's end is still found and lit, one just past
+ * it shows exactly the fog colour and sends no shadow ray; analytic shapes
+ * and meshes alike. The centre pixel's ray runs along the axis, so its
+ * distance to the wall is exactly -z; every other ray's is longer. */
+static void test_fog_end_bounds_the_search(void **state)
+{
+    for (int mesh = 0; mesh < 2; mesh++) {
+        for (int past = 0; past < 2; past++) {
+            glint_scene *s = wall_at_fog_end(past ? -50.0001 : -49.9999, mesh);
+            glint_image img;
+            glint_render_stats st;
+            glint_render_options o = {.threads = 1};
+            assert_int_equal(glint_render(s, &o, &img, &st, NULL), GLINT_OK);
+            const float *c = pixel(&img, 5, 5);
+            bool fog = c[0] == 0.7f && c[1] == 0.2f && c[2] == 0.1f;
+            if (past) {
+                assert_true(fog);
+                assert_int_equal(st.rays, 121);
+            } else {
+                assert_false(fog);
+                assert_int_equal(st.rays, 122);
+            }
+            glint_image_free(&img);
+            glint_scene_free(s);
+        }
+    }
+}
+
 static void test_identical_bytes_for_any_thread_count(void **state)
 {
     glint_error err;
@@ -500,6 +553,7 @@ int main(void)
         cmocka_unit_test(test_supersamples_are_four_distinct_points),
         cmocka_unit_test(test_fresnel_reflects_more_at_grazing_angles),
         cmocka_unit_test(test_fog_hides_unshaded),
+        cmocka_unit_test(test_fog_end_bounds_the_search),
         cmocka_unit_test(test_identical_bytes_for_any_thread_count),
         cmocka_unit_test(test_progress_reports_every_tile_in_order),
         cmocka_unit_test(test_cancel_flag_stops_the_render),
