@@ -109,8 +109,12 @@ static inline bool quadratic(double a, double b, double c, double *t0, double *t
         *t0 = *t1 = 0;
         return true;
     }
-    *t0 = fmin(q / a, c / q);
-    *t1 = fmax(q / a, c / q);
+    /* Neither root is NaN (a and q are not zero, the inputs finite) and at
+     * most one is zero, so comparisons give fmin's and fmax's results
+     * without their library calls. */
+    double r0 = q / a, r1 = c / q;
+    *t0 = r1 < r0 ? r1 : r0;
+    *t1 = r1 < r0 ? r0 : r1;
     return true;
 }
 
