@@ -33,7 +33,16 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
     if (!xf_invert(&s->to_world, &s->to_object))
         return error_set(err, GLINT_ERR_INVALID, "transform is singular or not finite");
     s->has_transform = !xf_is_identity(&s->to_world);
-    return KINDS[desc->kind].init(s, err);
+    glint_status st = KINDS[desc->kind].init(s, err);
+    if (st == GLINT_OK && !s->has_transform && (desc->kind == GLINT_SHAPE_PLANE || desc->kind == GLINT_SHAPE_POLYGON)) {
+        /* What shape_surface would compute at every hit, computed once:
+         * the same bits. */
+        surface one = {.p_obj = s->desc.center};
+        KINDS[desc->kind].surface(s, 0, &one);
+        s->flat = true;
+        s->flat_n = v3_normalize(one.n);
+    }
+    return st;
 }
 
 /* For a shape with a transform. The direction is mapped but not
@@ -73,6 +82,12 @@ void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *
     }
     out->part = hit->part;
     out->u = out->v = 0;
+    if (s->flat) {
+        /* The bits the lines below would give, computed once by
+         * shape_init instead of a square root and a division a hit. */
+        out->n = out->shading_n = s->flat_n;
+        return;
+    }
     KINDS[s->desc.kind].surface(s, hit->part, out);
     if (s->has_transform)
         out->n = xf_normal(&s->to_object, out->n);

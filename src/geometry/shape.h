@@ -21,6 +21,8 @@ typedef struct shape {
     vec3 edge_in[4];          /* polygon: poly_normal x edge i, pointing inside */
     transform to_world, to_object;
     bool has_transform;       /* false: to_world is the identity */
+    bool flat;                /* a plane or polygon without a transform: */
+    vec3 flat_n;              /* its surface normal, the same at every hit */
     int material;
 } shape;
 

@@ -394,6 +394,38 @@ static void test_quad_tilted(void **state)
     MISS(s, R(v3(1.5, 0, 1), v3(0, 1, -1)));
 }
 
+/* A plane's or polygon's normal is the same at every hit, so shape_init
+ * normalises it once: shape_surface gives exactly the bits normalising at
+ * the hit would. Moved ones still map and normalise at each hit. */
+static void test_flat_normal_computed_once(void **state)
+{
+    glint_shape plane = {.kind = GLINT_SHAPE_PLANE, .center = {0, -1, 0}, .normal = {1, 2, 3}};
+    shape flat[] = {MAKE(poly_d(4, v3(0, 0, 0), v3(1, 0, 0), v3(1, 1, 1), v3(0, 1, 1)), NULL),
+                    MAKE(poly_d(3, v3(0, 0, 0.3), v3(2, 0.1, 0), v3(0.7, 1.9, 0.4), v3(0, 0, 0)), NULL),
+                    MAKE(plane, NULL)};
+    ray rays[] = {R(v3(0.4, 0.3, 5), v3(0.01, 0.02, -1)), R(v3(0.4, 0.3, 5), v3(0.01, 0.02, -1)),
+                  R(v3(0, 5, 0), v3(0, -1, 0))};
+    for (int k = 0; k < 3; k++) {
+        assert_true(flat[k].flat);
+        vec3 n = v3_normalize(k < 2 ? flat[k].poly_normal : flat[k].desc.normal);
+        shape_hit h;
+        assert_true(shape_intersect(&flat[k], &rays[k], 0, INFINITY, &h));
+        surface sf;
+        shape_surface(&flat[k], &rays[k], &h, &sf);
+        assert_memory_equal(&sf.n, &n, sizeof n);
+        assert_memory_equal(&sf.shading_n, &n, sizeof n);
+    }
+    glint_transform m = glint_transform_rotate(glint_transform_identity(), (glint_vec3){0, 0, 1}, 90);
+    shape moved = MAKE(plane, &m);
+    assert_false(moved.flat);
+    shape_hit h;
+    assert_true(shape_intersect(&moved, &rays[2], 0, INFINITY, &h));
+    surface sf;
+    shape_surface(&moved, &rays[2], &h, &sf);
+    /* (1, 2, 3) turned a quarter about z is (-2, 1, 3). */
+    VNEAR(sf.n, v3_normalize(v3(-2, 1, 3)));
+}
+
 static void test_polygon_validation(void **state)
 {
     vec3 o = v3(0, 0, 0);
@@ -1106,6 +1138,7 @@ int main(void)
         cmocka_unit_test(test_triangle_clockwise),
         cmocka_unit_test(test_quad_hit),
         cmocka_unit_test(test_quad_tilted),
+        cmocka_unit_test(test_flat_normal_computed_once),
         cmocka_unit_test(test_polygon_validation),
         cmocka_unit_test(test_box_faces),
         cmocka_unit_test(test_box_miss),
