@@ -45,8 +45,9 @@ void mapping_apply(const glint_mapping *m, const surface *s, double *u, double *
         return;
     case GLINT_MAP_PLANAR:
         if (v3_length(m->u_axis) == 0) {
-            *u = d.x / scale;
-            *v = d.z / scale;
+            /* x / 1 is x: no division for the default scale. */
+            *u = scale == 1 ? d.x : d.x / scale;
+            *v = scale == 1 ? d.z : d.z / scale;
         } else {
             *u = v3_dot(d, v3_normalize(m->u_axis)) / scale;
             *v = v3_dot(d, v3_normalize(m->v_axis)) / scale;
