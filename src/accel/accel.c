@@ -488,29 +488,19 @@ static bool lane_hit(const query *q, unsigned i, unsigned geom, unsigned inst, f
     return true;
 }
 
-/* Where each lane of r meets the plane through p with unit normal n, for
- * t[i], and whether it does so within (0, tmax[i]): plane_hit's arithmetic,
- * for every lane at once. */
-static void plane_lanes(vec3 p, vec3 n, const ray8 *r, const double tmax[ACCEL_PACKET], double t[ACCEL_PACKET],
-                        bool hit[ACCEL_PACKET])
-{
-    for (int i = 0; i < ACCEL_PACKET; i++) {
-        double along = r->dx[i] * n.x + r->dy[i] * n.y + r->dz[i] * n.z;
-        t[i] = ((p.x - r->ox[i]) * n.x + (p.y - r->oy[i]) * n.y + (p.z - r->oz[i]) * n.z) / along;
-        hit[i] = along != 0 && t[i] > 0 && t[i] < tmax[i];
-    }
-}
-
-/* Plane k (of a->planes) for every lane: t[i] and hit[i] as plane_lanes
- * gives them, never for the lane's skipped shape. A moved plane is tested
- * lane by lane in its own space, as shape_intersect_plane does. */
+/* Plane k (of a->planes) for every lane: t[i] and hit[i] as plane_hit
+ * gives them for (0, tmax[i]), never for the lane's skipped shape. A moved
+ * plane is tested in its own space, as shape_intersect_plane does. */
 static void plane_test(const query *q, int k, const double tmax[ACCEL_PACKET], double t[ACCEL_PACKET],
                        bool hit[ACCEL_PACKET])
 {
     int index = q->acc->planes[k];
     const shape *s = &q->acc->shapes[index];
     if (!s->has_transform) {
-        plane_lanes(s->desc.center, s->desc.normal, q->r, tmax, t, hit);
+        for (int i = 0; i < ACCEL_PACKET; i++) {
+            ray r = ray8_get(q->r, i);
+            hit[i] = plane_hit(s->desc.center, s->desc.normal, &r, 0, tmax[i], &t[i]);
+        }
     } else {
         for (int i = 0; i < ACCEL_PACKET; i++) {
             ray r = ray8_get(q->r, i);

@@ -54,10 +54,6 @@ void cone_surface(const shape *s, int part, surface *out);
 void cone_uv(const shape *s, int part, surface *out);
 void cone_bounds(const shape *s, vec3 *lo, vec3 *hi);
 
-/* Where r crosses the plane through point with normal n, when that is in
- * (tmin, tmax); a ray parallel to the plane misses it. Polygons share it. */
-bool plane_hit(vec3 point, vec3 n, const ray *r, double tmin, double tmax, double *t);
-
 /* The texture axes of a plane with unit normal n. Seen from the side n
  * points to, u runs right and v runs down, as in an image. Planes more than
  * 45 degrees from horizontal are walls: u is horizontal, and v is -y on a

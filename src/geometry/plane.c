@@ -18,15 +18,6 @@ glint_status plane_init(shape *s, glint_error *err)
     return GLINT_OK;
 }
 
-bool plane_hit(vec3 point, vec3 n, const ray *r, double tmin, double tmax, double *t)
-{
-    double along = v3_dot(r->d, n);
-    if (along == 0)
-        return false;
-    *t = v3_dot(v3_sub(point, r->o), n) / along;
-    return *t > tmin && *t < tmax;
-}
-
 void plane_basis(vec3 n, vec3 *u, vec3 *v)
 {
     /* Walls measure u from up; floors from -z, which makes their u +x.

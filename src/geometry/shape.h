@@ -11,6 +11,17 @@
 #include "core/transform.h"
 #include "core/vec.h"
 
+/* Where r crosses the plane through point with normal n, *t, and whether
+ * that is in (tmin, tmax); a ray parallel to the plane misses it. Planes
+ * and polygons test with it, and the accelerator tests a packet's lanes
+ * with it, inline so that a loop of it over lanes can be vector code. */
+static inline bool plane_hit(vec3 point, vec3 n, const ray *r, double tmin, double tmax, double *t)
+{
+    double along = v3_dot(r->d, n);
+    *t = v3_dot(v3_sub(point, r->o), n) / along;
+    return along != 0 && *t > tmin && *t < tmax;
+}
+
 /* Planes are bounded to this many units from the origin for the BVH. */
 #define SHAPE_PLANE_EXTENT 1e6
 
