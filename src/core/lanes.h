@@ -1,0 +1,68 @@
+/* lanes.h - four doubles as one GCC vector, for code that works on a
+ * packet's lanes (RAY8 = 8, so two quads): arithmetic on a quad is one
+ * operation whatever the processor (one AVX instruction, or two SSE2 ones
+ * in a generic x86-64 build). Quads, not 8-wide vectors: on processors with
+ * AVX-512 those become 512-bit instructions, whose divisions and square
+ * roots lower the clock of the whole core (measured: slower). Each lane's
+ * result is the correctly rounded IEEE result of the same operation on that
+ * lane alone, so code written on quads gives the same bits as scalar code
+ * with the same operations in the same order (nothing is fused: every build
+ * has -ffp-contract=off). */
+#ifndef GLINT_CORE_LANES_H
+#define GLINT_CORE_LANES_H
+
+#include <stdbool.h>
+#include <stdint.h>
+#include <string.h>
+#include "core/vec.h"
+
+#define QUAD 4
+_Static_assert(RAY8 % QUAD == 0, "a packet is whole quads");
+
+/* Four doubles, and the masks that comparing them gives: all bits set in a
+ * lane where the comparison holds, none where it does not (nor where either
+ * side is NaN, except for !=). */
+typedef double quad __attribute__((vector_size(QUAD * sizeof(double))));
+typedef int64_t quad_mask __attribute__((vector_size(QUAD * sizeof(int64_t))));
+
+/* The four doubles at p, which need no more than double alignment. */
+static inline quad quad_load(const double *p)
+{
+    quad v;
+    memcpy(&v, p, sizeof v);
+    return v;
+}
+
+/* Stores the lanes of v at p. */
+static inline void quad_store(double *p, quad v) { memcpy(p, &v, sizeof v); }
+
+/* x in every lane (x + a zero quad would turn -0 into +0; this keeps it). */
+static inline quad quad_splat(double x) { return (quad){x, x, x, x}; }
+
+/* Lane by lane, m ? a : b. */
+static inline quad quad_select(quad_mask m, quad a, quad b)
+{
+    quad_mask ai, bi;
+    memcpy(&ai, &a, sizeof ai);
+    memcpy(&bi, &b, sizeof bi);
+    quad_mask r = (ai & m) | (bi & ~m);
+    quad v;
+    memcpy(&v, &r, sizeof v);
+    return v;
+}
+
+/* flags[i] = lane i of m is set. */
+static inline void quad_mask_store(bool flags[QUAD], quad_mask m)
+{
+    for (int i = 0; i < QUAD; i++)
+        flags[i] = m[i] != 0;
+}
+
+/* The dot product of (ax, ay, az) and (bx, by, bz) in every lane, added in
+ * v3_dot's order. */
+static inline quad quad_dot(quad ax, quad ay, quad az, quad bx, quad by, quad bz)
+{
+    return ax * bx + ay * by + az * bz;
+}
+
+#endif
