@@ -11,6 +11,7 @@
 #ifndef GLINT_CORE_LANES_H
 #define GLINT_CORE_LANES_H
 
+#include <immintrin.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <string.h>
@@ -49,6 +50,17 @@ static inline quad quad_select(quad_mask m, quad a, quad b)
     quad v;
     memcpy(&v, &r, sizeof v);
     return v;
+}
+
+/* The square root of every lane, correctly rounded as sqrt's. */
+static inline quad quad_sqrt(quad v)
+{
+#if defined(__AVX__)
+    return (quad)_mm256_sqrt_pd((__m256d)v);
+#else
+    __m128d lo = _mm_sqrt_pd((__m128d){v[0], v[1]}), hi = _mm_sqrt_pd((__m128d){v[2], v[3]});
+    return (quad){lo[0], lo[1], hi[0], hi[1]};
+#endif
 }
 
 /* flags[i] = lane i of m is set. */
