@@ -497,29 +497,28 @@ static void plane_test(const query *q, int k, const double tmax[ACCEL_PACKET], d
 {
     int index = q->acc->planes[k];
     const shape *s = &q->acc->shapes[index];
-    if (!s->has_transform) {
-        /* plane_hit on four lanes at once, in its order of operations */
-        const ray8 *r = q->r;
-        vec3 c = s->desc.center, n = s->desc.normal;
-        quad nx = quad_splat(n.x), ny = quad_splat(n.y), nz = quad_splat(n.z);
-        for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
-            quad along = quad_dot(quad_load(r->dx + i), quad_load(r->dy + i), quad_load(r->dz + i), nx, ny, nz);
-            quad at = quad_dot(quad_splat(c.x) - quad_load(r->ox + i), quad_splat(c.y) - quad_load(r->oy + i),
-                               quad_splat(c.z) - quad_load(r->oz + i), nx, ny, nz) /
-                      along;
-            quad_store(t + i, at);
-            quad_mask_store(hit + i, (along != 0) & (at > 0) & (at < quad_load(tmax + i)));
-        }
-    } else {
+    if (s->has_transform) {
         for (int i = 0; i < ACCEL_PACKET; i++) {
             ray r = ray8_get(q->r, i);
             shape_hit h;
-            hit[i] = shape_intersect_plane(s, &r, 0, tmax[i], &h);
+            hit[i] = shape_intersect_plane(s, &r, 0, tmax[i], &h) && q->skip[i] != index;
             t[i] = h.t;
         }
+        return;
     }
-    for (int i = 0; i < ACCEL_PACKET; i++)
-        hit[i] = hit[i] && q->skip[i] != index;
+    /* plane_hit on four lanes at once, in its order of operations */
+    const ray8 *r = q->r;
+    vec3 c = s->desc.center, n = s->desc.normal;
+    quad nx = quad_splat(n.x), ny = quad_splat(n.y), nz = quad_splat(n.z);
+    for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
+        quad along = quad_dot(quad_load(r->dx + i), quad_load(r->dy + i), quad_load(r->dz + i), nx, ny, nz);
+        quad at = quad_dot(quad_splat(c.x) - quad_load(r->ox + i), quad_splat(c.y) - quad_load(r->oy + i),
+                           quad_splat(c.z) - quad_load(r->oz + i), nx, ny, nz) /
+                  along;
+        quad_store(t + i, at);
+        quad_mask_store(hit + i, (along != 0) & (at > 0) & (at < quad_load(tmax + i)) &
+                                     quad_int_ne(q->skip + i, index));
+    }
 }
 
 /* The nearest plane each lane crosses in (0, tmax): records it as the

@@ -66,8 +66,18 @@ static inline quad quad_sqrt(quad v)
 /* flags[i] = lane i of m is set. */
 static inline void quad_mask_store(bool flags[QUAD], quad_mask m)
 {
-    for (int i = 0; i < QUAD; i++)
-        flags[i] = m[i] != 0;
+    typedef uint8_t quad_bytes __attribute__((vector_size(QUAD)));
+    quad_bytes b = __builtin_convertvector(m, quad_bytes) & 1;
+    memcpy(flags, &b, sizeof b);
+}
+
+/* The mask of the lanes where a[i] != b. */
+static inline quad_mask quad_int_ne(const int a[QUAD], int b)
+{
+    typedef int32_t quad_ints __attribute__((vector_size(QUAD * sizeof(int32_t))));
+    quad_ints v;
+    memcpy(&v, a, sizeof v);
+    return __builtin_convertvector(v != b, quad_mask);
 }
 
 /* The dot product of (ax, ay, az) and (bx, by, bz) in every lane, added in
