@@ -42,15 +42,21 @@ static void hit_surface(const glint_scene *scene, const ray *r, accel_hit *h, su
     mesh_surface(hit_mesh(scene, h), &scene->instances[h->instance], r, h->triangle, h->b1, h->b2, &h->t, s);
 }
 
-static color surface_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s)
+/* The colour of textured material m at s. */
+static color texture_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s)
 {
-    if (m->texture < 0)
-        return m->color;
     const texture *t = &scene->textures[m->texture];
     /* Meshes carry their uv already; shapes compute it only when asked. */
     if (t->mapping.kind == GLINT_MAP_UV && h->shape >= 0)
         shape_surface_uv(&scene->shapes[h->shape], s);
     return texture_eval(t, s);
+}
+
+/* The colour of material m at s. Most materials have no texture: that test
+ * is kept small enough to be inlined at each hit, apart from the look-up. */
+static inline color surface_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s)
+{
+    return m->texture < 0 ? m->color : texture_color(scene, h, m, s);
 }
 
 /* What one surface crossing passes to a shadow ray. A closed shape, and any
