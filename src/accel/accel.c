@@ -133,15 +133,15 @@ static unsigned hit_lane_uint(const struct RTCHitN *hit, unsigned n, unsigned fi
     return ((const unsigned *)hit)[field * n + i];
 }
 
-/* The next float above x, for finite x: nextafterf(x, INFINITY) without the
- * library call (this runs for every ray). */
+/* The next float above x, for finite x >= 0 (every distance here):
+ * nextafterf(x, INFINITY) without the library call, as this runs for every
+ * ray. The bits of a non-negative float count up with its value, from +0
+ * (bits 0) to the smallest subnormal (bits 1) and on. */
 static inline float float_up(float x)
 {
-    if (x == 0)
-        return FLT_TRUE_MIN;
     uint32_t b;
     memcpy(&b, &x, sizeof b);
-    b = x > 0 ? b + 1 : b - 1;
+    b += 1;
     memcpy(&x, &b, sizeof x);
     return x;
 }
