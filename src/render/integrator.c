@@ -302,10 +302,11 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
             if (on[i])
                 local[i] = rgb_add(local[i], rgb_scale(rgb_mul(b[i].filter[k], c[i]), b[i].scale[k]));
     }
-    /* Inactive lanes get the sky too, which nothing reads. */
+    /* Inactive lanes get the sky too, which nothing reads. Without fog,
+     * fog_apply would give a hit's colour back as it is. */
     color sky = miss(scene);
     for (int i = 0; i < ACCEL_PACKET; i++)
-        out[i] = found[i] ? fog_apply(&scene->fog, local[i], sp[i].hit.t) : sky;
+        out[i] = !found[i] ? sky : fog ? fog_apply(&scene->fog, local[i], sp[i].hit.t) : local[i];
 }
 
 double tracer_reach(const glint_scene *scene)
