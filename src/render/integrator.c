@@ -212,28 +212,33 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
     const glint_scene *scene = t->scene;
     for (int l = 0; l < scene->light_count; l++) {
         light_sample ls[ACCEL_PACKET];
-        ray8 shadow;
+        ray8 shadow = *r; /* a lane without a segment keeps its own ray */
         double dist[ACCEL_PACKET];
         int skip[ACCEL_PACKET];
         bool lit[ACCEL_PACKET], any = false;
         for (int i = 0; i < ACCEL_PACKET; i++) {
-            ray ri = ray8_get(r, i), si = ri;
-            lit[i] = found[i] && shadow_segment(&scene->lights[l], &ri, &sp[i], &ls[i], &si);
-            dist[i] = lit[i] ? ls[i].distance : 0;
-            skip[i] = lit[i] ? left_behind(scene, &sp[i], ls[i].to_light) : -1;
+            lit[i] = false;
+            dist[i] = 0;
+            skip[i] = -1;
+            if (!found[i])
+                continue;
+            ray ri = ray8_get(r, i), si;
+            if (!shadow_segment(&scene->lights[l], &ri, &sp[i], &ls[i], &si))
+                continue;
+            lit[i] = any = true;
+            dist[i] = ls[i].distance;
+            skip[i] = left_behind(scene, &sp[i], ls[i].to_light);
             ray8_set(&shadow, i, si);
-            t->rays += lit[i];
-            any |= lit[i];
+            t->rays++;
         }
         if (!any)
             continue;
         color through[ACCEL_PACKET];
         accel_transmission8(t->acc, &shadow, dist, skip, depth == 0, lit, shadow_filter, t, through);
-        for (int i = 0; i < ACCEL_PACKET; i++) {
-            vec3 to_eye = v3(-r->dx[i], -r->dy[i], -r->dz[i]);
+        for (int i = 0; i < ACCEL_PACKET; i++)
             if (lit[i])
-                direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i], to_eye));
-        }
+                direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i],
+                                                           v3(-r->dx[i], -r->dy[i], -r->dz[i])));
     }
 }
 
