@@ -166,16 +166,19 @@ static void bounds_fn(const struct RTCBoundsFunctionArguments *args)
     b->upper_z = pad_up(hi.z, pad);
 }
 
-static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
+/* intersect_fn's work for n = args->N lanes: inlined twice, once with n a
+ * constant for the packets glint sends, whose lanes are then cheaper to
+ * address. */
+static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *args, unsigned n)
 {
     query *q = (query *)args->context;
     int index = q->acc->prim_shape[args->primID];
     const shape *s = &q->acc->shapes[index];
     struct RTCRayHitN *rh = args->rayhit;
-    for (unsigned i = 0; i < args->N; i++) {
+    for (unsigned i = 0; i < n; i++) {
         if (!args->valid[i] || q->skip[i] == index)
             continue;
-        float *tfar = ray_lane_tfar((struct RTCRayN *)rh, args->N, i);
+        float *tfar = ray_lane_tfar((struct RTCRayN *)rh, n, i);
         shape_hit h;
         /* A triangle found first may have shortened the ray below q->tmax. */
         double tmax = q->tmax[i] < *tfar ? q->tmax[i] : (double)*tfar;
@@ -187,10 +190,18 @@ static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
         q->hit_part[i] = h.part;
         q->index[i] = index;
         *tfar = float_up((float)h.t);
-        *rayhit_lane_uint(rh, args->N, HIT_GEOM, i) = args->geomID;
-        *rayhit_lane_uint(rh, args->N, HIT_PRIM, i) = args->primID;
-        *rayhit_lane_uint(rh, args->N, HIT_INST, i) = RTC_INVALID_GEOMETRY_ID;
+        *rayhit_lane_uint(rh, n, HIT_GEOM, i) = args->geomID;
+        *rayhit_lane_uint(rh, n, HIT_PRIM, i) = args->primID;
+        *rayhit_lane_uint(rh, n, HIT_INST, i) = RTC_INVALID_GEOMETRY_ID;
     }
+}
+
+static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
+{
+    if (args->N == ACCEL_PACKET)
+        intersect_lanes(args, ACCEL_PACKET);
+    else
+        intersect_lanes(args, args->N);
 }
 
 /* Multiplies into lane i what one crossing passes; false once nothing
