@@ -11,7 +11,7 @@
 #ifndef GLINT_CORE_LANES_H
 #define GLINT_CORE_LANES_H
 
-#include <immintrin.h>
+#include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
 #include <string.h>
@@ -53,6 +53,8 @@ static inline quad quad_select(quad_mask m, quad a, quad b)
 }
 
 /* The square root of every lane, correctly rounded as sqrt's. */
+#if defined(__x86_64__) || defined(__i386__)
+#include <immintrin.h>
 static inline quad quad_sqrt(quad v)
 {
 #if defined(__AVX__)
@@ -62,6 +64,9 @@ static inline quad quad_sqrt(quad v)
     return (quad){lo[0], lo[1], hi[0], hi[1]};
 #endif
 }
+#else
+static inline quad quad_sqrt(quad v) { return (quad){sqrt(v[0]), sqrt(v[1]), sqrt(v[2]), sqrt(v[3])}; }
+#endif
 
 /* flags[i] = lane i of m is set. */
 static inline void quad_mask_store(bool flags[QUAD], quad_mask m)
