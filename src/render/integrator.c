@@ -257,9 +257,10 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     accel_intersect8(t->acc, r, t->reach, skip, depth == 0, active, hits, found);
     /* A large mesh's vertices are seldom in cache: fetch every lane's
      * together rather than one lane's at a time. */
-    for (int i = 0; scene->instance_count > 0 && i < ACCEL_PACKET; i++)
-        if (found[i] && hits[i].shape < 0)
-            mesh_prefetch(hit_mesh(scene, &hits[i]), hits[i].triangle);
+    if (scene->instance_count > 0)
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            if (found[i] && hits[i].shape < 0)
+                mesh_prefetch(hit_mesh(scene, &hits[i]), hits[i].triangle);
     /* A hit the fog hides completely looks like a miss, the fog colour
      * exactly (fog_apply gives it at factor 1 whatever the light), so it
      * is not shaded. A mesh hit's distance is exact only once refined. */
