@@ -189,7 +189,8 @@ static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *
         q->hit_t[i] = h.t;
         q->hit_part[i] = h.part;
         q->index[i] = index;
-        *tfar = float_up((float)h.t);
+        float far = (float)h.t; /* beyond float's range for a hit more than 3.4e38 away */
+        *tfar = far < FLT_MAX ? float_up(far) : INFINITY;
         *rayhit_lane_uint(rh, n, HIT_GEOM, i) = args->geomID;
         *rayhit_lane_uint(rh, n, HIT_PRIM, i) = args->primID;
         *rayhit_lane_uint(rh, n, HIT_INST, i) = RTC_INVALID_GEOMETRY_ID;
