@@ -518,18 +518,11 @@ static void plane_test(const query *q, int k, const double tmax[ACCEL_PACKET], d
         }
         return;
     }
-    /* plane_hit on four lanes at once, in its order of operations */
-    const ray8 *r = q->r;
-    vec3 c = s->desc.center, n = s->desc.normal;
-    quad nx = quad_splat(n.x), ny = quad_splat(n.y), nz = quad_splat(n.z);
     for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
-        quad along = quad_dot(quad_load(r->dx + i), quad_load(r->dy + i), quad_load(r->dz + i), nx, ny, nz);
-        quad at = quad_dot(quad_splat(c.x) - quad_load(r->ox + i), quad_splat(c.y) - quad_load(r->oy + i),
-                           quad_splat(c.z) - quad_load(r->oz + i), nx, ny, nz) /
-                  along;
+        quad_f64 at;
+        quad_mask h = plane_hit4(s->desc.center, s->desc.normal, q->r, i, 0, quad_load(tmax + i), &at);
         quad_store(t + i, at);
-        quad_mask_store(hit + i, (along != 0) & (at > 0) & (at < quad_load(tmax + i)) &
-                                     quad_int_ne(q->skip + i, index));
+        quad_mask_store(hit + i, h & quad_int_ne(q->skip + i, index));
     }
 }
 

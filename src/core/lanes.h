@@ -20,34 +20,34 @@
 #define QUAD 4
 _Static_assert(RAY8 % QUAD == 0, "a packet is whole quads");
 
-/* Four doubles, and the masks that comparing them gives: all bits set in a
+/* Four doubles, a quad, and the masks that comparing them gives: all bits set in a
  * lane where the comparison holds, none where it does not (nor where either
  * side is NaN, except for !=). */
-typedef double quad __attribute__((vector_size(QUAD * sizeof(double))));
+typedef double quad_f64 __attribute__((vector_size(QUAD * sizeof(double))));
 typedef int64_t quad_mask __attribute__((vector_size(QUAD * sizeof(int64_t))));
 
 /* The four doubles at p, which need no more than double alignment. */
-static inline quad quad_load(const double *p)
+static inline quad_f64 quad_load(const double *p)
 {
-    quad v;
+    quad_f64 v;
     memcpy(&v, p, sizeof v);
     return v;
 }
 
 /* Stores the lanes of v at p. */
-static inline void quad_store(double *p, quad v) { memcpy(p, &v, sizeof v); }
+static inline void quad_store(double *p, quad_f64 v) { memcpy(p, &v, sizeof v); }
 
 /* x in every lane (x + a zero quad would turn -0 into +0; this keeps it). */
-static inline quad quad_splat(double x) { return (quad){x, x, x, x}; }
+static inline quad_f64 quad_splat(double x) { return (quad_f64){x, x, x, x}; }
 
 /* Lane by lane, m ? a : b. */
-static inline quad quad_select(quad_mask m, quad a, quad b)
+static inline quad_f64 quad_select(quad_mask m, quad_f64 a, quad_f64 b)
 {
     quad_mask ai, bi;
     memcpy(&ai, &a, sizeof ai);
     memcpy(&bi, &b, sizeof bi);
     quad_mask r = (ai & m) | (bi & ~m);
-    quad v;
+    quad_f64 v;
     memcpy(&v, &r, sizeof v);
     return v;
 }
@@ -55,17 +55,17 @@ static inline quad quad_select(quad_mask m, quad a, quad b)
 /* The square root of every lane, correctly rounded as sqrt's. */
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>
-static inline quad quad_sqrt(quad v)
+static inline quad_f64 quad_sqrt(quad_f64 v)
 {
 #if defined(__AVX__)
-    return (quad)_mm256_sqrt_pd((__m256d)v);
+    return (quad_f64)_mm256_sqrt_pd((__m256d)v);
 #else
     __m128d lo = _mm_sqrt_pd((__m128d){v[0], v[1]}), hi = _mm_sqrt_pd((__m128d){v[2], v[3]});
-    return (quad){lo[0], lo[1], hi[0], hi[1]};
+    return (quad_f64){lo[0], lo[1], hi[0], hi[1]};
 #endif
 }
 #else
-static inline quad quad_sqrt(quad v) { return (quad){sqrt(v[0]), sqrt(v[1]), sqrt(v[2]), sqrt(v[3])}; }
+static inline quad_f64 quad_sqrt(quad_f64 v) { return (quad_f64){sqrt(v[0]), sqrt(v[1]), sqrt(v[2]), sqrt(v[3])}; }
 #endif
 
 /* flags[i] = lane i of m is set. */
@@ -87,7 +87,7 @@ static inline quad_mask quad_int_ne(const int a[QUAD], int b)
 
 /* The dot product of (ax, ay, az) and (bx, by, bz) in every lane, added in
  * v3_dot's order. */
-static inline quad quad_dot(quad ax, quad ay, quad az, quad bx, quad by, quad bz)
+static inline quad_f64 quad_dot(quad_f64 ax, quad_f64 ay, quad_f64 az, quad_f64 bx, quad_f64 by, quad_f64 bz)
 {
     return ax * bx + ay * by + az * bz;
 }

@@ -8,18 +8,31 @@
 #define GLINT_GEOMETRY_SHAPE_H
 
 #include <stdbool.h>
+#include "core/lanes.h"
 #include "core/transform.h"
 #include "core/vec.h"
 
 /* Where r crosses the plane through point with normal n, *t, and whether
  * that is in (tmin, tmax); a ray parallel to the plane misses it. Planes
- * and polygons test with it, and the accelerator tests a packet's lanes
- * with it, inline so that a loop of it over lanes can be vector code. */
+ * and polygons test with it. */
 static inline bool plane_hit(vec3 point, vec3 n, const ray *r, double tmin, double tmax, double *t)
 {
     double along = v3_dot(r->d, n);
     *t = v3_dot(v3_sub(point, r->o), n) / along;
     return along != 0 && *t > tmin && *t < tmax;
+}
+
+/* plane_hit for the four rays of *r from lane `first` on, in its order of
+ * operations, so each lane gets its bits: the mask of the lanes that hit in
+ * (tmin, tmax[k]), and *t. The accelerator tests a packet's lanes with it. */
+static inline quad_mask plane_hit4(vec3 point, vec3 n, const ray8 *r, int first, double tmin, quad_f64 tmax, quad_f64 *t)
+{
+    quad_f64 nx = quad_splat(n.x), ny = quad_splat(n.y), nz = quad_splat(n.z);
+    quad_f64 along = quad_dot(quad_load(r->dx + first), quad_load(r->dy + first), quad_load(r->dz + first), nx, ny, nz);
+    *t = quad_dot(quad_splat(point.x) - quad_load(r->ox + first), quad_splat(point.y) - quad_load(r->oy + first),
+                  quad_splat(point.z) - quad_load(r->oz + first), nx, ny, nz) /
+         along;
+    return (along != 0) & (*t > quad_splat(tmin)) & (*t < tmax);
 }
 
 /* Planes are bounded to this many units from the origin for the BVH. */

@@ -20,16 +20,16 @@ void camera_init(camera *c, const glint_camera *d, int width, int height)
  * rays: no division but the normalisation's, and the image centre and every
  * pixel edge there map exactly onto the view axis. Each lane is what the
  * same steps in scalar code would give. */
-static inline void directions(const camera *c, quad x, quad y, quad *dx, quad *dy, quad *dz)
+static inline void directions(const camera *c, quad_f64 x, quad_f64 y, quad_f64 *dx, quad_f64 *dy, quad_f64 *dz)
 {
     vec3 f = c->forward, r = c->right, u = c->up;
-    quad sx = (quad_splat(2) * x - quad_splat(c->width)) * quad_splat(c->per_x);
-    quad sy = (quad_splat(c->height) - quad_splat(2) * y) * quad_splat(c->per_y);
-    quad ex = quad_splat(f.x) + (quad_splat(r.x) * sx + quad_splat(u.x) * sy);
-    quad ey = quad_splat(f.y) + (quad_splat(r.y) * sx + quad_splat(u.y) * sy);
-    quad ez = quad_splat(f.z) + (quad_splat(r.z) * sx + quad_splat(u.z) * sy);
-    quad l = quad_sqrt(ex * ex + ey * ey + ez * ez);
-    quad inv = quad_select(l > 0, quad_splat(1) / l, quad_splat(1));
+    quad_f64 sx = (quad_splat(2) * x - quad_splat(c->width)) * quad_splat(c->per_x);
+    quad_f64 sy = (quad_splat(c->height) - quad_splat(2) * y) * quad_splat(c->per_y);
+    quad_f64 ex = quad_splat(f.x) + (quad_splat(r.x) * sx + quad_splat(u.x) * sy);
+    quad_f64 ey = quad_splat(f.y) + (quad_splat(r.y) * sx + quad_splat(u.y) * sy);
+    quad_f64 ez = quad_splat(f.z) + (quad_splat(r.z) * sx + quad_splat(u.z) * sy);
+    quad_f64 l = quad_sqrt(ex * ex + ey * ey + ez * ez);
+    quad_f64 inv = quad_select(l > 0, quad_splat(1) / l, quad_splat(1));
     *dx = ex * inv;
     *dy = ey * inv;
     *dz = ez * inv;
@@ -37,7 +37,7 @@ static inline void directions(const camera *c, quad x, quad y, quad *dx, quad *d
 
 ray camera_ray(const camera *c, double x, double y)
 {
-    quad dx, dy, dz;
+    quad_f64 dx, dy, dz;
     directions(c, quad_splat(x), quad_splat(y), &dx, &dy, &dz);
     return (ray){c->position, {dx[0], dy[0], dz[0]}};
 }
@@ -45,7 +45,7 @@ ray camera_ray(const camera *c, double x, double y)
 void camera_rays8(const camera *c, const double x[RAY8], const double y[RAY8], ray8 *out)
 {
     for (int i = 0; i < RAY8; i += QUAD) {
-        quad dx, dy, dz;
+        quad_f64 dx, dy, dz;
         directions(c, quad_load(x + i), quad_load(y + i), &dx, &dy, &dz);
         quad_store(out->dx + i, dx);
         quad_store(out->dy + i, dy);

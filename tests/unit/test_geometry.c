@@ -256,6 +256,48 @@ static void test_plane_hit(void **state)
     NEAR(sf.v, 2);
 }
 
+/* plane_hit4 must give plane_hit's answer and, where it hits, its t to the
+ * bit, lane by lane: rays in front of, behind, along and beyond the reach
+ * of a tilted plane. */
+static void test_plane_hit4_matches(void **state)
+{
+    vec3 point = v3(0.3, -1.7, 2.1), n = v3(0.2, 0.9, -0.4);
+    uint32_t seed = 7;
+    int hits = 0, misses = 0;
+    for (int round = 0; round < 200; round++) {
+        ray8 r;
+        double tmax[RAY8];
+        for (int i = 0; i < RAY8; i++) {
+            double v[7];
+            for (int k = 0; k < 7; k++) {
+                seed = seed * 1664525u + 1013904223u;
+                v[k] = (seed >> 8) / 16777216.0 * 10 - 5;
+            }
+            vec3 d = v3(v[3], v[4], v[5]);
+            if (i == 3) /* parallel to the plane */
+                d = v3_cross(n, v3(1, 0, 0));
+            ray8_set(&r, i, (ray){v3(v[0], v[1], v[2]), d});
+            tmax[i] = i == 5 ? INFINITY : fabs(v[6]);
+        }
+        for (int q = 0; q < RAY8; q += QUAD) {
+            quad_f64 t;
+            quad_mask m = plane_hit4(point, n, &r, q, 0, quad_load(tmax + q), &t);
+            for (int k = 0; k < QUAD; k++) {
+                ray one = ray8_get(&r, q + k);
+                double t1;
+                bool want = plane_hit(point, n, &one, 0, tmax[q + k], &t1);
+                assert_int_equal(m[k] != 0, want);
+                double tk = t[k];
+                if (want)
+                    assert_memory_equal(&tk, &t1, sizeof t1);
+                hits += want;
+                misses += !want;
+            }
+        }
+    }
+    assert_true(hits > 200 && misses > 200);
+}
+
 /* The normal is the given one from either side; shading flips it. */
 static void test_plane_from_below(void **state)
 {
@@ -1127,6 +1169,7 @@ int main(void)
         cmocka_unit_test(test_sphere_tmax),
         cmocka_unit_test(test_sphere_uv),
         cmocka_unit_test(test_plane_hit),
+        cmocka_unit_test(test_plane_hit4_matches),
         cmocka_unit_test(test_plane_from_below),
         cmocka_unit_test(test_plane_miss),
         cmocka_unit_test(test_plane_shortcut_is_the_same_test),
