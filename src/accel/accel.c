@@ -133,12 +133,17 @@ static unsigned hit_lane_uint(const struct RTCHitN *hit, unsigned n, unsigned fi
     return ((const unsigned *)hit)[field * n + i];
 }
 
-/* The next float above x, for finite x >= 0 (every distance here):
- * nextafterf(x, INFINITY) without the library call, as this runs for every
- * ray. The bits of a non-negative float count up with its value, from +0
- * (bits 0) to the smallest subnormal (bits 1) and on. */
-static inline float float_up(float x)
+/* Embree's far end for a double-precision distance t >= 0: the next float
+ * above (float)t, so the float traversal never stops short of the exact
+ * double test, or infinity past float's range. nextafterf(x, INFINITY)
+ * without the library call, as this runs for every ray: the bits of a
+ * non-negative float count up with its value, from +0 (bits 0) to the
+ * smallest subnormal (bits 1) and on. */
+static inline float float_far(double t)
 {
+    float x = (float)t;
+    if (!(x < FLT_MAX))
+        return INFINITY;
     uint32_t b;
     memcpy(&b, &x, sizeof b);
     b += 1;
@@ -189,8 +194,7 @@ static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *
         q->hit_t[i] = h.t;
         q->hit_part[i] = h.part;
         q->index[i] = index;
-        float far = (float)h.t; /* beyond float's range for a hit more than 3.4e38 away */
-        *tfar = far < FLT_MAX ? float_up(far) : INFINITY;
+        *tfar = float_far(h.t);
         *rayhit_lane_uint(rh, n, HIT_GEOM, i) = args->geomID;
         *rayhit_lane_uint(rh, n, HIT_PRIM, i) = args->primID;
         *rayhit_lane_uint(rh, n, HIT_INST, i) = RTC_INVALID_GEOMETRY_ID;
@@ -573,14 +577,11 @@ static void through_planes(query *q, bool blocked[ACCEL_PACKET])
     }
 }
 
-/* Embree's far ends from the query's: rounded up, so the float traversal
- * never stops short of the exact double test. */
+/* Embree's far ends from the query's. */
 static void packet_far(const query *q, struct RTCRay8 *p)
 {
-    for (int i = 0; i < ACCEL_PACKET; i++) {
-        float far = (float)q->tmax[i];
-        p->tfar[i] = far < FLT_MAX ? float_up(far) : INFINITY;
-    }
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        p->tfar[i] = float_far(q->tmax[i]);
 }
 
 /* Fills the query's lanes and Embree's packet from the active rays, each
