@@ -35,7 +35,11 @@ typedef struct bench {
     camera cam;
     int width, height, packet, tiles_x, tiles;
     atomic_int next;
+    unsigned char *mask;      /* --mask: per pixel, light 0's shadow ray; else NULL */
 } bench;
+
+/* Mask values: no shadow ray (no hit, or the hit faces away), blocked, lit. */
+enum { MASK_NONE = 128, MASK_BLOCKED = 0, MASK_LIT = 255 };
 
 static double now(void)
 {
@@ -105,18 +109,30 @@ static RTCScene build_scene(RTCDevice dev, const glint_scene *s)
     return rtc;
 }
 
-/* The shadow ray from a hit at p with geometric normal ng (any side) towards
- * light l; false when the hit does not face the light. Same offset as glint. */
+/* How far a shadow ray starts off the surface, relative to the scene scale
+ * at the hit. glint refines each hit in double precision and starts 1e-7
+ * off it; here p comes from Embree's single-precision distance, which can
+ * put it 1e-6 of the distance inside the surface, and from there the ray
+ * would stop on the surface it leaves. 1e-4 clears that, so the rays cross
+ * what glint's cross (bench_ceiling --mask shows them). */
+#define SHADOW_OFFSET 1e-4
+
+/* The shadow ray from a hit at p with geometric normal ng (any side, any
+ * length: Embree's Ng is the edges' cross product) towards light l; false
+ * when the hit does not face the light. The offset is along the unit normal:
+ * along Ng itself a shadow ray from a plane's two huge triangles started
+ * some 1e5 units up and missed the whole model. */
 static bool shadow_ray(const light *l, vec3 p, vec3 ng, vec3 dir, struct RTCRay *out)
 {
     light_sample ls;
     if (!light_illuminate(l, p, &ls))
         return false;
+    ng = v3_normalize(ng);
     vec3 n = v3_dot(ng, dir) < 0 ? ng : v3_neg(ng);
     if (v3_dot(n, ls.to_light) <= 0)
         return false;
     double scale = fmax(1.0, fmax(fabs(p.x), fmax(fabs(p.y), fabs(p.z))));
-    vec3 o = v3_madd(p, n, 1e-7 * scale);
+    vec3 o = v3_madd(p, n, SHADOW_OFFSET * scale);
     *out = (struct RTCRay){.org_x = (float)o.x, .org_y = (float)o.y, .org_z = (float)o.z, .tnear = 0,
                            .dir_x = (float)ls.to_light.x, .dir_y = (float)ls.to_light.y,
                            .dir_z = (float)ls.to_light.z, .tfar = isfinite(ls.distance) ? (float)ls.distance : INFINITY,
@@ -145,6 +161,8 @@ static uint64_t trace_single(bench *b, int x0, int y0, int x1, int y1, struct RT
                     continue;
                 rtcOccluded1(b->rtc, ctx, &sr);
                 rays++;
+                if (b->mask && l == 0)
+                    b->mask[(size_t)y * b->width + x] = sr.tfar == -INFINITY ? MASK_BLOCKED : MASK_LIT;
             }
         }
     }
@@ -205,6 +223,10 @@ static uint64_t trace_packets(bench *b, int x0, int y0, int x1, int y1, struct R
                     rays++;
                 }
                 rtcOccluded8(svalid, b->rtc, ctx, &sr);
+                for (int i = 0; b->mask && l == 0 && i < 8; i++)
+                    if (svalid[i])
+                        b->mask[(size_t)(y + i / 4) * b->width + x + i % 4] =
+                            sr.tfar[i] == -INFINITY ? MASK_BLOCKED : MASK_LIT;
             }
         }
     }
@@ -241,7 +263,7 @@ static int compare(const void *a, const void *b)
 
 int main(int argc, char **argv)
 {
-    const char *path = NULL;
+    const char *path = NULL, *mask_path = NULL;
     int threads = 2, packet = 8, runs = 3;
     for (int i = 1; i < argc; i++) {
         if (strcmp(argv[i], "--threads") == 0 && i + 1 < argc)
@@ -250,13 +272,15 @@ int main(int argc, char **argv)
             packet = atoi(argv[++i]);
         else if (strcmp(argv[i], "--runs") == 0 && i + 1 < argc)
             runs = atoi(argv[++i]);
+        else if (strcmp(argv[i], "--mask") == 0 && i + 1 < argc)
+            mask_path = argv[++i];
         else if (!path && argv[i][0] != '-')
             path = argv[i];
         else
-            die("usage: bench_ceiling SCENE.yaml [--threads N] [--packet 1|8] [--runs N]");
+            die("usage: bench_ceiling SCENE.yaml [--threads N] [--packet 1|8] [--runs N] [--mask FILE.pgm]");
     }
     if (!path || threads < 1 || threads > MAX_THREADS || (packet != 1 && packet != 8) || runs < 1 || runs > 100)
-        die("usage: bench_ceiling SCENE.yaml [--threads 1..256] [--packet 1|8] [--runs 1..100]");
+        die("usage: bench_ceiling SCENE.yaml [--threads 1..256] [--packet 1|8] [--runs 1..100] [--mask FILE.pgm]");
     glint_error err;
     glint_scene *s = glint_scene_load_file(path, NULL, &err);
     if (!s)
@@ -274,6 +298,12 @@ int main(int argc, char **argv)
     camera_init(&b.cam, &s->camera, b.width, b.height);
     b.tiles_x = (b.width + TILE - 1) / TILE;
     b.tiles = b.tiles_x * ((b.height + TILE - 1) / TILE);
+    if (mask_path) {
+        b.mask = malloc((size_t)b.width * b.height);
+        if (!b.mask)
+            die("out of memory for the mask");
+        memset(b.mask, MASK_NONE, (size_t)b.width * b.height);
+    }
 
     double times[100];
     uint64_t rays = 0;
@@ -299,6 +329,13 @@ int main(int argc, char **argv)
     double median = times[runs / 2];
     printf("ceiling: %dx%d, %d threads, packet %d: build %.3f s, trace %.3f s (median of %d), %llu rays, %.1f Mrays/s\n",
            b.width, b.height, threads, packet, build, median, runs, (unsigned long long)rays, rays / median * 1e-6);
+    if (mask_path) {
+        FILE *f = fopen(mask_path, "wb");
+        if (!f || fprintf(f, "P5\n%d %d\n255\n", b.width, b.height) < 0 ||
+            fwrite(b.mask, 1, (size_t)b.width * b.height, f) != (size_t)b.width * b.height || fclose(f) != 0)
+            die("cannot write the mask");
+        free(b.mask);
+    }
     rtcReleaseScene(b.rtc);
     rtcReleaseDevice(dev);
     glint_scene_free(s);
