@@ -265,8 +265,9 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
      * exactly (fog_apply gives it at factor 1 whatever the light), so it
      * is not shaded. A mesh hit's distance is exact only once refined. */
     bool fog = scene->fog.kind != GLINT_FOG_NONE;
-    for (int i = 0; i < ACCEL_PACKET; i++) {
+    for (int i = 0; i < ACCEL_PACKET; i++)
         t->rays += active[i];
+    for (int i = 0; i < ACCEL_PACKET; i++) {
         if (!found[i])
             continue;
         if (fog && hits[i].shape >= 0 && fog_hides(&scene->fog, hits[i].t)) {
@@ -311,8 +312,12 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     /* Inactive lanes get the sky too, which nothing reads. Without fog,
      * fog_apply would give a hit's colour back as it is. */
     color sky = miss(scene);
-    for (int i = 0; i < ACCEL_PACKET; i++)
-        out[i] = !found[i] ? sky : fog ? fog_apply(&scene->fog, local[i], sp[i].hit.t) : local[i];
+    if (fog)
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            out[i] = found[i] ? fog_apply(&scene->fog, local[i], sp[i].hit.t) : sky;
+    else
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            out[i] = found[i] ? local[i] : sky;
 }
 
 double tracer_reach(const glint_scene *scene)
