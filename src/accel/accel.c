@@ -171,42 +171,76 @@ static void bounds_fn(const struct RTCBoundsFunctionArguments *args)
     b->upper_z = pad_up(hi.z, pad);
 }
 
-/* intersect_fn's work for n = args->N lanes: inlined twice, once with n a
- * constant for the packets glint sends, whose lanes are then cheaper to
- * address. */
-static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *args, unsigned n)
+/* Records in lane i of a packet of n that it hit shape `index` at (t, part). */
+static inline void record_hit(const struct RTCIntersectFunctionNArguments *args, unsigned n, unsigned i, int index,
+                              double t, int part)
 {
     query *q = (query *)args->context;
-    int index = q->acc->prim_shape[args->primID];
-    const shape *s = &q->acc->shapes[index];
     struct RTCRayHitN *rh = args->rayhit;
+    q->tmax[i] = t;
+    q->hit_t[i] = t;
+    q->hit_part[i] = part;
+    q->index[i] = index;
+    *ray_lane_tfar((struct RTCRayN *)rh, n, i) = float_far(t);
+    *rayhit_lane_uint(rh, n, HIT_GEOM, i) = args->geomID;
+    *rayhit_lane_uint(rh, n, HIT_PRIM, i) = args->primID;
+    *rayhit_lane_uint(rh, n, HIT_INST, i) = RTC_INVALID_GEOMETRY_ID;
+}
+
+/* intersect_fn's work for n = args->N lanes, one at a time: inlined twice,
+ * once with n a constant for the packets glint sends, whose lanes are then
+ * cheaper to address. */
+static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *args, unsigned n, int index,
+                                   const shape *s)
+{
+    query *q = (query *)args->context;
     for (unsigned i = 0; i < n; i++) {
         if (!args->valid[i] || q->skip[i] == index)
             continue;
-        float *tfar = ray_lane_tfar((struct RTCRayN *)rh, n, i);
+        float tfar = *ray_lane_tfar((struct RTCRayN *)args->rayhit, n, i);
         shape_hit h;
         /* A triangle found first may have shortened the ray below q->tmax. */
-        double tmax = q->tmax[i] < *tfar ? q->tmax[i] : (double)*tfar;
+        double tmax = q->tmax[i] < tfar ? q->tmax[i] : (double)tfar;
         ray r = ray8_get(q->r, (int)i);
-        if (!shape_intersect(s, &r, 0, tmax, &h))
-            continue;
-        q->tmax[i] = h.t;
-        q->hit_t[i] = h.t;
-        q->hit_part[i] = h.part;
-        q->index[i] = index;
-        *tfar = float_far(h.t);
-        *rayhit_lane_uint(rh, n, HIT_GEOM, i) = args->geomID;
-        *rayhit_lane_uint(rh, n, HIT_PRIM, i) = args->primID;
-        *rayhit_lane_uint(rh, n, HIT_INST, i) = RTC_INVALID_GEOMETRY_ID;
+        if (shape_intersect(s, &r, 0, tmax, &h))
+            record_hit(args, n, i, index, h.t, h.part);
+    }
+}
+
+/* intersect_lanes for a packet of glint's and a shape that
+ * shape_intersect4 takes: four lanes at a time, every lane tested (the
+ * invalid ones too, which costs less than picking them out). */
+static void intersect_quads(const struct RTCIntersectFunctionNArguments *args, int index, const shape *s)
+{
+    query *q = (query *)args->context;
+    const float *tfar = ray_lane_tfar((struct RTCRayN *)args->rayhit, ACCEL_PACKET, 0);
+    for (unsigned k = 0; k < ACCEL_PACKET; k += QUAD) {
+        quad_f64 tmax;
+        for (unsigned j = 0; j < QUAD; j++)
+            tmax[j] = q->tmax[k + j] < tfar[k + j] ? q->tmax[k + j] : (double)tfar[k + j];
+        quad_f64 t;
+        quad_mask hit = shape_intersect4(s, q->r, (int)k, tmax, &t);
+        for (unsigned j = 0; j < QUAD; j++)
+            if (hit[j] && args->valid[k + j] && q->skip[k + j] != index)
+                record_hit(args, ACCEL_PACKET, k + j, index, t[j], 0);
     }
 }
 
 static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
 {
-    if (args->N == ACCEL_PACKET)
-        intersect_lanes(args, ACCEL_PACKET);
-    else
-        intersect_lanes(args, args->N);
+    if (args->N == ACCEL_PACKET) {
+        query *q = (query *)args->context;
+        int index = q->acc->prim_shape[args->primID];
+        const shape *s = &q->acc->shapes[index];
+        if (shape_has_intersect4(s))
+            intersect_quads(args, index, s);
+        else
+            intersect_lanes(args, ACCEL_PACKET, index, s);
+    } else {
+        query *q = (query *)args->context;
+        int index = q->acc->prim_shape[args->primID];
+        intersect_lanes(args, args->N, index, &q->acc->shapes[index]);
+    }
 }
 
 /* Multiplies into lane i what one crossing passes; false once nothing
@@ -224,6 +258,17 @@ static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
     int index = q->acc->prim_shape[args->primID];
     const shape *s = &q->acc->shapes[index];
     bool opaque = shape_opaque(q->acc, index);
+    if (opaque && args->N == ACCEL_PACKET && shape_has_intersect4(s)) {
+        /* As below, four lanes at a time. */
+        for (int k = 0; k < ACCEL_PACKET; k += QUAD) {
+            quad_f64 t;
+            quad_mask hit = shape_intersect4(s, q->r, k, quad_load(q->tmax + k), &t);
+            for (int j = 0; j < QUAD; j++)
+                if (hit[j] && args->valid[k + j] && q->skip[k + j] != index)
+                    *ray_lane_tfar(args->ray, ACCEL_PACKET, (unsigned)(k + j)) = -INFINITY;
+        }
+        return;
+    }
     for (unsigned i = 0; i < args->N; i++) {
         if (!args->valid[i] || q->skip[i] == index)
             continue;

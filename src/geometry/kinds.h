@@ -21,6 +21,7 @@
 
 glint_status sphere_init(shape *s, glint_error *err);
 bool sphere_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
+quad_mask sphere_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t);
 void sphere_surface(const shape *s, int part, surface *out);
 void sphere_uv(const shape *s, int part, surface *out);
 void sphere_bounds(const shape *s, vec3 *lo, vec3 *hi);
@@ -32,6 +33,7 @@ void plane_uv(const shape *s, int part, surface *out);
 
 glint_status polygon_init(shape *s, glint_error *err);
 bool polygon_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
+quad_mask polygon_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t);
 void polygon_surface(const shape *s, int part, surface *out);
 void polygon_uv(const shape *s, int part, surface *out);
 void polygon_bounds(const shape *s, vec3 *lo, vec3 *hi);
@@ -112,6 +114,24 @@ static inline bool quadratic(double a, double b, double c, double *t0, double *t
     *t0 = r1 < r0 ? r1 : r0;
     *t1 = r1 < r0 ? r0 : r1;
     return true;
+}
+
+/* quadratic in four lanes, for a != 0: the mask of the lanes with real
+ * roots that are not both zero, and there *t0 <= *t1, each lane the bits
+ * quadratic gives. Elsewhere the roots are NaN or meaningless. */
+static inline quad_mask quadratic4(quad_f64 a, quad_f64 b, quad_f64 c, quad_f64 *t0, quad_f64 *t1)
+{
+    quad_f64 disc = b * b - quad_splat(4) * a * c;
+    /* copysign(sqrt(disc), b): the root's magnitude with b's sign bit. */
+    quad_mask sign = (quad_mask)quad_splat(-0.0);
+    quad_f64 root = quad_sqrt(disc);
+    quad_f64 signed_root = (quad_f64)(((quad_mask)root & ~sign) | ((quad_mask)b & sign));
+    quad_f64 q = quad_splat(-0.5) * (b + signed_root);
+    quad_f64 r0 = q / a, r1 = c / q;
+    quad_mask swap = r1 < r0;
+    *t0 = quad_select(swap, r1, r0);
+    *t1 = quad_select(swap, r0, r1);
+    return (disc >= 0) & (q != 0);
 }
 
 /* The interval of t over which o + t d lies in [lo, hi] along one axis. A

@@ -75,6 +75,24 @@ bool polygon_intersect(const shape *s, const ray *r, double tmin, double tmax, s
     return true;
 }
 
+quad_mask polygon_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
+{
+    const glint_shape *d = &s->desc;
+    quad_mask hit = plane_hit4(d->points[0], s->poly_normal, r, first, 0, tmax, t);
+    /* p = ray_at(r, t), then polygon_intersect's edge tests: a lane is out
+     * where a dot product is below 0 (not where it is NaN). */
+    quad_f64 px = quad_load(r->ox + first) + quad_load(r->dx + first) * *t;
+    quad_f64 py = quad_load(r->oy + first) + quad_load(r->dy + first) * *t;
+    quad_f64 pz = quad_load(r->oz + first) + quad_load(r->dz + first) * *t;
+    for (int i = 0; i < d->point_count; i++) {
+        vec3 a = d->points[i], e = s->edge_in[i];
+        quad_f64 side = quad_dot(px - quad_splat(a.x), py - quad_splat(a.y), pz - quad_splat(a.z), quad_splat(e.x),
+                                 quad_splat(e.y), quad_splat(e.z));
+        hit &= ~(side < quad_splat(0));
+    }
+    return hit;
+}
+
 /* (u, v) are the affine coordinates of the point along the edges from point
  * 0 to point 1 and from point 0 to the last point, so a parallelogram spans
  * [0, 1]^2 and a triangle's (u, v) are the barycentric weights of its

@@ -63,6 +63,12 @@ bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, sha
     return KINDS[s->desc.kind].intersect(s, &o, tmin, tmax, hit);
 }
 
+quad_mask shape_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
+{
+    return s->desc.kind == GLINT_SHAPE_SPHERE ? sphere_intersect4(s, r, first, tmax, t)
+                                              : polygon_intersect4(s, r, first, tmax, t);
+}
+
 bool shape_intersect_plane(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
     if (!s->has_transform)

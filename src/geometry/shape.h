@@ -82,6 +82,21 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
  * starts inside a closed shape finds the surface on its way out. */
 bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
 
+/* Whether shape_intersect4 takes s: a sphere or polygon without a
+ * transform, the shapes most rays meet in the example scenes. */
+static inline bool shape_has_intersect4(const shape *s)
+{
+    return !s->has_transform && (s->desc.kind == GLINT_SHAPE_SPHERE || s->desc.kind == GLINT_SHAPE_POLYGON);
+}
+
+/* shape_intersect with tmin 0 for the four rays of *r from lane `first` on,
+ * lane k with its own tmax[k], for a shape shape_has_intersect4 takes: the
+ * mask of the lanes that hit and, in those lanes, *t. Each lane gets the
+ * bits shape_intersect gives (the part is always 0 for these kinds), as
+ * its arithmetic is the same, in the same order. The accelerator's shape
+ * callbacks test a packet's lanes with it. */
+quad_mask shape_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t);
+
 /* shape_intersect for a plane (s must be one), without looking up its
  * kind's test: for the callers that test planes themselves, often. */
 bool shape_intersect_plane(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);

@@ -256,6 +256,16 @@ static void test_plane_hit(void **state)
     NEAR(sf.v, 2);
 }
 
+/* n values in [-5, 5) from a small linear congruential generator, the
+ * same on every machine. */
+static void random_values(uint32_t *seed, double *v, int n)
+{
+    for (int k = 0; k < n; k++) {
+        *seed = *seed * 1664525u + 1013904223u;
+        v[k] = (*seed >> 8) / 16777216.0 * 10 - 5;
+    }
+}
+
 /* plane_hit4 must give plane_hit's answer and, where it hits, its t to the
  * bit, lane by lane: rays in front of, behind, along and beyond the reach
  * of a tilted plane. */
@@ -269,10 +279,7 @@ static void test_plane_hit4_matches(void **state)
         double tmax[RAY8];
         for (int i = 0; i < RAY8; i++) {
             double v[7];
-            for (int k = 0; k < 7; k++) {
-                seed = seed * 1664525u + 1013904223u;
-                v[k] = (seed >> 8) / 16777216.0 * 10 - 5;
-            }
+            random_values(&seed, v, 7);
             vec3 d = v3(v[3], v[4], v[5]);
             if (i == 3) /* parallel to the plane */
                 d = v3_cross(n, v3(1, 0, 0));
@@ -296,6 +303,78 @@ static void test_plane_hit4_matches(void **state)
         }
     }
     assert_true(hits > 200 && misses > 200);
+}
+
+/* shape_intersect4 gives every lane shape_intersect's answer, t and part
+ * bit for bit: a sphere, a triangle and a tilted quad, rays aimed near them
+ * from outside and inside, along the quad's plane, with a zero direction,
+ * and with reaches from short to infinite. */
+static void test_shape_intersect4_matches(void **state)
+{
+    glint_shape sphere = {.kind = GLINT_SHAPE_SPHERE, .center = {0.4, -0.3, 1.2}, .radius = 1.7};
+    glint_shape triangle = {.kind = GLINT_SHAPE_POLYGON, .point_count = 3,
+                            .points = {{-1, 0, -1}, {2, 0.5, -1}, {0, 2, 1}}};
+    glint_shape quad = {.kind = GLINT_SHAPE_POLYGON, .point_count = 4,
+                        .points = {{-1, -1, 0.5}, {1, -1, 0}, {1, 1, 0}, {-1, 1, 0.5}}};
+    const glint_shape *descs[] = {&sphere, &triangle, &quad};
+    uint32_t seed = 11;
+    for (int d = 0; d < 3; d++) {
+        shape s = MAKE(*descs[d], NULL);
+        assert_true(shape_has_intersect4(&s));
+        int hits = 0, misses = 0;
+        for (int round = 0; round < 400; round++) {
+            ray8 r;
+            double tmax[RAY8];
+            for (int i = 0; i < RAY8; i++) {
+                double v[7];
+                random_values(&seed, v, 7);
+                vec3 o = v3(v[0], v[1], v[2]);
+                /* Most rays aim within a unit or so of the shape's middle. */
+                vec3 middle = sphere.center;
+                if (d > 0) {
+                    int n = descs[d]->point_count;
+                    middle = v3(0, 0, 0);
+                    for (int k = 0; k < n; k++)
+                        middle = v3_add(middle, v3_scale(descs[d]->points[k], 1.0 / n));
+                }
+                vec3 target = v3_add(middle, v3_scale(v3(v[3], v[4], v[5]), 0.15));
+                vec3 dir = v3_sub(target, o);
+                if (i == 1)
+                    o = v3_add(sphere.center, v3_scale(v3(v[3], v[4], v[5]), 0.1)); /* inside the sphere */
+                if (i == 2)
+                    dir = v3_cross(d == 0 ? v3(0, 1, 0) : s.poly_normal, v3(v[3], v[4], v[5])); /* along the plane */
+                if (i == 3 && round % 50 == 0)
+                    dir = v3(0, 0, 0);
+                ray8_set(&r, i, (ray){o, dir});
+                tmax[i] = i == 5 ? INFINITY : i == 6 ? fabs(v[6]) * 0.2 : fabs(v[6]);
+            }
+            for (int q = 0; q < RAY8; q += QUAD) {
+                quad_f64 t;
+                quad_mask m = shape_intersect4(&s, &r, q, quad_load(tmax + q), &t);
+                for (int k = 0; k < QUAD; k++) {
+                    ray one = ray8_get(&r, q + k);
+                    shape_hit h;
+                    bool want = shape_intersect(&s, &one, 0, tmax[q + k], &h);
+                    assert_int_equal(m[k] != 0, want);
+                    double tk = t[k];
+                    if (want) {
+                        assert_memory_equal(&tk, &h.t, sizeof h.t);
+                        assert_int_equal(h.part, 0);
+                    }
+                    hits += want;
+                    misses += !want;
+                }
+            }
+        }
+        assert_true(hits > 400 && misses > 400);
+    }
+    glint_transform moved = glint_transform_identity();
+    moved.m[0][3] = 1;
+    shape s = MAKE(sphere, &moved);
+    assert_false(shape_has_intersect4(&s));
+    glint_shape cylinder = {.kind = GLINT_SHAPE_CYLINDER, .center = {0, 0, 0}, .radius = 1, .height = 2};
+    s = MAKE(cylinder, NULL);
+    assert_false(shape_has_intersect4(&s));
 }
 
 /* The normal is the given one from either side; shading flips it. */
@@ -1170,6 +1249,7 @@ int main(void)
         cmocka_unit_test(test_sphere_uv),
         cmocka_unit_test(test_plane_hit),
         cmocka_unit_test(test_plane_hit4_matches),
+        cmocka_unit_test(test_shape_intersect4_matches),
         cmocka_unit_test(test_plane_from_below),
         cmocka_unit_test(test_plane_miss),
         cmocka_unit_test(test_plane_shortcut_is_the_same_test),
