@@ -215,13 +215,12 @@ static void intersect_quads(const struct RTCIntersectFunctionNArguments *args, i
     query *q = (query *)args->context;
     const float *tfar = ray_lane_tfar((struct RTCRayN *)args->rayhit, ACCEL_PACKET, 0);
     for (unsigned k = 0; k < ACCEL_PACKET; k += QUAD) {
-        quad_f64 tmax;
-        for (unsigned j = 0; j < QUAD; j++)
-            tmax[j] = q->tmax[k + j] < tfar[k + j] ? q->tmax[k + j] : (double)tfar[k + j];
+        quad_f64 mine = quad_load(q->tmax + k), far = quad_from_floats(tfar + k);
         quad_f64 t;
-        quad_mask hit = shape_intersect4(s, q->r, (int)k, tmax, &t);
+        quad_mask hit = shape_intersect4(s, q->r, (int)k, quad_select(mine < far, mine, far), &t) &
+                        quad_int_ne(args->valid + k, 0) & quad_int_ne(q->skip + k, index);
         for (unsigned j = 0; j < QUAD; j++)
-            if (hit[j] && args->valid[k + j] && q->skip[k + j] != index)
+            if (hit[j])
                 record_hit(args, ACCEL_PACKET, k + j, index, t[j], 0);
     }
 }
@@ -262,9 +261,10 @@ static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
         /* As below, four lanes at a time. */
         for (int k = 0; k < ACCEL_PACKET; k += QUAD) {
             quad_f64 t;
-            quad_mask hit = shape_intersect4(s, q->r, k, quad_load(q->tmax + k), &t);
+            quad_mask hit = shape_intersect4(s, q->r, k, quad_load(q->tmax + k), &t) &
+                            quad_int_ne(args->valid + k, 0) & quad_int_ne(q->skip + k, index);
             for (int j = 0; j < QUAD; j++)
-                if (hit[j] && args->valid[k + j] && q->skip[k + j] != index)
+                if (hit[j])
                     *ray_lane_tfar(args->ray, ACCEL_PACKET, (unsigned)(k + j)) = -INFINITY;
         }
         return;

@@ -85,6 +85,15 @@ static inline quad_mask quad_int_ne(const int a[QUAD], int b)
     return __builtin_convertvector(v != b, quad_mask);
 }
 
+/* The four floats at p, each widened to double (exactly). */
+static inline quad_f64 quad_from_floats(const float *p)
+{
+    typedef float quad_floats __attribute__((vector_size(QUAD * sizeof(float))));
+    quad_floats v;
+    memcpy(&v, p, sizeof v);
+    return __builtin_convertvector(v, quad_f64);
+}
+
 /* The dot product of (ax, ay, az) and (bx, by, bz) in every lane, added in
  * v3_dot's order. */
 static inline quad_f64 quad_dot(quad_f64 ax, quad_f64 ay, quad_f64 az, quad_f64 bx, quad_f64 by, quad_f64 bz)
