@@ -227,19 +227,15 @@ static void intersect_quads(const struct RTCIntersectFunctionNArguments *args, i
 
 static void intersect_fn(const struct RTCIntersectFunctionNArguments *args)
 {
-    if (args->N == ACCEL_PACKET) {
-        query *q = (query *)args->context;
-        int index = q->acc->prim_shape[args->primID];
-        const shape *s = &q->acc->shapes[index];
-        if (shape_has_intersect4(s))
-            intersect_quads(args, index, s);
-        else
-            intersect_lanes(args, ACCEL_PACKET, index, s);
-    } else {
-        query *q = (query *)args->context;
-        int index = q->acc->prim_shape[args->primID];
-        intersect_lanes(args, args->N, index, &q->acc->shapes[index]);
-    }
+    const query *q = (const query *)args->context;
+    int index = q->acc->prim_shape[args->primID];
+    const shape *s = &q->acc->shapes[index];
+    if (args->N != ACCEL_PACKET)
+        intersect_lanes(args, args->N, index, s);
+    else if (shape_has_intersect4(s))
+        intersect_quads(args, index, s);
+    else
+        intersect_lanes(args, ACCEL_PACKET, index, s);
 }
 
 /* Multiplies into lane i what one crossing passes; false once nothing
