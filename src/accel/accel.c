@@ -546,57 +546,57 @@ static bool lane_hit(const query *q, unsigned i, unsigned geom, unsigned inst, f
     return true;
 }
 
-/* Plane k (of a->planes) for every lane: t[i] and hit[i] as plane_hit
- * gives them for (0, tmax[i]), never for the lane's skipped shape. A moved
- * plane is tested in its own space, as shape_intersect_plane does. */
-static void plane_test(const query *q, int k, const double tmax[ACCEL_PACKET], double t[ACCEL_PACKET],
-                       bool hit[ACCEL_PACKET])
+/* Plane k (of a->planes) for the four lanes from lane `first` on: the mask
+ * of the lanes that cross it in (0, tmax[j]) as plane_hit finds it, never
+ * for the lane's skipped shape, and *t. A moved plane is tested in its own
+ * space, as shape_intersect_plane does. */
+static inline quad_mask plane_quad(const query *q, int k, int first, quad_f64 tmax, quad_f64 *t)
 {
     int index = q->acc->planes[k];
     const shape *s = &q->acc->shapes[index];
+    quad_mask hit;
     if (s->has_transform) {
-        for (int i = 0; i < ACCEL_PACKET; i++) {
-            ray r = ray8_get(q->r, i);
-            shape_hit h;
-            hit[i] = shape_intersect_plane(s, &r, 0, tmax[i], &h) && q->skip[i] != index;
-            t[i] = h.t;
+        for (int j = 0; j < QUAD; j++) {
+            ray r = ray8_get(q->r, first + j);
+            shape_hit h = {0, 0};
+            hit[j] = shape_intersect_plane(s, &r, 0, tmax[j], &h) ? -1 : 0;
+            (*t)[j] = h.t;
         }
-        return;
+    } else {
+        hit = plane_hit4(s->desc.center, s->desc.normal, q->r, first, 0, tmax, t);
     }
-    for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
-        quad_f64 at;
-        quad_mask h = plane_hit4(s->desc.center, s->desc.normal, q->r, i, 0, quad_load(tmax + i), &at);
-        quad_store(t + i, at);
-        quad_mask_store(hit + i, h & quad_int_ne(q->skip + i, index));
-    }
+    return hit & quad_int_ne(q->skip + first, index);
 }
 
 /* The nearest plane each lane crosses in (0, tmax): records it as the
  * lane's hit and shortens the lane's tmax to just past it, so Embree looks
  * only for something nearer, or as near: a shape touching the plane (a box
- * standing on a floor) wins the tie, as it would inside Embree. */
+ * standing on a floor) wins the tie, as it would inside Embree. A quad at
+ * a time, each lane's planes in order. */
 static void nearest_planes(query *q)
 {
     const accel *a = q->acc;
-    double nearest[ACCEL_PACKET];
-    memcpy(nearest, q->tmax, sizeof nearest);
-    for (int k = 0; k < a->plane_count; k++) {
-        double t[ACCEL_PACKET];
-        bool hit[ACCEL_PACKET];
-        plane_test(q, k, nearest, t, hit);
-        for (int i = 0; i < ACCEL_PACKET; i++) {
-            nearest[i] = hit[i] ? t[i] : nearest[i];
-            q->hit_t[i] = hit[i] ? t[i] : q->hit_t[i];
-            q->hit_part[i] = hit[i] ? 0 : q->hit_part[i];
-            q->index[i] = hit[i] ? a->planes[k] : q->index[i];
+    typedef int32_t quad_ints __attribute__((vector_size(QUAD * sizeof(int32_t))));
+    for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
+        quad_f64 nearest = quad_load(q->tmax + i), hit_t = quad_load(q->hit_t + i);
+        quad_mask index = {-1, -1, -1, -1};
+        for (int k = 0; k < a->plane_count; k++) {
+            quad_f64 t;
+            quad_mask hit = plane_quad(q, k, i, nearest, &t);
+            nearest = quad_select(hit, t, nearest);
+            hit_t = quad_select(hit, t, hit_t);
+            index = (hit & (quad_mask){a->planes[k], a->planes[k], a->planes[k], a->planes[k]}) | (index & ~hit);
         }
-    }
-    for (int i = 0; i < ACCEL_PACKET; i++) {
+        /* Every plane hit is part 0; other lanes' parts are not read. */
+        quad_store(q->hit_t + i, hit_t);
+        quad_ints lane_index = __builtin_convertvector(index, quad_ints);
+        memcpy(q->index + i, &lane_index, sizeof lane_index);
+        memset(q->hit_part + i, 0, QUAD * sizeof q->hit_part[0]);
         /* nextafter(nearest, INFINITY) for positive finite nearest, inline */
-        uint64_t bits;
-        memcpy(&bits, &nearest[i], sizeof bits);
-        bits += q->index[i] >= 0;
-        memcpy(&q->tmax[i], &bits, sizeof bits);
+        quad_mask bits;
+        memcpy(&bits, &nearest, sizeof bits);
+        bits -= index >= 0; /* a true lane of a comparison is -1 */
+        memcpy(q->tmax + i, &bits, sizeof bits);
     }
 }
 
@@ -608,7 +608,11 @@ static void through_planes(query *q, bool blocked[ACCEL_PACKET])
     for (int k = 0; k < a->plane_count; k++) {
         double t[ACCEL_PACKET];
         bool hit[ACCEL_PACKET];
-        plane_test(q, k, q->tmax, t, hit);
+        for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
+            quad_f64 at;
+            quad_mask_store(hit + i, plane_quad(q, k, i, quad_load(q->tmax + i), &at));
+            quad_store(t + i, at);
+        }
         for (unsigned i = 0; i < ACCEL_PACKET; i++) {
             if (!hit[i] || blocked[i])
                 continue;
