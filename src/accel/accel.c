@@ -606,18 +606,18 @@ static void through_planes(query *q, bool blocked[ACCEL_PACKET])
 {
     const accel *a = q->acc;
     for (int k = 0; k < a->plane_count; k++) {
-        double t[ACCEL_PACKET];
-        bool hit[ACCEL_PACKET];
         for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
-            quad_f64 at;
-            quad_mask_store(hit + i, plane_quad(q, k, i, quad_load(q->tmax + i), &at));
-            quad_store(t + i, at);
-        }
-        for (unsigned i = 0; i < ACCEL_PACKET; i++) {
-            if (!hit[i] || blocked[i])
+            quad_f64 t;
+            quad_mask hit = plane_quad(q, k, i, quad_load(q->tmax + i), &t);
+            /* Most quads cross no plane: shadow rays leave a floor upwards. */
+            if (!quad_any(hit))
                 continue;
-            accel_hit h = {.t = t[i], .shape = a->planes[k], .on_shape = {t[i], 0}, .instance = -1};
-            blocked[i] = shape_opaque(a, h.shape) || !pass_through(q, i, &h);
+            for (int j = 0; j < QUAD; j++) {
+                if (!hit[j] || blocked[i + j])
+                    continue;
+                accel_hit h = {.t = t[j], .shape = a->planes[k], .on_shape = {t[j], 0}, .instance = -1};
+                blocked[i + j] = shape_opaque(a, h.shape) || !pass_through(q, (unsigned)(i + j), &h);
+            }
         }
     }
 }

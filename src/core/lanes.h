@@ -76,6 +76,9 @@ static inline void quad_mask_store(bool flags[QUAD], quad_mask m)
     memcpy(flags, &b, sizeof b);
 }
 
+/* Whether any lane of m is set. */
+static inline bool quad_any(quad_mask m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
+
 /* The mask of the lanes where a[i] != b. */
 static inline quad_mask quad_int_ne(const int a[QUAD], int b)
 {
