@@ -601,8 +601,10 @@ static void nearest_planes(query *q)
 }
 
 /* Filters each lane's shadow segment through the planes it crosses, a plane
- * at most once, in the planes' order; blocked[i] once nothing passes. */
-static void through_planes(query *q, bool blocked[ACCEL_PACKET])
+ * at most once, in the planes' order. A lane nothing passes is blocked:
+ * taken out of valid, with Embree's far end set as if Embree had found it
+ * blocked, so that it needs no search. */
+static void through_planes(query *q, int valid[ACCEL_PACKET], struct RTCRay8 *p)
 {
     const accel *a = q->acc;
     for (int k = 0; k < a->plane_count; k++) {
@@ -613,10 +615,13 @@ static void through_planes(query *q, bool blocked[ACCEL_PACKET])
             if (!quad_any(hit))
                 continue;
             for (int j = 0; j < QUAD; j++) {
-                if (!hit[j] || blocked[i + j])
+                if (!hit[j] || !valid[i + j])
                     continue;
                 accel_hit h = {.t = t[j], .shape = a->planes[k], .on_shape = {t[j], 0}, .instance = -1};
-                blocked[i + j] = shape_opaque(a, h.shape) || !pass_through(q, (unsigned)(i + j), &h);
+                if (shape_opaque(a, h.shape) || !pass_through(q, (unsigned)(i + j), &h)) {
+                    valid[i + j] = 0;
+                    p->tfar[i + j] = -INFINITY;
+                }
             }
         }
     }
@@ -706,7 +711,6 @@ void accel_transmission8(const accel *a, const ray8 *r, const double tmax[ACCEL_
     seen_set seen[ACCEL_PACKET];
     _Alignas(32) int valid[ACCEL_PACKET];
     struct RTCRay8 p;
-    bool blocked[ACCEL_PACKET] = {false};
     q.acc = a;
     packet_init(&q, r, tmax, skip, coherent, active, valid, &p);
     q.filter = filter;
@@ -716,15 +720,22 @@ void accel_transmission8(const accel *a, const ray8 *r, const double tmax[ACCEL_
         q.through[i] = rgb(1, 1, 1);
         seen_init(&seen[i]);
     }
-    /* A lane a plane blocks needs no search. */
-    if (a->plane_count > 0) {
-        through_planes(&q, blocked);
-        for (int i = 0; i < ACCEL_PACKET; i++)
-            valid[i] = blocked[i] ? 0 : valid[i];
-    }
+    if (a->plane_count > 0)
+        through_planes(&q, valid, &p);
     rtcOccluded8(valid, a->scene, &q.ctx, &p);
     for (int i = 0; i < ACCEL_PACKET; i++)
         seen_free(&seen[i]);
-    for (int i = 0; i < ACCEL_PACKET; i++)
-        through[i] = !active[i] || blocked[i] || p.tfar[i] == -INFINITY ? rgb(0, 0, 0) : q.through[i];
+    /* What passed, or black: each channel's bits kept or cleared to +0 by
+     * the lane's mask, without a branch. */
+    for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
+        quad_mask passes = quad_from_bools(active + i) & (quad_from_floats(p.tfar + i) != quad_splat(-INFINITY));
+        for (int j = 0; j < QUAD; j++) {
+            uint64_t bits[3];
+            _Static_assert(sizeof bits == sizeof(color), "a colour is three doubles");
+            memcpy(bits, &q.through[i + j], sizeof bits);
+            for (int k = 0; k < 3; k++)
+                bits[k] &= (uint64_t)passes[j];
+            memcpy(&through[i + j], bits, sizeof bits);
+        }
+    }
 }

@@ -76,6 +76,15 @@ static inline void quad_mask_store(bool flags[QUAD], quad_mask m)
     memcpy(flags, &b, sizeof b);
 }
 
+/* The mask of the lanes where flags[i] is true. */
+static inline quad_mask quad_from_bools(const bool flags[QUAD])
+{
+    typedef uint8_t quad_bytes __attribute__((vector_size(QUAD)));
+    quad_bytes b;
+    memcpy(&b, flags, sizeof b);
+    return __builtin_convertvector(b != 0, quad_mask);
+}
+
 /* Whether any lane of m is set. */
 static inline bool quad_any(quad_mask m) { return (m[0] | m[1] | m[2] | m[3]) != 0; }
 
