@@ -576,7 +576,6 @@ static inline quad_mask plane_quad(const query *q, int k, int first, quad_f64 tm
 static void nearest_planes(query *q)
 {
     const accel *a = q->acc;
-    typedef int32_t quad_ints __attribute__((vector_size(QUAD * sizeof(int32_t))));
     for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
         quad_f64 nearest = quad_load(q->tmax + i), hit_t = quad_load(q->hit_t + i);
         quad_mask index = {-1, -1, -1, -1};
@@ -589,7 +588,7 @@ static void nearest_planes(query *q)
         }
         /* Every plane hit is part 0; other lanes' parts are not read. */
         quad_store(q->hit_t + i, hit_t);
-        quad_ints lane_index = __builtin_convertvector(index, quad_ints);
+        quad_i32 lane_index = __builtin_convertvector(index, quad_i32);
         memcpy(q->index + i, &lane_index, sizeof lane_index);
         memset(q->hit_part + i, 0, QUAD * sizeof q->hit_part[0]);
         /* nextafter(nearest, INFINITY) for positive finite nearest, inline */
@@ -630,8 +629,18 @@ static void through_planes(query *q, int valid[ACCEL_PACKET], struct RTCRay8 *p)
 /* Embree's far ends from the query's. */
 static void packet_far(const query *q, struct RTCRay8 *p)
 {
-    for (int i = 0; i < ACCEL_PACKET; i++)
-        p->tfar[i] = float_far(q->tmax[i]);
+    /* float_far a quad at a time: round to float, step the bits up by one,
+     * and infinity where the float is not below FLT_MAX. */
+    for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
+        quad_f32 x = quad_to_floats(quad_load(q->tmax + i));
+        quad_i32 bits, inf;
+        memcpy(&bits, &x, sizeof bits);
+        quad_f32 infinite = {INFINITY, INFINITY, INFINITY, INFINITY};
+        memcpy(&inf, &infinite, sizeof inf);
+        quad_i32 finite = x < FLT_MAX;
+        bits = ((bits + 1) & finite) | (inf & ~finite);
+        memcpy(p->tfar + i, &bits, sizeof bits);
+    }
 }
 
 /* Fills the query's lanes and Embree's packet from the active rays, each
@@ -655,29 +664,31 @@ static void packet_init(query *q, const ray8 *r, const double tmax[ACCEL_PACKET]
     q->ctx.flags = coherent && a->prim_count == 0 && !a->instanced ? RTC_INTERSECT_CONTEXT_FLAG_COHERENT
                                                                     : RTC_INTERSECT_CONTEXT_FLAG_INCOHERENT;
     q->r = r;
-    /* One field at a time, so the compiler can fill several lanes at once. */
-    for (int i = 0; i < ACCEL_PACKET; i++) {
-        valid[i] = active[i] ? -1 : 0;
-        q->tmax[i] = active[i] ? tmax[i] : 0;
-        q->skip[i] = skip[i];
+    /* A quad of lanes at a time; Embree's fields are floats and ints. */
+    memcpy(q->skip, skip, sizeof q->skip);
+    for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
+        quad_mask on = quad_from_bools(active + i);
+        quad_i32 lane_valid = __builtin_convertvector(on, quad_i32);
+        memcpy(valid + i, &lane_valid, sizeof lane_valid);
+        quad_store(q->tmax + i, quad_select(on, quad_load(tmax + i), quad_splat(0)));
+        quad_f32 f[6] = {quad_to_floats(quad_load(r->ox + i)), quad_to_floats(quad_load(r->oy + i)),
+                         quad_to_floats(quad_load(r->oz + i)), quad_to_floats(quad_load(r->dx + i)),
+                         quad_to_floats(quad_load(r->dy + i)), quad_to_floats(quad_load(r->dz + i))};
+        memcpy(p->org_x + i, &f[0], sizeof f[0]);
+        memcpy(p->org_y + i, &f[1], sizeof f[1]);
+        memcpy(p->org_z + i, &f[2], sizeof f[2]);
+        memcpy(p->dir_x + i, &f[3], sizeof f[3]);
+        memcpy(p->dir_y + i, &f[4], sizeof f[4]);
+        memcpy(p->dir_z + i, &f[5], sizeof f[5]);
+    }
+    for (int i = 0; i < ACCEL_PACKET; i++)
         q->index[i] = -1;
-    }
-    for (int i = 0; i < ACCEL_PACKET; i++) {
-        p->org_x[i] = (float)r->ox[i];
-        p->org_y[i] = (float)r->oy[i];
-        p->org_z[i] = (float)r->oz[i];
-        p->dir_x[i] = (float)r->dx[i];
-        p->dir_y[i] = (float)r->dy[i];
-        p->dir_z[i] = (float)r->dz[i];
-    }
     packet_far(q, p);
-    for (int i = 0; i < ACCEL_PACKET; i++) {
-        p->tnear[i] = 0;
-        p->time[i] = 0;
-        p->mask[i] = 0xFFFFFFFFu;
-        p->id[i] = 0;
-        p->flags[i] = 0;
-    }
+    memset(p->tnear, 0, sizeof p->tnear);
+    memset(p->time, 0, sizeof p->time);
+    memset(p->mask, 0xFF, sizeof p->mask);
+    memset(p->id, 0, sizeof p->id);
+    memset(p->flags, 0, sizeof p->flags);
 }
 
 void accel_intersect8(const accel *a, const ray8 *r, double tmax, const int skip[ACCEL_PACKET], bool coherent,

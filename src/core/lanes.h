@@ -25,6 +25,9 @@ _Static_assert(RAY8 % QUAD == 0, "a packet is whole quads");
  * side is NaN, except for !=). */
 typedef double quad_f64 __attribute__((vector_size(QUAD * sizeof(double))));
 typedef int64_t quad_mask __attribute__((vector_size(QUAD * sizeof(int64_t))));
+/* Four floats, and four 32-bit integers (also a float comparison's mask). */
+typedef float quad_f32 __attribute__((vector_size(QUAD * sizeof(float))));
+typedef int32_t quad_i32 __attribute__((vector_size(QUAD * sizeof(int32_t))));
 
 /* The four doubles at p, which need no more than double alignment. */
 static inline quad_f64 quad_load(const double *p)
@@ -91,8 +94,7 @@ static inline bool quad_any(quad_mask m) { return (m[0] | m[1] | m[2] | m[3]) !=
 /* The mask of the lanes where a[i] != b. */
 static inline quad_mask quad_int_ne(const int a[QUAD], int b)
 {
-    typedef int32_t quad_ints __attribute__((vector_size(QUAD * sizeof(int32_t))));
-    quad_ints v;
+    quad_i32 v;
     memcpy(&v, a, sizeof v);
     return __builtin_convertvector(v != b, quad_mask);
 }
@@ -100,11 +102,13 @@ static inline quad_mask quad_int_ne(const int a[QUAD], int b)
 /* The four floats at p, each widened to double (exactly). */
 static inline quad_f64 quad_from_floats(const float *p)
 {
-    typedef float quad_floats __attribute__((vector_size(QUAD * sizeof(float))));
-    quad_floats v;
+    quad_f32 v;
     memcpy(&v, p, sizeof v);
     return __builtin_convertvector(v, quad_f64);
 }
+
+/* Each lane of v rounded to float, as a cast rounds it. */
+static inline quad_f32 quad_to_floats(quad_f64 v) { return __builtin_convertvector(v, quad_f32); }
 
 /* The dot product of (ax, ay, az) and (bx, by, bz) in every lane, added in
  * v3_dot's order. */
