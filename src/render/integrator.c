@@ -2,6 +2,7 @@
  * through transparent objects, mirror reflection, straight-through
  * transparency, refraction with optional Fresnel, and fog per segment. */
 #include <math.h>
+#include <string.h>
 #include "render/integrator.h"
 #include "shading/fog.h"
 #include "shading/optics.h"
@@ -265,8 +266,11 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
      * exactly (fog_apply gives it at factor 1 whatever the light), so it
      * is not shaded. A mesh hit's distance is exact only once refined. */
     bool fog = scene->fog.kind != GLINT_FOG_NONE;
-    for (int i = 0; i < ACCEL_PACKET; i++)
-        t->rays += active[i];
+    /* bools are bytes of 0 or 1: their bits counted are the active lanes. */
+    uint64_t lanes;
+    _Static_assert(sizeof lanes == ACCEL_PACKET * sizeof active[0], "a packet's flags are eight bytes");
+    memcpy(&lanes, active, sizeof lanes);
+    t->rays += (uint64_t)__builtin_popcountll(lanes);
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (!found[i])
             continue;
