@@ -135,7 +135,7 @@ typedef struct branches {
     int skip[BRANCHES];       /* the shape each cannot meet again, or -1 */
     color filter[BRANCHES];
     double scale[BRANCHES];
-    bool on[BRANCHES];
+    unsigned on;              /* bit k: branch k is open */
 } branches;
 
 /* The shape a ray leaving sp along d cannot meet again, which the
@@ -156,7 +156,7 @@ static void branch(const glint_scene *scene, const shade_point *sp, branches *b,
     b->skip[k] = left_behind(scene, sp, d);
     b->filter[k] = filter;
     b->scale[k] = scale;
-    b->on[k] = true;
+    b->on |= 1u << k;
 }
 
 /* What ray r keeps at sp of its direct light, the rest being passed on;
@@ -169,7 +169,7 @@ static color shade_local(const glint_scene *scene, const ray *r, const shade_poi
     vec3 n = sp->n, ns = sp->ns;
     double transmitted = m->transparency + m->refraction;
     color kept = transmitted > 0 ? rgb_scale(direct, 1 - transmitted) : direct;
-    b->on[BRANCH_PASS] = b->on[BRANCH_REFRACT] = b->on[BRANCH_MIRROR] = false;
+    b->on = 0;
     if (depth >= scene->settings.max_depth || (transmitted <= 0 && m->reflectivity <= 0))
         return kept;
 
@@ -286,23 +286,22 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
             local[i] = ambient(scene, &sp[i]);
     }
     direct_light8(t, r, found, sp, depth, local);
-    bool sent[BRANCHES] = {false}; /* whether any lane sends a ray of each kind */
+    unsigned sent = 0; /* bit k: some lane sends a ray of kind k */
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (found[i]) {
             ray ri = ray8_get(r, i);
             local[i] = shade_local(scene, &ri, &sp[i], local[i], depth, &b[i]);
-            for (int k = 0; k < BRANCHES; k++)
-                sent[k] |= b[i].on[k];
+            sent |= b[i].on;
         }
     }
     for (int k = 0; k < BRANCHES; k++) {
-        if (!sent[k])
+        if (!(sent >> k & 1))
             continue;
         ray8 next;
         int next_skip[ACCEL_PACKET];
         bool on[ACCEL_PACKET];
         for (int i = 0; i < ACCEL_PACKET; i++)
-            on[i] = found[i] && b[i].on[k];
+            on[i] = found[i] && (b[i].on >> k & 1);
         for (int i = 0; i < ACCEL_PACKET; i++) {
             ray8_set(&next, i, on[i] ? b[i].r[k] : ray8_get(r, i));
             next_skip[i] = on[i] ? b[i].skip[k] : -1;
