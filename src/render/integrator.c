@@ -214,13 +214,10 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
     for (int l = 0; l < scene->light_count; l++) {
         light_sample ls[ACCEL_PACKET];
         ray8 shadow = *r; /* a lane without a segment keeps its own ray */
-        double dist[ACCEL_PACKET];
-        int skip[ACCEL_PACKET];
-        bool lit[ACCEL_PACKET], any = false;
+        double dist[ACCEL_PACKET] = {0};
+        int skip[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
+        bool lit[ACCEL_PACKET] = {false}, any = false;
         for (int i = 0; i < ACCEL_PACKET; i++) {
-            lit[i] = false;
-            dist[i] = 0;
-            skip[i] = -1;
             if (!found[i])
                 continue;
             ray ri = ray8_get(r, i), si;
