@@ -531,19 +531,16 @@ void accel_free(accel *a)
     free(a);
 }
 
-/* The hit of lane i once Embree is done with it. */
-static bool lane_hit(const query *q, unsigned i, unsigned geom, unsigned inst, float tfar, unsigned prim, float u,
-                     float v, accel_hit *hit)
+/* Lane i's hit once Embree is done with it: a triangle's, or else the
+ * shape the callbacks or the plane test recorded. */
+static accel_hit lane_hit(const query *q, const struct RTCRayHit8 *rh, unsigned i, bool triangle)
 {
-    if (geom == RTC_INVALID_GEOMETRY_ID && q->index[i] < 0)
-        return false;
-    if (geom == RTC_INVALID_GEOMETRY_ID || (geom == SHAPES_ID && inst == RTC_INVALID_GEOMETRY_ID))
-        *hit = (accel_hit){.t = q->hit_t[i], .shape = q->index[i], .on_shape = {q->hit_t[i], q->hit_part[i]},
+    if (!triangle)
+        return (accel_hit){.t = q->hit_t[i], .shape = q->index[i], .on_shape = {q->hit_t[i], q->hit_part[i]},
                            .instance = -1};
-    else
-        *hit = (accel_hit){.t = tfar, .shape = -1, .instance = instance_of(geom, inst), .triangle = prim, .b1 = u,
-                           .b2 = v};
-    return true;
+    return (accel_hit){.t = rh->ray.tfar[i], .shape = -1,
+                       .instance = instance_of(rh->hit.geomID[i], rh->hit.instID[0][i]),
+                       .triangle = rh->hit.primID[i], .b1 = rh->hit.u[i], .b2 = rh->hit.v[i]};
 }
 
 /* Plane k (of a->planes) for the four lanes from lane `first` on: the mask
@@ -709,9 +706,22 @@ void accel_intersect8(const accel *a, const ray8 *r, double tmax, const int skip
         packet_far(&q, &rh.ray);
     }
     rtcIntersect8(valid, a->scene, &q.ctx, &rh);
-    for (unsigned i = 0; i < ACCEL_PACKET; i++)
-        found[i] = active[i] && lane_hit(&q, i, rh.hit.geomID[i], rh.hit.instID[0][i], rh.ray.tfar[i],
-                                         rh.hit.primID[i], rh.hit.u[i], rh.hit.v[i], &hit[i]);
+    /* Which lanes found something, and which of those a triangle, a quad
+     * at a time; then each found lane's hit. */
+    for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
+        quad_i32 geom, inst, index;
+        memcpy(&geom, rh.hit.geomID + i, sizeof geom);
+        memcpy(&inst, rh.hit.instID[0] + i, sizeof inst);
+        memcpy(&index, q.index + i, sizeof index);
+        quad_i32 none = geom == (int32_t)RTC_INVALID_GEOMETRY_ID;
+        quad_i32 triangle = ~none & ((geom != (int32_t)SHAPES_ID) | (inst != (int32_t)RTC_INVALID_GEOMETRY_ID));
+        quad_i32 hits = __builtin_convertvector(quad_from_bools(active + i), quad_i32) & (~none | (index >= 0));
+        for (int j = 0; j < QUAD; j++) {
+            found[i + j] = hits[j] != 0;
+            if (hits[j])
+                hit[i + j] = lane_hit(&q, &rh, (unsigned)(i + j), triangle[j] != 0);
+        }
+    }
 }
 
 void accel_transmission8(const accel *a, const ray8 *r, const double tmax[ACCEL_PACKET],
