@@ -133,23 +133,6 @@ static unsigned hit_lane_uint(const struct RTCHitN *hit, unsigned n, unsigned fi
     return ((const unsigned *)hit)[field * n + i];
 }
 
-/* Embree's far end for a double-precision distance t >= 0: the next float
- * above (float)t, so the float traversal never stops short of the exact
- * double test, or infinity past float's range. nextafterf(x, INFINITY)
- * without the library call, as this runs for every ray: the bits of a
- * non-negative float count up with its value, from +0 (bits 0) to the
- * smallest subnormal (bits 1) and on. */
-static inline float float_far(double t)
-{
-    float x = (float)t;
-    if (!(x < FLT_MAX))
-        return INFINITY;
-    uint32_t b;
-    memcpy(&b, &x, sizeof b);
-    b += 1;
-    memcpy(&x, &b, sizeof x);
-    return x;
-}
 
 /* Pads float bounds so the float ray in Embree's traversal never misses a
  * box that the exact double test would hit. */
@@ -214,14 +197,14 @@ static void intersect_quads(const struct RTCIntersectFunctionNArguments *args, i
 {
     query *q = (query *)args->context;
     const float *tfar = ray_lane_tfar((struct RTCRayN *)args->rayhit, ACCEL_PACKET, 0);
-    for (unsigned k = 0; k < ACCEL_PACKET; k += QUAD) {
+    for (int k = 0; k < ACCEL_PACKET; k += QUAD) {
         quad_f64 mine = quad_load(q->tmax + k), far = quad_from_floats(tfar + k);
         quad_f64 t;
-        quad_mask hit = shape_intersect4(s, q->r, (int)k, quad_select(mine < far, mine, far), &t) &
+        quad_mask hit = shape_intersect4(s, q->r, k, quad_select(mine < far, mine, far), &t) &
                         quad_int_ne(args->valid + k, 0) & quad_int_ne(q->skip + k, index);
-        for (unsigned j = 0; j < QUAD; j++)
+        for (int j = 0; j < QUAD; j++)
             if (hit[j])
-                record_hit(args, ACCEL_PACKET, k + j, index, t[j], 0);
+                record_hit(args, ACCEL_PACKET, (unsigned)(k + j), index, t[j], 0);
     }
 }
 
@@ -626,18 +609,8 @@ static void through_planes(query *q, int valid[ACCEL_PACKET], struct RTCRay8 *p)
 /* Embree's far ends from the query's. */
 static void packet_far(const query *q, struct RTCRay8 *p)
 {
-    /* float_far a quad at a time: round to float, step the bits up by one,
-     * and infinity where the float is not below FLT_MAX. */
-    for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
-        quad_f32 x = quad_to_floats(quad_load(q->tmax + i));
-        quad_i32 bits, inf;
-        memcpy(&bits, &x, sizeof bits);
-        quad_f32 infinite = {INFINITY, INFINITY, INFINITY, INFINITY};
-        memcpy(&inf, &infinite, sizeof inf);
-        quad_i32 finite = x < FLT_MAX;
-        bits = ((bits + 1) & finite) | (inf & ~finite);
-        memcpy(p->tfar + i, &bits, sizeof bits);
-    }
+    for (int i = 0; i < ACCEL_PACKET; i += QUAD)
+        quad_float_far(quad_load(q->tmax + i), p->tfar + i);
 }
 
 /* Fills the query's lanes and Embree's packet from the active rays, each

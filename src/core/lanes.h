@@ -11,6 +11,7 @@
 #ifndef GLINT_CORE_LANES_H
 #define GLINT_CORE_LANES_H
 
+#include <float.h>
 #include <math.h>
 #include <stdbool.h>
 #include <stdint.h>
@@ -109,6 +110,37 @@ static inline quad_f64 quad_from_floats(const float *p)
 
 /* Each lane of v rounded to float, as a cast rounds it. */
 static inline quad_f32 quad_to_floats(quad_f64 v) { return __builtin_convertvector(v, quad_f32); }
+
+/* A float bound for a double-precision distance t >= 0, such as Embree's
+ * far end for a ray tested exactly in double: the next float above
+ * (float)t, so float traversal never stops short of t, or infinity past
+ * float's range. nextafterf((float)t, INFINITY) without the library call,
+ * as this runs for every ray: the bits of a non-negative float count up
+ * with its value, from +0 (bits 0) to the smallest subnormal (bits 1). */
+static inline float float_far(double t)
+{
+    float x = (float)t;
+    if (!(x < FLT_MAX))
+        return INFINITY;
+    uint32_t b;
+    memcpy(&b, &x, sizeof b);
+    b += 1;
+    memcpy(&x, &b, sizeof x);
+    return x;
+}
+
+/* float_far of every lane of t, stored at out: the same steps on four
+ * lanes at once, the same bits. */
+static inline void quad_float_far(quad_f64 t, float out[QUAD])
+{
+    quad_f32 x = quad_to_floats(t), infinite = {INFINITY, INFINITY, INFINITY, INFINITY};
+    quad_i32 bits, inf;
+    memcpy(&bits, &x, sizeof bits);
+    memcpy(&inf, &infinite, sizeof inf);
+    quad_i32 finite = x < FLT_MAX;
+    bits = ((bits + 1) & finite) | (inf & ~finite);
+    memcpy(out, &bits, sizeof bits);
+}
 
 /* The dot product of (ax, ay, az) and (bx, by, bz) in every lane, added in
  * v3_dot's order. */

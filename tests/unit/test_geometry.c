@@ -7,6 +7,7 @@
 #include <setjmp.h>
 #include <stdint.h>
 #include <cmocka.h>
+#include <float.h>
 #include <math.h>
 #include <string.h>
 #include "geometry/shape.h"
@@ -303,6 +304,33 @@ static void test_plane_hit4_matches(void **state)
         }
     }
     assert_true(hits > 200 && misses > 200);
+}
+
+/* float_far is a float bound never short of t: just above (float)t, or
+ * infinity past float's range; quad_float_far gives each lane its bits. */
+static void test_float_far(void **state)
+{
+    double ts[] = {0, 1e-320, 1e-45, 1e-30, 0.1, 1, 3.0000001, 1e10, 3.4e38, (double)FLT_MAX, 3.5e38, 1e300,
+                   INFINITY};
+    assert_true(float_far(0) > 0);
+    assert_true(float_far(1) > 1 && float_far(1) == nextafterf(1, INFINITY));
+    assert_true(isinf(float_far((double)FLT_MAX)) && isinf(float_far(INFINITY)) && isinf(float_far(1e300)));
+    uint32_t seed = 5;
+    for (int round = 0; round < 100; round++) {
+        double v[QUAD];
+        random_values(&seed, v, QUAD);
+        for (int k = 0; k < QUAD; k++) /* 5e-30 to 5e30, and the fixed values */
+            v[k] = round < 4 && 4 * round + k < (int)(sizeof ts / sizeof ts[0]) ? ts[4 * round + k]
+                                                                                 : fabs(v[k]) * pow(10, 6 * v[k]);
+        float quad_out[QUAD];
+        quad_float_far(quad_load(v), quad_out);
+        for (int k = 0; k < QUAD; k++) {
+            float one = float_far(v[k]);
+            assert_memory_equal(&quad_out[k], &one, sizeof one);
+            assert_true((double)one > v[k] || isinf(one));
+            assert_true(isinf(one) || nextafterf(one, 0) == (float)v[k]);
+        }
+    }
 }
 
 /* shape_intersect4 gives every lane shape_intersect's answer, t and part
@@ -1250,6 +1278,7 @@ int main(void)
         cmocka_unit_test(test_plane_hit),
         cmocka_unit_test(test_plane_hit4_matches),
         cmocka_unit_test(test_shape_intersect4_matches),
+        cmocka_unit_test(test_float_far),
         cmocka_unit_test(test_plane_from_below),
         cmocka_unit_test(test_plane_miss),
         cmocka_unit_test(test_plane_shortcut_is_the_same_test),
