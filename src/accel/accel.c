@@ -190,9 +190,19 @@ static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *
     }
 }
 
+/* Shape `index` (s, which shape_intersect4 takes) for the four lanes of a
+ * packet of glint's from lane `first` on: the mask of the valid lanes that
+ * hit it in (0, tmax) and do not skip it, and *t. Every lane is tested,
+ * the invalid ones too, which costs less than picking them out. */
+static inline quad_mask shape_quad(const query *q, const int *valid, int index, const shape *s, int first,
+                                   quad_f64 tmax, quad_f64 *t)
+{
+    return shape_intersect4(s, q->r, first, tmax, t) & quad_int_ne(valid + first, 0) &
+           quad_int_ne(q->skip + first, index);
+}
+
 /* intersect_lanes for a packet of glint's and a shape that
- * shape_intersect4 takes: four lanes at a time, every lane tested (the
- * invalid ones too, which costs less than picking them out). */
+ * shape_intersect4 takes: four lanes at a time. */
 static void intersect_quads(const struct RTCIntersectFunctionNArguments *args, int index, const shape *s)
 {
     query *q = (query *)args->context;
@@ -200,8 +210,7 @@ static void intersect_quads(const struct RTCIntersectFunctionNArguments *args, i
     for (int k = 0; k < ACCEL_PACKET; k += QUAD) {
         quad_f64 mine = quad_load(q->tmax + k), far = quad_from_floats(tfar + k);
         quad_f64 t;
-        quad_mask hit = shape_intersect4(s, q->r, k, quad_select(mine < far, mine, far), &t) &
-                        quad_int_ne(args->valid + k, 0) & quad_int_ne(q->skip + k, index);
+        quad_mask hit = shape_quad(q, args->valid, index, s, k, quad_select(mine < far, mine, far), &t);
         for (int j = 0; j < QUAD; j++)
             if (hit[j])
                 record_hit(args, ACCEL_PACKET, (unsigned)(k + j), index, t[j], 0);
@@ -240,8 +249,7 @@ static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
         /* As below, four lanes at a time. */
         for (int k = 0; k < ACCEL_PACKET; k += QUAD) {
             quad_f64 t;
-            quad_mask hit = shape_intersect4(s, q->r, k, quad_load(q->tmax + k), &t) &
-                            quad_int_ne(args->valid + k, 0) & quad_int_ne(q->skip + k, index);
+            quad_mask hit = shape_quad(q, args->valid, index, s, k, quad_load(q->tmax + k), &t);
             for (int j = 0; j < QUAD; j++)
                 if (hit[j])
                     *ray_lane_tfar(args->ray, ACCEL_PACKET, (unsigned)(k + j)) = -INFINITY;
