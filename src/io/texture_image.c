@@ -55,8 +55,8 @@ static glint_status check_size(unsigned long width, unsigned long height, const 
 static glint_status image_alloc(texture_image *img, unsigned long width, unsigned long height, size_t bytes,
                                 const char *what, glint_error *err)
 {
-    img->srgb = malloc((size_t)width * height * bytes);
-    if (!img->srgb)
+    img->srgb = img->owned = malloc((size_t)width * height * bytes);
+    if (!img->owned)
         return error_set(err, GLINT_ERR_NOMEM, "cannot decode texture '%s': out of memory", what);
     img->width = (int)width;
     img->height = (int)height;
@@ -69,7 +69,7 @@ static glint_status image_alloc(texture_image *img, unsigned long width, unsigne
 static void png_rgba_to_rgb(texture_image *img)
 {
     size_t n = (size_t)img->width * img->height;
-    unsigned char *p = img->srgb;
+    unsigned char *p = img->owned;
     for (size_t i = 0; i < n; i++) {
         p[3 * i] = p[4 * i];
         p[3 * i + 1] = p[4 * i + 1];
@@ -77,7 +77,7 @@ static void png_rgba_to_rgb(texture_image *img)
     }
     unsigned char *fit = realloc(p, n ? 3 * n : 1);
     if (fit)
-        img->srgb = fit;
+        img->srgb = img->owned = fit;
 }
 
 static glint_status decode_png(texture_image *out, const void *data, size_t size,
@@ -101,7 +101,7 @@ static glint_status decode_png(texture_image *out, const void *data, size_t size
     /* Otherwise libpng takes 16-bit files without gamma information to be
      * linear, when in practice they are sRGB like 8-bit ones. */
     png.flags |= PNG_IMAGE_FLAG_16BIT_sRGB;
-    if (!png_image_finish_read(&png, NULL, out->srgb, 0, NULL)) {
+    if (!png_image_finish_read(&png, NULL, out->owned, 0, NULL)) {
         png_image_free(&png);
         texture_image_free(out);
         return corrupt(what, png.message, err);
@@ -188,7 +188,7 @@ static glint_status decode_jpeg(texture_image *out, const void *data, size_t siz
     jpeg_start_decompress(&cinfo);
     size_t row_bytes = (size_t)cinfo.output_width * 3;
     while (cinfo.output_scanline < cinfo.output_height) {
-        JSAMPROW row = out->srgb + row_bytes * cinfo.output_scanline;
+        JSAMPROW row = out->owned + row_bytes * cinfo.output_scanline;
         jpeg_read_scanlines(&cinfo, &row, 1);
     }
     jpeg_finish_decompress(&cinfo);
@@ -269,10 +269,16 @@ glint_status texture_image_load_file(texture_image *out, const char *path, glint
     return st;
 }
 
+texture_image texture_image_borrow(int width, int height, const unsigned char *srgb)
+{
+    pthread_once(&srgb_table_once, srgb_table_build);
+    return (texture_image){.width = width, .height = height, .srgb = srgb, .linear = srgb_byte_to_linear};
+}
+
 void texture_image_free(texture_image *img)
 {
     if (!img)
         return;
-    free(img->srgb);
+    free(img->owned);
     *img = (texture_image){0};
 }

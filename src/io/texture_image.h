@@ -9,10 +9,13 @@
 #include "glint.h"
 
 /* A decoded image: srgb[3 * (y * width + x) + c], top row first, each an
- * sRGB-encoded byte whose linear value is linear[byte]. */
+ * sRGB-encoded byte whose linear value is linear[byte]. The bytes are the
+ * image's own (owned, freed with it) or borrowed from memory that outlives
+ * it, such as pixels compiled into the program (owned NULL). */
 typedef struct texture_image {
     int width, height;
-    unsigned char *srgb;
+    const unsigned char *srgb;
+    unsigned char *owned;     /* srgb when the image allocated it, else NULL */
     const float *linear;      /* 256 entries, shared by every image */
 } texture_image;
 
@@ -33,7 +36,13 @@ glint_status texture_image_load_file(texture_image *out, const char *path, glint
 glint_status texture_image_load_memory(texture_image *out, const void *data, size_t size,
                                        const char *what, glint_error *err);
 
-/* Frees the pixels and empties the image. NULL is allowed. */
+/* An image over width x height pixels of sRGB bytes at srgb (3 a pixel, top
+ * row first), which are not copied: they must outlive the image, and
+ * texture_image_free leaves them alone. For pixels decoded ahead of time,
+ * such as the seed room's Moon map, so that no decoding runs at start-up. */
+texture_image texture_image_borrow(int width, int height, const unsigned char *srgb);
+
+/* Frees the pixels it owns and empties the image. NULL is allowed. */
 void texture_image_free(texture_image *img);
 
 #endif

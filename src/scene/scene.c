@@ -217,6 +217,13 @@ int glint_scene_add_image_memory(glint_scene *scene, const char *name, const voi
     return add_texture(scene, &t, name, err);
 }
 
+int scene_add_image_pixels(glint_scene *scene, const char *name, int width, int height,
+                           const unsigned char *srgb, glint_mapping mapping, glint_error *err)
+{
+    texture t = {.kind = TEXTURE_IMAGE, .mapping = mapping, .image = texture_image_borrow(width, height, srgb)};
+    return add_texture(scene, &t, name, err);
+}
+
 glint_status glint_scene_replace_image(glint_scene *scene, const char *name, const char *path, glint_error *err)
 {
     int i = scene_find_texture(scene, name);

@@ -31,6 +31,12 @@ struct glint_scene {
 int scene_find_texture(const glint_scene *scene, const char *name);
 int scene_find_material(const glint_scene *scene, const char *name);
 
+/* Adds an image texture over pixels decoded ahead of time (see
+ * texture_image_borrow: they are not copied and must outlive the scene).
+ * Returns the texture's index or -1 and fills err. */
+int scene_add_image_pixels(glint_scene *scene, const char *name, int width, int height,
+                           const unsigned char *srgb, glint_mapping mapping, glint_error *err);
+
 /* Checks a camera; fills err naming a bad value. */
 glint_status camera_validate(const glint_camera *cam, glint_error *err);
 

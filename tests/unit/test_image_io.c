@@ -795,7 +795,7 @@ static void test_load_missing_file(void **state)
 {
     char path[PATH_SIZE], want[2 * PATH_SIZE];
     glint_error err = {{0}};
-    texture_image tex = {1, 1, NULL, NULL};
+    texture_image tex = {.width = 1, .height = 1};
     tmp_path(path, "missing.png");
     snprintf(want, sizeof want, "cannot open texture '%s': No such file or directory", path);
     expect_error(texture_image_load_file(&tex, path, &err), &err, GLINT_ERR_IO, want);
@@ -1062,6 +1062,49 @@ static void test_load_moon(void **state)
         assert_near(mean[c], grey, 0.05);
 }
 
+/* The seed room's Moon, decoded while glint was built (tools/embed_image),
+ * is the same bytes as decoding assets/moon.jpg when glint runs. */
+extern const int glint_asset_moon_width, glint_asset_moon_height;
+extern const unsigned char glint_asset_moon_srgb[];
+
+static void test_embedded_moon_is_the_decoded_file(void **state)
+{
+    const char *source = getenv("GLINT_SOURCE_DIR");
+    if (!source)
+        skip();
+    char path[PATH_SIZE];
+    snprintf(path, sizeof path, "%s/assets/moon.jpg", source);
+    glint_error err = {{0}};
+    texture_image tex;
+    assert_int_equal(texture_image_load_file(&tex, path, &err), GLINT_OK);
+    assert_int_equal(glint_asset_moon_width, 1024);
+    assert_int_equal(glint_asset_moon_height, 512);
+    assert_int_equal(tex.width, glint_asset_moon_width);
+    assert_int_equal(tex.height, glint_asset_moon_height);
+    assert_memory_equal(tex.srgb, glint_asset_moon_srgb, (size_t)1024 * 512 * 3);
+    texture_image_free(&tex);
+}
+
+/* A borrowed image reads the caller's bytes through the same table as a
+ * decoded one, and freeing it empties it without touching them. */
+static void test_borrowed_image(void **state)
+{
+    static const unsigned char pixels[2 * 3] = {0, 128, 255, 10, 20, 30};
+    texture_image tex = texture_image_borrow(2, 1, pixels);
+    assert_int_equal(tex.width, 2);
+    assert_int_equal(tex.height, 1);
+    assert_ptr_equal(tex.srgb, pixels);
+    assert_null(tex.owned);
+    assert_true(texture_image_at(&tex, 0) == 0.0f);
+    assert_true(texture_image_at(&tex, 1) == (float)glint_srgb_to_linear(128 / 255.0));
+    assert_true(texture_image_at(&tex, 2) == 1.0f);
+    assert_true(texture_image_at(&tex, 5) == (float)glint_srgb_to_linear(30 / 255.0));
+    texture_image_free(&tex);
+    assert_null(tex.srgb);
+    assert_int_equal(tex.width, 0);
+    assert_int_equal(pixels[5], 30);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1098,6 +1141,8 @@ int main(void)
         cmocka_unit_test(test_load_truncated_jpeg),
         cmocka_unit_test(test_load_refused_jpegs),
         cmocka_unit_test(test_load_moon),
+        cmocka_unit_test(test_embedded_moon_is_the_decoded_file),
+        cmocka_unit_test(test_borrowed_image),
     };
     return cmocka_run_group_tests(tests, setup_dir, teardown_dir);
 }

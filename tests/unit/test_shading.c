@@ -238,7 +238,7 @@ static void test_image_lookup(void **state)
     float linear[256];
     for (int i = 0; i < 256; i++)
         linear[i] = (float)i / 255;
-    texture_image img = {2, 1, px, linear};
+    texture_image img = {.width = 2, .height = 1, .srgb = px, .linear = linear};
     color c = image_eval(&img, 0.25, 0.5);
     assert_near(c.r, 1, 1e-7);
     assert_near(c.b, 0, 1e-7);
