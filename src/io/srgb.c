@@ -53,19 +53,27 @@ static float float_of_bits(uint32_t b)
     return f;
 }
 
+static uint32_t bits_of_float(float f)
+{
+    uint32_t b;
+    memcpy(&b, &f, sizeof b);
+    return b;
+}
+
 static void make_tables(void)
 {
-    /* Non-negative floats sort as their bit patterns do. */
+    /* Non-negative floats sort as their bit patterns do. Each threshold
+     * starts from the inverse curve at the midpoint between codes k - 1 and
+     * k, within an ulp or two of it, and steps to the first float whose code
+     * is k: a few calls to code_of each, where a search over all floats
+     * below 1 took thirty (0.45 ms, waited for by the first image written). */
     for (int k = 1; k <= 255; k++) {
-        uint32_t lo = 0, hi = ONE_BITS; /* code_of(lo) < k <= code_of(hi) */
-        while (hi - lo > 1) {
-            uint32_t mid = lo + (hi - lo) / 2;
-            if (code_of(float_of_bits(mid)) >= k)
-                hi = mid;
-            else
-                lo = mid;
-        }
-        thresholds[k - 1] = float_of_bits(hi);
+        uint32_t b = bits_of_float((float)glint_srgb_to_linear((k - 0.5) / 255.0));
+        while (b > 0 && code_of(float_of_bits(b - 1)) >= k)
+            b--;
+        while (code_of(float_of_bits(b)) < k)
+            b++;
+        thresholds[k - 1] = float_of_bits(b);
     }
     thresholds[255] = INFINITY; /* no code above 255 */
     int code = 0;
