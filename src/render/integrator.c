@@ -213,7 +213,9 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
     const glint_scene *scene = t->scene;
     for (int l = 0; l < scene->light_count; l++) {
         light_sample ls[ACCEL_PACKET];
-        ray8 shadow = *r; /* a lane without a segment keeps its own ray */
+        /* A lane without a segment keeps its own ray. Copied only once some
+         * lane has one: a spotlight lights few packets. */
+        ray8 shadow;
         double dist[ACCEL_PACKET] = {0};
         int skip[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
         bool lit[ACCEL_PACKET] = {false}, any = false;
@@ -223,6 +225,8 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
             ray ri = ray8_get(r, i), si;
             if (!shadow_segment(&scene->lights[l], &ri, &sp[i], &ls[i], &si))
                 continue;
+            if (!any)
+                shadow = *r;
             lit[i] = any = true;
             dist[i] = ls[i].distance;
             skip[i] = left_behind(scene, &sp[i], ls[i].to_light);
