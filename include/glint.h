@@ -93,9 +93,13 @@ typedef enum glint_sampler {
     GLINT_SAMPLER_JITTERED      /* N x N strata, one random point in each */
 } glint_sampler;
 
+/* The most pixels an image may have, width times height (16384 x 16384):
+ * its float buffer alone takes 12 bytes a pixel, 3 GiB at the limit. */
+#define GLINT_MAX_PIXELS (1LL << 28)
+
 /* Image and integrator settings. */
 typedef struct glint_settings {
-    int width, height;         /* pixels, 1..65536 each */
+    int width, height;         /* pixels, 1..65536 each, GLINT_MAX_PIXELS in all */
     int samples_per_pixel;     /* a square number N*N, 1..4096 */
     glint_sampler sampler;
     int max_depth;             /* reflection/refraction recursion limit, 0..64 */

@@ -44,7 +44,8 @@ static const char USAGE[] =
     "                         scene's output setting, else glint.png)\n"
     "      --check            validate the scene file, report every problem, render nothing\n"
     "  -w, --width N          image width in pixels, 1..65536\n"
-    "  -h, --height N         image height in pixels, 1..65536\n"
+    "  -h, --height N         image height in pixels, 1..65536; at most 16384 x 16384\n"
+    "                         pixels in all\n"
     "      --spp N            samples per pixel, a square number 1, 4, 9, ... 4096\n"
     "      --sampler NAME     regular (an N x N grid) or jittered (one random point in\n"
     "                         each cell of the grid)\n"
@@ -311,12 +312,16 @@ static int run(const options *o)
         st = glint_scene_replace_image(scene, o->swap_name[i], o->swap_path[i], &err);
     glint_settings settings = glint_scene_get_settings(scene);
     apply_overrides(o, &settings);
-    if (!st)
-        st = glint_scene_set_settings(scene, &settings, &err);
     if (st) {
         glint_scene_free(scene);
         /* Whatever stopped the scene, unreadable textures included, is bad input. */
         return complain(st == GLINT_ERR_NOMEM ? EXIT_INTERNAL : EXIT_BAD_INPUT, "%s", err.message);
+    }
+    /* The scene's own settings passed when it loaded: only the flags can
+     * make them fail now (an image too large in all, say). */
+    if (glint_scene_set_settings(scene, &settings, &err)) {
+        glint_scene_free(scene);
+        return complain(EXIT_USAGE, "%s", err.message);
     }
 
     /* From here on a signal cancels the render, which then writes nothing;

@@ -85,6 +85,14 @@ glint_status glint_scene_set_settings(glint_scene *scene, const glint_settings *
     if (s->width < 1 || s->width > 65536 || s->height < 1 || s->height > 65536)
         return error_set(err, GLINT_ERR_INVALID, "image size must be 1..65536 pixels each way, got %dx%d",
                          s->width, s->height);
+    /* Refused before anything is allocated: the render's float image takes
+     * 12 bytes a pixel (3 GiB at the limit), and a size the system only
+     * pretends to have would be found out pages into the render. */
+    long long pixels = (long long)s->width * s->height;
+    if (pixels > GLINT_MAX_PIXELS)
+        return error_set(err, GLINT_ERR_INVALID,
+                         "image size %dx%d is %lld pixels, more than the limit of %lld (16384 x 16384)", s->width,
+                         s->height, pixels, (long long)GLINT_MAX_PIXELS);
     int n = (int)lround(sqrt((double)s->samples_per_pixel));
     if (s->samples_per_pixel < 1 || s->samples_per_pixel > 4096 || n * n != s->samples_per_pixel)
         return error_set(err, GLINT_ERR_INVALID,

@@ -44,6 +44,8 @@ expect 2 "glint: --height needs a whole number from 1 to 65536, got '12px'" -- -
 expect 2 "glint: --spp needs a square number from 1 to 4096 (1, 4, 9, 16, ...), got '0'" -- --spp 0 -o a.png
 expect 2 "glint: --spp needs a square number from 1 to 4096 (1, 4, 9, 16, ...), got '5'" -- --spp 5 -o a.png
 expect 2 "glint: --threads needs a whole number from 1 to 1024, got '0'" -- --threads 0 -o a.png
+expect 2 "glint: image size 65536x65536 is 4294967296 pixels, more than the limit of 268435456 (16384 x 16384)" -- -w 65536 -h 65536 -o a.png
+expect 2 "glint: image size 16385x16384 is 268451840 pixels, more than the limit of 268435456 (16384 x 16384)" -- -w 16385 -h 16384 -o a.png
 expect 2 "glint: --depth needs a whole number from 0 to 64, got '65'" -- --depth 65 -o a.png
 expect 2 "glint: --sampler needs 'regular' or 'jittered', got 'random'" -- --sampler random -o a.png
 expect 2 "glint: --texture needs NAME=FILE, got 'moon'" -- --texture moon -o a.png

@@ -541,9 +541,33 @@ static void test_bad_transforms_are_refused(void **state)
     glint_scene_free(s);
 }
 
+/* An image is refused above GLINT_MAX_PIXELS in all, before anything is
+ * allocated, and the settings stay as they were; the limit itself passes. */
+static void test_image_size_limit(void **state)
+{
+    glint_scene *s = new_scene(8, 8, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 30);
+    glint_settings st = glint_scene_get_settings(s);
+    glint_error err;
+    st.width = st.height = 16384;
+    assert_int_equal(glint_scene_set_settings(s, &st, &err), GLINT_OK);
+    st.width = 16385;
+    assert_int_equal(glint_scene_set_settings(s, &st, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message,
+                        "image size 16385x16384 is 268451840 pixels, more than the limit of 268435456 (16384 x 16384)");
+    st.width = st.height = 65536;
+    assert_int_equal(glint_scene_set_settings(s, &st, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message,
+                        "image size 65536x65536 is 4294967296 pixels, more than the limit of 268435456 (16384 x 16384)");
+    st = glint_scene_get_settings(s);
+    assert_int_equal(st.width, 16384);
+    assert_int_equal(st.height, 16384);
+    glint_scene_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_image_size_limit),
         cmocka_unit_test(test_sphere_silhouette_area),
         cmocka_unit_test(test_shadow_ratio),
         cmocka_unit_test(test_tinted_shadows_multiply),
