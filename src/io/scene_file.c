@@ -393,9 +393,9 @@ static bool read_material_keys(loader *l, const ynode *n, const char *what, glin
     yr_check_keys(&l->r, n, what, keys, COUNT(keys));
     yr_opt_color(&l->r, n, "color", &m->color);
     ranged(l, n, "ambient", 0, 1, CLOSED, "from 0 to 1", &m->ambient);
-    ranged(l, n, "diffuse", 0, 1e300, CLOSED, "0 or more", &m->diffuse);
-    ranged(l, n, "specular", 0, 1e300, CLOSED, "0 or more", &m->specular);
-    ranged(l, n, "shininess", 0, 1e300, CLOSED, "0 or more", &m->shininess);
+    ranged(l, n, "diffuse", 0, 1e300, CLOSED, "from 0 to 1e300", &m->diffuse);
+    ranged(l, n, "specular", 0, 1e300, CLOSED, "from 0 to 1e300", &m->specular);
+    ranged(l, n, "shininess", 0, 1e300, CLOSED, "from 0 to 1e300", &m->shininess);
     ranged(l, n, "reflectivity", 0, 1, CLOSED, "from 0 to 1", &m->reflectivity);
     ranged(l, n, "transparency", 0, 1, CLOSED, "from 0 to 1", &m->transparency);
     ranged(l, n, "refraction", 0, 1, CLOSED, "from 0 to 1", &m->refraction);
@@ -474,7 +474,7 @@ static void read_light(loader *l, const ynode *n)
     char label[32];
     snprintf(label, sizeof label, "a %s light", what);
     bool good = yr_opt_color(&l->r, n, "color", &lt.color) &&
-                ranged(l, n, "intensity", 0, 1e300, CLOSED, "0 or more", &intensity);
+                ranged(l, n, "intensity", 0, 1e300, CLOSED, "from 0 to 1e300", &intensity);
     if (k != GLINT_LIGHT_DIRECTIONAL)
         good = need_vec3(l, n, "position", label, &lt.position) && good;
     if (k != GLINT_LIGHT_POINT)

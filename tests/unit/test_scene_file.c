@@ -1453,7 +1453,7 @@ static const bad_scene BAD[] = {
     {"light_intensity_negative",
      "lights:\n"
      "  - {type: point, position: [0, 5, 0], intensity: -1}\n",
-     "bad.yaml:2:51: 'intensity' must be 0 or more, got -1", 1},
+     "bad.yaml:2:51: 'intensity' must be from 0 to 1e300, got -1", 1},
     {"light_direction_zero",
      "lights:\n"
      "  - {type: directional, direction: [0, 0, 0]}\n",
