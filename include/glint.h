@@ -402,6 +402,9 @@ typedef struct glint_render_stats {
     double seconds;
     uint64_t samples;         /* camera samples */
     uint64_t rays;            /* camera, reflected, refracted, transmitted and shadow rays */
+    uint64_t nan_samples;     /* camera samples whose colour came out NaN: left out of
+                                 their pixels' averages (a pixel with only such samples
+                                 is black), so no NaN reaches the image */
 } glint_render_stats;
 
 /* Called after every finished tile with the count finished so far, from

@@ -349,6 +349,12 @@ static int run(const options *o)
         glint_scene_free(scene);
         return complain(exit_code_of(st), "%s", err.message);
     }
+    /* A warning, not a failure: the image is written, without them. */
+    if (stats.nan_samples > 0)
+        fprintf(stderr, "glint: warning: %llu sample%s came out NaN (not a number) and %s left out of %s pixel%s\n",
+                (unsigned long long)stats.nan_samples, stats.nan_samples == 1 ? "" : "s",
+                stats.nan_samples == 1 ? "was" : "were", stats.nan_samples == 1 ? "its" : "their",
+                stats.nan_samples == 1 ? "" : "s");
     if (!o->quiet) {
         long threads = o->threads > 0 ? (long)o->threads : sysconf(_SC_NPROCESSORS_ONLN);
         fprintf(stderr, "glint: %dx%d, %d spp, %ld thread%s: %.3f s, %llu samples, %llu rays, %.1f Mrays/s -> %s\n",

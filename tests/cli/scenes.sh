@@ -72,5 +72,15 @@ awk -v dir="$work" '
 ' "$here/docs/scene-format.md"
 check "docs error example matches the loader" bash -c "cd '$work' && ! '$GLINT' --check bad.yaml 2>actual && diff expected actual"
 
+# Samples that shade to NaN: left out of their pixels, counted in a warning
+# that --quiet does not hide, and the image is still written (exit 0).
+nan_check() {
+    local err
+    err=$("$GLINT" "$here/tests/cli/nan-sphere.yaml" -q -o "$work/nan.png" 2>&1 >/dev/null) || return 1
+    [ "$err" = "glint: warning: 896 samples came out NaN (not a number) and were left out of their pixels" ] &&
+        [ -s "$work/nan.png" ] || { echo "got: $err"; return 1; }
+}
+check "NaN samples: warned about and left out" nan_check
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

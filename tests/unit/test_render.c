@@ -7,6 +7,7 @@
 #include <stdint.h>
 #include <cmocka.h>
 #include <math.h>
+#include <stdbool.h>
 #include <string.h>
 #include "glint.h"
 
@@ -541,6 +542,73 @@ static void test_bad_transforms_are_refused(void **state)
     glint_scene_free(s);
 }
 
+/* A scene of extreme but valid values whose sphere shades to NaN (a light
+ * of 1e300 times a diffuse factor of 1e300 overflows to infinity, which
+ * full transparency then scales by zero). Each pixel averages only its
+ * samples that are not NaN, so every pixel is the backdrop's colour
+ * exactly, or black where all four samples met the sphere, and the count
+ * of NaN samples is the count of samples that met it: the same scene with
+ * a black sphere, the backdrop white, shows that count as the missing
+ * quarters of each pixel. */
+static glint_scene *nan_scene(bool ghost)
+{
+    glint_scene *s = new_scene(16, 16, (glint_vec3){0, 0, 5}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 1, 0}, 40);
+    glint_settings st = glint_scene_get_settings(s);
+    st.samples_per_pixel = 4;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    add_quad(s, (glint_vec3){-10, -10, -2}, (glint_vec3){10, -10, -2}, (glint_vec3){10, 10, -2},
+             (glint_vec3){-10, 10, -2}, ghost ? flat(s, 0.25, 0.5, 0.75) : flat(s, 1, 1, 1));
+    glint_material m = glint_material_default();
+    m.diffuse = 1e300;
+    m.transparency = 1;
+    m.specular = 0;
+    int sphere = ghost ? glint_scene_add_material(s, NULL, &m, NULL) : flat(s, 0, 0, 0);
+    assert_true(sphere >= 0);
+    add_sphere(s, 0, 0, 0, 1, sphere);
+    glint_light l = {.kind = GLINT_LIGHT_POINT, .position = {0, 0, 10}, .color = {1e300, 1e300, 1e300}};
+    assert_true(glint_scene_add_light(s, &l, NULL) >= 0);
+    return s;
+}
+
+static void test_nan_samples_never_reach_a_pixel(void **state)
+{
+    glint_scene *s = nan_scene(false);
+    glint_image img = render(s, 1);
+    double covered = 0; /* samples on the sphere */
+    for (int y = 0; y < 16; y++)
+        for (int x = 0; x < 16; x++)
+            covered += 4 * (1 - pixel(&img, x, y)[0]);
+    glint_image_free(&img);
+    glint_scene_free(s);
+    assert_true(covered > 16 && covered < 4 * 16 * 16 / 2);
+
+    s = nan_scene(true);
+    for (int threads = 1; threads <= 2; threads++) {
+        glint_render_options o = {.threads = threads};
+        glint_render_stats stats;
+        assert_int_equal(glint_render(s, &o, &img, &stats, NULL), GLINT_OK);
+        assert_int_equal(stats.nan_samples, (uint64_t)covered);
+        assert_int_equal(stats.samples, 16 * 16 * 4);
+        int black = 0;
+        for (int y = 0; y < 16; y++) {
+            for (int x = 0; x < 16; x++) {
+                const float *p = pixel(&img, x, y);
+                if (p[0] == 0 && p[1] == 0 && p[2] == 0) {
+                    black++;
+                    continue;
+                }
+                assert_true(p[0] == 0.25f && p[1] == 0.5f && p[2] == 0.75f);
+            }
+        }
+        assert_true(black > 0 && black * 4 <= covered);
+        const float *centre = pixel(&img, 8, 8), *corner = pixel(&img, 0, 0);
+        assert_true(centre[0] == 0 && centre[1] == 0 && centre[2] == 0);
+        assert_true(corner[0] == 0.25f && corner[1] == 0.5f && corner[2] == 0.75f);
+        glint_image_free(&img);
+    }
+    glint_scene_free(s);
+}
+
 /* An image is refused above GLINT_MAX_PIXELS in all, before anything is
  * allocated, and the settings stay as they were; the limit itself passes. */
 static void test_image_size_limit(void **state)
@@ -568,6 +636,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_image_size_limit),
+        cmocka_unit_test(test_nan_samples_never_reach_a_pixel),
         cmocka_unit_test(test_sphere_silhouette_area),
         cmocka_unit_test(test_shadow_ratio),
         cmocka_unit_test(test_tinted_shadows_multiply),
