@@ -405,6 +405,7 @@ typedef struct glint_render_stats {
     uint64_t nan_samples;     /* camera samples whose colour came out NaN: left out of
                                  their pixels' averages (a pixel with only such samples
                                  is black), so no NaN reaches the image */
+    int tiles_done, tiles_total; /* finished tiles, of all; fewer only when cancelled */
 } glint_render_stats;
 
 /* Called after every finished tile with the count finished so far, from
@@ -417,12 +418,17 @@ typedef struct glint_render_options {
     int tile_size;            /* 0 means 32; rounded up to a multiple of 4 */
     glint_progress_fn progress;
     void *progress_user;
-    const volatile int *cancel; /* when non-NULL and set non-zero, the render stops */
+    const volatile int *cancel; /* when non-NULL and set non-zero, the render stops: each
+                                   thread reads it before each row of 4 x 2 pixel blocks */
+    int keep_partial;         /* non-zero: a cancelled render still fills *out, with its
+                                 finished tiles and every other pixel black */
 } glint_render_options;
 
 /* Renders the scene into *out (allocated here; free with glint_image_free).
  * The image bytes depend only on the scene and its settings, never on the
- * thread count or tile size. stats may be NULL. */
+ * thread count or tile size. stats may be NULL. When the cancel flag is set
+ * it returns GLINT_ERR_CANCELLED with no image, or, with keep_partial, with
+ * the finished tiles in *out (to be freed as any) and stats filled. */
 glint_status glint_render(const glint_scene *scene, const glint_render_options *options,
                           glint_image *out, glint_render_stats *stats, glint_error *err);
 

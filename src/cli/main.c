@@ -28,6 +28,7 @@ typedef struct options {
     long long width, height, spp, depth, threads, seed; /* -1: the scene's own */
     int sampler;                                        /* -1: the scene's own */
     bool quiet;
+    bool partial;
     const char *swap_name[MAX_TEXTURE_SWAPS], *swap_path[MAX_TEXTURE_SWAPS];
     char swap_buf[MAX_TEXTURE_SWAPS][256];
     int swaps;
@@ -57,14 +58,18 @@ static const char USAGE[] =
     "      --texture NAME=FILE\n"
     "                         replace the image of the scene's texture NAME (the seed\n"
     "                         room's is 'moon') with a PNG or JPEG file\n"
+    "      --partial          when interrupted, write the finished tiles (the rest\n"
+    "                         black) instead of nothing, and still exit 4\n"
     "  -q, --quiet            no progress line and no summary on stderr\n"
     "      --help             show this help and exit\n"
     "      --version          print the version and exit\n"
     "\n"
     "Exit codes: 0 success, 1 bad input (scene file, texture), 2 bad usage, 3 the output\n"
-    "cannot be written, 4 interrupted, 5 internal failure (out of memory, Embree).\n"
-    "The image is written under a temporary name and renamed into place, so a failed\n"
-    "or interrupted run never leaves a partial file or destroys an existing one.\n";
+    "cannot be written, 4 interrupted (SIGINT or SIGTERM), 5 internal failure (out of\n"
+    "memory, Embree). An interrupted render stops within a moment and writes nothing\n"
+    "unless --partial. The image is written under a temporary name and renamed into\n"
+    "place, so a failed or interrupted run never leaves a half-written file or destroys\n"
+    "an existing one.\n";
 
 /* The render's cancel flag is a volatile int; on the platforms glint runs
  * on, sig_atomic_t is that int. */
@@ -158,6 +163,10 @@ static int parse_args(int argc, char **argv, options *o)
         }
         if (strcmp(a, "--check") == 0) {
             o->check = true;
+            continue;
+        }
+        if (strcmp(a, "--partial") == 0) {
+            o->partial = true;
             continue;
         }
         if (a[0] != '-' || a[1] == '\0') {
@@ -295,6 +304,21 @@ static int check_only(const options *o)
     return EXIT_OK;
 }
 
+/* An interrupted render: nothing written, or with --partial its finished
+ * tiles. Either way the exit code says it was interrupted. */
+static int interrupted_run(const options *o, const glint_image *image, const glint_render_stats *stats,
+                           const char *output)
+{
+    if (!o->partial)
+        return complain(EXIT_INTERRUPTED, "interrupted: nothing written");
+    glint_error err = {{0}};
+    glint_status st = glint_image_write(image, output, &err);
+    if (st)
+        return complain(exit_code_of(st), "interrupted, and the finished tiles were not written: %s", err.message);
+    return complain(EXIT_INTERRUPTED, "interrupted: %d of %d tiles finished, written to %s (the rest black)",
+                    stats->tiles_done, stats->tiles_total, output);
+}
+
 static int run(const options *o)
 {
     glint_error err = {{0}};
@@ -334,7 +358,7 @@ static int run(const options *o)
     progress prog = {.last_print = -1};
     clock_gettime(CLOCK_MONOTONIC, &prog.start);
     glint_render_options ro = {.threads = o->threads > 0 ? (int)o->threads : 0,
-                               .cancel = (const volatile int *)&interrupted};
+                               .cancel = (const volatile int *)&interrupted, .keep_partial = o->partial};
     if (!o->quiet && isatty(STDERR_FILENO)) {
         ro.progress = show_progress;
         ro.progress_user = &prog;
@@ -342,6 +366,14 @@ static int run(const options *o)
     glint_image image;
     glint_render_stats stats;
     st = glint_render(scene, &ro, &image, &stats, &err);
+    if (ro.progress && st == GLINT_ERR_CANCELLED)
+        fputs("\r\033[K", stderr); /* the progress line stopped short */
+    if (st == GLINT_ERR_CANCELLED) {
+        int code = interrupted_run(o, &image, &stats, output);
+        glint_image_free(&image);
+        glint_scene_free(scene);
+        return code;
+    }
     if (!st)
         st = glint_image_write(&image, output, &err);
     glint_image_free(&image);

@@ -24,6 +24,8 @@ typedef struct job {
     float *pixels;
     int tiles_x, tiles_total, tile_size, grid;
     atomic_int next_tile;
+    atomic_int tiles_finished;    /* whole tiles, whatever the progress callback */
+    unsigned char *finished;      /* finished[tile] != 0 once its pixels are all rendered */
     int tiles_done;               /* under progress_lock */
     pthread_mutex_t progress_lock;
 } job;
@@ -186,21 +188,43 @@ static bool pixels_have_nan(const job *j, int x0, int y0, int x1, int y1)
     return scalar_nan;
 }
 
-/* Tiles are whole blocks: tile_size is a multiple of BLOCK_W and BLOCK_H. A
- * NaN colour, which no valid scene should give but extreme values can (an
- * overflow to infinity times zero), never reaches a pixel: a tile that
- * shows one renders its blocks that show one again, leaving it out. */
-static void render_tile(tracer *t, job *j, int tile, uint64_t *nan_samples)
+/* Whether the render has been asked to stop. */
+static bool cancelled(const job *j)
+{
+    return j->opts->cancel && *j->opts->cancel;
+}
+
+/* The pixels of tile `tile`: columns x0 to x1 and rows y0 to y1, the ends
+ * excluded. */
+static void tile_bounds(const job *j, int tile, int *x0, int *y0, int *x1, int *y1)
 {
     const glint_settings *s = &j->scene->settings;
-    int x0 = (tile % j->tiles_x) * j->tile_size, y0 = (tile / j->tiles_x) * j->tile_size;
-    int x1 = x0 + j->tile_size < s->width ? x0 + j->tile_size : s->width;
-    int y1 = y0 + j->tile_size < s->height ? y0 + j->tile_size : s->height;
-    for (int y = y0; y < y1; y += BLOCK_H)
+    *x0 = (tile % j->tiles_x) * j->tile_size;
+    *y0 = (tile / j->tiles_x) * j->tile_size;
+    *x1 = *x0 + j->tile_size < s->width ? *x0 + j->tile_size : s->width;
+    *y1 = *y0 + j->tile_size < s->height ? *y0 + j->tile_size : s->height;
+}
+
+/* Renders a tile; false if the render was cancelled before it was whole.
+ * Tiles are whole blocks: tile_size is a multiple of BLOCK_W and BLOCK_H.
+ * The cancel flag is read before each row of blocks, so that a render
+ * stops within one row's time even at thousands of samples a pixel.
+ *
+ * A NaN colour, which no valid scene should give but extreme values can (an
+ * overflow to infinity times zero), never reaches a pixel: a tile that
+ * shows one renders its blocks that show one again, leaving it out. */
+static bool render_tile(tracer *t, job *j, int tile, uint64_t *nan_samples)
+{
+    int x0, y0, x1, y1;
+    tile_bounds(j, tile, &x0, &y0, &x1, &y1);
+    for (int y = y0; y < y1; y += BLOCK_H) {
+        if (cancelled(j))
+            return false;
         for (int x = x0; x < x1; x += BLOCK_W)
             render_block(t, j, x, y);
+    }
     if (!pixels_have_nan(j, x0, y0, x1, y1))
-        return;
+        return true;
     for (int y = y0; y < y1; y += BLOCK_H) {
         for (int x = x0; x < x1; x += BLOCK_W) {
             int bx = x + BLOCK_W < x1 ? x + BLOCK_W : x1, by = y + BLOCK_H < y1 ? y + BLOCK_H : y1;
@@ -208,6 +232,7 @@ static void render_tile(tracer *t, job *j, int tile, uint64_t *nan_samples)
                 render_block_leaving_nan(t, j, x, y, nan_samples);
         }
     }
+    return true;
 }
 
 static void *worker_run(void *arg)
@@ -217,9 +242,11 @@ static void *worker_run(void *arg)
     tracer t = {j->scene, j->acc, 0, tracer_reach(j->scene)};
     int tile;
     while ((tile = atomic_fetch_add(&j->next_tile, 1)) < j->tiles_total) {
-        if (j->opts->cancel && *j->opts->cancel)
+        if (cancelled(j) || !render_tile(&t, j, tile, &w->nan_samples))
             break;
-        render_tile(&t, j, tile, &w->nan_samples);
+        if (j->finished)
+            j->finished[tile] = 1;
+        atomic_fetch_add(&j->tiles_finished, 1);
         if (j->opts->progress) {
             /* The lock keeps the calls one at a time and their counts in order. */
             pthread_mutex_lock(&j->progress_lock);
@@ -309,6 +336,11 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
     j.tiles_x = (s->width + j.tile_size - 1) / j.tile_size;
     j.tiles_total = j.tiles_x * ((s->height + j.tile_size - 1) / j.tile_size);
     atomic_init(&j.next_tile, 0);
+    atomic_init(&j.tiles_finished, 0);
+    if (o->keep_partial && o->cancel && !(j.finished = calloc((size_t)j.tiles_total, 1))) {
+        free(j.pixels);
+        return error_set(err, GLINT_ERR_NOMEM, "out of memory for a %dx%d image", s->width, s->height);
+    }
     /* Embree builds with every thread asked for; tracing needs no more
      * threads than tiles. */
     int build_threads = o->threads ? o->threads : processors_online(MAX_THREADS);
@@ -328,6 +360,7 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
         free(shape_opaque);
         free(instance_opaque);
         free(j.pixels);
+        free(j.finished);
         return st;
     }
     j.acc = acc;
@@ -338,20 +371,39 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
     accel_free(acc);
     free(shape_opaque);
     free(instance_opaque);
-    if (!st && o->cancel && *o->cancel)
+    int finished = atomic_load(&j.tiles_finished);
+    bool stopped = !st && cancelled(&j);
+    if (stopped)
         st = error_set(err, GLINT_ERR_CANCELLED, "render cancelled");
-    if (st) {
+    if (st && !(stopped && j.finished)) {
         free(j.pixels);
+        free(j.finished);
         return st;
     }
+    /* A cancelled render keeping its finished tiles: the others, rendered
+     * in part or not at all, are black. */
+    uint64_t pixels_done = 0;
+    for (int tile = 0; tile < j.tiles_total; tile++) {
+        int x0, y0, x1, y1;
+        tile_bounds(&j, tile, &x0, &y0, &x1, &y1);
+        if (!j.finished || j.finished[tile]) {
+            pixels_done += (uint64_t)(x1 - x0) * (uint64_t)(y1 - y0);
+            continue;
+        }
+        for (int y = y0; y < y1; y++)
+            memset(j.pixels + 3 * ((size_t)y * s->width + (size_t)x0), 0, 3 * sizeof(float) * (size_t)(x1 - x0));
+    }
+    free(j.finished);
     out->width = s->width;
     out->height = s->height;
     out->pixels = j.pixels;
     if (stats) {
         stats->seconds = now_seconds() - start;
-        stats->samples = (uint64_t)s->width * s->height * j.grid * j.grid;
+        stats->samples = pixels_done * (uint64_t)(j.grid * j.grid);
         stats->rays = rays;
         stats->nan_samples = nan_samples;
+        stats->tiles_done = finished;
+        stats->tiles_total = j.tiles_total;
     }
-    return GLINT_OK;
+    return st;
 }

@@ -525,6 +525,68 @@ static void test_cancel_flag_stops_the_render(void **state)
     glint_scene_free(s);
 }
 
+/* A progress callback that cancels the render once `after` tiles are done. */
+typedef struct cancel_after {
+    volatile int cancel;
+    int after;
+} cancel_after;
+
+static void cancel_when_done(void *user, int done, int total)
+{
+    cancel_after *c = user;
+    if (done >= c->after)
+        c->cancel = 1;
+}
+
+/* With keep_partial, a cancelled render still gives an image: one thread
+ * takes the tiles in order, so tiles 0 to 2 (of 5 x 4, 20 pixels square)
+ * are finished and exactly as in a whole render, and every other pixel is
+ * black. (A tile cut off halfway is black too: tests/cli/interrupt.sh.) */
+static void test_cancel_keeps_finished_tiles(void **state)
+{
+    glint_scene *s = new_scene(100, 70, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 30);
+    add_quad(s, (glint_vec3){-10, -10, -5}, (glint_vec3){10, -10, -5}, (glint_vec3){10, 10, -5},
+             (glint_vec3){-10, 10, -5}, flat(s, 0.25, 0.5, 0.75));
+    glint_render_options o = {.threads = 1, .tile_size = 20};
+    glint_image whole, part;
+    assert_int_equal(glint_render(s, &o, &whole, NULL, NULL), GLINT_OK);
+
+    cancel_after c = {0, 3};
+    o.progress = cancel_when_done;
+    o.progress_user = &c;
+    o.cancel = &c.cancel;
+    o.keep_partial = 1;
+    glint_render_stats stats;
+    glint_error err;
+    assert_int_equal(glint_render(s, &o, &part, &stats, &err), GLINT_ERR_CANCELLED);
+    assert_string_equal(err.message, "render cancelled");
+    assert_non_null(part.pixels);
+    assert_int_equal(part.width, 100);
+    assert_int_equal(part.height, 70);
+    assert_int_equal(stats.tiles_done, 3);
+    assert_int_equal(stats.tiles_total, 20);
+    assert_int_equal(stats.samples, 3 * 20 * 20);
+    for (int y = 0; y < 70; y++) {
+        for (int x = 0; x < 100; x++) {
+            const float *p = pixel(&part, x, y), *w = pixel(&whole, x, y);
+            bool finished = y < 20 && x < 60;
+            for (int k = 0; k < 3; k++) {
+                assert_true(w[k] > 0);
+                assert_true(p[k] == (finished ? w[k] : 0.0f));
+            }
+        }
+    }
+    glint_image_free(&part);
+
+    /* Without keep_partial: no image, as before. */
+    c.cancel = 0;
+    o.keep_partial = 0;
+    assert_int_equal(glint_render(s, &o, &part, &stats, NULL), GLINT_ERR_CANCELLED);
+    assert_null(part.pixels);
+    glint_image_free(&whole);
+    glint_scene_free(s);
+}
+
 static void test_bad_transforms_are_refused(void **state)
 {
     glint_scene *s = new_scene(8, 8, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 30);
@@ -650,6 +712,7 @@ int main(void)
         cmocka_unit_test(test_identical_bytes_for_any_thread_count),
         cmocka_unit_test(test_progress_reports_every_tile_in_order),
         cmocka_unit_test(test_cancel_flag_stops_the_render),
+        cmocka_unit_test(test_cancel_keeps_finished_tiles),
         cmocka_unit_test(test_bad_transforms_are_refused),
         cmocka_unit_test(test_planes_are_infinite_and_lose_ties),
     };

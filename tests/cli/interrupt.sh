@@ -1,0 +1,70 @@
+#!/usr/bin/env bash
+# Interrupting a render: SIGINT or SIGTERM stops glint within a second with
+# exit code 4, writes nothing and leaves the file already at the output path
+# as it was; with --partial it writes the finished tiles as a valid PNG of
+# the whole size, and still exits 4.
+# Usage: interrupt.sh PATH/TO/glint
+set -u
+GLINT=$1
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+passed=0
+failed=0
+fail() {
+    echo "FAIL: $*"
+    failed=$((failed + 1))
+}
+
+# interrupt SIGNAL [FLAGS...]: starts a render of the seed room far too long
+# to finish (2000 x 2000 pixels, 64 samples each: a minute or more), sends
+# SIGNAL once it is under way, and sets status, stop_ms (from the signal to
+# the exit) and err (its stderr).
+interrupt() {
+    local sig=$1
+    shift
+    printf 'an earlier image\n' >out.png
+    "$GLINT" -w 2000 -h 2000 --spp 64 --threads 2 -o out.png "$@" 2>err.txt &
+    local pid=$!
+    sleep 1.5
+    local t0
+    t0=$(date +%s%N)
+    kill -"$sig" "$pid"
+    wait "$pid"
+    status=$?
+    stop_ms=$((($(date +%s%N) - t0) / 1000000))
+    err=$(cat err.txt)
+}
+
+# Nothing written: exit 4, the message, the old file intact, no other file.
+for sig in INT TERM; do
+    before=$failed
+    interrupt "$sig"
+    [ "$status" -eq 4 ] || fail "SIG$sig: exit $status, expected 4"
+    [ "$stop_ms" -lt 1000 ] || fail "SIG$sig: took $stop_ms ms to stop"
+    [ "$err" = "glint: interrupted: nothing written" ] || fail "SIG$sig: stderr '$err'"
+    [ "$(cat out.png)" = "an earlier image" ] || fail "SIG$sig: the earlier file was changed"
+    [ "$(ls -A | sort | tr '\n' ' ')" = "err.txt out.png " ] || fail "SIG$sig: left $(ls -A)"
+    [ "$failed" -eq "$before" ] && passed=$((passed + 1))
+done
+
+# --partial: the finished tiles in a PNG of the whole size, which glint
+# itself decodes (as a texture). (Its time to stop includes writing the
+# 2000 x 2000 image, so it is not held to the second.)
+before=$failed
+interrupt INT --partial
+[ "$status" -eq 4 ] || fail "--partial: exit $status, expected 4"
+if [[ ! "$err" =~ ^glint:\ interrupted:\ ([0-9]+)\ of\ 3969\ tiles\ finished,\ written\ to\ out\.png\ \(the\ rest\ black\)$ ]]; then
+    fail "--partial: stderr '$err'"
+elif [ "${BASH_REMATCH[1]}" -lt 1 ] || [ "${BASH_REMATCH[1]}" -ge 3969 ]; then
+    fail "--partial: ${BASH_REMATCH[1]} tiles finished"
+fi
+# PNG signature, then IHDR: width and height 2000 (0x7d0).
+head=$(od -A n -t x1 -N 24 out.png | tr -d ' \n')
+[ "$head" = "89504e470d0a1a0a0000000d49484452000007d0000007d0" ] || fail "--partial: not a 2000x2000 PNG: $head"
+"$GLINT" --texture moon=out.png -w 4 -h 4 --spp 1 -q -o check.ppm || fail "--partial: glint cannot read the image back"
+[ "$(ls -A | sort | tr '\n' ' ')" = "check.ppm err.txt out.png " ] || fail "--partial: left $(ls -A)"
+[ "$failed" -eq "$before" ] && passed=$((passed + 1))
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
