@@ -251,6 +251,11 @@ static const struct aiScene *assimp_read(mesh_source *src, const char *file, dou
     /* Assimp drops points and lines, and fails when that leaves nothing. */
     else if (empty || strcmp(msg, "No meshes remaining") == 0 || strstr(msg, "mNumMeshes is 0"))
         error_set(err, GLINT_ERR_INVALID, "%s: no triangles", file);
+    /* Assimp says this when the reader its name calls for refuses the
+     * bytes: "no reader for the format" would mislead. */
+    else if (strncmp(msg, "No suitable reader found", 24) == 0)
+        error_set(err, GLINT_ERR_INVALID,
+                  "%s: no model reader accepts it (a damaged file, or another format under this name)", file);
     else
         error_set(err, strstr(msg, "bad_alloc") ? GLINT_ERR_NOMEM : GLINT_ERR_INVALID, "%s: %s", file, msg);
     return NULL;
