@@ -15,6 +15,13 @@
 #include "core/error.h"
 #include "io/mesh_import.h"
 
+/* The machine's memory in bytes, or 0 when the system does not say. */
+static uint64_t memory_bytes(void)
+{
+    long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
+    return pages > 0 && page > 0 ? (uint64_t)pages * (uint64_t)page : 0;
+}
+
 glint_status mesh_import_open(const char *path, int *fd, size_t *size, glint_error *err)
 {
     *size = 0;
@@ -31,6 +38,13 @@ glint_status mesh_import_open(const char *path, int *fd, size_t *size, glint_err
         s = error_set(err, GLINT_ERR_IO, "%s: cannot read: not a regular file", path);
     else if ((uintmax_t)st.st_size >= SIZE_MAX)
         s = error_set(err, GLINT_ERR_NOMEM, "%s: too large to read", path);
+    /* The file is read whole and its model built beside it: one larger
+     * than half the memory is refused before reading, rather than found
+     * out by the system (or its out-of-memory killer) halfway through. */
+    else if (memory_bytes() > 0 && (uint64_t)st.st_size > memory_bytes() / 2)
+        s = error_set(err, GLINT_ERR_INVALID,
+                      "%s: too large to import: %llu bytes, more than half of this machine's memory (%llu bytes)", path,
+                      (unsigned long long)st.st_size, (unsigned long long)memory_bytes());
     if (s) {
         close(*fd);
         *fd = -1;

@@ -28,7 +28,7 @@ expect() {
     else
         passed=$((passed + 1))
     fi
-    if [ -n "$(ls -A "$work" | grep -v '^ro$' | grep -v '^old.png$' | grep -v '^not-an-image.jpg$')" ]; then
+    if [ -n "$(ls -A "$work" | grep -v '^ro$' | grep -v '^old.png$' | grep -v '^not-an-image.jpg$' | grep -v '^huge.obj$')" ]; then
         echo "FAIL: glint $* left files: $(ls -A "$work")"
         failed=$((failed + 1))
     fi
@@ -45,6 +45,14 @@ expect 1 "glint: cannot open texture 'nope.jpg': No such file or directory" -- "
 echo "this is not an image" > not-an-image.jpg
 expect 1 "glint: texture 'not-an-image.jpg' is not a PNG or JPEG file" -- "${small[@]}" --texture moon=not-an-image.jpg -o a.png
 expect 1 "glint: no image texture named 'sun'" -- "${small[@]}" --texture sun=not-an-image.jpg -o a.png
+
+# A model file larger than half the machine's memory is refused before it
+# is read (a sparse file: no disk space is used).
+mem=$(($(awk '/^MemTotal:/ {print $2}' /proc/meminfo) * 1024))
+if truncate -s "$mem" huge.obj 2>/dev/null; then
+    expect 1 "glint: huge.obj: too large to import: $mem bytes, more than half of this machine's memory ($mem bytes)" -- "${small[@]}" huge.obj -o a.png
+fi
+rm -f huge.obj
 
 # A failed run never touches an existing file.
 printf 'precious' > old.png
