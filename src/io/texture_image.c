@@ -3,8 +3,9 @@
  * with the table that makes their bytes linear.
  *
  * Texture files may come from anywhere, so a corrupt or truncated file is an
- * error value, never a crash, an exit or a line on stderr, and the size in a
- * header is checked before any pixel memory is allocated. */
+ * error value, never a crash, an exit or a line on stderr, the size in a
+ * header is checked before any pixel memory is allocated, and the length of
+ * a PNG chunk before libpng allocates room for it. */
 #include <errno.h>
 #include <fcntl.h>
 #include <pthread.h>
@@ -20,8 +21,6 @@
 #include "core/error.h"
 #include "io/texture_image.h"
 
-#define MAX_SIDE 32768UL
-#define MAX_PIXELS (1UL << 28)
 /* Each scan of a progressive JPEG is another pass over the whole image, and
  * a hostile file can hold thousands; libjpeg-turbo advises capping them. */
 #define MAX_JPEG_SCANS 1000
@@ -43,10 +42,11 @@ static glint_status corrupt(const char *what, const char *reason, glint_error *e
 static glint_status check_size(unsigned long width, unsigned long height, const char *what,
                                glint_error *err)
 {
-    if (width > MAX_SIDE || height > MAX_SIDE || width * height > MAX_PIXELS)
+    if (width > TEXTURE_IMAGE_MAX_SIDE || height > TEXTURE_IMAGE_MAX_SIDE ||
+        width * height > TEXTURE_IMAGE_MAX_PIXELS)
         return error_set(err, GLINT_ERR_INVALID,
                          "texture '%s' is too large: %lux%lu (limit %lu a side, %lu pixels)",
-                         what, width, height, MAX_SIDE, MAX_PIXELS);
+                         what, width, height, TEXTURE_IMAGE_MAX_SIDE, TEXTURE_IMAGE_MAX_PIXELS);
     return GLINT_OK;
 }
 
@@ -80,9 +80,48 @@ static void png_rgba_to_rgb(texture_image *img)
         img->srgb = img->owned = fit;
 }
 
+static bool is_letter(unsigned char c)
+{
+    return (c >= 'A' && c <= 'Z') || (c >= 'a' && c <= 'z');
+}
+
+/* Before the image data libpng reads each chunk whole, into a buffer of the
+ * length the chunk claims, which it allocates and zeroes before reading
+ * (2 GB for the header of a text chunk in a file of 45 bytes; past its own
+ * limit it only warns). In memory no chunk is longer than the bytes after its header, so
+ * one that claims to be is refused before libpng sees it. The walk ends
+ * where libpng stops first: at a type that is not four letters (refused by
+ * name, unread), and at the first IDAT, whose data is inflated a piece at a
+ * time and after which nothing is read, so a file cut short there keeps
+ * libpng's message. */
+static glint_status png_check_chunk_lengths(const unsigned char *data, size_t size, const char *what,
+                                            glint_error *err)
+{
+    size_t at = 8; /* past the signature */
+    while (size - at >= 8) {
+        const unsigned char *p = data + at;
+        size_t length = (size_t)p[0] << 24 | (size_t)p[1] << 16 | (size_t)p[2] << 8 | p[3];
+        const unsigned char *type = p + 4;
+        if (!is_letter(type[0]) || !is_letter(type[1]) || !is_letter(type[2]) || !is_letter(type[3]) ||
+            memcmp(type, "IDAT", 4) == 0 || memcmp(type, "IEND", 4) == 0)
+            break;
+        if (length > size - at - 8)
+            return error_set(err, GLINT_ERR_INVALID,
+                             "texture '%s' is corrupt: its %.4s chunk claims %zu bytes, but only %zu follow",
+                             what, (const char *)type, length, size - at - 8);
+        at += 8 + length + 4; /* header, data, CRC */
+        if (at > size)
+            break;
+    }
+    return GLINT_OK;
+}
+
 static glint_status decode_png(texture_image *out, const void *data, size_t size,
                                const char *what, glint_error *err)
 {
+    glint_status checked = png_check_chunk_lengths(data, size, what, err);
+    if (checked != GLINT_OK)
+        return checked;
     png_image png;
     memset(&png, 0, sizeof png);
     png.version = PNG_IMAGE_VERSION;

@@ -8,6 +8,11 @@
 #include <stddef.h>
 #include "glint.h"
 
+/* The largest image decoded: a side longer, or more pixels in all, is
+ * refused as too large before any pixel memory is allocated. */
+#define TEXTURE_IMAGE_MAX_SIDE 32768UL
+#define TEXTURE_IMAGE_MAX_PIXELS (1UL << 28)
+
 /* A decoded image: srgb[3 * (y * width + x) + c], top row first, each an
  * sRGB-encoded byte whose linear value is linear[byte]. The bytes are the
  * image's own (owned, freed with it) or borrowed from memory that outlives

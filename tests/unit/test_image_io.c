@@ -881,6 +881,35 @@ static void test_load_oversized_png(void **state)
                  "texture 'wide.png' is too large: 32769x1 (limit 32768 a side, 268435456 pixels)");
 }
 
+/* Found by fuzz_texture (tests/fuzz/regressions/texture/): before the image
+ * data, libpng allocated and zeroed the 2 GB a text chunk claimed, then
+ * found the file ended. After the image data it reads nothing, so there
+ * such a chunk is still no error. */
+static void test_load_png_chunk_past_end(void **state)
+{
+    unsigned char buf[128], pixel[4] = {0, 200, 100, 50}, idat[64];
+    glint_error err = {{0}};
+    texture_image tex;
+    forge_png(buf, 1, 1);
+    size_t n = 33; /* the signature and IHDR */
+    put_be32(buf + n, 0x7fffff00);
+    memcpy(buf + n + 4, "tEXt", 4);
+    memcpy(buf + n + 8, "Title\0x", 7);
+    expect_error(texture_image_load_memory(&tex, buf, n + 15, "text.png", &err), &err, GLINT_ERR_INVALID,
+                 "texture 'text.png' is corrupt: its tEXt chunk claims 2147483392 bytes, but only 7 follow");
+    assert_null(tex.srgb);
+
+    uLongf idat_len = sizeof idat;
+    assert_int_equal(compress(idat, &idat_len, pixel, sizeof pixel), Z_OK);
+    n += put_chunk(buf + n, "IDAT", idat, (uint32_t)idat_len);
+    put_be32(buf + n, 0x7fffff00);
+    memcpy(buf + n + 4, "tEXt", 4);
+    assert_int_equal(texture_image_load_memory(&tex, buf, n + 8, "after.png", &err), GLINT_OK);
+    assert_int_equal(tex.width, 1);
+    assert_int_equal(tex.srgb[0], 200);
+    texture_image_free(&tex);
+}
+
 static void test_load_grey_png(void **state)
 {
     static const unsigned char grey[4] = {0, 64, 128, 255};
@@ -1134,6 +1163,7 @@ int main(void)
         cmocka_unit_test(test_load_truncated_png),
         cmocka_unit_test(test_load_png_bad_crc),
         cmocka_unit_test(test_load_oversized_png),
+        cmocka_unit_test(test_load_png_chunk_past_end),
         cmocka_unit_test(test_load_grey_png),
         cmocka_unit_test(test_load_palette_and_alpha_png),
         cmocka_unit_test(test_load_16bit_png),
