@@ -1,75 +1,13 @@
-/* main.c - the glint command: parses flags, renders the built-in seed room
- * through the public API, shows progress and writes the image. */
-#include <errno.h>
+/* main.c - the glint command: reads its flags (args.c), renders the scene
+ * or the built-in seed room through the public API, shows progress and
+ * writes the image. */
 #include <signal.h>
-#include <stdarg.h>
 #include <stdio.h>
-#include <stdlib.h>
 #include <string.h>
 #include <time.h>
 #include <unistd.h>
 #include "glint.h"
-
-enum exit_code {
-    EXIT_OK = 0,
-    EXIT_BAD_INPUT = 1,   /* a scene or texture that cannot be used */
-    EXIT_USAGE = 2,       /* flags that do not parse */
-    EXIT_IO = 3,          /* the output cannot be written */
-    EXIT_INTERRUPTED = 4, /* SIGINT or SIGTERM */
-    EXIT_INTERNAL = 5     /* out of memory, Embree failure */
-};
-
-#define MAX_TEXTURE_SWAPS 16
-
-typedef struct options {
-    const char *scene;          /* NULL: the built-in seed room */
-    const char *output;         /* NULL: the scene's, else glint.png */
-    bool check;
-    long long width, height, spp, depth, threads, seed; /* -1: the scene's own */
-    int sampler;                                        /* -1: the scene's own */
-    bool quiet;
-    bool partial;
-    const char *swap_name[MAX_TEXTURE_SWAPS], *swap_path[MAX_TEXTURE_SWAPS];
-    char swap_buf[MAX_TEXTURE_SWAPS][256];
-    int swaps;
-} options;
-
-static const char USAGE[] =
-    "usage: glint [SCENE.yaml | MODEL] [options]\n"
-    "Renders a scene file (docs/scene-format.md), a model file (.obj, .ply, .stl,\n"
-    ".gltf, .glb: framed on a floor, lit), or without either the built-in seed room\n"
-    "(the COSC363 scene), to an image. Flags override the file's settings.\n"
-    "\n"
-    "options:\n"
-    "  -o, --output FILE      image to write, .png (8-bit sRGB) or .ppm (default: the\n"
-    "                         scene's output setting, else glint.png)\n"
-    "      --check            validate the scene file, report every problem, render nothing\n"
-    "  -w, --width N          image width in pixels, 1..65536\n"
-    "  -h, --height N         image height in pixels, 1..65536; at most 16384 x 16384\n"
-    "                         pixels in all\n"
-    "      --spp N            samples per pixel, a square number 1, 4, 9, ... 4096\n"
-    "      --sampler NAME     regular (an N x N grid) or jittered (one random point in\n"
-    "                         each cell of the grid)\n"
-    "      --seed N           seed of the jittered sampler, 0..4294967295\n"
-    "      --depth N          reflection and refraction recursion limit, 0..64\n"
-    "                         (the seed room: 1000 x 1000, 4 samples, regular, depth 5)\n"
-    "      --threads N        render threads, 1..1024 (default: one per core); the image\n"
-    "                         is the same for any count\n"
-    "      --texture NAME=FILE\n"
-    "                         replace the image of the scene's texture NAME (the seed\n"
-    "                         room's is 'moon') with a PNG or JPEG file\n"
-    "      --partial          when interrupted, write the finished tiles (the rest\n"
-    "                         black) instead of nothing, and still exit 4\n"
-    "  -q, --quiet            no progress line and no summary on stderr\n"
-    "      --help             show this help and exit\n"
-    "      --version          print the version and exit\n"
-    "\n"
-    "Exit codes: 0 success, 1 bad input (scene file, texture), 2 bad usage, 3 the output\n"
-    "cannot be written, 4 interrupted (SIGINT or SIGTERM), 5 internal failure (out of\n"
-    "memory, Embree). An interrupted render stops within a moment and writes nothing\n"
-    "unless --partial. The image is written under a temporary name and renamed into\n"
-    "place, so a failed or interrupted run never leaves a half-written file or destroys\n"
-    "an existing one.\n";
+#include "cli/args.h"
 
 /* The render's cancel flag is a volatile int; on the platforms glint runs
  * on, sig_atomic_t is that int. */
@@ -82,149 +20,18 @@ static void on_signal(int sig)
     interrupted = 1;
 }
 
-static int complain(int code, const char *fmt, ...)
-{
-    va_list ap;
-    va_start(ap, fmt);
-    fputs("glint: ", stderr);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
-    va_end(ap);
-    return code;
-}
-
-/* Parses a whole decimal number in [lo, hi]. */
-static bool parse_int(const char *text, long long lo, long long hi, long long *out)
-{
-    char *end;
-    errno = 0;
-    long long v = strtoll(text, &end, 10);
-    if (errno || end == text || *end != '\0' || v < lo || v > hi)
-        return false;
-    *out = v;
-    return true;
-}
-
-typedef struct number_flag {
-    const char *long_name, *short_name;
-    size_t field;                 /* offset of the long long in options */
-    long long lo, hi;
-    const char *what;
-} number_flag;
-
-static const number_flag NUMBER_FLAGS[] = {
-    {"--width", "-w", offsetof(options, width), 1, 65536, "a whole number from 1 to 65536"},
-    {"--height", "-h", offsetof(options, height), 1, 65536, "a whole number from 1 to 65536"},
-    {"--spp", NULL, offsetof(options, spp), 1, 4096, "a square number from 1 to 4096 (1, 4, 9, 16, ...)"},
-    {"--depth", NULL, offsetof(options, depth), 0, 64, "a whole number from 0 to 64"},
-    {"--threads", NULL, offsetof(options, threads), 1, 1024, "a whole number from 1 to 1024"},
-    {"--seed", NULL, offsetof(options, seed), 0, 4294967295LL, "a whole number from 0 to 4294967295"},
-};
-
-static bool is_square(long long n)
-{
-    long long r = 0;
-    while ((r + 1) * (r + 1) <= n)
-        r++;
-    return r * r == n;
-}
-
-static int parse_texture_swap(options *o, const char *arg)
-{
-    const char *eq = strchr(arg, '=');
-    if (!eq || eq == arg || eq[1] == '\0' || (size_t)(eq - arg) >= sizeof o->swap_buf[0])
-        return complain(EXIT_USAGE, "--texture needs NAME=FILE, got '%s'", arg);
-    if (o->swaps == MAX_TEXTURE_SWAPS)
-        return complain(EXIT_USAGE, "--texture may be given at most %d times", MAX_TEXTURE_SWAPS);
-    memcpy(o->swap_buf[o->swaps], arg, (size_t)(eq - arg));
-    o->swap_buf[o->swaps][eq - arg] = '\0';
-    o->swap_name[o->swaps] = o->swap_buf[o->swaps];
-    o->swap_path[o->swaps] = eq + 1;
-    o->swaps++;
-    return 0;
-}
-
-/* Fills o from argv; returns -1 to go on, or an exit code. */
-static int parse_args(int argc, char **argv, options *o)
-{
-    for (int i = 1; i < argc; i++) {
-        const char *a = argv[i];
-        if (strcmp(a, "--help") == 0) {
-            fputs(USAGE, stdout);
-            return EXIT_OK;
-        }
-        if (strcmp(a, "--version") == 0) {
-            printf("glint %s\n", glint_version());
-            return EXIT_OK;
-        }
-        if (strcmp(a, "-q") == 0 || strcmp(a, "--quiet") == 0) {
-            o->quiet = true;
-            continue;
-        }
-        if (strcmp(a, "--check") == 0) {
-            o->check = true;
-            continue;
-        }
-        if (strcmp(a, "--partial") == 0) {
-            o->partial = true;
-            continue;
-        }
-        if (a[0] != '-' || a[1] == '\0') {
-            if (o->scene)
-                return complain(EXIT_USAGE, "unexpected argument '%s': one scene file at a time (try 'glint --help')", a);
-            o->scene = a;
-            continue;
-        }
-        const number_flag *nf = NULL;
-        for (size_t k = 0; k < sizeof NUMBER_FLAGS / sizeof NUMBER_FLAGS[0]; k++)
-            if (strcmp(a, NUMBER_FLAGS[k].long_name) == 0 ||
-                (NUMBER_FLAGS[k].short_name && strcmp(a, NUMBER_FLAGS[k].short_name) == 0))
-                nf = &NUMBER_FLAGS[k];
-        bool takes_value = nf || strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0 ||
-                           strcmp(a, "--sampler") == 0 || strcmp(a, "--texture") == 0;
-        if (!takes_value)
-            return complain(EXIT_USAGE, "unknown option '%s' (try 'glint --help')", a);
-        if (i + 1 >= argc)
-            return complain(EXIT_USAGE, "option '%s' needs a value", a);
-        const char *v = argv[++i];
-        if (nf) {
-            long long *field = (long long *)((char *)o + nf->field);
-            if (!parse_int(v, nf->lo, nf->hi, field) || (field == &o->spp && !is_square(*field)))
-                return complain(EXIT_USAGE, "%s needs %s, got '%s'", nf->long_name, nf->what, v);
-        } else if (strcmp(a, "--sampler") == 0) {
-            if (strcmp(v, "regular") == 0)
-                o->sampler = GLINT_SAMPLER_REGULAR;
-            else if (strcmp(v, "jittered") == 0)
-                o->sampler = GLINT_SAMPLER_JITTERED;
-            else
-                return complain(EXIT_USAGE, "--sampler needs 'regular' or 'jittered', got '%s'", v);
-        } else if (strcmp(a, "--texture") == 0) {
-            int code = parse_texture_swap(o, v);
-            if (code)
-                return code;
-        } else {
-            if (v[0] == '\0')
-                return complain(EXIT_USAGE, "%s needs a file name", a);
-            o->output = v;
-        }
-    }
-    if (o->check && !o->scene)
-        return complain(EXIT_USAGE, "--check needs a scene file");
-    return -1;
-}
-
 static int exit_code_of(glint_status s)
 {
     switch (s) {
-    case GLINT_OK: return EXIT_OK;
-    case GLINT_ERR_INVALID: return EXIT_BAD_INPUT;
-    case GLINT_ERR_IO: return EXIT_IO;
-    case GLINT_ERR_CANCELLED: return EXIT_INTERRUPTED;
-    default: return EXIT_INTERNAL;
+    case GLINT_OK: return CLI_EXIT_OK;
+    case GLINT_ERR_INVALID: return CLI_EXIT_BAD_INPUT;
+    case GLINT_ERR_IO: return CLI_EXIT_IO;
+    case GLINT_ERR_CANCELLED: return CLI_EXIT_INTERRUPTED;
+    default: return CLI_EXIT_INTERNAL;
     }
 }
 
-static void apply_overrides(const options *o, glint_settings *s)
+static void apply_overrides(const cli_options *o, glint_settings *s)
 {
     if (o->width >= 0) s->width = (int)o->width;
     if (o->height >= 0) s->height = (int)o->height;
@@ -277,23 +84,23 @@ static glint_scene *load_scene(const char *path, const char *outcome)
     if (glint_is_model_path(path)) {
         glint_scene *model = glint_scene_for_model(path, &err);
         if (!model)
-            complain(EXIT_BAD_INPUT, "%s", err.message);
+            cli_complain(CLI_EXIT_BAD_INPUT, "%s", err.message);
         return model;
     }
     int problems = 0;
     glint_load_options lo = {.report = print_problem, .report_user = &problems, .max_errors = MAX_PROBLEMS};
     glint_scene *scene = glint_scene_load_file(path, &lo, &err);
     if (!scene)
-        complain(EXIT_BAD_INPUT, "%s: %d problem%s%s; %s", path, problems, problems == 1 ? "" : "s",
+        cli_complain(CLI_EXIT_BAD_INPUT, "%s: %d problem%s%s; %s", path, problems, problems == 1 ? "" : "s",
                  problems >= MAX_PROBLEMS ? " (stopped at the limit)" : "", outcome);
     return scene;
 }
 
-static int check_only(const options *o)
+static int check_only(const cli_options *o)
 {
     glint_scene *scene = load_scene(o->scene, "not valid");
     if (!scene)
-        return EXIT_BAD_INPUT;
+        return CLI_EXIT_BAD_INPUT;
     glint_scene_counts c = glint_scene_get_counts(scene);
     printf("%s: ok: %d textures, %d materials, %d shapes, %d lights", o->scene, c.textures, c.materials, c.shapes,
            c.lights);
@@ -301,36 +108,36 @@ static int check_only(const options *o)
         printf(", %d meshes (%lld triangles) placed %d times", c.meshes, c.triangles, c.instances);
     putchar('\n');
     glint_scene_free(scene);
-    return EXIT_OK;
+    return CLI_EXIT_OK;
 }
 
 /* An interrupted render: nothing written, or with --partial its finished
  * tiles. Either way the exit code says it was interrupted. */
-static int interrupted_run(const options *o, const glint_image *image, const glint_render_stats *stats,
+static int interrupted_run(const cli_options *o, const glint_image *image, const glint_render_stats *stats,
                            const char *output)
 {
     if (!o->partial)
-        return complain(EXIT_INTERRUPTED, "interrupted: nothing written");
+        return cli_complain(CLI_EXIT_INTERRUPTED, "interrupted: nothing written");
     glint_error err = {{0}};
     glint_status st = glint_image_write(image, output, &err);
     if (st)
-        return complain(exit_code_of(st), "interrupted, and the finished tiles were not written: %s", err.message);
-    return complain(EXIT_INTERRUPTED, "interrupted: %d of %d tiles finished, written to %s (the rest black)",
+        return cli_complain(exit_code_of(st), "interrupted, and the finished tiles were not written: %s", err.message);
+    return cli_complain(CLI_EXIT_INTERRUPTED, "interrupted: %d of %d tiles finished, written to %s (the rest black)",
                     stats->tiles_done, stats->tiles_total, output);
 }
 
-static int run(const options *o)
+static int run(const cli_options *o)
 {
     glint_error err = {{0}};
     glint_scene *scene = o->scene ? load_scene(o->scene, "nothing rendered") : glint_scene_seed_room(&err);
     if (!scene)
-        return o->scene ? EXIT_BAD_INPUT : complain(EXIT_INTERNAL, "%s", err.message);
+        return o->scene ? CLI_EXIT_BAD_INPUT : cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
     const char *output = o->output ? o->output : glint_scene_get_output(scene) ? glint_scene_get_output(scene)
                                                                                  : "glint.png";
     glint_status st = glint_image_check_path(output, &err);
     if (st) {
         glint_scene_free(scene);
-        return complain(st == GLINT_ERR_INVALID ? EXIT_USAGE : exit_code_of(st), "%s", err.message);
+        return cli_complain(st == GLINT_ERR_INVALID ? CLI_EXIT_USAGE : exit_code_of(st), "%s", err.message);
     }
     for (int i = 0; i < o->swaps && !st; i++)
         st = glint_scene_replace_image(scene, o->swap_name[i], o->swap_path[i], &err);
@@ -339,13 +146,13 @@ static int run(const options *o)
     if (st) {
         glint_scene_free(scene);
         /* Whatever stopped the scene, unreadable textures included, is bad input. */
-        return complain(st == GLINT_ERR_NOMEM ? EXIT_INTERNAL : EXIT_BAD_INPUT, "%s", err.message);
+        return cli_complain(st == GLINT_ERR_NOMEM ? CLI_EXIT_INTERNAL : CLI_EXIT_BAD_INPUT, "%s", err.message);
     }
     /* The scene's own settings passed when it loaded: only the flags can
      * make them fail now (an image too large in all, say). */
     if (glint_scene_set_settings(scene, &settings, &err)) {
         glint_scene_free(scene);
-        return complain(EXIT_USAGE, "%s", err.message);
+        return cli_complain(CLI_EXIT_USAGE, "%s", err.message);
     }
 
     /* From here on a signal cancels the render, which then writes nothing;
@@ -379,7 +186,7 @@ static int run(const options *o)
     glint_image_free(&image);
     if (st) {
         glint_scene_free(scene);
-        return complain(exit_code_of(st), "%s", err.message);
+        return cli_complain(exit_code_of(st), "%s", err.message);
     }
     /* A warning, not a failure: the image is written, without them. */
     if (stats.nan_samples > 0)
@@ -395,14 +202,13 @@ static int run(const options *o)
                 stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, output);
     }
     glint_scene_free(scene); /* last: output may point into it */
-    return EXIT_OK;
+    return CLI_EXIT_OK;
 }
 
 int main(int argc, char **argv)
 {
-    options o = {.width = -1, .height = -1, .spp = -1, .depth = -1,
-                 .threads = -1, .seed = -1, .sampler = -1};
-    int code = parse_args(argc, argv, &o);
+    cli_options o;
+    int code = cli_parse_args(argc, argv, &o);
     if (code >= 0)
         return code;
     return o.check ? check_only(&o) : run(&o);

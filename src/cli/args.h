@@ -1,0 +1,50 @@
+/* args.h - the glint command's arguments: its exit codes, the options its
+ * flags set and the parser that reads them (apart from main.c so that the
+ * parser can be fuzzed, tests/fuzz/fuzz_cli.c). */
+#ifndef GLINT_CLI_ARGS_H
+#define GLINT_CLI_ARGS_H
+
+#include <stdbool.h>
+
+/* What the glint command's exit status means (glint --help lists them). */
+enum cli_exit_code {
+    CLI_EXIT_OK = 0,
+    CLI_EXIT_BAD_INPUT = 1,   /* a scene or texture that cannot be used */
+    CLI_EXIT_USAGE = 2,       /* flags that do not parse */
+    CLI_EXIT_IO = 3,          /* the output cannot be written */
+    CLI_EXIT_INTERRUPTED = 4, /* SIGINT or SIGTERM */
+    CLI_EXIT_INTERNAL = 5     /* out of memory, Embree failure */
+};
+
+/* The most --texture NAME=FILE flags one command line may give. */
+#define CLI_MAX_TEXTURE_SWAPS 16
+
+/* What the command line asks for. The numbers are -1 where the scene's own
+ * setting stands, else within their flag's range (glint --help). Its
+ * strings point into argv or into the options themselves, so they must not
+ * outlive argv nor the options be copied. */
+typedef struct cli_options {
+    const char *scene;          /* NULL: the built-in seed room */
+    const char *output;         /* NULL: the scene's, else glint.png */
+    bool check;
+    long long width, height, spp, depth, threads, seed; /* -1: the scene's own */
+    int sampler;                                        /* -1: the scene's own, else a glint_sampler */
+    bool quiet;
+    bool partial;
+    const char *swap_name[CLI_MAX_TEXTURE_SWAPS], *swap_path[CLI_MAX_TEXTURE_SWAPS];
+    char swap_buf[CLI_MAX_TEXTURE_SWAPS][256];
+    int swaps;
+} cli_options;
+
+/* Prints "glint: ", the message formatted from fmt and a newline on stderr,
+ * and returns code, so that a caller can return both at once. */
+int cli_complain(int code, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+/* Fills all of *o from the argc arguments in argv (argv[0] the program's
+ * name, skipped). Returns -1 to go on and render or check, or the code to
+ * exit with at once: CLI_EXIT_OK after printing the help or the version on
+ * stdout, CLI_EXIT_USAGE after printing why the flags do not parse on
+ * stderr (cli_complain). */
+int cli_parse_args(int argc, char **argv, cli_options *o);
+
+#endif
