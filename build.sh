@@ -6,7 +6,8 @@
 # when not root). Builds go to build/ (Release, optimised from a profile of
 # training renders by cmake/pgo-build.sh), build-asan/ (the tests again
 # under ASan and UBSan) and build-fuzz/ (libFuzzer targets for the scene
-# loader and the model importer, each run for GLINT_FUZZ_SECONDS, default 60).
+# loader, the model importer, the texture decoder and the command line's
+# flags, each run for GLINT_FUZZ_SECONDS, default 60).
 set -euo pipefail
 cd "$(dirname "$0")"
 
@@ -35,13 +36,15 @@ build() { # build DIR [cmake args...]
     cmake --build "$dir" -j "$(nproc)"
 }
 
-# fuzz NAME MAX_LEN: runs build-fuzz/fuzz_NAME for GLINT_FUZZ_SECONDS on copies
-# of tests/fuzz/corpus/NAME and tests/fuzz/regressions/NAME, from inside the
-# corpus copy (so relative includes find seeds), with tests/fuzz/NAME.dict and,
-# when present, the LeakSanitizer suppressions tests/fuzz/NAME.supp. A failing
-# input is left in build-fuzz/artifacts-NAME/, the log in build-fuzz/fuzz-NAME.log.
+# fuzz NAME MAX_LEN [FLAGS...]: runs build-fuzz/fuzz_NAME for GLINT_FUZZ_SECONDS
+# on copies of tests/fuzz/corpus/NAME and tests/fuzz/regressions/NAME, from
+# inside the corpus copy (so relative includes find seeds), with
+# tests/fuzz/NAME.dict, when present the LeakSanitizer suppressions
+# tests/fuzz/NAME.supp, and any further libFuzzer FLAGS. A failing input is
+# left in build-fuzz/artifacts-NAME/, the log in build-fuzz/fuzz-NAME.log.
 fuzz() {
     local name=$1 max_len=$2 top=$PWD
+    shift 2
     local dir=build-fuzz/run-$name
     rm -rf "$dir" "build-fuzz/artifacts-$name"
     mkdir -p "$dir/regressions" "build-fuzz/artifacts-$name"
@@ -52,7 +55,7 @@ fuzz() {
     if ! (cd "$dir/corpus" && LSAN_OPTIONS="$lsan" UBSAN_OPTIONS=print_stacktrace=1 \
             "$top/build-fuzz/fuzz_$name" -max_total_time="${GLINT_FUZZ_SECONDS:-60}" -max_len="$max_len" \
             -rss_limit_mb=2048 -timeout=10 -dict="$top/tests/fuzz/$name.dict" \
-            -artifact_prefix="$top/build-fuzz/artifacts-$name/" -print_final_stats=1 . ../regressions) \
+            -artifact_prefix="$top/build-fuzz/artifacts-$name/" -print_final_stats=1 "$@" . ../regressions) \
             >"build-fuzz/fuzz-$name.log" 2>&1; then
         tail -n 60 "build-fuzz/fuzz-$name.log"
         echo "fuzz $name: FAILED; input in build-fuzz/artifacts-$name/, log in build-fuzz/fuzz-$name.log" >&2
@@ -109,11 +112,15 @@ test)
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
         ctest --test-dir build-asan --output-on-failure -j "$(nproc)"
     same_images build/glint build-asan/glint
-    # Fuzz the scene loader and the model importer for a bounded time each
-    # (tests/fuzz/README.md); a crash, leak or timeout fails the test.
+    # Fuzz the scene loader, the model importer, the texture decoder and the
+    # flags for a bounded time each (tests/fuzz/README.md); a crash, leak or
+    # timeout fails the test. The flags' parser prints as glint does: its
+    # stdout and stderr are closed (libFuzzer's own messages still show).
     CC=clang build build-fuzz -DGLINT_WERROR=ON -DGLINT_FUZZ=ON -DGLINT_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
     fuzz scene 8192
     fuzz mesh 16384
+    fuzz texture 16384
+    fuzz cli 4096 -close_fd_mask=3
     ;;
 *)
     echo "usage: ./build.sh render [glint flags] | ./build.sh test" >&2

@@ -1,0 +1,109 @@
+/* fuzz_cli.c - libFuzzer target for the glint command's flags: the input,
+ * split at its NUL bytes, is a command line (argv[0] "glint", at most
+ * MAX_ARGS arguments after it; a final argument needs no NUL after it) for
+ * cli_parse_args, whose promises are checked: it returns -1 (go on), 0
+ * (only for --help or --version) or 2 (usage), and when it goes on, every
+ * number is -1 or within its flag's range (the ranges glint --help gives),
+ * the sampler a known one, and every string one the command line holds.
+ * A broken promise aborts, which libFuzzer counts as a crash. The help,
+ * the version and the complaints are printed as glint prints them: run it
+ * with -close_fd_mask=3 (tests/fuzz/README.md). */
+#include <stdbool.h>
+#include <stddef.h>
+#include <stdint.h>
+#include <stdlib.h>
+#include <string.h>
+#include "glint.h"
+#include "cli/args.h"
+
+#define MAX_ARGS 64
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+/* Whether v is -1 (not given) or in [lo, hi]. */
+static bool unset_or_in(long long v, long long lo, long long hi)
+{
+    return v == -1 || (v >= lo && v <= hi);
+}
+
+static bool is_square(long long n)
+{
+    for (long long r = 0; r * r <= n; r++)
+        if (r * r == n)
+            return true;
+    return false;
+}
+
+/* Whether s is one of the argc - 1 arguments (the pointer itself). */
+static bool is_argument(const char *s, int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++)
+        if (s == argv[i])
+            return true;
+    return false;
+}
+
+/* Whether some argument is exactly s. */
+static bool has_argument(const char *s, int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++)
+        if (strcmp(argv[i], s) == 0)
+            return true;
+    return false;
+}
+
+static void check_options(const cli_options *o, int argc, char **argv)
+{
+    if (!unset_or_in(o->width, 1, 65536) || !unset_or_in(o->height, 1, 65536) ||
+        !unset_or_in(o->spp, 1, 4096) || (o->spp != -1 && !is_square(o->spp)) ||
+        !unset_or_in(o->depth, 0, 64) || !unset_or_in(o->threads, 1, 1024) ||
+        !unset_or_in(o->seed, 0, 4294967295LL))
+        abort();
+    if (o->sampler != -1 && o->sampler != GLINT_SAMPLER_REGULAR && o->sampler != GLINT_SAMPLER_JITTERED)
+        abort();
+    if (o->scene && (!is_argument(o->scene, argc, argv) || (o->scene[0] == '-' && o->scene[1] != '\0')))
+        abort();
+    if (o->check && !o->scene)
+        abort();
+    if (o->output && (!is_argument(o->output, argc, argv) || o->output[0] == '\0'))
+        abort();
+    if (o->swaps < 0 || o->swaps > CLI_MAX_TEXTURE_SWAPS)
+        abort();
+    for (int i = 0; i < o->swaps; i++) {
+        const char *name = o->swap_name[i], *path = o->swap_path[i];
+        size_t len = strlen(name);
+        /* The name is what came before the first '=' of an argument, and
+         * the file all after it. */
+        if (len == 0 || len >= sizeof o->swap_buf[i] || strchr(name, '=') || path[0] == '\0' ||
+            !is_argument(path - len - 1, argc, argv) || path[-1] != '=' || memcmp(path - len - 1, name, len) != 0)
+            abort();
+    }
+}
+
+int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
+{
+    char *text = malloc(size + 1);
+    if (!text)
+        return 0;
+    memcpy(text, data, size);
+    text[size] = '\0';
+    char *argv[MAX_ARGS + 2] = {"glint"};
+    int argc = 1;
+    for (size_t at = 0; at < size && argc <= MAX_ARGS; at += strlen(text + at) + 1)
+        argv[argc++] = text + at;
+    argv[argc] = NULL;
+
+    cli_options o;
+    /* Garbage first, so that a field the parser forgets to set shows. */
+    memset(&o, 0xa5, sizeof o);
+    int code = cli_parse_args(argc, argv, &o);
+    if (code == -1)
+        check_options(&o, argc, argv);
+    else if (code == CLI_EXIT_OK) {
+        if (!has_argument("--help", argc, argv) && !has_argument("--version", argc, argv))
+            abort();
+    } else if (code != CLI_EXIT_USAGE)
+        abort();
+    free(text);
+    return 0;
+}
