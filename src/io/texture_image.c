@@ -273,6 +273,11 @@ static glint_status read_file(const char *path, unsigned char **data, size_t *si
         return read_error(fd, NULL, path, strerror(errno), err);
     if (!S_ISREG(st.st_mode))
         return read_error(fd, NULL, path, "not a regular file", err);
+    if ((unsigned long long)st.st_size > TEXTURE_IMAGE_MAX_FILE) {
+        close(fd);
+        return error_set(err, GLINT_ERR_INVALID, "texture '%s' is too large: %llu bytes (limit %llu)", path,
+                         (unsigned long long)st.st_size, (unsigned long long)TEXTURE_IMAGE_MAX_FILE);
+    }
     size_t want = (size_t)st.st_size, got = 0;
     unsigned char *buf = malloc(want ? want : 1);
     if (!buf) {

@@ -12,6 +12,10 @@
  * refused as too large before any pixel memory is allocated. */
 #define TEXTURE_IMAGE_MAX_SIDE 32768UL
 #define TEXTURE_IMAGE_MAX_PIXELS (1UL << 28)
+/* The largest texture file read, 2 GiB: twice the 16-bit RGBA pixels of the
+ * largest image, more than any PNG or JPEG of it takes. A file is read
+ * whole before it is decoded, so a larger one is refused unread. */
+#define TEXTURE_IMAGE_MAX_FILE (2ULL << 30)
 
 /* A decoded image: srgb[3 * (y * width + x) + c], top row first, each an
  * sRGB-encoded byte whose linear value is linear[byte]. The bytes are the

@@ -28,7 +28,7 @@ expect() {
     else
         passed=$((passed + 1))
     fi
-    if [ -n "$(ls -A "$work" | grep -v '^ro$' | grep -v '^old.png$' | grep -v '^not-an-image.jpg$' | grep -v '^huge.obj$')" ]; then
+    if [ -n "$(ls -A "$work" | grep -v '^ro$' | grep -v '^old.png$' | grep -v '^not-an-image.jpg$' | grep -v '^huge.obj$' | grep -v '^huge.png$')" ]; then
         echo "FAIL: glint $* left files: $(ls -A "$work")"
         failed=$((failed + 1))
     fi
@@ -53,6 +53,11 @@ if truncate -s "$mem" huge.obj 2>/dev/null; then
     expect 1 "glint: huge.obj: too large to import: $mem bytes, more than half of this machine's memory ($mem bytes)" -- "${small[@]}" huge.obj -o a.png
 fi
 rm -f huge.obj
+# So is a texture file larger than 2 GiB.
+if truncate -s 3G huge.png 2>/dev/null; then
+    expect 1 "glint: texture 'huge.png' is too large: 3221225472 bytes (limit 2147483648)" -- "${small[@]}" --texture moon=huge.png -o a.png
+fi
+rm -f huge.png
 
 # A failed run never touches an existing file.
 printf 'precious' > old.png
