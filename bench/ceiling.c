@@ -308,7 +308,7 @@ int main(int argc, char **argv)
     double times[100];
     uint64_t rays = 0;
     for (int run = 0; run < runs; run++) {
-        worker ws[MAX_THREADS] = {{0}};
+        worker ws[MAX_THREADS] = {0};
         atomic_init(&b.next, 0);
         double start = now();
         for (int i = 1; i < threads; i++) {

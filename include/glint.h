@@ -32,9 +32,13 @@ typedef enum glint_status {
     GLINT_ERR_CANCELLED    /* the caller's cancel flag stopped a render */
 } glint_status;
 
-/* A one-line, human-readable description of the last failure. */
+/* A one-line, human-readable description of the last failure, and its
+ * kind: the status the failing call returned (for calls that return a
+ * pointer or an index, the only way to tell, say, GLINT_ERR_NOMEM from
+ * GLINT_ERR_INVALID). */
 typedef struct glint_error {
     char message[512];
+    glint_status status;
 } glint_error;
 
 /* Returns the version string, e.g. "0.1.0". */

@@ -50,7 +50,7 @@ int main(int argc, char **argv)
     }
     const char *input = argv[1], *output = argv[2], *symbol = argv[3];
     texture_image img;
-    glint_error err = {{0}};
+    glint_error err = {0};
     if (texture_image_load_file(&img, input, &err)) {
         fprintf(stderr, "embed_image: %s\n", err.message);
         return 1;

@@ -475,10 +475,12 @@ glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *er
         free(a->mesh_scenes);
         free(a->flat_vertices);
         free(a);
-        return error_set(err, GLINT_ERR_EMBREE, "cannot create the Embree device: error %d",
-                         (int)rtcGetDeviceError(NULL));
+        enum RTCError code = rtcGetDeviceError(NULL);
+        if (code == RTC_ERROR_OUT_OF_MEMORY)
+            return error_set(err, GLINT_ERR_NOMEM, "cannot create the Embree device: out of memory");
+        return error_set(err, GLINT_ERR_EMBREE, "cannot create the Embree device: error %d", (int)code);
     }
-    glint_error embree_err = {{0}};
+    glint_error embree_err = {0};
     rtcSetDeviceErrorFunction(a->device, error_fn, &embree_err);
     a->scene = rtcNewScene(a->device);
     if (a->scene) {

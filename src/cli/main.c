@@ -78,29 +78,34 @@ static void print_problem(void *user, const char *message)
 /* Loads the scene file (or builds a scene around a model file), printing
  * every problem and a last line saying what became of the run; NULL after
  * reporting. */
-static glint_scene *load_scene(const char *path, const char *outcome)
+/* Loads the scene or model file at path; NULL after saying why, with *code
+ * the exit code: bad input, or an internal failure when memory ran out. */
+static glint_scene *load_scene(const char *path, const char *outcome, int *code)
 {
-    glint_error err = {{0}};
+    glint_error err = {0};
+    glint_scene *scene;
     if (glint_is_model_path(path)) {
-        glint_scene *model = glint_scene_for_model(path, &err);
-        if (!model)
+        scene = glint_scene_for_model(path, &err);
+        if (!scene)
             cli_complain(CLI_EXIT_BAD_INPUT, "%s", err.message);
-        return model;
+    } else {
+        int problems = 0;
+        glint_load_options lo = {.report = print_problem, .report_user = &problems, .max_errors = MAX_PROBLEMS};
+        scene = glint_scene_load_file(path, &lo, &err);
+        if (!scene)
+            cli_complain(CLI_EXIT_BAD_INPUT, "%s: %d problem%s%s; %s", path, problems, problems == 1 ? "" : "s",
+                         problems >= MAX_PROBLEMS ? " (stopped at the limit)" : "", outcome);
     }
-    int problems = 0;
-    glint_load_options lo = {.report = print_problem, .report_user = &problems, .max_errors = MAX_PROBLEMS};
-    glint_scene *scene = glint_scene_load_file(path, &lo, &err);
-    if (!scene)
-        cli_complain(CLI_EXIT_BAD_INPUT, "%s: %d problem%s%s; %s", path, problems, problems == 1 ? "" : "s",
-                 problems >= MAX_PROBLEMS ? " (stopped at the limit)" : "", outcome);
+    *code = err.status == GLINT_ERR_NOMEM ? CLI_EXIT_INTERNAL : CLI_EXIT_BAD_INPUT;
     return scene;
 }
 
 static int check_only(const cli_options *o)
 {
-    glint_scene *scene = load_scene(o->scene, "not valid");
+    int code;
+    glint_scene *scene = load_scene(o->scene, "not valid", &code);
     if (!scene)
-        return CLI_EXIT_BAD_INPUT;
+        return code;
     glint_scene_counts c = glint_scene_get_counts(scene);
     printf("%s: ok: %d textures, %d materials, %d shapes, %d lights", o->scene, c.textures, c.materials, c.shapes,
            c.lights);
@@ -118,7 +123,7 @@ static int interrupted_run(const cli_options *o, const glint_image *image, const
 {
     if (!o->partial)
         return cli_complain(CLI_EXIT_INTERRUPTED, "interrupted: nothing written");
-    glint_error err = {{0}};
+    glint_error err = {0};
     glint_status st = glint_image_write(image, output, &err);
     if (st)
         return cli_complain(exit_code_of(st), "interrupted, and the finished tiles were not written: %s", err.message);
@@ -128,10 +133,11 @@ static int interrupted_run(const cli_options *o, const glint_image *image, const
 
 static int run(const cli_options *o)
 {
-    glint_error err = {{0}};
-    glint_scene *scene = o->scene ? load_scene(o->scene, "nothing rendered") : glint_scene_seed_room(&err);
+    glint_error err = {0};
+    int code = CLI_EXIT_INTERNAL;
+    glint_scene *scene = o->scene ? load_scene(o->scene, "nothing rendered", &code) : glint_scene_seed_room(&err);
     if (!scene)
-        return o->scene ? CLI_EXIT_BAD_INPUT : cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
+        return o->scene ? code : cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
     const char *output = o->output ? o->output : glint_scene_get_output(scene) ? glint_scene_get_output(scene)
                                                                                  : "glint.png";
     glint_status st = glint_image_check_path(output, &err);
@@ -176,7 +182,7 @@ static int run(const cli_options *o)
     if (ro.progress && st == GLINT_ERR_CANCELLED)
         fputs("\r\033[K", stderr); /* the progress line stopped short */
     if (st == GLINT_ERR_CANCELLED) {
-        int code = interrupted_run(o, &image, &stats, output);
+        code = interrupted_run(o, &image, &stats, output);
         glint_image_free(&image);
         glint_scene_free(scene);
         return code;

@@ -10,6 +10,7 @@ void diag_raw(diag *d, glint_status status, const char *message)
         return;
     if (d->count == 0 && d->first) {
         snprintf(d->first->message, sizeof d->first->message, "%s", message);
+        d->first->status = status;
         d->first_status = status;
     }
     if (d->count < d->max && d->report)

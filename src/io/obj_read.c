@@ -947,7 +947,7 @@ static glint_status merge_block(obj_reader *r, block *b, glint_error *err)
  * parsed while the one before is merged. */
 static glint_status read_source(obj_reader *r, source *src, size_t size, glint_error *err)
 {
-    block blocks[2] = {{0}}, *b = &blocks[0], *next = &blocks[1];
+    block blocks[2] = {0}, *b = &blocks[0], *next = &blocks[1];
     glint_status s = fill(r, src, b, size, NULL, 0, err);
     if (!s)
         parse_start(r, b);

@@ -38,7 +38,7 @@ static void vnear_at(const char *file, int line, vec3 got, vec3 want)
 static shape make_at(const char *file, int line, glint_shape d, const glint_transform *m)
 {
     shape s;
-    glint_error err = {{0}};
+    glint_error err = {0};
     if (shape_init(&s, &d, m, 7, &err) != GLINT_OK) {
         print_error("shape_init: %s\n", err.message);
         _fail(file, line);
@@ -89,7 +89,7 @@ static void miss_at(const char *file, int line, const shape *s, ray r, double tm
 static void rejects_at(const char *file, int line, glint_shape d, const glint_transform *m, const char *message)
 {
     shape s;
-    glint_error err = {{0}};
+    glint_error err = {0};
     if (shape_init(&s, &d, m, 0, &err) != GLINT_ERR_INVALID || strcmp(err.message, message) != 0) {
         print_error("message \"%s\", want \"%s\"\n", err.message, message);
         _fail(file, line);

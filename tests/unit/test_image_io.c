@@ -368,7 +368,7 @@ static glint_image sample_image(void)
  * returns the file's bytes and *size: the caller frees them. */
 static unsigned char *write_and_read(glint_image *img, const char *name, char *path, size_t *size)
 {
-    glint_error err = {{0}};
+    glint_error err = {0};
     tmp_path(path, name);
     assert_int_equal(glint_image_write(img, path, &err), GLINT_OK);
     glint_image_free(img);
@@ -418,7 +418,7 @@ static void test_write_ppm_bytes(void **state)
 static void test_write_png_round_trip(void **state)
 {
     char path[PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     glint_image img = sample_image();
     size_t size;
     unsigned char *bytes = write_and_read(&img, "sample.png", path, &size);
@@ -482,7 +482,7 @@ static void test_write_png_decodes_to_srgb_bytes(void **state)
 static void test_write_extension_any_case(void **state)
 {
     char path[PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     glint_image img = sample_image();
     tmp_path(path, "UPPER.PNG");
     assert_int_equal(glint_image_check_path(path, &err), GLINT_OK);
@@ -505,7 +505,7 @@ static void test_write_extension_any_case(void **state)
 static void test_write_replaces_existing_file(void **state)
 {
     char path[PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     glint_image img = sample_image();
     tmp_path(path, "replaced.ppm");
     write_bytes(path, "old contents", 12);
@@ -521,7 +521,7 @@ static void test_write_replaces_existing_file(void **state)
 static void test_write_missing_directory(void **state)
 {
     char dir[PATH_SIZE], path[PATH_SIZE], want[2 * PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     glint_image img = sample_image();
     tmp_path(dir, "no-such-dir");
     tmp_path(path, "no-such-dir/out.png");
@@ -540,7 +540,7 @@ static void test_write_read_only_directory(void **state)
     if (geteuid() == 0)
         skip(); /* root writes into read-only directories anyway */
     char dir[PATH_SIZE], path[PATH_SIZE], want[2 * PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     glint_image img = sample_image();
     tmp_path(dir, "read-only");
     assert_int_equal(mkdir(dir, 0555), 0);
@@ -563,7 +563,7 @@ static void test_failed_write_keeps_existing_file(void **state)
 
     for (int i = 0; i < 2; i++) {
         char path[PATH_SIZE], want[2 * PATH_SIZE];
-        glint_error err = {{0}};
+        glint_error err = {0};
         tmp_path(path, names[i]);
         write_bytes(path, old, sizeof old);
         snprintf(want, sizeof want, "cannot write '%s': File too large", path);
@@ -593,7 +593,7 @@ static void test_failed_write_keeps_existing_file(void **state)
 static void test_write_over_directory(void **state)
 {
     char path[PATH_SIZE], want[2 * PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     glint_image img = sample_image();
     tmp_path(path, "a-directory.png");
     assert_int_equal(mkdir(path, 0755), 0);
@@ -612,7 +612,7 @@ static void test_write_over_directory(void **state)
 static void test_check_path_parent_is_file(void **state)
 {
     char file[PATH_SIZE], path[PATH_SIZE], want[2 * PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     tmp_path(file, "plain-file");
     write_bytes(file, "x", 1);
     tmp_path(path, "plain-file/out.png");
@@ -626,7 +626,7 @@ static void test_check_path_parent_is_file(void **state)
 
 static void test_unknown_extension(void **state)
 {
-    glint_error err = {{0}};
+    glint_error err = {0};
     glint_image img = sample_image();
     expect_error(glint_image_check_path("out.bmp", &err), &err, GLINT_ERR_INVALID,
                  "cannot write 'out.bmp': unknown image format (use .png or .ppm)");
@@ -642,7 +642,7 @@ static void test_unknown_extension(void **state)
 
 static void test_write_empty_image(void **state)
 {
-    glint_error err = {{0}};
+    glint_error err = {0};
     glint_image empty = {0, 0, NULL};
     expect_error(glint_image_write(&empty, "empty.png", &err), &err, GLINT_ERR_INVALID,
                  "cannot write 'empty.png': the image is empty");
@@ -656,7 +656,7 @@ static void test_write_png_too_large(void **state)
     static const int sizes[2][2] = {{1000001, 1}, {1, 1000001}};
     for (int k = 0; k < 2; k++) {
         char path[PATH_SIZE], want[2 * PATH_SIZE];
-        glint_error err = {{0}};
+        glint_error err = {0};
         glint_image img = {sizes[k][0], sizes[k][1], calloc(3 * 1000001, sizeof(float))};
         assert_non_null(img.pixels);
         tmp_path(path, "large.png");
@@ -794,7 +794,7 @@ static void test_image_free(void **state)
 static void test_load_missing_file(void **state)
 {
     char path[PATH_SIZE], want[2 * PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex = {.width = 1, .height = 1};
     tmp_path(path, "missing.png");
     snprintf(want, sizeof want, "cannot open texture '%s': No such file or directory", path);
@@ -806,7 +806,7 @@ static void test_load_missing_file(void **state)
 static void test_load_directory(void **state)
 {
     char want[2 * PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex;
     snprintf(want, sizeof want, "cannot read texture '%s': not a regular file", tmp_dir);
     expect_error(texture_image_load_file(&tex, tmp_dir, &err), &err, GLINT_ERR_IO, want);
@@ -815,7 +815,7 @@ static void test_load_directory(void **state)
 static void test_load_text_file(void **state)
 {
     char path[PATH_SIZE], want[2 * PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex;
     tmp_path(path, "notes.png");
     write_bytes(path, "just some text\n", 15);
@@ -834,7 +834,7 @@ static void test_load_text_file(void **state)
 static void test_load_truncated_png(void **state)
 {
     char path[PATH_SIZE], cut[PATH_SIZE], want[2 * PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     glint_image img = noise_image(16, 16);
     size_t size;
     unsigned char *bytes = write_and_read(&img, "whole.png", path, &size);
@@ -852,7 +852,7 @@ static void test_load_truncated_png(void **state)
 static void test_load_png_bad_crc(void **state)
 {
     unsigned char buf[64];
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex;
     size_t n = forge_png(buf, 4, 4);
     buf[29] ^= 0xff; /* IHDR's CRC */
@@ -863,7 +863,7 @@ static void test_load_png_bad_crc(void **state)
 static void test_load_oversized_png(void **state)
 {
     unsigned char buf[64];
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex;
     /* Under ASan an attempt to allocate 120 GB would abort the test. */
     size_t n = forge_png(buf, 100000, 100000);
@@ -888,7 +888,7 @@ static void test_load_oversized_png(void **state)
 static void test_load_png_chunk_past_end(void **state)
 {
     unsigned char buf[128], pixel[4] = {0, 200, 100, 50}, idat[64];
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex;
     forge_png(buf, 1, 1);
     size_t n = 33; /* the signature and IHDR */
@@ -914,7 +914,7 @@ static void test_load_grey_png(void **state)
 {
     static const unsigned char grey[4] = {0, 64, 128, 255};
     char path[PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex;
     tmp_path(path, "grey.png");
     write_png8(path, 2, 2, PNG_FORMAT_GRAY, grey, NULL, 0);
@@ -934,7 +934,7 @@ static void test_load_palette_and_alpha_png(void **state)
     /* the colour under a fully transparent pixel is kept, not darkened */
     static const unsigned char rgba[2 * 4] = {200, 100, 50, 0, 1, 2, 3, 255};
     char path[PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex;
 
     tmp_path(path, "palette.png");
@@ -962,7 +962,7 @@ static void test_load_16bit_png(void **state)
         0x0101, 0xfefe, 0x7fff,  0x0000, 0xffff, 0x3333,
     };
     char path[PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex;
     tmp_path(path, "deep.png");
     write_png16(path, 2, 2, rgb);
@@ -980,7 +980,7 @@ static void test_load_jpeg_memory(void **state)
 {
     static const unsigned char colour[3] = {200, 100, 50};
     static const unsigned char grey[1] = {128};
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex;
     unsigned long size;
 
@@ -1011,7 +1011,7 @@ static void test_load_jpeg_memory(void **state)
 static void test_load_truncated_jpeg(void **state)
 {
     char path[PATH_SIZE], want[2 * PATH_SIZE];
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex;
     unsigned long size;
     unsigned char *pixels = malloc(64 * 64 * 3);
@@ -1043,7 +1043,7 @@ static void test_load_refused_jpegs(void **state)
 {
     static const unsigned char cmyk[4] = {0, 0, 0, 0};
     static const unsigned char black[1] = {0};
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex;
     unsigned long size;
 
@@ -1074,7 +1074,7 @@ static void test_load_moon(void **state)
     snprintf(path, sizeof path, "%s/moon.jpg", data);
     if (access(path, R_OK) != 0)
         skip();
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex;
     assert_int_equal(texture_image_load_file(&tex, path, &err), GLINT_OK);
     assert_int_equal(tex.width, 1024);
@@ -1103,7 +1103,7 @@ static void test_embedded_moon_is_the_decoded_file(void **state)
         skip();
     char path[PATH_SIZE];
     snprintf(path, sizeof path, "%s/assets/moon.jpg", source);
-    glint_error err = {{0}};
+    glint_error err = {0};
     texture_image tex;
     assert_int_equal(texture_image_load_file(&tex, path, &err), GLINT_OK);
     assert_int_equal(glint_asset_moon_width, 1024);

@@ -83,7 +83,7 @@ static glint_scene *new_scene(void)
 /* Imports tmp_dir/name, which must succeed, and returns its mesh. */
 static const mesh *import_ok(glint_scene *s, const char *name, const glint_import_options *o)
 {
-    glint_error err = {{0}};
+    glint_error err = {0};
     int m = import(s, name, o, &err);
     if (m < 0)
         fail_msg("importing %s: %s", name, err.message);
@@ -109,7 +109,7 @@ static int triangle_material(const mesh *m, int t)
 static void refused_with(const char *name, const glint_import_options *o, const char *sep, const char *rest)
 {
     glint_scene *s = new_scene();
-    glint_error err = {{0}};
+    glint_error err = {0};
     char path[PATH_SIZE], want[PATH_SIZE + 600];
     tmp_path(path, name);
     assert_int_equal(glint_scene_import_mesh(s, path, o, &err), -1);
@@ -145,7 +145,7 @@ static void expect_text_refused_at(const char *name, const char *text, const cha
 static void expect_refused_by_assimp(const char *name)
 {
     glint_scene *s = new_scene();
-    glint_error err = {{0}};
+    glint_error err = {0};
     char path[PATH_SIZE], prefix[PATH_SIZE + 4];
     tmp_path(path, name);
     assert_int_equal(glint_scene_import_mesh(s, path, NULL, &err), -1);
@@ -324,7 +324,7 @@ static const mesh *import_shared(glint_scene *s, const char *name)
         glint_scene_free(s); /* skip() leaves the test here */
         skip();
     }
-    glint_error err = {{0}};
+    glint_error err = {0};
     int m = glint_scene_import_mesh(s, path, NULL, &err);
     if (m < 0)
         fail_msg("importing %s: %s", path, err.message);
@@ -618,7 +618,7 @@ static void expect_red_over_blue(glint_scene *s, int mesh_index, glint_vec3 eye)
     assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
     glint_camera cam = {eye, {eye.x, eye.y, eye.z - 1}, {0, 1, 0}, 40};
     assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
-    glint_error err = {{0}};
+    glint_error err = {0};
     assert_true(glint_scene_add_instance(s, mesh_index, -1, NULL, &err) >= 0);
     glint_image img;
     if (glint_render(s, NULL, &img, NULL, &err))
@@ -1282,7 +1282,7 @@ static void test_mtl_errors(void **state)
         write_text("bad.mtl", cases[i].mtl);
         write_text("bad.obj", "mtllib bad.mtl\n" TRI3 "usemtl a\nf 1 2 3\n");
         glint_scene *s = new_scene();
-        glint_error err = {{0}};
+        glint_error err = {0};
         assert_int_equal(import(s, "bad.obj", NULL, &err), -1);
         snprintf(where, sizeof where, "%s/bad.mtl:%s", tmp_dir, cases[i].where);
         assert_string_equal(err.message, where);
@@ -1354,7 +1354,7 @@ static void test_obj_chunks(void **state)
     assert_true(size > 3 * (1 << 20));
     write_bytes("grid.obj", text, size);
     glint_scene *s = new_scene();
-    glint_error err = {{0}};
+    glint_error err = {0};
     const mesh *a = import_ok(s, "grid.obj", NULL);
     assert_int_equal(glint_scene_import_mesh_memory(s, text, size, "grid.obj", NULL, &err), 1);
     a = &s->meshes[0];
@@ -1422,7 +1422,7 @@ static void expect_same_model(const obj_model *m, const obj_model *one)
 static void expect_split_same(const char *text, size_t size, const size_t *pieces, size_t piece_count)
 {
     obj_model one;
-    glint_error one_err = {{0}};
+    glint_error one_err = {0};
     glint_status one_s = obj_read_memory_split(&one, (const unsigned char *)text, size, "split.obj", 1,
                                                (size_t)1 << 40, &one_err);
     char path[PATH_SIZE];
@@ -1432,7 +1432,7 @@ static void expect_split_same(const char *text, size_t size, const size_t *piece
         for (size_t k = 0; k < piece_count; k++) {
             for (int from_file = 0; from_file < 2; from_file++) {
                 obj_model m;
-                glint_error err = {{0}};
+                glint_error err = {0};
                 glint_status s;
                 if (from_file) {
                     int fd = open(path, O_RDONLY);
@@ -1501,7 +1501,7 @@ static void test_obj_corner_ids_in_order(void **state)
                                          {1, -1, -1}, {3, -1, -1}, {0, -1, 1}, {1, -1, 2}, {2, -1, 0}};
     static const uint32_t triangles[] = {0, 1, 2, 1, 3, 2, 3, 1, 2, 4, 5, 6, 7, 8, 9};
     obj_model m;
-    glint_error err = {{0}};
+    glint_error err = {0};
     assert_int_equal(obj_read_memory_split(&m, (const unsigned char *)text, strlen(text), "ids.obj", 1,
                                            (size_t)1 << 40, &err),
                      GLINT_OK);
@@ -1673,7 +1673,7 @@ static void test_glb_embedded_texture(void **state)
 static void test_memory_imports(void **state)
 {
     glint_scene *s = new_scene();
-    glint_error err = {{0}};
+    glint_error err = {0};
     unsigned char glb[4096];
     size_t n = write_glb(NULL, textured_material, glb, sizeof glb);
     int m = glint_scene_import_mesh_memory(s, glb, n, "models/Painted.GLB", NULL, &err);
@@ -1695,7 +1695,7 @@ static void test_memory_imports(void **state)
 static void test_memory_refusals(void **state)
 {
     glint_scene *s = new_scene();
-    glint_error err = {{0}};
+    glint_error err = {0};
     assert_int_equal(glint_scene_import_mesh_memory(s, "x", 1, NULL, NULL, &err), -1);
     assert_string_equal(err.message, "import needs a scene, a name and data");
     assert_int_equal(glint_scene_import_mesh_memory(s, NULL, 5, "a.obj", NULL, &err), -1);

@@ -163,7 +163,7 @@ static glint_scene *load_good_named(const char *yaml, const char *name)
 {
     report_log log = {0};
     glint_load_options o = {.report = log_report, .report_user = &log};
-    glint_error err = {{0}};
+    glint_error err = {0};
     glint_scene *s = glint_scene_load_memory(yaml, strlen(yaml), name, &o, &err);
     if (!s)
         fail_msg("the scene did not load (%d problems):\n%s", log.count, log.all);
@@ -182,7 +182,7 @@ static glint_scene *load_good_file(const char *name)
     tmp_path(path, name);
     report_log log = {0};
     glint_load_options o = {.report = log_report, .report_user = &log};
-    glint_error err = {{0}};
+    glint_error err = {0};
     glint_scene *s = glint_scene_load_file(path, &o, &err);
     if (!s)
         fail_msg("%s did not load (%d problems):\n%s", path, log.count, log.all);
@@ -223,7 +223,7 @@ static glint_image render(const glint_scene *s)
 {
     glint_render_options o = {.threads = 1};
     glint_image img;
-    glint_error err = {{0}};
+    glint_error err = {0};
     if (glint_render(s, &o, &img, NULL, &err))
         fail_msg("render failed: %s", err.message);
     return img;
@@ -1776,7 +1776,7 @@ static void test_bad_scene(void **state)
     with_tmp(b->yaml, yaml, sizeof yaml);
     with_tmp(b->first, want, sizeof want);
     report_log log = {0};
-    glint_error err = {{0}};
+    glint_error err = {0};
     load_bad(yaml, 0, &log, &err);
     if (strcmp(log.first, want) != 0 || log.count != b->problems)
         fail_msg("%s:\n%s\nexpected %d problem(s), first:\n  %s\ngot %d:\n%s", b->name, yaml, b->problems, want,
@@ -1788,7 +1788,7 @@ static void test_bad_scene(void **state)
 static void test_problems_without_a_report(void **state)
 {
     const char *yaml = "settings:\n  width: 0\n  depth: 99\n";
-    glint_error err = {{0}};
+    glint_error err = {0};
     glint_load_options o = {0};
     assert_null(glint_scene_load_memory(yaml, strlen(yaml), "bad.yaml", &o, &err));
     assert_string_equal(err.message, "bad.yaml:2:10: 'width' must be a whole number from 1 to 65536, got '0'");
@@ -1805,7 +1805,7 @@ static void test_problems_without_a_report(void **state)
 static void test_every_problem_in_order(void **state)
 {
     report_log log = {0};
-    glint_error err = {{0}};
+    glint_error err = {0};
     load_bad("settings:\n"
              "  width: 0\n"
              "  sampler: jitterd\n"
@@ -1838,7 +1838,7 @@ static void test_max_errors(void **state)
     for (int i = 1; i <= 25; i++)
         snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "unknown%d: %d\n", i, i);
     report_log log = {0};
-    glint_error err = {{0}};
+    glint_error err = {0};
     load_bad(yaml, 0, &log, &err);
     assert_int_equal(log.count, 20);
     assert_string_equal(log.first, "bad.yaml:2:1: unknown key 'unknown1' in the scene");
@@ -1879,7 +1879,7 @@ static void test_include_cycle(void **state)
     write_tmp("cycle/a.yaml", "glint: 1\ninclude: b.yaml\n");
     write_tmp("cycle/b.yaml", "include: [a.yaml]\n");
     report_log log = {0};
-    glint_error err = {{0}};
+    glint_error err = {0};
     load_bad_file("cycle/a.yaml", &log, &err);
     char want[PATH_SIZE + 100];
     snprintf(want, sizeof want, "%s/cycle/b.yaml:1:11: include cycle: a.yaml -> b.yaml -> a.yaml", tmp_dir);
@@ -1910,7 +1910,7 @@ static void test_include_fan_out_is_bounded(void **state)
     strcat(list, "]\n");
     write_tmp("fan/g.yaml", list);
     report_log log = {0};
-    glint_error err = {{0}};
+    glint_error err = {0};
     load_bad_file("fan/g.yaml", &log, &err);
     char want[PATH_SIZE + 100];
     snprintf(want, sizeof want, "%s/fan/f.yaml:1:", tmp_dir);
@@ -1926,7 +1926,7 @@ static void test_include_twice(void **state)
     write_tmp("twice/main.yaml", "include: [mats.yaml, mats.yaml]\n");
     write_tmp("twice/mats.yaml", "materials:\n  m: {}\n");
     report_log log = {0};
-    glint_error err = {{0}};
+    glint_error err = {0};
     load_bad_file("twice/main.yaml", &log, &err);
     char want[PATH_SIZE + 100];
     snprintf(want, sizeof want, "%s/twice/mats.yaml:2:6: material 'm' is defined twice", tmp_dir);
@@ -1944,7 +1944,7 @@ static void test_includes_nested_too_deep(void **state)
     }
     write_tmp("deep/f20.yaml", "glint: 1\n");
     report_log log = {0};
-    glint_error err = {{0}};
+    glint_error err = {0};
     load_bad_file("deep/f0.yaml", &log, &err);
     char want[PATH_SIZE + 100];
     snprintf(want, sizeof want, "%s/deep/f15.yaml:1:10: includes nested too deep (limit 16)", tmp_dir);
@@ -1955,12 +1955,31 @@ static void test_includes_nested_too_deep(void **state)
 static void test_missing_scene_file(void **state)
 {
     report_log log = {0};
-    glint_error err = {{0}};
+    glint_error err = {0};
     load_bad_file("no-such-scene.yaml", &log, &err);
     char want[PATH_SIZE + 100];
     snprintf(want, sizeof want, "cannot read scene '%s/no-such-scene.yaml': No such file or directory", tmp_dir);
     assert_string_equal(log.first, want);
     assert_int_equal(log.count, 1);
+    /* The error carries the kind of failure too: the file could not be read. */
+    assert_int_equal(err.status, GLINT_ERR_IO);
+}
+
+/* A refused scene's error says what kind of failure its first problem was,
+ * as the CLI needs to tell bad input from memory running out. */
+static void test_error_status_of_first_problem(void **state)
+{
+    glint_error err = {0};
+    glint_load_options lo = {0};
+    assert_null(glint_scene_load_memory("objects: [", 10, "bad.yaml", &lo, &err));
+    assert_int_equal(err.status, GLINT_ERR_INVALID);
+    err.status = GLINT_OK;
+    glint_scene *s = glint_scene_new();
+    assert_int_equal(glint_scene_add_shape(s, &(glint_shape){.kind = GLINT_SHAPE_SPHERE, .radius = 1}, 3, NULL, &err),
+                     -1);
+    assert_int_equal(err.status, GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "material 3 does not exist");
+    glint_scene_free(s);
 }
 
 /* Groups nest through aliases without nesting in the text. */
@@ -1971,7 +1990,7 @@ static void test_groups_nested_too_deep(void **state)
         snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "  - &g%d {type: group, objects: [*g%d]}\n", i,
                  i - 1);
     report_log log = {0};
-    glint_error err = {{0}};
+    glint_error err = {0};
     load_bad(yaml, 0, &log, &err);
     assert_string_equal(log.first, "bad.yaml:4:5: groups nested too deep (limit 32)");
     assert_int_equal(log.count, 1);
@@ -1997,7 +2016,7 @@ static long peak_kib(void)
 static void check_alias_bomb(const char *yaml, const char *first)
 {
     report_log log = {0};
-    glint_error err = {{0}};
+    glint_error err = {0};
     long before = peak_kib();
     double start = seconds_now();
     load_bad(yaml, 0, &log, &err);
@@ -2050,7 +2069,7 @@ static void test_failed_texture_is_reported_once(void **state)
     };
     for (size_t i = 0; i < COUNT(yamls); i++) {
         report_log log = {0};
-        glint_error err = {{0}};
+        glint_error err = {0};
         load_bad(yamls[i], 0, &log, &err);
         assert_string_equal(log.first, firsts[i]);
         if (log.count != 1)
@@ -2062,7 +2081,7 @@ static void test_failed_texture_is_reported_once(void **state)
 static void test_merge_list_of_non_maps(void **state)
 {
     report_log log = {0};
-    glint_error err = {{0}};
+    glint_error err = {0};
     load_bad("materials:\n  b: &b {color: [1, 0, 0]}\n  m: {<<: [3, *b]}\n", 0, &log, &err);
     assert_string_equal(log.first, "bad.yaml:3:12: a merge key (<<) needs a map or a list of maps");
     assert_int_equal(log.count, 1);
@@ -2075,7 +2094,7 @@ static void test_merge_too_deep_says_so(void **state)
     for (int i = 1; i <= 18; i++)
         snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "  m%d: &m%d {<<: *m%d}\n", i, i, i - 1);
     report_log log = {0};
-    glint_error err = {{0}};
+    glint_error err = {0};
     load_bad(yaml, 0, &log, &err);
     if (strstr(log.all, "needs a map") || !strstr(log.first, "deep"))
         fail_msg("expected a message about depth, got %d:\n%s", log.count, log.all);
@@ -2120,6 +2139,7 @@ int main(void)
         cmocka_unit_test(test_include_twice),
         cmocka_unit_test(test_includes_nested_too_deep),
         cmocka_unit_test(test_missing_scene_file),
+        cmocka_unit_test(test_error_status_of_first_problem),
         cmocka_unit_test(test_groups_nested_too_deep),
         cmocka_unit_test(test_alias_bomb_of_objects),
         cmocka_unit_test(test_alias_bomb_of_lights),
