@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Allocation failures are reported, never used: glint runs under address-
+# space limits (ulimit -v) from the least it starts with to more than it
+# needs, on the seed room and on a generated model, and each run either
+# finishes or says "out of memory" and exits 5, writing nothing. One thread:
+# with more, TBB inside Embree can abort in a narrow band of limits
+# (docs/robustness.md, "Known limit"). Skipped under AddressSanitizer,
+# which needs far more address space than any such limit.
+# Usage: memory.sh PATH/TO/glint
+set -u
+GLINT=$1
+if ldd "$GLINT" 2>/dev/null | grep -q libasan; then
+    echo "skipped: built with AddressSanitizer"
+    exit 0
+fi
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+cd "$work" || exit 1
+passed=0
+failed=0
+
+# A 180,000-triangle grid, so that importing it allocates a few megabytes.
+awk 'BEGIN {
+    n = 300
+    for (j = 0; j <= n; j++)
+        for (i = 0; i <= n; i++)
+            printf "v %f %f %f\n", i / n, 0.1 * sin(i * 0.1) * cos(j * 0.1), j / n
+    for (j = 0; j < n; j++)
+        for (i = 0; i < n; i++) {
+            a = j * (n + 1) + i + 1; b = a + 1; c = a + n + 1; d = c + 1
+            printf "f %d %d %d\nf %d %d %d\n", a, c, b, b, c, d
+        }
+}' >grid.obj
+
+# The least limit (in KiB) glint starts under: below it the dynamic loader
+# itself fails, before glint's code runs.
+start=40000
+until (ulimit -v "$start" && "$GLINT" --version >/dev/null 2>&1); do
+    start=$((start + 10000))
+    [ "$start" -lt 1000000 ] || { echo "FAIL: glint does not start under 1 GB"; exit 1; }
+done
+
+# run LIMIT ARGS...: one run under LIMIT KiB; a finished render or a clean
+# out-of-memory failure pass, anything else (a signal, another message) fails.
+run() {
+    local limit=$1
+    shift
+    rm -f out.png
+    (ulimit -v "$limit" && exec "$GLINT" "$@" --threads 1 -q -o out.png) 2>err.txt
+    local status=$? first
+    first=$(head -n 1 err.txt)
+    if [ "$status" -eq 0 ] && [ -s out.png ]; then
+        passed=$((passed + 1))
+    elif [ "$status" -eq 5 ] && [[ "$first" =~ ^glint:\ .*out\ of\ memory ]] && [ ! -e out.png ]; then
+        passed=$((passed + 1))
+    else
+        echo "FAIL: ulimit -v $limit: glint $*: exit $status: $(tr '\n' '|' <err.txt)"
+        failed=$((failed + 1))
+    fi
+}
+
+finished=0
+for ((limit = start; limit <= start + 400000; limit += 20000)); do
+    run "$limit" -w 1500 -h 1500 --spp 1
+    run "$limit" grid.obj -w 600 -h 400 --spp 1
+    [ -s out.png ] && finished=$((finished + 1))
+done
+# The sweep must reach limits where the renders finish, or it tested nothing.
+[ "$finished" -gt 0 ] || { echo "FAIL: no render finished under any limit"; failed=$((failed + 1)); }
+echo "$passed passed, $failed failed (limits from $start KiB)"
+[ "$failed" -eq 0 ]
