@@ -35,6 +35,7 @@ struct accel {
     int plane_count;
     bool instanced;           /* some mesh is placed through Embree instances */
     const bool *shape_opaque; /* per shape, or NULL */
+    const volatile int *cancel; /* the build stops once it is set, or NULL */
 };
 
 /* True when shape `index` is known to block all light. */
@@ -317,8 +318,24 @@ static void triangle_occlusion_filter(const struct RTCFilterFunctionNArguments *
 static void error_fn(void *user, enum RTCError code, const char *str)
 {
     glint_error *err = user;
-    if (err && err->message[0] == '\0')
+    if (!err || err->message[0] != '\0')
+        return;
+    if (code == RTC_ERROR_CANCELLED)
+        error_set(err, GLINT_ERR_CANCELLED, "render cancelled");
+    else if (code == RTC_ERROR_OUT_OF_MEMORY)
+        error_set(err, GLINT_ERR_NOMEM, "out of memory building the accelerator");
+    else
         error_set(err, GLINT_ERR_EMBREE, "embree error %d: %s", (int)code, str ? str : "");
+}
+
+/* Embree's build progress: false (stop building) once the caller's cancel
+ * flag is set, so an interrupted render does not wait for a large mesh's
+ * BVH. */
+static bool build_progress(void *user, double done)
+{
+    (void)done;
+    const accel *a = user;
+    return !(a->cancel && *a->cancel);
 }
 
 /* Sorts the shapes into planes, which the queries test themselves (an
@@ -372,6 +389,7 @@ static RTCGeometry triangles(accel *a, const mesh *m, const float *positions, bo
 static RTCScene mesh_scene(accel *a, const mesh *m, bool opaque)
 {
     RTCScene s = rtcNewScene(a->device);
+    rtcSetSceneProgressMonitorFunction(s, build_progress, a);
     RTCGeometry g = triangles(a, m, m->positions, opaque);
     rtcAttachGeometry(s, g);
     rtcReleaseGeometry(g);
@@ -467,6 +485,7 @@ glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *er
     a->shapes = geo->shapes;
     a->shape_count = geo->shape_count;
     a->shape_opaque = geo->shape_opaque;
+    a->cancel = geo->cancel;
     char config[32] = "";
     if (geo->threads > 0)
         snprintf(config, sizeof config, "threads=%d", geo->threads);
@@ -484,6 +503,7 @@ glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *er
     rtcSetDeviceErrorFunction(a->device, error_fn, &embree_err);
     a->scene = rtcNewScene(a->device);
     if (a->scene) {
+        rtcSetSceneProgressMonitorFunction(a->scene, build_progress, a);
         if (!sort_shapes(a) || !add_meshes(a, geo)) {
             rtcSetDeviceErrorFunction(a->device, NULL, NULL);
             accel_free(a);
@@ -498,7 +518,7 @@ glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *er
         accel_free(a);
         if (!embree_err.message[0])
             error_set(&embree_err, GLINT_ERR_EMBREE, "cannot create the Embree scene");
-        return error_set(err, GLINT_ERR_EMBREE, "%s", embree_err.message);
+        return error_set(err, embree_err.status, "%s", embree_err.message);
     }
     *out = a;
     return GLINT_OK;

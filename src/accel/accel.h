@@ -40,6 +40,9 @@ typedef struct accel_geometry {
      * mesh's triangles need no filter callback at all. */
     const bool *shape_opaque;
     const bool *instance_opaque;
+    /* When non-NULL and set non-zero, the build stops early: accel_build
+     * then returns GLINT_ERR_CANCELLED. */
+    const volatile int *cancel;
 } accel_geometry;
 
 /* Builds the Embree device and scenes: one user geometry for every shape;

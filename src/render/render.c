@@ -353,26 +353,30 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
         st = error_set(err, GLINT_ERR_NOMEM, "out of memory building the accelerator");
     } else {
         accel_geometry geo = {build_threads, scene->shapes, scene->shape_count, scene->meshes, scene->mesh_count,
-                              scene->instances, scene->instance_count, shape_opaque, instance_opaque};
+                              scene->instances, scene->instance_count, shape_opaque, instance_opaque, o->cancel};
         st = accel_build(&acc, &geo, err);
     }
-    if (st) {
+    /* A build the cancel flag stopped goes on as a render that finished no
+     * tile. */
+    if (st && st != GLINT_ERR_CANCELLED) {
         free(shape_opaque);
         free(instance_opaque);
         free(j.pixels);
         free(j.finished);
         return st;
     }
-    j.acc = acc;
-    pthread_mutex_init(&j.progress_lock, NULL);
     uint64_t rays = 0, nan_samples = 0;
-    st = run_workers(&j, threads, &rays, &nan_samples, err);
-    pthread_mutex_destroy(&j.progress_lock);
-    accel_free(acc);
+    if (!st) {
+        j.acc = acc;
+        pthread_mutex_init(&j.progress_lock, NULL);
+        st = run_workers(&j, threads, &rays, &nan_samples, err);
+        pthread_mutex_destroy(&j.progress_lock);
+        accel_free(acc);
+    }
     free(shape_opaque);
     free(instance_opaque);
     int finished = atomic_load(&j.tiles_finished);
-    bool stopped = !st && cancelled(&j);
+    bool stopped = (!st || st == GLINT_ERR_CANCELLED) && cancelled(&j);
     if (stopped)
         st = error_set(err, GLINT_ERR_CANCELLED, "render cancelled");
     if (st && !(stopped && j.finished)) {

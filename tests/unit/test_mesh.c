@@ -228,6 +228,36 @@ static long accel_memory(glint_scene *s, int count)
     return used;
 }
 
+/* A set cancel flag stops the BVH build of a large mesh, placed once or
+ * through instances, and the build reports it as a cancelled render; with
+ * the flag clear the same scene builds. */
+static void test_build_stops_when_cancelled(void **state)
+{
+    glint_scene *s = new_scene(8, 8, 30);
+    sphere_mesh sm = make_sphere(256, 256);
+    glint_mesh_data md = {sm.positions, NULL, NULL, sm.vertices, sm.indices, sm.triangles, NULL, flat(s, 1, 1, 1)};
+    int mesh_id = glint_scene_add_mesh(s, NULL, &md, NULL);
+    free(sm.positions);
+    free(sm.indices);
+    for (int i = 0; i < 2; i++) {
+        glint_transform t = glint_transform_translate(glint_transform_identity(), 3.0 * i, 0, -50);
+        assert_true(glint_scene_add_instance(s, mesh_id, -1, &t, NULL) >= 0);
+    }
+    volatile int cancel = 1;
+    accel *a = NULL;
+    glint_error err = {0};
+    accel_geometry g = {.meshes = s->meshes, .mesh_count = s->mesh_count, .instances = s->instances,
+                        .instance_count = s->instance_count, .cancel = &cancel};
+    assert_int_equal(accel_build(&a, &g, &err), GLINT_ERR_CANCELLED);
+    assert_null(a);
+    assert_string_equal(err.message, "render cancelled");
+    assert_int_equal(err.status, GLINT_ERR_CANCELLED);
+    cancel = 0;
+    assert_int_equal(accel_build(&a, &g, &err), GLINT_OK);
+    accel_free(a);
+    glint_scene_free(s);
+}
+
 static void test_instances_share_their_mesh(void **state)
 {
     glint_scene *one = new_scene(8, 8, 30), *many = new_scene(8, 8, 30);
@@ -480,6 +510,7 @@ int main(void)
         cmocka_unit_test(test_tessellated_sphere_matches_analytic),
         cmocka_unit_test(test_quad_split_either_way_gives_the_same_image),
         cmocka_unit_test(test_instances_share_their_mesh),
+        cmocka_unit_test(test_build_stops_when_cancelled),
         cmocka_unit_test(test_placed_as_it_is_skips_the_identity_exactly),
         cmocka_unit_test(test_opaque_and_see_through_meshes_cast_their_shadows),
         cmocka_unit_test(test_placed_once_or_instanced_look_the_same),
