@@ -13,11 +13,32 @@
  * on, sig_atomic_t is that int. */
 _Static_assert(sizeof(sig_atomic_t) == sizeof(int), "sig_atomic_t must be an int");
 static volatile sig_atomic_t interrupted;
+/* Whether the render has begun: before, nothing can be cancelled gently
+ * (reading a large model does not look at a flag), and nothing has been
+ * written, so a signal ends glint at once, with the same message and exit
+ * code as an interrupted render. */
+static volatile sig_atomic_t rendering;
 
 static void on_signal(int sig)
 {
     (void)sig;
     interrupted = 1;
+    if (!rendering) {
+        static const char message[] = "glint: interrupted: nothing written\n";
+        ssize_t ignored = write(STDERR_FILENO, message, sizeof message - 1);
+        (void)ignored;
+        _exit(CLI_EXIT_INTERRUPTED);
+    }
+}
+
+/* SIGINT and SIGTERM go to on_signal from here on. */
+static void catch_signals(void)
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    sigaction(SIGINT, &sa, NULL);
+    sigaction(SIGTERM, &sa, NULL);
 }
 
 static int exit_code_of(glint_status s)
@@ -161,13 +182,9 @@ static int run(const cli_options *o)
         return cli_complain(CLI_EXIT_USAGE, "%s", err.message);
     }
 
-    /* From here on a signal cancels the render, which then writes nothing;
-     * before, the default action ends glint, which has written nothing yet. */
-    struct sigaction sa;
-    memset(&sa, 0, sizeof sa);
-    sa.sa_handler = on_signal;
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
+    /* From here on a signal cancels the render (its BVH build included),
+     * which then writes nothing, or with --partial its finished tiles. */
+    rendering = 1;
     progress prog = {.last_print = -1};
     clock_gettime(CLOCK_MONOTONIC, &prog.start);
     glint_render_options ro = {.threads = o->threads > 0 ? (int)o->threads : 0,
@@ -217,5 +234,6 @@ int main(int argc, char **argv)
     int code = cli_parse_args(argc, argv, &o);
     if (code >= 0)
         return code;
+    catch_signals();
     return o.check ? check_only(&o) : run(&o);
 }

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Interrupting a render: SIGINT or SIGTERM stops glint within a second with
 # exit code 4, writes nothing and leaves the file already at the output path
-# as it was; with --partial it writes the finished tiles as a valid PNG of
-# the whole size, and still exits 4.
+# as it was, whether it comes while a model loads, while its BVH builds or
+# while the image renders; with --partial it writes the finished tiles as a
+# valid PNG of the whole size, and still exits 4.
 # Usage: interrupt.sh PATH/TO/glint
 set -u
 GLINT=$1
@@ -47,6 +48,38 @@ for sig in INT TERM; do
     [ "$(ls -A | sort | tr '\n' ' ')" = "err.txt out.png " ] || fail "SIG$sig: left $(ls -A)"
     [ "$failed" -eq "$before" ] && passed=$((passed + 1))
 done
+
+# While a large model loads, or while its BVH builds, a signal ends glint
+# the same way: exit 4, the same message, nothing written, within a second.
+awk 'BEGIN {
+    n = 600
+    for (j = 0; j <= n; j++)
+        for (i = 0; i <= n; i++)
+            printf "v %d %d %d\n", i, (i * j) % 7, j
+    for (j = 0; j < n; j++)
+        for (i = 0; i < n; i++) {
+            a = j * (n + 1) + i + 1; b = a + 1; c = a + n + 1; d = c + 1
+            printf "f %d %d %d\nf %d %d %d\n", a, c, b, b, c, d
+        }
+}' >big.obj
+for delay in 0.2 1.0; do
+    before=$failed
+    printf 'an earlier image\n' >out.png
+    "$GLINT" big.obj -w 2000 -h 2000 --spp 16 -o out.png 2>err.txt &
+    pid=$!
+    sleep "$delay"
+    t0=$(date +%s%N)
+    kill -INT "$pid"
+    wait "$pid"
+    status=$?
+    stop_ms=$((($(date +%s%N) - t0) / 1000000))
+    [ "$status" -eq 4 ] || fail "model, SIGINT after $delay s: exit $status, expected 4"
+    [ "$stop_ms" -lt 1000 ] || fail "model, SIGINT after $delay s: took $stop_ms ms to stop"
+    [ "$(cat err.txt)" = "glint: interrupted: nothing written" ] || fail "model, SIGINT after $delay s: stderr '$(cat err.txt)'"
+    [ "$(cat out.png)" = "an earlier image" ] || fail "model, SIGINT after $delay s: the earlier file was changed"
+    [ "$failed" -eq "$before" ] && passed=$((passed + 1))
+done
+rm -f big.obj
 
 # --partial: the finished tiles in a PNG of the whole size, which glint
 # itself decodes (as a texture). (Its time to stop includes writing the
