@@ -98,9 +98,8 @@ static void print_problem(void *user, const char *message)
 
 /* Loads the scene file (or builds a scene around a model file), printing
  * every problem and a last line saying what became of the run; NULL after
- * reporting. */
-/* Loads the scene or model file at path; NULL after saying why, with *code
- * the exit code: bad input, or an internal failure when memory ran out. */
+ * reporting, with *code the exit code: bad input, or an internal failure
+ * when memory ran out. */
 static glint_scene *load_scene(const char *path, const char *outcome, int *code)
 {
     glint_error err = {0};
@@ -149,7 +148,7 @@ static int interrupted_run(const cli_options *o, const glint_image *image, const
     if (st)
         return cli_complain(exit_code_of(st), "interrupted, and the finished tiles were not written: %s", err.message);
     return cli_complain(CLI_EXIT_INTERRUPTED, "interrupted: %d of %d tiles finished, written to %s (the rest black)",
-                    stats->tiles_done, stats->tiles_total, output);
+                        stats->tiles_done, stats->tiles_total, output);
 }
 
 static int run(const cli_options *o)
