@@ -134,7 +134,6 @@ static unsigned hit_lane_uint(const struct RTCHitN *hit, unsigned n, unsigned fi
     return ((const unsigned *)hit)[field * n + i];
 }
 
-
 /* Pads float bounds so the float ray in Embree's traversal never misses a
  * box that the exact double test would hit. */
 static float pad_down(double v, double pad) { return nextafterf((float)(v - pad), -INFINITY); }

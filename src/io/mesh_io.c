@@ -30,6 +30,7 @@ glint_status mesh_import_open(const char *path, int *fd, size_t *size, glint_err
         return error_set(err, GLINT_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
     struct stat st;
     glint_status s = GLINT_OK;
+    uint64_t memory = memory_bytes();
     if (fstat(*fd, &st) != 0)
         s = error_set(err, GLINT_ERR_IO, "%s: cannot read: %s", path, strerror(errno));
     else if (S_ISDIR(st.st_mode))
@@ -41,10 +42,10 @@ glint_status mesh_import_open(const char *path, int *fd, size_t *size, glint_err
     /* The file is read whole and its model built beside it: one larger
      * than half the memory is refused before reading, rather than found
      * out by the system (or its out-of-memory killer) halfway through. */
-    else if (memory_bytes() > 0 && (uint64_t)st.st_size > memory_bytes() / 2)
+    else if (memory > 0 && (uint64_t)st.st_size > memory / 2)
         s = error_set(err, GLINT_ERR_INVALID,
                       "%s: too large to import: %llu bytes, more than half of this machine's memory (%llu bytes)", path,
-                      (unsigned long long)st.st_size, (unsigned long long)memory_bytes());
+                      (unsigned long long)st.st_size, (unsigned long long)memory);
     if (s) {
         close(*fd);
         *fd = -1;

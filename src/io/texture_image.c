@@ -88,12 +88,12 @@ static bool is_letter(unsigned char c)
 /* Before the image data libpng reads each chunk whole, into a buffer of the
  * length the chunk claims, which it allocates and zeroes before reading
  * (2 GB for the header of a text chunk in a file of 45 bytes; past its own
- * limit it only warns). In memory no chunk is longer than the bytes after its header, so
- * one that claims to be is refused before libpng sees it. The walk ends
- * where libpng stops first: at a type that is not four letters (refused by
- * name, unread), and at the first IDAT, whose data is inflated a piece at a
- * time and after which nothing is read, so a file cut short there keeps
- * libpng's message. */
+ * limit it only warns). In memory no chunk is longer than the bytes after
+ * its header, so one that claims to be is refused before libpng sees it.
+ * The walk ends where libpng stops first: at a type that is not four
+ * letters (refused by name, unread), and at the first IDAT, whose data is
+ * inflated a piece at a time and after which nothing is read, so a file cut
+ * short there keeps libpng's message. */
 static glint_status png_check_chunk_lengths(const unsigned char *data, size_t size, const char *what,
                                             glint_error *err)
 {
