@@ -12,7 +12,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "io/texture_image.h"
+#include "image/texture_image.h"
 
 /* Bytes on each line of the string literal. */
 #define LINE 32

@@ -5,7 +5,7 @@
 
 #include "core/color.h"
 #include "geometry/shape.h"
-#include "io/texture_image.h"
+#include "image/texture_image.h"
 
 typedef enum texture_kind { TEXTURE_CHECKER, TEXTURE_IMAGE } texture_kind;
 

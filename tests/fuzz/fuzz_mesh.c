@@ -15,9 +15,9 @@
 #include <stdlib.h>
 #include <string.h>
 #include "glint.h"
-#include "io/mesh_import.h"
-#include "io/mtl_read.h"
-#include "io/obj_read.h"
+#include "model/mesh_import.h"
+#include "model/mtl_read.h"
+#include "model/obj_read.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

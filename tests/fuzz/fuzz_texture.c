@@ -17,7 +17,7 @@
 #include <sanitizer/asan_interface.h>
 #include <zlib.h>
 #include "glint.h"
-#include "io/texture_image.h"
+#include "image/texture_image.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 

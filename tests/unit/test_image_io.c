@@ -22,9 +22,9 @@
 
 #include "glint.h"
 #include "tmp_tree.h"
-#include "io/png_encode.h"
-#include "io/srgb.h"
-#include "io/texture_image.h"
+#include "image/png_encode.h"
+#include "image/srgb.h"
+#include "image/texture_image.h"
 
 #define PATH_SIZE 1024
 

@@ -24,9 +24,9 @@
 
 #include "glint.h"
 #include "tmp_tree.h"
-#include "io/obj_read.h"
-#include "io/text_scan.h"
-#include "io/triangulate.h"
+#include "model/obj_read.h"
+#include "model/text_scan.h"
+#include "model/triangulate.h"
 #include "scene/scene.h"
 
 #define PATH_SIZE 1024

@@ -1,0 +1,57 @@
+/* texture_image.h - decoding PNG and JPEG images for image textures: kept
+ * as the file's 8-bit sRGB values, 3 bytes a pixel, and made linear through
+ * a table when looked up (a quarter of the memory of float RGB, and the
+ * same linear values to the bit). */
+#ifndef GLINT_IMAGE_TEXTURE_IMAGE_H
+#define GLINT_IMAGE_TEXTURE_IMAGE_H
+
+#include <stddef.h>
+#include "glint.h"
+
+/* The largest image decoded: a side longer, or more pixels in all, is
+ * refused as too large before any pixel memory is allocated. */
+#define TEXTURE_IMAGE_MAX_SIDE 32768UL
+#define TEXTURE_IMAGE_MAX_PIXELS (1UL << 28)
+/* The largest texture file read, 2 GiB: twice the 16-bit RGBA pixels of the
+ * largest image, more than any PNG or JPEG of it takes. A file is read
+ * whole before it is decoded, so a larger one is refused unread. */
+#define TEXTURE_IMAGE_MAX_FILE (2ULL << 30)
+
+/* A decoded image: srgb[3 * (y * width + x) + c], top row first, each an
+ * sRGB-encoded byte whose linear value is linear[byte]. The bytes are the
+ * image's own (owned, freed with it) or borrowed from memory that outlives
+ * it, such as pixels compiled into the program (owned NULL). */
+typedef struct texture_image {
+    int width, height;
+    const unsigned char *srgb;
+    unsigned char *owned;     /* srgb when the image allocated it, else NULL */
+    const float *linear;      /* 256 entries, shared by every image */
+} texture_image;
+
+/* The linear value of byte i of img's pixels (channel i % 3 of pixel i / 3). */
+static inline float texture_image_at(const texture_image *img, size_t i)
+{
+    return img->linear[img->srgb[i]];
+}
+
+/* Decodes the PNG or JPEG file at path, told apart by its first bytes, not
+ * its name. Alpha is ignored. On failure *out is left empty and err names
+ * the file: GLINT_ERR_IO when it cannot be read, GLINT_ERR_INVALID when it
+ * is not a PNG or JPEG, is corrupt or is too large, GLINT_ERR_NOMEM. */
+glint_status texture_image_load_file(texture_image *out, const char *path, glint_error *err);
+
+/* As texture_image_load_file, from size bytes at data; `what` names the
+ * source in messages. */
+glint_status texture_image_load_memory(texture_image *out, const void *data, size_t size,
+                                       const char *what, glint_error *err);
+
+/* An image over width x height pixels of sRGB bytes at srgb (3 a pixel, top
+ * row first), which are not copied: they must outlive the image, and
+ * texture_image_free leaves them alone. For pixels decoded ahead of time,
+ * such as the seed room's Moon map, so that no decoding runs at start-up. */
+texture_image texture_image_borrow(int width, int height, const unsigned char *srgb);
+
+/* Frees the pixels it owns and empties the image. NULL is allowed. */
+void texture_image_free(texture_image *img);
+
+#endif

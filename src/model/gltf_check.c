@@ -1,0 +1,151 @@
+/* gltf_check.c - the check made on a glTF model's JSON before Assimp reads
+ * it. Assimp's glTF 2 reader takes the part of an embedded image's media
+ * type after its '/' without looking for one, so an image whose mimeType is
+ * "imagepng", or whose data URI is "data:imagepng;base64,...", makes it read
+ * from address 1 (fuzzing found it). Every mimeType and every data URI's
+ * media type must therefore have its '/'. The scan decodes JSON strings as
+ * a JSON parser does, escapes included, so "mime\u0054ype" is still seen as
+ * the key mimeType. */
+#include <stdio.h>
+#include <string.h>
+#include "core/error.h"
+#include "model/mesh_import.h"
+
+/* What one decoded JSON string holds, as far as the check needs it. */
+typedef struct json_string {
+    size_t start;             /* offset of its opening quote */
+    char head[48];            /* its first characters, NUL-terminated; others as '?' */
+    size_t length;            /* in decoded characters */
+    bool slash;               /* a '/' anywhere */
+    size_t media_end;         /* for a "data:" URI: where its media type ends */
+    bool media_slash;         /* a '/' in that media type */
+} json_string;
+
+static int hex_digit(unsigned char c)
+{
+    if (c >= '0' && c <= '9')
+        return c - '0';
+    c = (unsigned char)(c | 0x20);
+    return c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
+}
+
+/* The next decoded character of the string at text[*i] (after its opening
+ * quote): an ASCII character, or 0x80 for anything else; -1 at its closing
+ * quote, -2 at the end of the text or a broken escape. */
+static int next_char(const unsigned char *text, size_t size, size_t *i)
+{
+    if (*i >= size)
+        return -2;
+    unsigned char c = text[(*i)++];
+    if (c == '"')
+        return -1;
+    if (c != '\\')
+        return c < 0x80 ? c : 0x80;
+    if (*i >= size)
+        return -2;
+    c = text[(*i)++];
+    switch (c) {
+    case 'b': return '\b';
+    case 'f': return '\f';
+    case 'n': return '\n';
+    case 'r': return '\r';
+    case 't': return '\t';
+    case 'u': {
+        int v = 0;
+        for (int k = 0; k < 4; k++) {
+            int d = *i < size ? hex_digit(text[(*i)++]) : -1;
+            if (d < 0)
+                return -2;
+            v = v * 16 + d;
+        }
+        return v < 0x80 ? v : 0x80;
+    }
+    default:
+        return c; /* \" \\ \/ and, leniently, anything else */
+    }
+}
+
+/* Decodes the string whose opening quote is at text[*i]; *i ends past its
+ * closing quote. False when the text ends first. */
+static bool read_string(const unsigned char *text, size_t size, size_t *i, json_string *s)
+{
+    memset(s, 0, sizeof *s);
+    s->start = (*i)++;
+    int c;
+    while ((c = next_char(text, size, i)) >= 0) {
+        if (s->length < sizeof s->head - 1)
+            s->head[s->length] = c >= 0x20 && c < 0x7F ? (char)c : '?';
+        s->length++;
+        s->slash |= c == '/';
+        bool data_uri = s->length > 5 && strncmp(s->head, "data:", 5) == 0;
+        if (data_uri && s->media_end == 0) {
+            if (c == ';' || c == ',')
+                s->media_end = s->length - 1;
+            else
+                s->media_slash |= c == '/';
+        }
+    }
+    /* A data URI with neither ';' nor ',' is all media type. */
+    if (s->length > 5 && strncmp(s->head, "data:", 5) == 0 && s->media_end == 0)
+        s->media_end = s->length;
+    return c == -1;
+}
+
+/* line:column of offset `at` in text, from 1. */
+static void position_of(const unsigned char *text, size_t at, int *line, int *column)
+{
+    *line = *column = 1;
+    for (size_t k = 0; k < at; k++) {
+        if (text[k] == '\n') {
+            (*line)++;
+            *column = 1;
+        } else {
+            (*column)++;
+        }
+    }
+}
+
+/* Refuses string s, naming `what` and its characters from `from` to `to`. */
+static glint_status refuse(const unsigned char *text, const json_string *s, const char *where, const char *what,
+                           size_t from, size_t to, glint_error *err)
+{
+    int line, column;
+    position_of(text, s->start, &line, &column);
+    if (to > sizeof s->head - 1)
+        to = sizeof s->head - 1;
+    return error_set(err, GLINT_ERR_INVALID, "%s%d:%d: %s '%.*s' has no '/' (as in image/png)", where, line,
+                     column, what, (int)(to - from), s->head + from);
+}
+
+glint_status gltf_check_media_types(const unsigned char *text, size_t size, const char *where, glint_error *err)
+{
+    bool after_mime = false, after_uri = false; /* the last key, when its value comes next */
+    size_t i = 0;
+    while (i < size) {
+        unsigned char c = text[i];
+        if (c != '"') {
+            if (c != ' ' && c != '\t' && c != '\n' && c != '\r' && c != ':')
+                after_mime = after_uri = false;
+            i++;
+            continue;
+        }
+        json_string s;
+        if (!read_string(text, size, &i, &s))
+            return GLINT_OK; /* broken JSON: Assimp's parser refuses it */
+        size_t k = i;
+        while (k < size && (text[k] == ' ' || text[k] == '\t' || text[k] == '\n' || text[k] == '\r'))
+            k++;
+        if (k < size && text[k] == ':') {
+            after_mime = s.length == 8 && strcmp(s.head, "mimeType") == 0;
+            after_uri = s.length == 3 && strcmp(s.head, "uri") == 0;
+            i = k + 1;
+            continue;
+        }
+        if (after_mime && s.length > 0 && !s.slash)
+            return refuse(text, &s, where, "image mimeType", 0, s.length, err);
+        if (after_uri && s.media_end > 5 && !s.media_slash)
+            return refuse(text, &s, where, "data URI media type", 5, s.media_end, err);
+        after_mime = after_uri = false;
+    }
+    return GLINT_OK;
+}

@@ -1,0 +1,34 @@
+/* diag.h - collecting the problems of a scene file: each with its place,
+ * all of them up to a limit, the first kept for the caller's glint_error. */
+#ifndef GLINT_SCENEFILE_DIAG_H
+#define GLINT_SCENEFILE_DIAG_H
+
+#include <stdbool.h>
+#include "glint.h"
+#include "scenefile/yaml_tree.h"
+
+typedef struct diag {
+    glint_report_fn report;
+    void *user;
+    int max;                  /* stop reporting after this many */
+    int count;                /* problems found */
+    glint_error *first;       /* receives the first problem; may be NULL */
+    glint_status first_status;
+    bool closed;              /* no more reports: the walk was cut short */
+} diag;
+
+/* Reports "file:line:column: message" at node n (or "file: message" when n
+ * is NULL and file is given). */
+void diag_at(diag *d, const ynode *n, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
+
+/* Reports a message that already carries its place, or has none. */
+void diag_raw(diag *d, glint_status status, const char *message);
+
+/* True once the limit of problems is reached: the walk should stop. */
+bool diag_full(const diag *d);
+
+/* Of `count` candidate words, the closest to `word` within a small edit
+ * distance, or NULL: for "did you mean" hints. */
+const char *diag_suggest(const char *word, const char *const *candidates, int count);
+
+#endif

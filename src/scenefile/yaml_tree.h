@@ -1,0 +1,46 @@
+/* yaml_tree.h - a YAML document as a tree of nodes that remember where they
+ * were written. Aliases share the node of their anchor (never copies), so
+ * a hostile file cannot grow memory by aliasing; whoever walks the tree
+ * bounds the walk. */
+#ifndef GLINT_SCENEFILE_YAML_TREE_H
+#define GLINT_SCENEFILE_YAML_TREE_H
+
+#include <stdbool.h>
+#include <stddef.h>
+#include "glint.h"
+
+typedef enum ynode_kind { YNODE_SCALAR, YNODE_SEQUENCE, YNODE_MAPPING } ynode_kind;
+
+typedef struct ynode {
+    ynode_kind kind;
+    const char *file;          /* the document's name, for messages */
+    int line, column;          /* 1-based position of the node's start */
+    char *value;               /* scalar text, NUL-terminated */
+    bool quoted;               /* scalar written in quotes or as a block */
+    struct ynode **items;      /* sequence: items; mapping: key, value, key, value... */
+    int count;                 /* entries in items */
+    int cap;
+    bool complete;             /* the node's end has been read */
+} ynode;
+
+typedef struct ydoc {
+    char *name;
+    ynode *root;               /* NULL for an empty document */
+    ynode **nodes;             /* every node, for freeing */
+    int node_count, node_cap;
+} ydoc;
+
+/* Parses `size` bytes of YAML named `name` into doc. On a syntax error
+ * returns GLINT_ERR_INVALID with err holding "name:line:column: message". */
+glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *name, glint_error *err);
+
+/* Frees every node of the document. */
+void ydoc_free(ydoc *doc);
+
+/* Number of key-value pairs of a mapping node. */
+static inline int ynode_pairs(const ynode *n) { return n->count / 2; }
+
+/* A short noun for a node's kind, for messages: "a number", "a list", ... */
+const char *ynode_describe(const ynode *n);
+
+#endif
