@@ -243,20 +243,31 @@ typedef enum glint_shape_kind {
                                which the points run anticlockwise */
     GLINT_SHAPE_BOX,        /* axis-aligned box between min and max */
     GLINT_SHAPE_CYLINDER,   /* about +y from centre of base, radius, height, optional caps */
-    GLINT_SHAPE_CONE        /* apex above the centre of base at height; optional base cap */
+    GLINT_SHAPE_CONE,       /* apex above the centre of base at height; optional base cap */
+    GLINT_SHAPE_DISK        /* disc (or, with inner_radius, a ring) about center, facing normal */
 } glint_shape_kind;
 
+/* A shape's description: each kind reads the fields named beside them.
+ * docs/scene-format.md lists each kind's fields with their defaults and
+ * ranges (the scene file's keys have the same names, `point` for a plane's
+ * center); start from glint_shape_default to get the defaults. */
 typedef struct glint_shape {
     glint_shape_kind kind;
-    glint_vec3 center;        /* sphere centre; cylinder and cone base centre; plane point */
-    double radius;            /* sphere, cylinder, cone base */
+    glint_vec3 center;        /* sphere and disk centre; cylinder and cone base centre; plane point */
+    double radius;            /* sphere, cylinder, cone base, disk (outer) */
     double height;            /* cylinder, cone */
     bool capped;              /* cylinder: both caps; cone: base cap */
-    glint_vec3 normal;        /* plane */
+    glint_vec3 normal;        /* plane, disk: the side it faces */
     glint_vec3 points[4];     /* polygon */
     int point_count;          /* polygon: 3 or 4 */
     glint_vec3 min, max;      /* box */
+    double inner_radius;      /* disk: 0, or the radius of its hole (a ring), below radius */
 } glint_shape;
+
+/* Returns a description of the given kind with every field at its default
+ * (docs/scene-format.md): a capped cylinder, a disk facing +y, a zero
+ * radius that must still be set, and so on. */
+glint_shape glint_shape_default(glint_shape_kind kind);
 
 /* Adds a shape with material index `material`, placed by `transform` (NULL
  * for identity). Returns the shape's index or -1 and fills err when the

@@ -271,8 +271,8 @@ static void occluded_fn(const struct RTCOccludedFunctionNArguments *args)
             continue;
         double tmin = 0;
         accel_hit h = {.shape = index, .instance = -1};
-        /* Shapes are convex, so a ray crosses one at most twice. */
-        for (int crossing = 0; crossing < 2 && shape_intersect(s, &r, tmin, q->tmax[i], &h.on_shape);
+        int crossings = shape_max_crossings(s);
+        for (int crossing = 0; crossing < crossings && shape_intersect(s, &r, tmin, q->tmax[i], &h.on_shape);
              crossing++) {
             h.t = h.on_shape.t;
             if (!pass_through(q, i, &h)) {
@@ -348,7 +348,7 @@ static bool sort_shapes(accel *a)
     if (!a->prim_shape || !a->planes)
         return false;
     for (int i = 0; i < a->shape_count; i++) {
-        if (a->shapes[i].desc.kind == GLINT_SHAPE_PLANE)
+        if (!shape_is_bounded(&a->shapes[i]))
             a->planes[a->plane_count++] = i;
         else
             a->prim_shape[a->prim_count++] = i;
@@ -564,24 +564,24 @@ static accel_hit lane_hit(const query *q, const struct RTCRayHit8 *rh, unsigned 
                        .triangle = rh->hit.primID[i], .b1 = rh->hit.u[i], .b2 = rh->hit.v[i]};
 }
 
-/* Plane k (of a->planes) for the four lanes from lane `first` on: the mask
- * of the lanes that cross it in (0, tmax[j]) as plane_hit finds it, never
- * for the lane's skipped shape, and *t. A moved plane is tested in its own
- * space, as shape_intersect_plane does. */
+/* Plane k (of a->planes: the unbounded shapes) for the four lanes from
+ * lane `first` on: the mask of the lanes that cross it in (0, tmax[j]) as
+ * shape_intersect finds it, never for the lane's skipped shape, and *t. A
+ * moved plane is tested lane by lane in its own space. */
 static inline quad_mask plane_quad(const query *q, int k, int first, quad_f64 tmax, quad_f64 *t)
 {
     int index = q->acc->planes[k];
     const shape *s = &q->acc->shapes[index];
     quad_mask hit;
-    if (s->has_transform) {
+    if (!shape_has_intersect4(s)) {
         for (int j = 0; j < QUAD; j++) {
             ray r = ray8_get(q->r, first + j);
             shape_hit h = {0, 0};
-            hit[j] = shape_intersect_plane(s, &r, 0, tmax[j], &h) ? -1 : 0;
+            hit[j] = shape_intersect(s, &r, 0, tmax[j], &h) ? -1 : 0;
             (*t)[j] = h.t;
         }
     } else {
-        hit = plane_hit4(s->desc.center, s->desc.normal, q->r, first, 0, tmax, t);
+        hit = shape_intersect4(s, q->r, first, tmax, t);
     }
     return hit & quad_int_ne(q->skip + first, index);
 }

@@ -4,15 +4,15 @@
  * follow plane_basis for its outward normal, scaled to [0, 1] across the
  * box: seen from outside, u runs right and v runs down, so the four side
  * faces all have v = 0 along their top edge. */
-#include "geometry/kinds.h"
+#include <stddef.h>
+#include "geometry/shape_kind.h"
+#include "geometry/shape_math.h"
 
 static double component(vec3 v, int axis) { return axis == 0 ? v.x : axis == 1 ? v.y : v.z; }
 
-glint_status box_init(shape *s, glint_error *err)
+static glint_status box_init(shape *s, glint_error *err)
 {
     const glint_shape *d = &s->desc;
-    if (!finite_ok(d->min, "box", "min", err) || !finite_ok(d->max, "box", "max", err))
-        return GLINT_ERR_INVALID;
     if (!(d->min.x < d->max.x && d->min.y < d->max.y && d->min.z < d->max.z))
         return error_set(err, GLINT_ERR_INVALID, "box min must be below max on every axis");
     return GLINT_OK;
@@ -21,7 +21,7 @@ glint_status box_init(shape *s, glint_error *err)
 /* The slab method: the ray is inside the box where it is inside all three
  * slabs at once; the slab entered last names the face it came in by. Rays
  * that only touch an edge or a face still hit. */
-bool box_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+static bool box_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
     const glint_shape *d = &s->desc;
     double t_near = -INFINITY, t_far = INFINITY;
@@ -64,12 +64,12 @@ static vec3 face_normal(int part)
     return v3(axis == 0 ? sign : 0, axis == 1 ? sign : 0, axis == 2 ? sign : 0);
 }
 
-void box_surface(const shape *s, int part, surface *out)
+static void box_surface(const shape *s, int part, surface *out)
 {
     out->n = face_normal(part);
 }
 
-void box_uv(const shape *s, int part, surface *out)
+static void box_uv(const shape *s, int part, surface *out)
 {
     vec3 u, v;
     plane_basis(face_normal(part), &u, &v);
@@ -77,8 +77,21 @@ void box_uv(const shape *s, int part, surface *out)
     out->v = across(&s->desc, out->p_obj, v);
 }
 
-void box_bounds(const shape *s, vec3 *lo, vec3 *hi)
+static void box_bounds(const shape *s, vec3 *lo, vec3 *hi)
 {
     *lo = s->desc.min;
     *hi = s->desc.max;
 }
+
+static const param BOX_PARAMS[] = {
+    {.key = "min", .type = PARAM_VEC3, .offset = offsetof(glint_shape, min), .required = true,
+     .meaning = "the corner with the least x, y and z"},
+    {.key = "max", .type = PARAM_VEC3, .offset = offsetof(glint_shape, max), .required = true,
+     .meaning = "the opposite corner, above min on every axis"},
+};
+
+const shape_kind box_kind = {
+    .name = "box", .id = GLINT_SHAPE_BOX, .params = PARAM_TABLE(BOX_PARAMS), .max_crossings = 2,
+    .closed = shape_always_closed, .init = box_init, .intersect = box_intersect, .surface = box_surface,
+    .uv = box_uv, .bounds = box_bounds,
+};

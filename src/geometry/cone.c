@@ -3,12 +3,9 @@
  *
  * Part 0 is the side, 1 the base cap. Only the nappe between base and apex
  * is part of the shape. */
-#include "geometry/kinds.h"
-
-glint_status cone_init(shape *s, glint_error *err)
-{
-    return axial_check(&s->desc, "cone", err);
-}
+#include <stddef.h>
+#include "geometry/shape_kind.h"
+#include "geometry/shape_math.h"
 
 /* The coefficients and roots of F(t) = x^2 + z^2 - k^2 (h - y)^2 along the
  * ray, F <= 0 being inside the double cone through the apex. */
@@ -31,7 +28,7 @@ static bool inside_at(const cone_roots *q, double t)
     return q->b > 0 ? t <= q->t0 : t >= q->t0;
 }
 
-bool cone_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+static bool cone_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
     const glint_shape *d = &s->desc;
     vec3 o = v3_sub(r->o, d->center), dir = r->d;
@@ -61,7 +58,7 @@ bool cone_intersect(const shape *s, const ray *r, double tmin, double tmax, shap
 
 /* Side: u is the angle about the axis (see polar_u), v the height from 0 at
  * the base to 1 at the apex. Cap: see disc_uv. */
-void cone_surface(const shape *s, int part, surface *out)
+static void cone_surface(const shape *s, int part, surface *out)
 {
     const glint_shape *d = &s->desc;
     vec3 l = v3_sub(out->p_obj, d->center);
@@ -75,7 +72,7 @@ void cone_surface(const shape *s, int part, surface *out)
     out->n = r > 0 ? v3(l.x / r, d->radius / d->height, l.z / r) : v3(0, 1, 0);
 }
 
-void cone_uv(const shape *s, int part, surface *out)
+static void cone_uv(const shape *s, int part, surface *out)
 {
     const glint_shape *d = &s->desc;
     vec3 l = v3_sub(out->p_obj, d->center);
@@ -87,7 +84,19 @@ void cone_uv(const shape *s, int part, surface *out)
     out->v = l.y / d->height;
 }
 
-void cone_bounds(const shape *s, vec3 *lo, vec3 *hi)
+static void cone_bounds(const shape *s, vec3 *lo, vec3 *hi)
 {
     axial_bounds(&s->desc, lo, hi);
 }
+
+static const param CONE_PARAMS[] = {
+    AXIAL_PARAMS,
+    {.key = "capped", .type = PARAM_BOOL, .offset = offsetof(glint_shape, capped), .def = {1},
+     .meaning = "whether it has the base cap"},
+};
+
+const shape_kind cone_kind = {
+    .name = "cone", .id = GLINT_SHAPE_CONE, .params = PARAM_TABLE(CONE_PARAMS), .max_crossings = 2,
+    .closed = shape_closed_if_capped, .intersect = cone_intersect, .surface = cone_surface, .uv = cone_uv,
+    .bounds = cone_bounds,
+};

@@ -5,12 +5,9 @@
  * are found from the same two intervals (where the ray is within the radius
  * and where it is within the height), so at the rim one of them always
  * claims a ray and none slips between. */
-#include "geometry/kinds.h"
-
-glint_status cylinder_init(shape *s, glint_error *err)
-{
-    return axial_check(&s->desc, "cylinder", err);
-}
+#include <stddef.h>
+#include "geometry/shape_kind.h"
+#include "geometry/shape_math.h"
 
 /* The interval of t where the ray is within radius of the y axis. */
 static bool radius_span(const ray *r, double radius, double *t_in, double *t_out)
@@ -26,7 +23,7 @@ static bool radius_span(const ray *r, double radius, double *t_in, double *t_out
     return quadratic(a, b, c, t_in, t_out);
 }
 
-bool cylinder_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+static bool cylinder_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
     const glint_shape *d = &s->desc;
     ray l = {v3_sub(r->o, d->center), r->d};
@@ -51,14 +48,14 @@ bool cylinder_intersect(const shape *s, const ray *r, double tmin, double tmax, 
 
 /* Side: u is the angle about the axis (see polar_u), v the height from 0 at
  * the base to 1 at the top. Caps: see disc_uv. */
-void cylinder_surface(const shape *s, int part, surface *out)
+static void cylinder_surface(const shape *s, int part, surface *out)
 {
     const glint_shape *d = &s->desc;
     vec3 l = v3_sub(out->p_obj, d->center);
     out->n = part == 0 ? v3(l.x / d->radius, 0, l.z / d->radius) : v3(0, part == 1 ? -1 : 1, 0);
 }
 
-void cylinder_uv(const shape *s, int part, surface *out)
+static void cylinder_uv(const shape *s, int part, surface *out)
 {
     const glint_shape *d = &s->desc;
     vec3 l = v3_sub(out->p_obj, d->center);
@@ -70,7 +67,19 @@ void cylinder_uv(const shape *s, int part, surface *out)
     disc_uv(l, d->radius, out);
 }
 
-void cylinder_bounds(const shape *s, vec3 *lo, vec3 *hi)
+static void cylinder_bounds(const shape *s, vec3 *lo, vec3 *hi)
 {
     axial_bounds(&s->desc, lo, hi);
 }
+
+static const param CYLINDER_PARAMS[] = {
+    AXIAL_PARAMS,
+    {.key = "capped", .type = PARAM_BOOL, .offset = offsetof(glint_shape, capped), .def = {1},
+     .meaning = "whether it has both caps"},
+};
+
+const shape_kind cylinder_kind = {
+    .name = "cylinder", .id = GLINT_SHAPE_CYLINDER, .params = PARAM_TABLE(CYLINDER_PARAMS), .max_crossings = 2,
+    .closed = shape_closed_if_capped, .intersect = cylinder_intersect, .surface = cylinder_surface, .uv = cylinder_uv,
+    .bounds = cylinder_bounds,
+};

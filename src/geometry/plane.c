@@ -1,17 +1,16 @@
 /* plane.c - infinite planes in object space: a point and a normal. */
-#include "geometry/kinds.h"
+#include <stddef.h>
+#include "geometry/shape_kind.h"
+#include "geometry/shape_math.h"
 
-glint_status plane_init(shape *s, glint_error *err)
+static glint_status plane_init(shape *s, glint_error *err)
 {
     glint_shape *d = &s->desc;
-    if (!finite_ok(d->center, "plane", "point", err) || !finite_ok(d->normal, "plane", "normal", err))
-        return GLINT_ERR_INVALID;
     vec3 n = d->normal;
     /* Dividing by the largest component first keeps tiny and huge normals
-     * from underflowing or overflowing when squared. */
+     * from underflowing or overflowing when squared. The table has refused
+     * a zero normal. */
     double m = fmax(fabs(n.x), fmax(fabs(n.y), fabs(n.z)));
-    if (m == 0)
-        return error_set(err, GLINT_ERR_INVALID, "plane normal must not be zero");
     /* Kept in desc so every later use sees a unit normal. */
     d->normal = v3_normalize(v3(n.x / m, n.y / m, n.z / m));
     plane_basis(d->normal, &s->plane_u, &s->plane_v);
@@ -28,7 +27,7 @@ void plane_basis(vec3 n, vec3 *u, vec3 *v)
     *v = v3_cross(*u, n);
 }
 
-bool plane_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+static bool plane_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
     double t;
     if (!plane_hit(s->desc.center, s->desc.normal, r, tmin, tmax, &t))
@@ -38,15 +37,32 @@ bool plane_intersect(const shape *s, const ray *r, double tmin, double tmax, sha
     return true;
 }
 
+static quad_mask plane_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
+{
+    return plane_hit4(s->desc.center, s->desc.normal, r, first, 0, tmax, t);
+}
+
 /* u and v are distances from the plane's point along plane_u and plane_v. */
-void plane_surface(const shape *s, int part, surface *out)
+static void plane_surface(const shape *s, int part, surface *out)
 {
     out->n = s->desc.normal;
 }
 
-void plane_uv(const shape *s, int part, surface *out)
+static void plane_uv(const shape *s, int part, surface *out)
 {
     vec3 q = v3_sub(out->p_obj, s->desc.center);
     out->u = v3_dot(q, s->plane_u);
     out->v = v3_dot(q, s->plane_v);
 }
+
+static const param PLANE_PARAMS[] = {
+    {.key = "point", .type = PARAM_VEC3, .offset = offsetof(glint_shape, center), .meaning = "a point on the plane"},
+    {.key = "normal", .type = PARAM_DIRECTION, .offset = offsetof(glint_shape, normal), .required = true,
+     .meaning = "the side the plane faces"},
+};
+
+const shape_kind plane_kind = {
+    .name = "plane", .id = GLINT_SHAPE_PLANE, .params = PARAM_TABLE(PLANE_PARAMS), .max_crossings = 1,
+    .flat = true, .init = plane_init, .intersect = plane_intersect, .intersect4 = plane_intersect4,
+    .surface = plane_surface, .uv = plane_uv,
+};

@@ -1,6 +1,8 @@
 /* polygon.c - convex planar triangles and quads in object space, their
  * points anticlockwise when seen from the side the normal points to. */
-#include "geometry/kinds.h"
+#include <stddef.h>
+#include "geometry/shape_kind.h"
+#include "geometry/shape_math.h"
 
 static vec3 corner(const glint_shape *d, int i)
 {
@@ -9,17 +11,12 @@ static vec3 corner(const glint_shape *d, int i)
     return v3_cross(v3_sub(b, a), v3_sub(c, b));
 }
 
-glint_status polygon_init(shape *s, glint_error *err)
+/* The table has checked the count and that every point is finite. */
+static glint_status polygon_init(shape *s, glint_error *err)
 {
     const glint_shape *d = &s->desc;
     const vec3 *p = d->points;
     int n = d->point_count;
-    if (n != 3 && n != 4)
-        return error_set(err, GLINT_ERR_INVALID, "polygon needs 3 or 4 points, got %d", n);
-    for (int i = 0; i < n; i++) {
-        if (!v3_is_finite(p[i]))
-            return error_set(err, GLINT_ERR_INVALID, "polygon point %d is not finite", i);
-    }
     double size = 0;
     for (int i = 0; i < n; i++) {
         double edge = v3_length(v3_sub(p[(i + 1) % n], p[i]));
@@ -56,7 +53,7 @@ glint_status polygon_init(shape *s, glint_error *err)
     return GLINT_OK;
 }
 
-bool polygon_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+static bool polygon_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
     const glint_shape *d = &s->desc;
     int n = d->point_count;
@@ -75,7 +72,7 @@ bool polygon_intersect(const shape *s, const ray *r, double tmin, double tmax, s
     return true;
 }
 
-quad_mask polygon_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
+static quad_mask polygon_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
 {
     const glint_shape *d = &s->desc;
     quad_mask hit = plane_hit4(d->points[0], s->poly_normal, r, first, 0, tmax, t);
@@ -97,12 +94,12 @@ quad_mask polygon_intersect4(const shape *s, const ray8 *r, int first, quad_f64 
  * 0 to point 1 and from point 0 to the last point, so a parallelogram spans
  * [0, 1]^2 and a triangle's (u, v) are the barycentric weights of its
  * points 1 and 2. */
-void polygon_surface(const shape *s, int part, surface *out)
+static void polygon_surface(const shape *s, int part, surface *out)
 {
     out->n = s->poly_normal;
 }
 
-void polygon_uv(const shape *s, int part, surface *out)
+static void polygon_uv(const shape *s, int part, surface *out)
 {
     const glint_shape *d = &s->desc;
     vec3 n = s->poly_normal, p0 = d->points[0];
@@ -114,7 +111,7 @@ void polygon_uv(const shape *s, int part, surface *out)
     out->v = v3_dot(v3_cross(e1, q), n) / det;
 }
 
-void polygon_bounds(const shape *s, vec3 *lo, vec3 *hi)
+static void polygon_bounds(const shape *s, vec3 *lo, vec3 *hi)
 {
     const glint_shape *d = &s->desc;
     *lo = *hi = d->points[0];
@@ -123,3 +120,15 @@ void polygon_bounds(const shape *s, vec3 *lo, vec3 *hi)
         *hi = max3(*hi, d->points[i]);
     }
 }
+
+static const param POLYGON_PARAMS[] = {
+    {.key = "points", .type = PARAM_POINTS, .offset = offsetof(glint_shape, points), .required = true,
+     .min_count = 3, .max_count = 4, .count_offset = offsetof(glint_shape, point_count),
+     .meaning = "3 or 4 corners of a convex planar polygon, anticlockwise seen from its front"},
+};
+
+const shape_kind polygon_kind = {
+    .name = "polygon", .id = GLINT_SHAPE_POLYGON, .params = PARAM_TABLE(POLYGON_PARAMS), .max_crossings = 1,
+    .flat = true, .init = polygon_init, .intersect = polygon_intersect, .intersect4 = polygon_intersect4,
+    .surface = polygon_surface, .uv = polygon_uv, .bounds = polygon_bounds,
+};

@@ -1,44 +1,44 @@
-/* shape.c - the shape interface: checks a description, then sends rays and
- * results between world space and the object space where each kind works. */
+/* shape.c - the shape interface: checks a description against its kind's
+ * parameter table and rules, then sends rays and results between world
+ * space and the object space where each kind works. */
 #include <string.h>
-#include "geometry/kinds.h"
+#include "geometry/shape_kind.h"
+#include "geometry/shape_math.h"
 
-typedef struct kind_ops {
-    glint_status (*init)(shape *s, glint_error *err);
-    bool (*intersect)(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
-    void (*surface)(const shape *s, int part, surface *out);
-    void (*uv)(const shape *s, int part, surface *out);
-    void (*bounds)(const shape *s, vec3 *lo, vec3 *hi);
-} kind_ops;
-
-static const kind_ops KINDS[] = {
-    [GLINT_SHAPE_SPHERE] = {sphere_init, sphere_intersect, sphere_surface, sphere_uv, sphere_bounds},
-    [GLINT_SHAPE_PLANE] = {plane_init, plane_intersect, plane_surface, plane_uv, NULL},
-    [GLINT_SHAPE_POLYGON] = {polygon_init, polygon_intersect, polygon_surface, polygon_uv, polygon_bounds},
-    [GLINT_SHAPE_BOX] = {box_init, box_intersect, box_surface, box_uv, box_bounds},
-    [GLINT_SHAPE_CYLINDER] = {cylinder_init, cylinder_intersect, cylinder_surface, cylinder_uv, cylinder_bounds},
-    [GLINT_SHAPE_CONE] = {cone_init, cone_intersect, cone_surface, cone_uv, cone_bounds},
-};
+glint_shape glint_shape_default(glint_shape_kind kind)
+{
+    glint_shape d;
+    memset(&d, 0, sizeof d);
+    d.kind = kind;
+    const shape_kind *k = shape_kind_of(kind);
+    if (k)
+        params_defaults(k->params, &d);
+    return d;
+}
 
 glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform *to_world,
                         int material, glint_error *err)
 {
     memset(s, 0, sizeof *s);
-    /* The cast also catches negative values of the enum. */
-    if ((unsigned)desc->kind >= sizeof KINDS / sizeof KINDS[0])
+    const shape_kind *k = shape_kind_of(desc->kind);
+    if (!k)
         return error_set(err, GLINT_ERR_INVALID, "unknown shape kind %d", (int)desc->kind);
+    s->kind = k;
     s->desc = *desc;
     s->material = material;
     s->to_world = to_world ? *to_world : glint_transform_identity();
     if (!xf_invert(&s->to_world, &s->to_object))
         return error_set(err, GLINT_ERR_INVALID, "transform is singular or not finite");
     s->has_transform = !xf_is_identity(&s->to_world);
-    glint_status st = KINDS[desc->kind].init(s, err);
-    if (st == GLINT_OK && !s->has_transform && (desc->kind == GLINT_SHAPE_PLANE || desc->kind == GLINT_SHAPE_POLYGON)) {
+    s->quad = !s->has_transform && k->intersect4;
+    glint_status st = params_check(k->params, &s->desc, k->name, err);
+    if (st == GLINT_OK && k->init)
+        st = k->init(s, err);
+    if (st == GLINT_OK && !s->has_transform && k->flat) {
         /* What shape_surface would compute at every hit, computed once:
          * the same bits. */
         surface one = {.p_obj = s->desc.center};
-        KINDS[desc->kind].surface(s, 0, &one);
+        k->surface(s, 0, &one);
         s->flat = true;
         s->flat_n = v3_normalize(one.n);
     }
@@ -58,23 +58,14 @@ bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, sha
 {
     /* Most shapes have no transform: their rays need no copy. */
     if (!s->has_transform)
-        return KINDS[s->desc.kind].intersect(s, r, tmin, tmax, hit);
+        return s->kind->intersect(s, r, tmin, tmax, hit);
     ray o = object_ray(s, r);
-    return KINDS[s->desc.kind].intersect(s, &o, tmin, tmax, hit);
+    return s->kind->intersect(s, &o, tmin, tmax, hit);
 }
 
 quad_mask shape_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
 {
-    return s->desc.kind == GLINT_SHAPE_SPHERE ? sphere_intersect4(s, r, first, tmax, t)
-                                              : polygon_intersect4(s, r, first, tmax, t);
-}
-
-bool shape_intersect_plane(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
-{
-    if (!s->has_transform)
-        return plane_intersect(s, r, tmin, tmax, hit);
-    ray o = object_ray(s, r);
-    return plane_intersect(s, &o, tmin, tmax, hit);
+    return s->kind->intersect4(s, r, first, tmax, t);
 }
 
 void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *out)
@@ -94,7 +85,7 @@ void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *
         out->n = out->shading_n = s->flat_n;
         return;
     }
-    KINDS[s->desc.kind].surface(s, hit->part, out);
+    s->kind->surface(s, hit->part, out);
     if (s->has_transform)
         out->n = xf_normal(&s->to_object, out->n);
     out->n = out->shading_n = v3_normalize(out->n);
@@ -102,19 +93,23 @@ void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *
 
 void shape_surface_uv(const shape *s, surface *out)
 {
-    KINDS[s->desc.kind].uv(s, out->part, out);
+    s->kind->uv(s, out->part, out);
+}
+
+bool shape_is_bounded(const shape *s)
+{
+    return s->kind->bounds != NULL;
 }
 
 void shape_bounds(const shape *s, vec3 *lo, vec3 *hi)
 {
-    const kind_ops *k = &KINDS[s->desc.kind];
-    if (!k->bounds) {
+    if (!shape_is_bounded(s)) {
         *lo = v3(-SHAPE_PLANE_EXTENT, -SHAPE_PLANE_EXTENT, -SHAPE_PLANE_EXTENT);
         *hi = v3(SHAPE_PLANE_EXTENT, SHAPE_PLANE_EXTENT, SHAPE_PLANE_EXTENT);
         return;
     }
     vec3 a, b;
-    k->bounds(s, &a, &b);
+    s->kind->bounds(s, &a, &b);
     if (!s->has_transform) {
         *lo = a;
         *hi = b;
@@ -131,22 +126,21 @@ void shape_bounds(const shape *s, vec3 *lo, vec3 *hi)
     }
 }
 
+int shape_max_crossings(const shape *s)
+{
+    return s->kind->max_crossings;
+}
+
 bool shape_is_left_behind(const shape *s, vec3 n, vec3 d)
 {
-    glint_shape_kind k = s->desc.kind;
-    return k == GLINT_SHAPE_PLANE || k == GLINT_SHAPE_POLYGON || v3_dot(n, d) > 0;
+    return s->kind->flat || (s->kind->max_crossings <= 2 && v3_dot(n, d) > 0);
 }
+
+bool shape_always_closed(const glint_shape *d) { return true; }
+
+bool shape_closed_if_capped(const glint_shape *d) { return d->capped; }
 
 bool shape_is_closed(const shape *s)
 {
-    switch (s->desc.kind) {
-    case GLINT_SHAPE_SPHERE:
-    case GLINT_SHAPE_BOX:
-        return true;
-    case GLINT_SHAPE_CYLINDER:
-    case GLINT_SHAPE_CONE:
-        return s->desc.capped;
-    default:
-        return false;
-    }
+    return s->kind->closed && s->kind->closed(&s->desc);
 }

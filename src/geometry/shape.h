@@ -1,9 +1,10 @@
 /* shape.h - the common interface of the analytic shapes.
  *
  * Every shape is exact (never tessellated). Each kind lives in its own file
- * and works in object space; shape.c validates descriptions and moves rays
- * and results between world and object space through the shape's transform.
- * Embree sees shapes only through shape_bounds and shape_intersect. */
+ * behind one record (shape_kind.h) and works in object space; shape.c
+ * validates descriptions and moves rays and results between world and
+ * object space through the shape's transform. Embree sees shapes only
+ * through shape_bounds and shape_intersect. */
 #ifndef GLINT_GEOMETRY_SHAPE_H
 #define GLINT_GEOMETRY_SHAPE_H
 
@@ -38,14 +39,18 @@ static inline quad_mask plane_hit4(vec3 point, vec3 n, const ray8 *r, int first,
 /* Planes are bounded to this many units from the origin for the BVH. */
 #define SHAPE_PLANE_EXTENT 1e6
 
+typedef struct shape_kind shape_kind;
+
 typedef struct shape {
+    const shape_kind *kind;
     glint_shape desc;         /* object-space description, validated */
     vec3 poly_normal;         /* polygon: unit normal from the point order */
     vec3 plane_u, plane_v;    /* plane and polygon: unit tangents (u, v axes) */
     vec3 edge_in[4];          /* polygon: poly_normal x edge i, pointing inside */
     transform to_world, to_object;
     bool has_transform;       /* false: to_world is the identity */
-    bool flat;                /* a plane or polygon without a transform: */
+    bool quad;                /* shape_intersect4 takes it */
+    bool flat;                /* a flat kind (shape_kind.flat) without a transform: */
     vec3 flat_n;              /* its surface normal, the same at every hit */
     int material;
 } shape;
@@ -71,10 +76,10 @@ typedef struct surface {
 } surface;
 
 /* Fills *s from desc and transform (NULL: identity) after checking every
- * value: finite numbers, positive radius and height, 3 or 4 coplanar convex
- * non-degenerate polygon points, non-zero plane normal, box min < max, an
- * invertible transform. On failure fills err with a message naming the
- * problem (e.g. "sphere radius must be positive, got -1"). */
+ * value against its kind's parameter table and rules (3 or 4 coplanar
+ * convex polygon points, box min < max, ...) and that the transform is
+ * invertible. On failure fills err with a message naming the problem (e.g.
+ * "sphere radius must be positive, got -1"). */
 glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform *transform,
                         int material, glint_error *err);
 
@@ -82,11 +87,12 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
  * starts inside a closed shape finds the surface on its way out. */
 bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
 
-/* Whether shape_intersect4 takes s: a sphere or polygon without a
- * transform, the shapes most rays meet in the example scenes. */
+/* Whether shape_intersect4 takes s: a shape without a transform whose kind
+ * tests four lanes at once (spheres and polygons, the shapes most rays
+ * meet in the example scenes, and planes). */
 static inline bool shape_has_intersect4(const shape *s)
 {
-    return !s->has_transform && (s->desc.kind == GLINT_SHAPE_SPHERE || s->desc.kind == GLINT_SHAPE_POLYGON);
+    return s->quad;
 }
 
 /* shape_intersect with tmin 0 for the four rays of *r from lane `first` on,
@@ -97,10 +103,6 @@ static inline bool shape_has_intersect4(const shape *s)
  * callbacks test a packet's lanes with it. */
 quad_mask shape_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t);
 
-/* shape_intersect for a plane (s must be one), without looking up its
- * kind's test: for the callers that test planes themselves, often. */
-bool shape_intersect_plane(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
-
 /* Describes the surface at hit on world ray r, all but u and v. */
 void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *out);
 
@@ -108,12 +110,20 @@ void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *
  * surface filled by shape_surface. */
 void shape_surface_uv(const shape *s, surface *out);
 
-/* World-space axis-aligned bounds. */
+/* World-space axis-aligned bounds; for an unbounded shape (a plane) a box
+ * SHAPE_PLANE_EXTENT from the origin each way. */
 void shape_bounds(const shape *s, vec3 *lo, vec3 *hi);
 
+/* False for shapes with no bounds (planes): the accelerator tests those
+ * itself, as a hierarchy would offer them to every ray. */
+bool shape_is_bounded(const shape *s);
+
+/* The most times a ray can cross s (its kind's max_crossings). */
+int shape_max_crossings(const shape *s);
+
 /* True when a ray leaving the surface of s at a point whose outward normal
- * is n, along d, can never meet s again: s is flat (a plane or polygon), or
- * d points out of s, which is convex (every analytic shape is). */
+ * is n, along d, can never meet s again: s is flat, or d points out of s
+ * and s is convex (no line crosses it more than twice). */
 bool shape_is_left_behind(const shape *s, vec3 n, vec3 d);
 
 /* True for shapes that enclose a volume (sphere, box, capped cylinder,

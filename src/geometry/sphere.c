@@ -1,14 +1,9 @@
 /* sphere.c - spheres in object space: centre and radius. */
-#include "geometry/kinds.h"
+#include <stddef.h>
+#include "geometry/shape_kind.h"
+#include "geometry/shape_math.h"
 
-glint_status sphere_init(shape *s, glint_error *err)
-{
-    const glint_shape *d = &s->desc;
-    bool ok = finite_ok(d->center, "sphere", "centre", err) && positive_ok(d->radius, "sphere", "radius", err);
-    return ok ? GLINT_OK : GLINT_ERR_INVALID;
-}
-
-bool sphere_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+static bool sphere_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
     const glint_shape *d = &s->desc;
     vec3 oc = v3_sub(r->o, d->center);
@@ -21,7 +16,7 @@ bool sphere_intersect(const shape *s, const ray *r, double tmin, double tmax, sh
     return hit_take(&best, tmax, hit);
 }
 
-quad_mask sphere_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
+static quad_mask sphere_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
 {
     const glint_shape *d = &s->desc;
     quad_f64 dx = quad_load(r->dx + first), dy = quad_load(r->dy + first), dz = quad_load(r->dz + first);
@@ -54,22 +49,31 @@ quad_mask sphere_intersect4(const shape *s, const ray8 *r, int first, quad_f64 t
 
 /* u is the longitude (0.5 at +z, seam at -z), v runs from 0 at the north
  * (+y) pole to 1 at the south pole. */
-void sphere_surface(const shape *s, int part, surface *out)
+static void sphere_surface(const shape *s, int part, surface *out)
 {
     out->n = v3_sub(out->p_obj, s->desc.center);
 }
 
-void sphere_uv(const shape *s, int part, surface *out)
+static void sphere_uv(const shape *s, int part, surface *out)
 {
-    vec3 n = v3_normalize(v3_sub(out->p_obj, s->desc.center));
-    out->u = polar_u(n.x, n.z);
-    /* Rounding can push |n.y| a hair past 1, where asin is NaN. */
-    out->v = 0.5 - asin(fmax(-1.0, fmin(1.0, n.y))) / M_PI;
+    spherical_uv(v3_normalize(v3_sub(out->p_obj, s->desc.center)), &out->u, &out->v);
 }
 
-void sphere_bounds(const shape *s, vec3 *lo, vec3 *hi)
+static void sphere_bounds(const shape *s, vec3 *lo, vec3 *hi)
 {
     const glint_shape *d = &s->desc;
     *lo = v3_sub(d->center, v3(d->radius, d->radius, d->radius));
     *hi = v3_add(d->center, v3(d->radius, d->radius, d->radius));
 }
+
+static const param SPHERE_PARAMS[] = {
+    {.key = "center", .type = PARAM_VEC3, .offset = offsetof(glint_shape, center), .meaning = "the centre"},
+    {.key = "radius", .type = PARAM_NUMBER, .offset = offsetof(glint_shape, radius), .required = true,
+     PARAM_POSITIVE, .meaning = "the radius"},
+};
+
+const shape_kind sphere_kind = {
+    .name = "sphere", .id = GLINT_SHAPE_SPHERE, .params = PARAM_TABLE(SPHERE_PARAMS), .max_crossings = 2,
+    .closed = shape_always_closed, .intersect = sphere_intersect, .intersect4 = sphere_intersect4,
+    .surface = sphere_surface, .uv = sphere_uv, .bounds = sphere_bounds,
+};

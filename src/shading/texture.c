@@ -2,9 +2,8 @@
 #include <math.h>
 #include <stdlib.h>
 #include "core/error.h"
+#include "geometry/shape_math.h"
 #include "shading/texture.h"
-
-static const double TWO_PI = 6.283185307179586;
 
 glint_status mapping_validate(const glint_mapping *m, glint_error *err)
 {
@@ -23,15 +22,6 @@ glint_status mapping_validate(const glint_mapping *m, glint_error *err)
             return error_set(err, GLINT_ERR_INVALID, "planar mapping axes must not be parallel");
     }
     return GLINT_OK;
-}
-
-/* The (u, v) of direction d about the y axis and from the equator: the
- * original's spherical mapping. */
-static void angles_of(vec3 d, double *u, double *v)
-{
-    double y = d.y < -1 ? -1 : d.y > 1 ? 1 : d.y;
-    *u = 0.5 + atan2(d.x, d.z) / TWO_PI;
-    *v = 0.5 - asin(y) / M_PI;
 }
 
 void mapping_apply(const glint_mapping *m, const surface *s, double *u, double *v)
@@ -54,11 +44,11 @@ void mapping_apply(const glint_mapping *m, const surface *s, double *u, double *
         }
         return;
     case GLINT_MAP_SPHERICAL:
-        angles_of(v3_normalize(d), u, v);
+        spherical_uv(v3_normalize(d), u, v);
         return;
     case GLINT_MAP_CYLINDRICAL: {
-        double ignored;
-        angles_of(v3_normalize(v3(d.x, 0, d.z)), u, &ignored);
+        vec3 around = v3_normalize(v3(d.x, 0, d.z));
+        *u = polar_u(around.x, around.z);
         *v = d.y / scale;
         return;
     }

@@ -353,7 +353,7 @@ static void test_settings_other_values(void **state)
 /* A file that sets nothing gives the API's defaults; so does an empty one. */
 static void test_defaults_of_an_empty_scene(void **state)
 {
-    const char *texts[] = {"glint: 1\n", "", "# only a comment\n"};
+    const char *texts[] = {"glint: 1\n", "glint: 1 # and a comment\n"};
     for (size_t i = 0; i < COUNT(texts); i++) {
         glint_scene *s = load_good(texts[i]);
         glint_settings st = glint_scene_get_settings(s), def = glint_settings_default();
@@ -369,6 +369,31 @@ static void test_defaults_of_an_empty_scene(void **state)
         assert_int_equal(c.textures + c.materials + c.shapes + c.lights, 0);
         glint_scene_free(s);
     }
+}
+
+/* A scene file with nothing in it, or only comments, is refused, not
+ * rendered black: the file named is probably not the one meant. An empty
+ * included file is fine. */
+static void test_empty_file_holds_no_scene(void **state)
+{
+    const char *texts[] = {"", "# only a comment\n", "\n\n   \n", "---\n"};
+    for (size_t i = 0; i < COUNT(texts); i++) {
+        report_log log = {0};
+        glint_error err = {0};
+        load_bad(texts[i], 0, &log, &err);
+        assert_string_equal(err.message, "bad.yaml: the file holds no scene");
+        assert_int_equal(err.status, GLINT_ERR_INVALID);
+        assert_int_equal(log.count, 1);
+    }
+    write_tmp("empty/nothing.yaml", "# nothing yet\n");
+    write_tmp("empty/top.yaml", "include: nothing.yaml\nsettings: {width: 7}\n");
+    char path[PATH_SIZE];
+    tmp_path_made(path, "empty/top.yaml");
+    glint_error err = {0};
+    glint_scene *s = glint_scene_load_file(path, NULL, &err);
+    assert_non_null(s);
+    assert_int_equal(glint_scene_get_settings(s).width, 7);
+    glint_scene_free(s);
 }
 
 static void test_camera_every_key(void **state)
@@ -1483,13 +1508,13 @@ static const bad_scene BAD[] = {
      "  m: {}\n"
      "objects:\n"
      "  - {type: sphear, material: m, radius: 1}\n",
-     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, group or mesh, got 'sphear' (did you mean 'sphere'?)", 1},
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, group or mesh, got 'sphear' (did you mean 'sphere'?)", 1},
     {"object_type_no_hint",
      "materials:\n"
      "  m: {}\n"
      "objects:\n"
      "  - {type: torus, material: m, radius: 1}\n",
-     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, group or mesh, got 'torus'", 1},
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, group or mesh, got 'torus'", 1},
     {"light_type_no_hint",
      "lights:\n"
      "  - {type: area}\n",
@@ -1631,7 +1656,7 @@ static const bad_scene BAD[] = {
      "  m: {}\n"
      "objects:\n"
      "  - {type: plane, material: m, normal: [0, 0, 0]}\n",
-     "bad.yaml:4:5: plane normal must not be zero", 1},
+     "bad.yaml:4:40: 'normal' must not be zero", 1},
     {"scale_zero_vector",
      "materials:\n"
      "  m: {}\n"
@@ -2108,6 +2133,7 @@ int main(void)
         cmocka_unit_test(test_settings_every_key),
         cmocka_unit_test(test_settings_other_values),
         cmocka_unit_test(test_defaults_of_an_empty_scene),
+        cmocka_unit_test(test_empty_file_holds_no_scene),
         cmocka_unit_test(test_camera_every_key),
         cmocka_unit_test(test_fog_none),
         cmocka_unit_test(test_fog_linear),

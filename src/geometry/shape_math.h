@@ -1,60 +1,12 @@
-/* kinds.h - the per-kind half of the shape interface, between shape.c and
- * the files that each implement one kind in object space, and the bits of
- * arithmetic several kinds share.
- *
- * Every kind offers four functions:
- *   <kind>_init       checks s->desc (already copied in) and fills the
- *                     fields derived from it;
- *   <kind>_intersect  shape_intersect for a ray already in object space;
- *   <kind>_surface    fills out->n (object-space normal, any length) from
- *                     out->p_obj and the hit's part;
- *   <kind>_uv         fills out->u and out->v likewise, only when a texture
- *                     asks for them (atan2 and asin are not free);
- *   <kind>_bounds     object-space bounds (planes have none: unbounded). */
-#ifndef GLINT_GEOMETRY_KINDS_H
-#define GLINT_GEOMETRY_KINDS_H
+/* shape_math.h - the arithmetic several shape kinds share: offering
+ * candidate hits, quadratic roots, slabs, and the texture coordinates of
+ * discs, planes and angles about an axis. */
+#ifndef GLINT_GEOMETRY_SHAPE_MATH_H
+#define GLINT_GEOMETRY_SHAPE_MATH_H
 
 #include <math.h>
 #include <stdbool.h>
-#include "core/error.h"
 #include "geometry/shape.h"
-
-glint_status sphere_init(shape *s, glint_error *err);
-bool sphere_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
-quad_mask sphere_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t);
-void sphere_surface(const shape *s, int part, surface *out);
-void sphere_uv(const shape *s, int part, surface *out);
-void sphere_bounds(const shape *s, vec3 *lo, vec3 *hi);
-
-glint_status plane_init(shape *s, glint_error *err);
-bool plane_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
-void plane_surface(const shape *s, int part, surface *out);
-void plane_uv(const shape *s, int part, surface *out);
-
-glint_status polygon_init(shape *s, glint_error *err);
-bool polygon_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
-quad_mask polygon_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t);
-void polygon_surface(const shape *s, int part, surface *out);
-void polygon_uv(const shape *s, int part, surface *out);
-void polygon_bounds(const shape *s, vec3 *lo, vec3 *hi);
-
-glint_status box_init(shape *s, glint_error *err);
-bool box_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
-void box_surface(const shape *s, int part, surface *out);
-void box_uv(const shape *s, int part, surface *out);
-void box_bounds(const shape *s, vec3 *lo, vec3 *hi);
-
-glint_status cylinder_init(shape *s, glint_error *err);
-bool cylinder_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
-void cylinder_surface(const shape *s, int part, surface *out);
-void cylinder_uv(const shape *s, int part, surface *out);
-void cylinder_bounds(const shape *s, vec3 *lo, vec3 *hi);
-
-glint_status cone_init(shape *s, glint_error *err);
-bool cone_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
-void cone_surface(const shape *s, int part, surface *out);
-void cone_uv(const shape *s, int part, surface *out);
-void cone_bounds(const shape *s, vec3 *lo, vec3 *hi);
 
 /* The texture axes of a plane with unit normal n. Seen from the side n
  * points to, u runs right and v runs down, as in an image. Planes more than
@@ -153,6 +105,16 @@ static inline bool slab(double o, double d, double lo, double hi, double *t_in, 
  * the seam where 0 meets 1 towards -z. */
 static inline double polar_u(double x, double z) { return 0.5 + atan2(x, z) / (2 * M_PI); }
 
+/* The (u, v) of unit direction d: u the angle about +y (polar_u), v from 0
+ * at the north (+y) pole to 1 at the south pole. Spheres and the spherical
+ * texture mapping share it. */
+static inline void spherical_uv(vec3 d, double *u, double *v)
+{
+    *u = polar_u(d.x, d.z);
+    /* Rounding can push |d.y| a hair past 1, where asin is NaN. */
+    *v = 0.5 - asin(fmax(-1.0, fmin(1.0, d.y))) / M_PI;
+}
+
 /* Texture coordinates on a disc about the y axis: the disc's square of
  * side 2 * radius mapped to [0, 1]^2, u along +x, v along +z. */
 static inline void disc_uv(vec3 local, double radius, surface *out)
@@ -161,30 +123,14 @@ static inline void disc_uv(vec3 local, double radius, surface *out)
     out->v = 0.5 + local.z / (2 * radius);
 }
 
-static inline bool finite_ok(vec3 v, const char *kind, const char *what, glint_error *err)
-{
-    if (v3_is_finite(v))
-        return true;
-    error_set(err, GLINT_ERR_INVALID, "%s %s is not finite", kind, what);
-    return false;
-}
-
-static inline bool positive_ok(double x, const char *kind, const char *what, glint_error *err)
-{
-    if (!isfinite(x))
-        error_set(err, GLINT_ERR_INVALID, "%s %s is not finite", kind, what);
-    else if (x <= 0)
-        error_set(err, GLINT_ERR_INVALID, "%s %s must be positive, got %g", kind, what, x);
-    return isfinite(x) && x > 0;
-}
-
-/* Cylinders and cones are described alike: base centre, radius, height. */
-static inline glint_status axial_check(const glint_shape *d, const char *kind, glint_error *err)
-{
-    bool ok = finite_ok(d->center, kind, "centre", err) && positive_ok(d->radius, kind, "radius", err)
-              && positive_ok(d->height, kind, "height", err);
-    return ok ? GLINT_OK : GLINT_ERR_INVALID;
-}
+/* The parameters cylinders and cones share: base centre, radius, height. */
+#define AXIAL_PARAMS                                                                                          \
+    {.key = "center", .type = PARAM_VEC3, .offset = offsetof(glint_shape, center),                          \
+     .meaning = "the centre of the base"},                                                                   \
+    {.key = "radius", .type = PARAM_NUMBER, .offset = offsetof(glint_shape, radius), .required = true,      \
+     PARAM_POSITIVE, .meaning = "the radius of the base"},                                                   \
+    {.key = "height", .type = PARAM_NUMBER, .offset = offsetof(glint_shape, height), .required = true,      \
+     PARAM_POSITIVE, .meaning = "the height along +y"}
 
 /* Bounds of a shape standing on its base centre: radius about the y axis,
  * height up. */

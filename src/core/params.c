@@ -1,0 +1,142 @@
+/* params.c - defaults and checks from a parameter table (params.h). */
+#include <math.h>
+#include <stdio.h>
+#include <string.h>
+#include "core/error.h"
+#include "core/params.h"
+
+/* Numbers at least this large read as "no upper limit" in the wording. */
+#define PARAM_UNBOUNDED 1e300
+
+static void *field(void *obj, size_t offset) { return (char *)obj + offset; }
+static const void *cfield(const void *obj, size_t offset) { return (const char *)obj + offset; }
+
+void params_defaults(param_table t, void *obj)
+{
+    for (int i = 0; i < t.count; i++) {
+        const param *p = &t.params[i];
+        void *f = field(obj, p->offset);
+        switch (p->type) {
+        case PARAM_NUMBER:
+            *(double *)f = p->def[0];
+            break;
+        case PARAM_INTEGER:
+            *(int *)f = (int)p->def[0];
+            break;
+        case PARAM_BOOL:
+            *(bool *)f = p->def[0] != 0;
+            break;
+        case PARAM_VEC3:
+        case PARAM_DIRECTION:
+            *(glint_vec3 *)f = (glint_vec3){p->def[0], p->def[1], p->def[2]};
+            break;
+        case PARAM_COLOR:
+            *(glint_color *)f = (glint_color){p->def[0], p->def[1], p->def[2]};
+            break;
+        case PARAM_POINTS:
+            *(int *)field(obj, p->count_offset) = 0;
+            break;
+        }
+    }
+}
+
+bool param_in_range(const param *p, double v)
+{
+    if (!(v >= p->lo && v <= p->hi))
+        return false;
+    if (p->bounds != PARAM_CLOSED && v == p->lo)
+        return false;
+    return !(p->bounds == PARAM_OPEN_BOTH && v == p->hi);
+}
+
+void param_range_text(const param *p, char *buf, size_t size)
+{
+    const char *unit = p->unit ? p->unit : "";
+    const char *space = p->unit ? " " : "";
+    bool unbounded = p->hi >= PARAM_UNBOUNDED;
+    if (p->bounds == PARAM_OPEN_BOTH)
+        snprintf(buf, size, "between %g and %g%s%s", p->lo, p->hi, space, unit);
+    else if (p->bounds == PARAM_OPEN_LOW && unbounded)
+        snprintf(buf, size, p->lo == 0 ? "positive" : "above %g%s%s", p->lo, space, unit);
+    else if (p->bounds == PARAM_OPEN_LOW)
+        snprintf(buf, size, "above %g and at most %g%s%s", p->lo, p->hi, space, unit);
+    else
+        snprintf(buf, size, "from %g to %g%s%s", p->lo, p->hi, space, unit);
+}
+
+/* Fills err for number v of p, out of its range. */
+static glint_status out_of_range(const param *p, const char *what, double v, glint_error *err)
+{
+    if (!isfinite(v))
+        return error_set(err, GLINT_ERR_INVALID, "%s %s is not finite", what, p->key);
+    char range[96];
+    param_range_text(p, range, sizeof range);
+    return error_set(err, GLINT_ERR_INVALID, "%s %s must be %s, got %g", what, p->key, range, v);
+}
+
+static bool vec_finite(glint_vec3 v) { return isfinite(v.x) && isfinite(v.y) && isfinite(v.z); }
+
+/* Checks one field of obj. */
+static glint_status check_one(const param *p, const void *obj, const char *what, glint_error *err)
+{
+    const void *f = cfield(obj, p->offset);
+    switch (p->type) {
+    case PARAM_NUMBER: {
+        double v = *(const double *)f;
+        return param_in_range(p, v) ? GLINT_OK : out_of_range(p, what, v, err);
+    }
+    case PARAM_INTEGER: {
+        int v = *(const int *)f;
+        return param_in_range(p, v) ? GLINT_OK : out_of_range(p, what, v, err);
+    }
+    case PARAM_BOOL:
+        return GLINT_OK;
+    case PARAM_VEC3:
+    case PARAM_DIRECTION: {
+        glint_vec3 v = *(const glint_vec3 *)f;
+        if (!vec_finite(v))
+            return error_set(err, GLINT_ERR_INVALID, "%s %s is not finite", what, p->key);
+        if (p->type == PARAM_DIRECTION && v.x == 0 && v.y == 0 && v.z == 0)
+            return error_set(err, GLINT_ERR_INVALID, "%s %s must not be zero", what, p->key);
+        return GLINT_OK;
+    }
+    case PARAM_COLOR: {
+        glint_color c = *(const glint_color *)f;
+        double channels[3] = {c.r, c.g, c.b};
+        for (int k = 0; k < 3; k++)
+            if (!param_in_range(p, channels[k]))
+                return error_set(err, GLINT_ERR_INVALID, "%s %s must be finite and not negative", what, p->key);
+        return GLINT_OK;
+    }
+    case PARAM_POINTS: {
+        int n = *(const int *)cfield(obj, p->count_offset);
+        if (n < p->min_count || n > p->max_count)
+            return error_set(err, GLINT_ERR_INVALID, "%s needs %d %s %d %s, got %d", what, p->min_count,
+                             p->max_count == p->min_count + 1 ? "or" : "to", p->max_count, p->key, n);
+        const glint_vec3 *pts = f;
+        for (int k = 0; k < n; k++)
+            if (!vec_finite(pts[k]))
+                return error_set(err, GLINT_ERR_INVALID, "%s point %d is not finite", what, k);
+        return GLINT_OK;
+    }
+    }
+    return GLINT_OK;
+}
+
+glint_status params_check(param_table t, const void *obj, const char *what, glint_error *err)
+{
+    for (int i = 0; i < t.count; i++) {
+        glint_status s = check_one(&t.params[i], obj, what, err);
+        if (s)
+            return s;
+    }
+    return GLINT_OK;
+}
+
+const param *params_find(param_table t, const char *key)
+{
+    for (int i = 0; i < t.count; i++)
+        if (strcmp(t.params[i].key, key) == 0)
+            return &t.params[i];
+    return NULL;
+}

@@ -1,0 +1,68 @@
+/* shape_kind.h - one record per kind of analytic shape, and the registry
+ * that lists them.
+ *
+ * A kind is one file (sphere.c, disk.c, ...) that exports one shape_kind:
+ * its scene-file name, its parameter table (the fields of glint_shape it
+ * reads, with defaults and ranges: core/params.h), what the accelerator and
+ * the integrator may assume of it, and its operations, all in object space.
+ * shape.c moves rays and results between world and object space; the
+ * scene-file loader, the C API's checks and the docs test all read the
+ * parameter table. Adding a kind: docs/architecture.md. */
+#ifndef GLINT_GEOMETRY_SHAPE_KIND_H
+#define GLINT_GEOMETRY_SHAPE_KIND_H
+
+#include <stdbool.h>
+#include "core/params.h"
+#include "core/error.h"
+#include "geometry/shape.h"
+
+struct shape_kind {
+    const char *name;         /* the scene file's `type` */
+    glint_shape_kind id;
+    param_table params;
+    /* The most times one line crosses the surface: 1 for flat kinds, 2 for
+     * convex ones (a ray leaving such a surface outwards never meets it
+     * again), 4 for a torus. Shadow rays look for this many crossings. */
+    int max_crossings;
+    /* Lies in one plane: its normal is the same at every point, and a ray
+     * leaving it never meets it again. */
+    bool flat;
+    /* Whether a shape of this kind encloses a volume (a ray enters and
+     * leaves it), from its description; NULL: never. */
+    bool (*closed)(const glint_shape *d);
+    /* Checks what the table cannot (rules across fields) and fills the
+     * fields of s derived from s->desc; NULL: nothing to do. */
+    glint_status (*init)(shape *s, glint_error *err);
+    /* shape_intersect for a ray already in object space. */
+    bool (*intersect)(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
+    /* intersect with tmin 0 for the four lanes of *r from `first` on, each
+     * lane's bits as intersect gives them; NULL: the accelerator tests
+     * lanes one by one. Unbounded kinds must have it. */
+    quad_mask (*intersect4)(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t);
+    /* Fills out->n (object space, any length) from out->p_obj and part. */
+    void (*surface)(const shape *s, int part, surface *out);
+    /* Fills out->u and out->v, only when a texture asks for them. */
+    void (*uv)(const shape *s, int part, surface *out);
+    /* Object-space bounds; NULL: unbounded (a plane), which the
+     * accelerator tests itself rather than through its hierarchy. */
+    void (*bounds)(const shape *s, vec3 *lo, vec3 *hi);
+};
+
+extern const shape_kind sphere_kind, plane_kind, polygon_kind, box_kind, cylinder_kind, cone_kind, disk_kind;
+
+/* The `closed` of kinds that always enclose a volume (spheres, boxes), and
+ * of those that do when capped (cylinders, cones). */
+bool shape_always_closed(const glint_shape *d);
+bool shape_closed_if_capped(const glint_shape *d);
+
+/* The kind with that public id, or NULL for an id no kind has. */
+const shape_kind *shape_kind_of(glint_shape_kind id);
+
+/* The kind with that scene-file name, or NULL. */
+const shape_kind *shape_kind_named(const char *name);
+
+/* The number of kinds, and kind i of them, in the order the docs list them. */
+int shape_kind_count(void);
+const shape_kind *shape_kind_at(int i);
+
+#endif

@@ -1,0 +1,126 @@
+/* loader.h - the scene-file loader's state and the readers its files share:
+ * scene_file.c reads files, includes and the root; read_values.c typed
+ * values and parameter tables; read_sections.c settings, camera and fog;
+ * read_looks.c textures, materials and lights; read_objects.c objects,
+ * groups, transforms and models. The reference for every key is
+ * docs/scene-format.md. */
+#ifndef GLINT_SCENEFILE_LOADER_H
+#define GLINT_SCENEFILE_LOADER_H
+
+#include "core/params.h"
+#include "scene/scene.h"
+#include "scenefile/yaml_read.h"
+
+#define MAX_INCLUDE_DEPTH 16
+#define COUNT(a) ((int)(sizeof(a) / sizeof((a)[0])))
+
+typedef struct loader {
+    glint_scene *scene;
+    diag d;
+    reader r;
+    glint_settings settings;
+    glint_camera camera;
+    glint_fog fog;
+    const ynode *settings_node, *camera_node, *fog_node;  /* the last file's, for messages */
+    unsigned fog_keys;                                   /* FOG_* keys given in any file */
+    const char *output;
+    const char *chain[MAX_INCLUDE_DEPTH + 1];   /* canonical paths of the files being read */
+    int depth;
+    ydoc *docs;                                  /* kept until the end: nodes name their file */
+    int doc_count, doc_cap;
+    int files;                                   /* files read so far */
+    struct imported *imports;                    /* models read so far: each once */
+    int import_count, import_cap;
+    long bytes;                                  /* bytes read so far, all files */
+} loader;
+
+/* A model file already imported, so that every object placing it shares
+ * one mesh. */
+struct imported {
+    char *path;               /* canonical */
+    double crease_angle;
+    int mesh;
+};
+
+enum { FOG_TYPE = 1, FOG_START = 2, FOG_END = 4, FOG_DENSITY = 8 };
+
+/* What an object inherits from the groups around it. */
+typedef struct context {
+    glint_transform to_world;
+    int material;             /* -1: none yet */
+    int depth;
+} context;
+
+/* Whether the walk goes on: neither the problem limit nor the visit limit
+ * is reached. */
+static inline bool ok(const loader *l)
+{
+    return !diag_full(&l->d) && !l->r.exhausted;
+}
+
+/* ------------------------------------------------------ read_values.c */
+
+/* A required number, reported where it is missing or not a number. */
+bool need_number(loader *l, const ynode *map, const char *key, const char *what, double *out);
+
+/* A required vector. */
+bool need_vec3(loader *l, const ynode *map, const char *key, const char *what, vec3 *out);
+
+/* Which ends of a range are excluded. */
+typedef enum bounds { CLOSED, OPEN_LOW, OPEN_BOTH } bounds;
+
+/* Reads an optional number and checks it lies between lo and hi, reporting
+ * "'key' must be <range>, got v" where range is the human wording. */
+bool ranged(loader *l, const ynode *map, const char *key, double lo, double hi, bounds open, const char *range,
+            double *out);
+
+/* True when key is present in map and a whole number in [lo, hi]. */
+bool present_integer(loader *l, const ynode *map, const char *key, long long lo, long long hi, long long *v);
+
+/* Matches a scalar against a list of words; reports with a hint. */
+int word(loader *l, const ynode *n, const char *key, const char *const *words, int count);
+
+/* The kind of a map that must say its `type`: the index of that word among
+ * `kinds`, or -1 after a report. `what` names the map ("a light"). */
+int typed_map(loader *l, const ynode *n, const char *what, const char *const *kinds, int count);
+
+/* Joins a path named in file `from` to that file's directory. */
+char *relative_to(const char *from, const char *path);
+
+/* Reads every key of table t that map gives into the fields of obj (which
+ * holds the defaults), reporting each value of the wrong type or out of
+ * range, and each required key that is missing ("<what> needs 'key'").
+ * True when all were good. */
+bool read_params(loader *l, const ynode *map, param_table t, const char *what, void *obj);
+
+/* The keys of table t after `common`, into keys (room for `room`); returns
+ * how many, for yr_check_keys. */
+int param_keys(param_table t, const char *const *common, int common_count, const char **keys, int room);
+
+/* ---------------------------------------------------- read_sections.c */
+
+void read_settings(loader *l, const ynode *n);
+void read_camera(loader *l, const ynode *n);
+void read_fog(loader *l, const ynode *n);
+
+/* The keys fog needs, checked once every file has had its say. */
+bool fog_complete(loader *l);
+
+/* ------------------------------------------------------- read_looks.c */
+
+/* A texture or material named `name` in its section, defined from map n. */
+void read_texture(loader *l, const char *name, const ynode *n);
+void read_material(loader *l, const char *name, const ynode *n);
+
+/* An object's material: a name, or an inline map. -1 when it is wrong. */
+int object_material(loader *l, const ynode *n);
+
+/* One item of the lights list. */
+void read_light(loader *l, const ynode *n);
+
+/* ----------------------------------------------------- read_objects.c */
+
+/* Adds each object of the list, inside context ctx. */
+void read_objects(loader *l, const ynode *list, const context *ctx);
+
+#endif

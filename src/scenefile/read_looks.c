@@ -1,0 +1,227 @@
+/* read_looks.c - the scene file's textures, materials and lights. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "scenefile/loader.h"
+
+static bool read_mapping(loader *l, const ynode *n, glint_mapping *m)
+{
+    static const char *const kinds[] = {"uv", "planar", "spherical", "cylindrical"};
+    /* The keys each kind of mapping reads, by kind. */
+    static const char *const keys[] = {"type", "center", "scale", "u_axis", "v_axis"};
+    static const int key_count[] = {1, 5, 2, 3};
+    const ynode *type = n;
+    if (n->kind == YNODE_MAPPING) {
+        type = yr_need(&l->r, n, "type", "mapping");
+        if (!type)
+            return false;
+    }
+    int k = word(l, type, n == type ? "mapping" : "type", kinds, COUNT(kinds));
+    if (k < 0)
+        return false;
+    m->kind = (glint_mapping_kind)k;
+    if (n->kind != YNODE_MAPPING)
+        return true;
+    char what[40];
+    snprintf(what, sizeof what, "a %s mapping", kinds[k]);
+    yr_check_keys(&l->r, n, what, keys, key_count[k]);
+    bool good = yr_opt_vec3(&l->r, n, "center", &m->center) && yr_opt_vec3(&l->r, n, "u_axis", &m->u_axis) &&
+                yr_opt_vec3(&l->r, n, "v_axis", &m->v_axis) &&
+                ranged(l, n, "scale", 0, 1e300, OPEN_LOW, "positive", &m->scale);
+    if (good && k == GLINT_MAP_PLANAR && (!yr_get(&l->r, n, "u_axis")) != (!yr_get(&l->r, n, "v_axis"))) {
+        diag_at(&l->d, n, "a planar mapping needs both 'u_axis' and 'v_axis', or neither");
+        return false;
+    }
+    return good;
+}
+
+static void add_texture(loader *l, const char *name, const ynode *n)
+{
+    static const char *const kinds[] = {"checker", "image"};
+    static const char *const keys[2][4] = {{"type", "mapping", "colors", "size"}, {"type", "mapping", "file"}};
+    char what[160];
+    snprintf(what, sizeof what, "texture '%.100s'", name);
+    int kind = typed_map(l, n, what, kinds, COUNT(kinds));
+    if (kind >= 0)
+        yr_check_keys(&l->r, n, what, keys[kind], kind == 0 ? 4 : 3);
+    glint_mapping mapping = {.kind = GLINT_MAP_UV};
+    const ynode *m = yr_get(&l->r, n, "mapping");
+    if (kind < 0 || (m && !read_mapping(l, m, &mapping)))
+        return;
+    glint_error err;
+    if (scene_find_texture(l->scene, name) >= 0) {
+        diag_at(&l->d, n, "texture '%.100s' is defined twice", name);
+        return;
+    }
+    if (kind == 0) {
+        color c[2] = {{0, 0, 0}, {1, 1, 1}};
+        double size = 1;
+        const ynode *colors = yr_get(&l->r, n, "colors");
+        if (colors && (colors->kind != YNODE_SEQUENCE || colors->count != 2)) {
+            diag_at(&l->d, colors, "'colors' must be a list of two colours");
+            return;
+        }
+        if ((colors && (!yr_color(&l->r, colors->items[0], "colors", &c[0]) ||
+                        !yr_color(&l->r, colors->items[1], "colors", &c[1]))) ||
+            !ranged(l, n, "size", 0, 1e300, OPEN_LOW, "positive", &size))
+            return;
+        if (glint_scene_add_checker(l->scene, name, c[0], c[1], size, mapping, &err) < 0)
+            diag_at(&l->d, n, "%s", err.message);
+        return;
+    }
+    const ynode *file = yr_need(&l->r, n, "file", what);
+    const char *path;
+    if (!file || !yr_text(&l->r, file, "file", &path))
+        return;
+    char *full = relative_to(n->file, path);
+    if (!full) {
+        diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
+        return;
+    }
+    if (glint_scene_add_image_file(l->scene, name, full, mapping, &err) < 0)
+        diag_at(&l->d, file, "%s", err.message);
+    free(full);
+}
+
+void read_texture(loader *l, const char *name, const ynode *n)
+{
+    add_texture(l, name, n);
+    if (scene_find_texture(l->scene, name) < 0) {
+        /* A stand-in keeps the name known: no second report at each use. */
+        glint_mapping uv = {.kind = GLINT_MAP_UV};
+        glint_scene_add_checker(l->scene, name, rgb(0, 0, 0), rgb(1, 1, 1), 1, uv, NULL);
+    }
+}
+
+/* ------------------------------------------------------------ materials */
+
+/* Reports an unknown texture or material name at n, with the nearest
+ * defined name as a hint. */
+static void unknown_name(loader *l, const ynode *n, bool is_texture, const char *name)
+{
+    const glint_scene *sc = l->scene;
+    int total = is_texture ? sc->texture_count : sc->material_count, count = 0;
+    const char **names = malloc((size_t)(total ? total : 1) * sizeof *names);
+    for (int i = 0; names && i < total; i++) {
+        const char *candidate = is_texture ? sc->textures[i].name : sc->materials[i].name;
+        if (candidate)
+            names[count++] = candidate;
+    }
+    const char *hint = names ? diag_suggest(name, names, count) : NULL;
+    const char *kind = is_texture ? "texture" : "material";
+    if (hint)
+        diag_at(&l->d, n, "unknown %s '%.100s' (did you mean '%s'?)", kind, name, hint);
+    else
+        diag_at(&l->d, n, "unknown %s '%.100s'", kind, name);
+    free(names);
+}
+
+/* Reads a material map's keys over *m (which holds the defaults). */
+static bool read_material_keys(loader *l, const ynode *n, const char *what, glint_material *m)
+{
+    static const char *const keys[] = {"color", "texture", "ambient", "diffuse", "specular", "shininess",
+                                       "reflectivity", "transparency", "refraction", "ior", "tint", "fresnel"};
+    if (!yr_is_map(&l->r, n, what))
+        return false;
+    int before = l->d.count;
+    yr_check_keys(&l->r, n, what, keys, COUNT(keys));
+    yr_opt_color(&l->r, n, "color", &m->color);
+    ranged(l, n, "ambient", 0, 1, CLOSED, "from 0 to 1", &m->ambient);
+    ranged(l, n, "diffuse", 0, 1e300, CLOSED, "from 0 to 1e300", &m->diffuse);
+    ranged(l, n, "specular", 0, 1e300, CLOSED, "from 0 to 1e300", &m->specular);
+    ranged(l, n, "shininess", 0, 1e300, CLOSED, "from 0 to 1e300", &m->shininess);
+    ranged(l, n, "reflectivity", 0, 1, CLOSED, "from 0 to 1", &m->reflectivity);
+    ranged(l, n, "transparency", 0, 1, CLOSED, "from 0 to 1", &m->transparency);
+    ranged(l, n, "refraction", 0, 1, CLOSED, "from 0 to 1", &m->refraction);
+    ranged(l, n, "ior", 0, 1e300, OPEN_LOW, "above 0", &m->ior);
+    ranged(l, n, "tint", 0, 1, CLOSED, "from 0 to 1", &m->tint);
+    yr_opt_bool(&l->r, n, "fresnel", &m->fresnel);
+    const ynode *tex = yr_get(&l->r, n, "texture");
+    const char *name;
+    if (tex && yr_text(&l->r, tex, "texture", &name)) {
+        m->texture = scene_find_texture(l->scene, name);
+        if (m->texture < 0)
+            unknown_name(l, tex, true, name);
+    }
+    if (l->d.count == before && m->transparency + m->refraction > 1) {
+        diag_at(&l->d, n, "transparency + refraction must not exceed 1, got %g", m->transparency + m->refraction);
+    }
+    return l->d.count == before;
+}
+
+void read_material(loader *l, const char *name, const ynode *n)
+{
+    char what[160];
+    snprintf(what, sizeof what, "material '%.100s'", name);
+    glint_material m = glint_material_default();
+    glint_error err;
+    if (scene_find_material(l->scene, name) >= 0) {
+        diag_at(&l->d, n, "material '%.100s' is defined twice", name);
+        return;
+    }
+    if (!read_material_keys(l, n, what, &m))
+        m = glint_material_default(); /* keeps the name known: no second report at each use */
+    if (glint_scene_add_material(l->scene, name, &m, &err) < 0)
+        diag_at(&l->d, n, "%s", err.message);
+}
+
+/* An object's material: a name, or an inline map. -1 when it is wrong. */
+int object_material(loader *l, const ynode *n)
+{
+    if (n->kind == YNODE_MAPPING) {
+        glint_material m = glint_material_default();
+        glint_error err;
+        int i = -1;
+        if (read_material_keys(l, n, "material", &m) && (i = glint_scene_add_material(l->scene, NULL, &m, &err)) < 0)
+            diag_at(&l->d, n, "%s", err.message);
+        return i;
+    }
+    const char *name;
+    if (!yr_text(&l->r, n, "material", &name))
+        return -1;
+    int i = scene_find_material(l->scene, name);
+    if (i < 0)
+        unknown_name(l, n, false, name);
+    return i;
+}
+
+/* --------------------------------------------------------------- lights */
+
+void read_light(loader *l, const ynode *n)
+{
+    static const char *const kinds[] = {"point", "spot", "directional"};
+    static const char *const keys[3][7] = {
+        {"type", "color", "intensity", "position"},
+        {"type", "color", "intensity", "position", "direction", "angle", "falloff"},
+        {"type", "color", "intensity", "direction"},
+    };
+    static const int key_count[] = {4, 7, 4};
+    int k = typed_map(l, n, "a light", kinds, COUNT(kinds));
+    if (k < 0)
+        return;
+    char kind_name[32];
+    snprintf(kind_name, sizeof kind_name, "a %s light", kinds[k]);
+    yr_check_keys(&l->r, n, kind_name, keys[k], key_count[k]);
+    glint_light lt = {.kind = (glint_light_kind)k, .color = {1, 1, 1}};
+    double intensity = 1;
+    const char *what = kinds[k];
+    char label[32];
+    snprintf(label, sizeof label, "a %s light", what);
+    bool good = yr_opt_color(&l->r, n, "color", &lt.color) &&
+                ranged(l, n, "intensity", 0, 1e300, CLOSED, "from 0 to 1e300", &intensity);
+    if (k != GLINT_LIGHT_DIRECTIONAL)
+        good = need_vec3(l, n, "position", label, &lt.position) && good;
+    if (k != GLINT_LIGHT_POINT)
+        good = need_vec3(l, n, "direction", label, &lt.direction) && good;
+    if (k == GLINT_LIGHT_SPOT) {
+        good = yr_need(&l->r, n, "angle", label) &&
+               ranged(l, n, "angle", 0, 90, OPEN_LOW, "above 0 and at most 90 degrees", &lt.cone_angle) && good;
+        good = good && ranged(l, n, "falloff", 0, lt.cone_angle, CLOSED, "from 0 to the cone angle",
+                              &lt.falloff_angle);
+    }
+    lt.color = rgb_scale(lt.color, intensity);
+    glint_error err;
+    if (good && glint_scene_add_light(l->scene, &lt, &err) < 0)
+        diag_at(&l->d, n, "%s", err.message);
+}
+

@@ -1,0 +1,221 @@
+/* read_objects.c - the scene file's objects: shapes of every registered
+ * kind, groups with their transforms and materials, and model files. */
+/* realpath() is X/Open. */
+#define _XOPEN_SOURCE 700
+#include <errno.h>
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "core/transform.h"
+#include "geometry/shape_kind.h"
+#include "scenefile/loader.h"
+
+#define MAX_GROUP_DEPTH 32
+
+static bool read_transform(loader *l, const ynode *n, glint_transform *t)
+{
+    static const char *const steps[] = {"translate", "rotate", "rotate_x", "rotate_y", "rotate_z", "scale"};
+    static const char *const rotate_keys[] = {"axis", "angle"};
+    if (!yr_is_list(&l->r, n, "'transform'"))
+        return false;
+    for (int i = 0; i < n->count; i++) {
+        const ynode *step = n->items[i];
+        if (!yr_visit(&l->r, step))
+            return false;
+        if (step->kind != YNODE_MAPPING || step->count != 2) {
+            diag_at(&l->d, step, "each transform step is a map with one key: translate, rotate, rotate_x, "
+                                 "rotate_y, rotate_z or scale");
+            return false;
+        }
+        const ynode *key = step->items[0], *v = step->items[1];
+        int k = word(l, key, "transform step", steps, COUNT(steps));
+        vec3 vec;
+        double a;
+        if (k == 0) {
+            if (!yr_vec3(&l->r, v, "translate", &vec))
+                return false;
+            *t = glint_transform_translate(*t, vec.x, vec.y, vec.z);
+        } else if (k == 1) {
+            if (!yr_is_map(&l->r, v, "'rotate'"))
+                return false;
+            yr_check_keys(&l->r, v, "rotate", rotate_keys, COUNT(rotate_keys));
+            if (!need_vec3(l, v, "axis", "rotate", &vec) || !need_number(l, v, "angle", "rotate", &a))
+                return false;
+            if (v3_length(vec) == 0) {
+                diag_at(&l->d, yr_get(&l->r, v, "axis"), "'axis' must not be zero");
+                return false;
+            }
+            *t = glint_transform_rotate(*t, vec, a);
+        } else if (k >= 2 && k <= 4) {
+            if (!yr_number(&l->r, v, steps[k], &a))
+                return false;
+            vec3 axis = v3(k == 2, k == 3, k == 4);
+            *t = glint_transform_rotate(*t, axis, a);
+        } else if (k == 5) {
+            if (v->kind == YNODE_SCALAR) {
+                if (!yr_number(&l->r, v, "scale", &a))
+                    return false;
+                vec = v3(a, a, a);
+            } else if (!yr_vec3(&l->r, v, "scale", &vec)) {
+                return false;
+            }
+            if (vec.x == 0 || vec.y == 0 || vec.z == 0) {
+                diag_at(&l->d, v, "'scale' must not be zero");
+                return false;
+            }
+            *t = glint_transform_scale(*t, vec.x, vec.y, vec.z);
+        } else {
+            return false;
+        }
+    }
+    return true;
+}
+
+void read_objects(loader *l, const ynode *list, const context *ctx);
+
+/* The mesh of a model file, imported on first use. */
+static int import_model(loader *l, const ynode *file, const char *path, double crease)
+{
+    char canonical[PATH_MAX];
+    if (!realpath(path, canonical)) {
+        diag_at(&l->d, file, "cannot read model '%s': %s", path, strerror(errno));
+        return -1;
+    }
+    for (int i = 0; i < l->import_count; i++)
+        if (l->imports[i].crease_angle == crease && strcmp(l->imports[i].path, canonical) == 0)
+            return l->imports[i].mesh;
+    glint_import_options o = {.crease_angle = crease, .default_material = -1};
+    glint_error err;
+    int mesh_index = glint_scene_import_mesh(l->scene, path, &o, &err);
+    if (mesh_index < 0) {
+        diag_at(&l->d, file, "%s", err.message);
+        return -1;
+    }
+    if (l->import_count == l->import_cap) {
+        int ncap = l->import_cap ? 2 * l->import_cap : 8;
+        struct imported *p = realloc(l->imports, (size_t)ncap * sizeof *p);
+        if (!p)
+            return mesh_index;
+        l->imports = p;
+        l->import_cap = ncap;
+    }
+    char *copy = strdup(canonical);
+    if (copy)
+        l->imports[l->import_count++] = (struct imported){copy, crease, mesh_index};
+    return mesh_index;
+}
+
+/* A mesh object: its model file's triangles, placed; `override` (>= 0)
+ * replaces the file's own materials. */
+static void place_mesh(loader *l, const ynode *n, int override, const glint_transform *to_world)
+{
+    const ynode *file = yr_need(&l->r, n, "file", "mesh");
+    const char *path;
+    double crease = 80;
+    if (!file || !yr_text(&l->r, file, "file", &path) ||
+        !ranged(l, n, "crease_angle", 0, 180, CLOSED, "from 0 to 180 degrees", &crease))
+        return;
+    char *full = relative_to(n->file, path);
+    if (!full) {
+        diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
+        return;
+    }
+    int mesh_index = import_model(l, file, full, crease);
+    free(full);
+    glint_error err;
+    if (mesh_index >= 0 && glint_scene_add_instance(l->scene, mesh_index, override, to_world, &err) < 0)
+        diag_at(&l->d, n, "%s", err.message);
+}
+
+/* The object types that are not shapes. */
+enum { OBJECT_GROUP, OBJECT_MESH, OBJECT_SHAPE };
+static const char *const NOT_SHAPES[] = {"group", "mesh"};
+static const char *const GROUP_KEYS[] = {"objects"};
+static const char *const MESH_KEYS[] = {"file", "crease_angle"};
+
+/* The type of object map n: a group, a mesh or (with *kind set) a shape;
+ * -1 after a report. */
+static int object_type(loader *l, const ynode *n, const shape_kind **kind)
+{
+    const char *names[32];
+    int shapes = shape_kind_count(), count = 0;
+    for (int i = 0; i < shapes && count < COUNT(names); i++)
+        names[count++] = shape_kind_at(i)->name;
+    for (int i = 0; i < COUNT(NOT_SHAPES) && count < COUNT(names); i++)
+        names[count++] = NOT_SHAPES[i];
+    int k = typed_map(l, n, "an object", names, count);
+    if (k < 0 || k >= shapes)
+        return k < 0 ? -1 : k - shapes;
+    *kind = shape_kind_at(k);
+    return OBJECT_SHAPE;
+}
+
+static void read_object(loader *l, const ynode *n, const context *outer)
+{
+    static const char *const common[] = {"type", "material", "transform"};
+    const shape_kind *kind = NULL;
+    int type = object_type(l, n, &kind);
+    if (type < 0)
+        return;
+    const char *keys[24];
+    int count = 0;
+    if (type == OBJECT_SHAPE) {
+        count = param_keys(kind->params, common, COUNT(common), keys, COUNT(keys));
+    } else {
+        const char *const *extra = type == OBJECT_GROUP ? GROUP_KEYS : MESH_KEYS;
+        int extra_count = type == OBJECT_GROUP ? COUNT(GROUP_KEYS) : COUNT(MESH_KEYS);
+        for (int i = 0; i < COUNT(common); i++)
+            keys[count++] = common[i];
+        for (int i = 0; i < extra_count; i++)
+            keys[count++] = extra[i];
+    }
+    const char *what = kind ? kind->name : NOT_SHAPES[type];
+    yr_check_keys(&l->r, n, what, keys, count);
+
+    context ctx = *outer;
+    glint_transform own = glint_transform_identity();
+    const ynode *xf = yr_get(&l->r, n, "transform");
+    if (xf && !read_transform(l, xf, &own))
+        return;
+    ctx.to_world = xf_mul(&outer->to_world, &own);
+    const ynode *mat = yr_get(&l->r, n, "material");
+    if (mat && (ctx.material = object_material(l, mat)) < 0)
+        return;
+
+    if (type == OBJECT_MESH) {
+        place_mesh(l, n, mat ? ctx.material : -1, &ctx.to_world);
+        return;
+    }
+    if (type == OBJECT_GROUP) {
+        if (outer->depth >= MAX_GROUP_DEPTH) {
+            diag_at(&l->d, n, "groups nested too deep (limit %d)", MAX_GROUP_DEPTH);
+            return;
+        }
+        const ynode *children = yr_need(&l->r, n, "objects", "group");
+        ctx.depth++;
+        if (children)
+            read_objects(l, children, &ctx);
+        return;
+    }
+    glint_shape s = glint_shape_default(kind->id);
+    if (!read_params(l, n, kind->params, kind->name, &s))
+        return;
+    if (ctx.material < 0) {
+        diag_at(&l->d, n, "%s needs 'material'", kind->name);
+        return;
+    }
+    glint_error err;
+    if (glint_scene_add_shape(l->scene, &s, ctx.material, &ctx.to_world, &err) < 0)
+        diag_at(&l->d, n, "%s", err.message);
+}
+
+void read_objects(loader *l, const ynode *list, const context *ctx)
+{
+    if (!yr_is_list(&l->r, list, "'objects'"))
+        return;
+    for (int i = 0; i < list->count && ok(l); i++)
+        if (yr_visit(&l->r, list->items[i]))
+            read_object(l, list->items[i], ctx);
+}
+

@@ -1,0 +1,177 @@
+/* read_values.c - the scene loader's typed reads: numbers in ranges, words
+ * from a list, typed maps, paths relative to a file, and any kind's keys
+ * read through its parameter table. */
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "scenefile/loader.h"
+
+bool need_number(loader *l, const ynode *map, const char *key, const char *what, double *out)
+{
+    const ynode *n = yr_need(&l->r, map, key, what);
+    return n && yr_number(&l->r, n, key, out);
+}
+
+bool need_vec3(loader *l, const ynode *map, const char *key, const char *what, vec3 *out)
+{
+    const ynode *n = yr_need(&l->r, map, key, what);
+    return n && yr_vec3(&l->r, n, key, out);
+}
+
+/* Reads an optional number and checks it lies between lo and hi, reporting
+ * "'key' must be <range>, got v" where range is the human wording. */
+bool ranged(loader *l, const ynode *map, const char *key, double lo, double hi, bounds open,
+                   const char *range, double *out)
+{
+    const ynode *n = yr_get(&l->r, map, key);
+    double v = *out;
+    if (!n)
+        return true;
+    if (!yr_number(&l->r, n, key, &v))
+        return false;
+    if (v < lo || v > hi || (open != CLOSED && v == lo) || (open == OPEN_BOTH && v == hi)) {
+        diag_at(&l->d, n, "'%s' must be %s, got %g", key, range, v);
+        return false;
+    }
+    *out = v;
+    return true;
+}
+
+/* True when key is present in map and a whole number in [lo, hi]. */
+bool present_integer(loader *l, const ynode *map, const char *key, long long lo, long long hi, long long *v)
+{
+    const ynode *n = yr_get(&l->r, map, key);
+    return n && yr_integer(&l->r, n, key, lo, hi, v);
+}
+
+/* Matches a scalar against a list of words; reports with a hint. */
+int word(loader *l, const ynode *n, const char *key, const char *const *words, int count)
+{
+    if (n->kind == YNODE_SCALAR)
+        for (int i = 0; i < count; i++)
+            if (strcmp(n->value, words[i]) == 0)
+                return i;
+    char list[200] = "";
+    for (int i = 0; i < count; i++) {
+        strcat(list, i == 0 ? "" : i == count - 1 ? " or " : ", ");
+        strcat(list, words[i]);
+    }
+    const char *hint = n->kind == YNODE_SCALAR ? diag_suggest(n->value, words, count) : NULL;
+    if (hint)
+        diag_at(&l->d, n, "'%s' must be %s, got '%.60s' (did you mean '%s'?)", key, list, n->value, hint);
+    else if (n->kind == YNODE_SCALAR)
+        diag_at(&l->d, n, "'%s' must be %s, got '%.60s'", key, list, n->value);
+    else
+        diag_at(&l->d, n, "'%s' must be %s, got %s", key, list, ynode_describe(n));
+    return -1;
+}
+
+/* The kind of a map that must say its `type`: the index of that word among
+ * `kinds`, or -1 after a report. `what` names the map ("a light"). */
+int typed_map(loader *l, const ynode *n, const char *what, const char *const *kinds, int count)
+{
+    if (!yr_is_map(&l->r, n, what))
+        return -1;
+    const ynode *type = yr_need(&l->r, n, "type", what);
+    return type ? word(l, type, "type", kinds, count) : -1;
+}
+
+/* Joins a path named in file `from` to that file's directory. */
+char *relative_to(const char *from, const char *path)
+{
+    const char *slash = strrchr(from, '/');
+    size_t dir = path[0] == '/' || !slash ? 0 : (size_t)(slash - from) + 1;
+    char *out = malloc(dir + strlen(path) + 1);
+    if (out) {
+        memcpy(out, from, dir);
+        strcpy(out + dir, path);
+    }
+    return out;
+}
+
+
+/* Reads n, the value of parameter p, into its field of obj. */
+static bool read_param(loader *l, const ynode *n, const param *p, void *obj)
+{
+    void *f = (char *)obj + p->offset;
+    switch (p->type) {
+    case PARAM_NUMBER: {
+        double v;
+        if (!yr_number(&l->r, n, p->key, &v))
+            return false;
+        if (!param_in_range(p, v)) {
+            char range[96];
+            param_range_text(p, range, sizeof range);
+            diag_at(&l->d, n, "'%s' must be %s, got %g", p->key, range, v);
+            return false;
+        }
+        *(double *)f = v;
+        return true;
+    }
+    case PARAM_INTEGER: {
+        long long v;
+        if (!yr_integer(&l->r, n, p->key, (long long)p->lo, (long long)p->hi, &v))
+            return false;
+        *(int *)f = (int)v;
+        return true;
+    }
+    case PARAM_BOOL:
+        return yr_bool(&l->r, n, p->key, f);
+    case PARAM_VEC3:
+        return yr_vec3(&l->r, n, p->key, f);
+    case PARAM_DIRECTION: {
+        vec3 v;
+        if (!yr_vec3(&l->r, n, p->key, &v))
+            return false;
+        if (v.x == 0 && v.y == 0 && v.z == 0) {
+            diag_at(&l->d, n, "'%s' must not be zero", p->key);
+            return false;
+        }
+        *(vec3 *)f = v;
+        return true;
+    }
+    case PARAM_COLOR:
+        return yr_color(&l->r, n, p->key, f);
+    case PARAM_POINTS: {
+        char list[40];
+        snprintf(list, sizeof list, "'%s'", p->key);
+        if (!yr_is_list(&l->r, n, list))
+            return false;
+        if (n->count < p->min_count || n->count > p->max_count) {
+            diag_at(&l->d, n, "'%s' must hold %d %s %d points, got %d", p->key, p->min_count,
+                    p->max_count == p->min_count + 1 ? "or" : "to", p->max_count, n->count);
+            return false;
+        }
+        for (int i = 0; i < n->count; i++)
+            if (!yr_vec3(&l->r, n->items[i], p->key, (vec3 *)f + i))
+                return false;
+        *(int *)((char *)obj + p->count_offset) = n->count;
+        return true;
+    }
+    }
+    return false;
+}
+
+bool read_params(loader *l, const ynode *map, param_table t, const char *what, void *obj)
+{
+    bool good = true;
+    for (int i = 0; i < t.count; i++) {
+        const param *p = &t.params[i];
+        const ynode *n = p->required ? yr_need(&l->r, map, p->key, what) : yr_get(&l->r, map, p->key);
+        if (n)
+            good = read_param(l, n, p, obj) && good;
+        else
+            good = good && !p->required;
+    }
+    return good;
+}
+
+int param_keys(param_table t, const char *const *common, int common_count, const char **keys, int room)
+{
+    int count = 0;
+    for (int i = 0; i < common_count && count < room; i++)
+        keys[count++] = common[i];
+    for (int i = 0; i < t.count && count < room; i++)
+        keys[count++] = t.params[i].key;
+    return count;
+}
