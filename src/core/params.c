@@ -21,7 +21,11 @@ void params_defaults(param_table t, void *obj)
             *(double *)f = p->def[0];
             break;
         case PARAM_INTEGER:
+        case PARAM_CHOICE:
             *(int *)f = (int)p->def[0];
+            break;
+        case PARAM_UINT32:
+            *(uint32_t *)f = (uint32_t)p->def[0];
             break;
         case PARAM_BOOL:
             *(bool *)f = p->def[0] != 0;
@@ -46,7 +50,9 @@ bool param_in_range(const param *p, double v)
         return false;
     if (p->bounds != PARAM_CLOSED && v == p->lo)
         return false;
-    return !(p->bounds == PARAM_OPEN_BOTH && v == p->hi);
+    if (p->bounds == PARAM_OPEN_BOTH && v == p->hi)
+        return false;
+    return !p->rule || p->rule(v);
 }
 
 void param_range_text(const param *p, char *buf, size_t size)
@@ -54,7 +60,9 @@ void param_range_text(const param *p, char *buf, size_t size)
     const char *unit = p->unit ? p->unit : "";
     const char *space = p->unit ? " " : "";
     bool unbounded = p->hi >= PARAM_UNBOUNDED;
-    if (p->bounds == PARAM_OPEN_BOTH)
+    if (p->rule_text)
+        snprintf(buf, size, "%s", p->rule_text);
+    else if (p->bounds == PARAM_OPEN_BOTH)
         snprintf(buf, size, "between %g and %g%s%s", p->lo, p->hi, space, unit);
     else if (p->bounds == PARAM_OPEN_LOW && unbounded)
         snprintf(buf, size, p->lo == 0 ? "positive" : "above %g%s%s", p->lo, space, unit);
@@ -88,6 +96,15 @@ static glint_status check_one(const param *p, const void *obj, const char *what,
     case PARAM_INTEGER: {
         int v = *(const int *)f;
         return param_in_range(p, v) ? GLINT_OK : out_of_range(p, what, v, err);
+    }
+    case PARAM_UINT32:
+        return GLINT_OK; /* every value is in range */
+    case PARAM_CHOICE: {
+        int v = *(const int *)f;
+        if (v >= 0 && v < p->word_count)
+            return GLINT_OK;
+        return error_set(err, GLINT_ERR_INVALID, "%s %s must be one of %d choices, got %d", what, p->key,
+                         p->word_count, v);
     }
     case PARAM_BOOL:
         return GLINT_OK;

@@ -15,11 +15,14 @@
 #include <float.h>
 #include <stdbool.h>
 #include <stddef.h>
+#include <stdint.h>
 #include "glint.h"
 
 typedef enum param_type {
     PARAM_NUMBER,   /* double */
     PARAM_INTEGER,  /* int */
+    PARAM_UINT32,   /* uint32_t */
+    PARAM_CHOICE,   /* an enum (int): the index of one of `words` */
     PARAM_VEC3,     /* glint_vec3: any finite vector */
     PARAM_DIRECTION,/* glint_vec3: finite and not zero */
     PARAM_COLOR,    /* glint_color: finite channels within the range */
@@ -41,6 +44,13 @@ typedef struct param {
     const char *unit;         /* appended to the range's wording ("degrees"), or NULL */
     int min_count, max_count; /* points: how many */
     size_t count_offset;      /* points: the int that holds the count */
+    const char *const *words; /* choices: the words, in the enum's order */
+    int word_count;
+    /* A rule beyond the range (a square number), or NULL, and its wording
+     * ("a square number (1, 4, 9, 16, ...)"), which replaces the range's in
+     * messages. */
+    bool (*rule)(double v);
+    const char *rule_text;
     const char *meaning;      /* one line, for the docs */
 } param;
 
@@ -65,11 +75,11 @@ void params_defaults(param_table t, void *obj);
  * "must not be zero") and returns GLINT_ERR_INVALID. */
 glint_status params_check(param_table t, const void *obj, const char *what, glint_error *err);
 
-/* Whether number v lies in p's range. */
+/* Whether number v lies in p's range and keeps its rule. */
 bool param_in_range(const param *p, double v);
 
 /* Writes p's range in words ("from 0 to 1", "positive", "between 0 and 180
- * degrees") into buf. */
+ * degrees", or the rule's wording) into buf. */
 void param_range_text(const param *p, char *buf, size_t size);
 
 /* The parameter of the table with that key, or NULL. */

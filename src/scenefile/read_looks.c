@@ -119,32 +119,20 @@ static void unknown_name(loader *l, const ynode *n, bool is_texture, const char 
 /* Reads a material map's keys over *m (which holds the defaults). */
 static bool read_material_keys(loader *l, const ynode *n, const char *what, glint_material *m)
 {
-    static const char *const keys[] = {"color", "texture", "ambient", "diffuse", "specular", "shininess",
-                                       "reflectivity", "transparency", "refraction", "ior", "tint", "fresnel"};
+    static const char *const texture_key[] = {"texture"};
     if (!yr_is_map(&l->r, n, what))
         return false;
     int before = l->d.count;
-    yr_check_keys(&l->r, n, what, keys, COUNT(keys));
-    yr_opt_color(&l->r, n, "color", &m->color);
-    ranged(l, n, "ambient", 0, 1, CLOSED, "from 0 to 1", &m->ambient);
-    ranged(l, n, "diffuse", 0, 1e300, CLOSED, "from 0 to 1e300", &m->diffuse);
-    ranged(l, n, "specular", 0, 1e300, CLOSED, "from 0 to 1e300", &m->specular);
-    ranged(l, n, "shininess", 0, 1e300, CLOSED, "from 0 to 1e300", &m->shininess);
-    ranged(l, n, "reflectivity", 0, 1, CLOSED, "from 0 to 1", &m->reflectivity);
-    ranged(l, n, "transparency", 0, 1, CLOSED, "from 0 to 1", &m->transparency);
-    ranged(l, n, "refraction", 0, 1, CLOSED, "from 0 to 1", &m->refraction);
-    ranged(l, n, "ior", 0, 1e300, OPEN_LOW, "above 0", &m->ior);
-    ranged(l, n, "tint", 0, 1, CLOSED, "from 0 to 1", &m->tint);
-    yr_opt_bool(&l->r, n, "fresnel", &m->fresnel);
+    const char *keys[16];
+    int count = param_keys(material_params(), texture_key, COUNT(texture_key), keys, COUNT(keys));
+    yr_check_keys(&l->r, n, what, keys, count);
+    read_params(l, n, material_params(), what, m);
     const ynode *tex = yr_get(&l->r, n, "texture");
     const char *name;
     if (tex && yr_text(&l->r, tex, "texture", &name)) {
         m->texture = scene_find_texture(l->scene, name);
         if (m->texture < 0)
             unknown_name(l, tex, true, name);
-    }
-    if (l->d.count == before && m->transparency + m->refraction > 1) {
-        diag_at(&l->d, n, "transparency + refraction must not exceed 1, got %g", m->transparency + m->refraction);
     }
     return l->d.count == before;
 }
@@ -159,10 +147,14 @@ void read_material(loader *l, const char *name, const ynode *n)
         diag_at(&l->d, n, "material '%.100s' is defined twice", name);
         return;
     }
-    if (!read_material_keys(l, n, what, &m))
-        m = glint_material_default(); /* keeps the name known: no second report at each use */
-    if (glint_scene_add_material(l->scene, name, &m, &err) < 0)
+    bool good = read_material_keys(l, n, what, &m);
+    if (good && glint_scene_add_material(l->scene, name, &m, &err) >= 0)
+        return;
+    if (good) /* a rule across keys: transparency + refraction */
         diag_at(&l->d, n, "%s", err.message);
+    /* The name stays known, with the defaults: no second report at each use. */
+    m = glint_material_default();
+    glint_scene_add_material(l->scene, name, &m, NULL);
 }
 
 /* An object's material: a name, or an inline map. -1 when it is wrong. */

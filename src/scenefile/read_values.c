@@ -112,8 +112,25 @@ static bool read_param(loader *l, const ynode *n, const param *p, void *obj)
         long long v;
         if (!yr_integer(&l->r, n, p->key, (long long)p->lo, (long long)p->hi, &v))
             return false;
+        if (p->rule && !p->rule((double)v)) {
+            diag_at(&l->d, n, "'%s' must be %s, got %lld", p->key, p->rule_text, v);
+            return false;
+        }
         *(int *)f = (int)v;
         return true;
+    }
+    case PARAM_UINT32: {
+        long long v;
+        if (!yr_integer(&l->r, n, p->key, 0, UINT32_MAX, &v))
+            return false;
+        *(uint32_t *)f = (uint32_t)v;
+        return true;
+    }
+    case PARAM_CHOICE: {
+        int k = word(l, n, p->key, p->words, p->word_count);
+        if (k >= 0)
+            *(int *)f = k;
+        return k >= 0;
     }
     case PARAM_BOOL:
         return yr_bool(&l->r, n, p->key, f);

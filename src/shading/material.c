@@ -1,52 +1,67 @@
 /* material.c - material validation and the Phong lighting model. */
 #include <math.h>
+#include <stddef.h>
+#include <string.h>
 #include "core/error.h"
 #include "shading/material.h"
 #include "shading/optics.h"
 
+/* The share of something, from 0 to 1. */
+#define SHARE .lo = 0, .hi = 1
+/* A strength with no upper limit but a finite one. */
+#define STRENGTH .lo = 0, .hi = 1e300
+
+#define FIELD(name) .offset = offsetof(glint_material, name)
+
+static const param MATERIAL_PARAMS[] = {
+    {.key = "color", .type = PARAM_COLOR, FIELD(color), .def = {1, 1, 1}, .lo = 0, .hi = DBL_MAX,
+     .meaning = "base colour"},
+    {.key = "ambient", .type = PARAM_NUMBER, FIELD(ambient), .def = {0.2}, SHARE,
+     .meaning = "share of the base colour lit by the ambient light"},
+    {.key = "diffuse", .type = PARAM_NUMBER, FIELD(diffuse), .def = {1}, STRENGTH,
+     .meaning = "diffuse (Lambert) strength"},
+    {.key = "specular", .type = PARAM_NUMBER, FIELD(specular), .def = {1}, STRENGTH,
+     .meaning = "strength of the white Phong highlight"},
+    {.key = "shininess", .type = PARAM_NUMBER, FIELD(shininess), .def = {50}, STRENGTH,
+     .meaning = "Phong exponent: higher is a smaller, sharper highlight"},
+    {.key = "reflectivity", .type = PARAM_NUMBER, FIELD(reflectivity), SHARE,
+     .meaning = "mirror reflection, added on top of the rest"},
+    {.key = "transparency", .type = PARAM_NUMBER, FIELD(transparency), SHARE,
+     .meaning = "light passing straight through, unbent"},
+    {.key = "refraction", .type = PARAM_NUMBER, FIELD(refraction), SHARE,
+     .meaning = "light passing through, bent by ior; transparency + refraction <= 1"},
+    {.key = "ior", .type = PARAM_NUMBER, FIELD(ior), .def = {1.5}, PARAM_POSITIVE,
+     .meaning = "index of refraction (water 1.33, glass 1.5, diamond 2.4)"},
+    {.key = "tint", .type = PARAM_NUMBER, FIELD(tint), .def = {1}, SHARE,
+     .meaning = "how much the base colour filters transmitted light and shadows"},
+    {.key = "fresnel", .type = PARAM_BOOL, FIELD(fresnel),
+     .meaning = "split the refraction share between refraction and reflection by the Fresnel equations"},
+};
+
+param_table material_params(void)
+{
+    return PARAM_TABLE(MATERIAL_PARAMS);
+}
+
 glint_material glint_material_default(void)
 {
-    glint_material m = {
-        .color = {1, 1, 1}, .texture = -1, .ambient = 0.2, .diffuse = 1, .specular = 1,
-        .shininess = 50, .ior = 1.5, .tint = 1,
-    };
+    glint_material m;
+    memset(&m, 0, sizeof m);
+    params_defaults(material_params(), &m);
+    m.texture = -1;
     return m;
-}
-
-static glint_status check_unit(const char *what, double v, glint_error *err)
-{
-    if (!(v >= 0 && v <= 1))
-        return error_set(err, GLINT_ERR_INVALID, "material %s must be in [0, 1], got %g", what, v);
-    return GLINT_OK;
-}
-
-static glint_status check_positive(const char *what, double v, glint_error *err)
-{
-    if (!(v >= 0 && isfinite(v)))
-        return error_set(err, GLINT_ERR_INVALID, "material %s must be finite and not negative, got %g", what, v);
-    return GLINT_OK;
 }
 
 glint_status material_validate(const glint_material *m, int texture_count, glint_error *err)
 {
-    glint_status s;
-    if (!rgb_is_valid(m->color))
-        return error_set(err, GLINT_ERR_INVALID, "material colour must be finite and not negative");
+    glint_status s = params_check(material_params(), m, "material", err);
+    if (s)
+        return s;
     if (m->texture < -1 || m->texture >= texture_count)
         return error_set(err, GLINT_ERR_INVALID, "material texture %d does not exist", m->texture);
-    if ((s = check_unit("ambient", m->ambient, err)) || (s = check_positive("diffuse", m->diffuse, err)) ||
-        (s = check_positive("specular", m->specular, err)) ||
-        (s = check_positive("shininess", m->shininess, err)) ||
-        (s = check_unit("reflectivity", m->reflectivity, err)) ||
-        (s = check_unit("transparency", m->transparency, err)) ||
-        (s = check_unit("refraction", m->refraction, err)) || (s = check_unit("tint", m->tint, err)))
-        return s;
     if (m->transparency + m->refraction > 1)
-        return error_set(err, GLINT_ERR_INVALID,
-                         "material transparency + refraction must not exceed 1, got %g",
+        return error_set(err, GLINT_ERR_INVALID, "material transparency + refraction must not exceed 1, got %g",
                          m->transparency + m->refraction);
-    if (!(m->ior > 0 && isfinite(m->ior)))
-        return error_set(err, GLINT_ERR_INVALID, "material index of refraction must be above 0, got %g", m->ior);
     return GLINT_OK;
 }
 

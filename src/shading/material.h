@@ -3,6 +3,7 @@
 #define GLINT_SHADING_MATERIAL_H
 
 #include "core/color.h"
+#include "core/params.h"
 #include "core/vec.h"
 
 typedef struct material {
@@ -10,8 +11,13 @@ typedef struct material {
     glint_material m;
 } material;
 
-/* Checks every value of m against texture_count textures; fills err naming
- * the first bad value. */
+/* The keys of a material, with their defaults and ranges (all but its
+ * texture, which a scene file names). */
+param_table material_params(void);
+
+/* Checks every value of m against the table and texture_count textures, and
+ * that transparency + refraction is at most 1; fills err naming the first
+ * bad value. */
 glint_status material_validate(const glint_material *m, int texture_count, glint_error *err);
 
 /* True when no light passes the material: no transparency, no refraction. */

@@ -1450,7 +1450,7 @@ static const bad_scene BAD[] = {
     {"ior_0",
      "materials:\n"
      "  glass: {refraction: 1, ior: 0}\n",
-     "bad.yaml:2:31: 'ior' must be above 0, got 0", 1},
+     "bad.yaml:2:31: 'ior' must be positive, got 0", 1},
     {"ambient_2",
      "materials:\n"
      "  m: {ambient: 2}\n",
@@ -1462,7 +1462,7 @@ static const bad_scene BAD[] = {
     {"transparency_plus_refraction",
      "materials:\n"
      "  m: {transparency: 0.5, refraction: 0.75}\n",
-     "bad.yaml:2:6: transparency + refraction must not exceed 1, got 1.25", 1},
+     "bad.yaml:2:6: material transparency + refraction must not exceed 1, got 1.25", 1},
     {"spot_angle_0",
      "lights:\n"
      "  - {type: spot, position: [0, 5, 0], direction: [0, -1, 0], angle: 0}\n",

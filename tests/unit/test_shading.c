@@ -365,7 +365,7 @@ static void test_material_validation(void **state)
     assert_int_equal(material_validate(&m, 0, &err), GLINT_OK);
     m.ior = 0;
     assert_int_equal(material_validate(&m, 0, &err), GLINT_ERR_INVALID);
-    assert_string_equal(err.message, "material index of refraction must be above 0, got 0");
+    assert_string_equal(err.message, "material ior must be positive, got 0");
     m = glint_material_default();
     m.transparency = 0.6;
     m.refraction = 0.6;
@@ -374,7 +374,15 @@ static void test_material_validation(void **state)
     m = glint_material_default();
     m.reflectivity = NAN;
     assert_int_equal(material_validate(&m, 0, &err), GLINT_ERR_INVALID);
-    assert_string_equal(err.message, "material reflectivity must be in [0, 1], got nan");
+    assert_string_equal(err.message, "material reflectivity is not finite");
+    m = glint_material_default();
+    m.ambient = 1.5;
+    assert_int_equal(material_validate(&m, 0, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "material ambient must be from 0 to 1, got 1.5");
+    m = glint_material_default();
+    m.color.g = -0.25;
+    assert_int_equal(material_validate(&m, 0, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "material color must be finite and not negative");
     m = glint_material_default();
     m.texture = 2;
     assert_int_equal(material_validate(&m, 2, &err), GLINT_ERR_INVALID);
