@@ -9,6 +9,7 @@
 #include <string.h>
 #include "glint.h"
 #include "cli/args.h"
+#include "scene/scene.h"
 
 static const char USAGE[] =
     "usage: glint [SCENE.yaml | MODEL] [options]\n"
@@ -70,28 +71,36 @@ static bool parse_int(const char *text, long long lo, long long hi, long long *o
     return true;
 }
 
+/* A flag that takes a whole number: one that sets a scene setting takes
+ * the setting's range and rule from its parameter table, so the flag and
+ * the scene file accept the same values. */
 typedef struct number_flag {
     const char *long_name, *short_name;
     size_t field;                 /* offset of the long long in cli_options */
-    long long lo, hi;
-    const char *what;
+    const char *setting;          /* the settings key it overrides, or NULL */
+    long long lo, hi;             /* without a setting: the range */
 } number_flag;
 
 static const number_flag NUMBER_FLAGS[] = {
-    {"--width", "-w", offsetof(cli_options, width), 1, 65536, "a whole number from 1 to 65536"},
-    {"--height", "-h", offsetof(cli_options, height), 1, 65536, "a whole number from 1 to 65536"},
-    {"--spp", NULL, offsetof(cli_options, spp), 1, 4096, "a square number from 1 to 4096 (1, 4, 9, 16, ...)"},
-    {"--depth", NULL, offsetof(cli_options, depth), 0, 64, "a whole number from 0 to 64"},
-    {"--threads", NULL, offsetof(cli_options, threads), 1, 1024, "a whole number from 1 to 1024"},
-    {"--seed", NULL, offsetof(cli_options, seed), 0, 4294967295LL, "a whole number from 0 to 4294967295"},
+    {"--width", "-w", offsetof(cli_options, width), "width", 0, 0},
+    {"--height", "-h", offsetof(cli_options, height), "height", 0, 0},
+    {"--spp", NULL, offsetof(cli_options, spp), "samples", 0, 0},
+    {"--depth", NULL, offsetof(cli_options, depth), "depth", 0, 0},
+    {"--threads", NULL, offsetof(cli_options, threads), NULL, 1, 1024},
+    {"--seed", NULL, offsetof(cli_options, seed), "seed", 0, 0},
 };
 
-static bool is_square(long long n)
+/* Parses the value v of flag nf into *out; false, with the wording of what
+ * it needs in `what`, when v is not such a number. */
+static bool parse_number_flag(const number_flag *nf, const char *v, long long *out, char *what, size_t size)
 {
-    long long r = 0;
-    while ((r + 1) * (r + 1) <= n)
-        r++;
-    return r * r == n;
+    const param *p = nf->setting ? params_find(settings_params(), nf->setting) : NULL;
+    long long lo = p ? (long long)p->lo : nf->lo, hi = p ? (long long)p->hi : nf->hi;
+    if (p && p->rule_text)
+        snprintf(what, size, "%s", p->rule_text);
+    else
+        snprintf(what, size, "a whole number from %lld to %lld", lo, hi);
+    return parse_int(v, lo, hi, out) && (!p || param_in_range(p, (double)*out));
 }
 
 static int parse_texture_swap(cli_options *o, const char *arg)
@@ -155,15 +164,18 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
         const char *v = argv[++i];
         if (nf) {
             long long *field = (long long *)((char *)o + nf->field);
-            if (!parse_int(v, nf->lo, nf->hi, field) || (field == &o->spp && !is_square(*field)))
-                return cli_complain(CLI_EXIT_USAGE, "%s needs %s, got '%s'", nf->long_name, nf->what, v);
+            char what[96];
+            if (!parse_number_flag(nf, v, field, what, sizeof what))
+                return cli_complain(CLI_EXIT_USAGE, "%s needs %s, got '%s'", nf->long_name, what, v);
         } else if (strcmp(a, "--sampler") == 0) {
-            if (strcmp(v, "regular") == 0)
-                o->sampler = GLINT_SAMPLER_REGULAR;
-            else if (strcmp(v, "jittered") == 0)
-                o->sampler = GLINT_SAMPLER_JITTERED;
-            else
-                return cli_complain(CLI_EXIT_USAGE, "--sampler needs 'regular' or 'jittered', got '%s'", v);
+            /* The scene file's words for the samplers, in the enum's order. */
+            const param *p = params_find(settings_params(), "sampler");
+            for (int k = 0; k < p->word_count; k++)
+                if (strcmp(v, p->words[k]) == 0)
+                    o->sampler = k;
+            if (o->sampler < 0)
+                return cli_complain(CLI_EXIT_USAGE, "--sampler needs '%s' or '%s', got '%s'", p->words[0],
+                                    p->words[1], v);
         } else if (strcmp(a, "--texture") == 0) {
             int code = parse_texture_swap(o, v);
             if (code)

@@ -15,22 +15,13 @@ const char *glint_version(void)
     return GLINT_VERSION;
 }
 
-glint_settings glint_settings_default(void)
-{
-    glint_settings s = {
-        .width = 640, .height = 480, .samples_per_pixel = 1, .sampler = GLINT_SAMPLER_REGULAR,
-        .max_depth = 5, .background = {0, 0, 0}, .ambient_light = {1, 1, 1}, .seed = 0,
-    };
-    return s;
-}
-
 glint_scene *glint_scene_new(void)
 {
     glint_scene *s = calloc(1, sizeof *s);
     if (!s)
         return NULL;
     s->settings = glint_settings_default();
-    s->camera = (glint_camera){.position = {0, 0, 0}, .look_at = {0, 0, -1}, .up = {0, 1, 0}, .vfov_degrees = 45};
+    s->camera = camera_default();
     s->fog.kind = GLINT_FOG_NONE;
     return s;
 }
@@ -82,51 +73,15 @@ static glint_status copy_name(char **out, const char *name, glint_error *err)
 
 glint_status glint_scene_set_settings(glint_scene *scene, const glint_settings *s, glint_error *err)
 {
-    if (s->width < 1 || s->width > 65536 || s->height < 1 || s->height > 65536)
-        return error_set(err, GLINT_ERR_INVALID, "image size must be 1..65536 pixels each way, got %dx%d",
-                         s->width, s->height);
-    /* Refused before anything is allocated: the render's float image takes
-     * 12 bytes a pixel (3 GiB at the limit), and a size the system only
-     * pretends to have would be found out pages into the render. */
-    long long pixels = (long long)s->width * s->height;
-    if (pixels > GLINT_MAX_PIXELS)
-        return error_set(err, GLINT_ERR_INVALID,
-                         "image size %dx%d is %lld pixels, more than the limit of %lld (16384 x 16384)", s->width,
-                         s->height, pixels, (long long)GLINT_MAX_PIXELS);
-    int n = (int)lround(sqrt((double)s->samples_per_pixel));
-    if (s->samples_per_pixel < 1 || s->samples_per_pixel > 4096 || n * n != s->samples_per_pixel)
-        return error_set(err, GLINT_ERR_INVALID,
-                         "samples per pixel must be a square number from 1 to 4096 (1, 4, 9, 16, ...), got %d",
-                         s->samples_per_pixel);
-    if (s->sampler != GLINT_SAMPLER_REGULAR && s->sampler != GLINT_SAMPLER_JITTERED)
-        return error_set(err, GLINT_ERR_INVALID, "unknown sampler %d", (int)s->sampler);
-    if (s->max_depth < 0 || s->max_depth > 64)
-        return error_set(err, GLINT_ERR_INVALID, "recursion depth must be 0..64, got %d", s->max_depth);
-    if (!rgb_is_valid(s->background) || !rgb_is_valid(s->ambient_light))
-        return error_set(err, GLINT_ERR_INVALID, "background and ambient light must be finite, not negative colours");
-    scene->settings = *s;
-    return GLINT_OK;
+    glint_status st = settings_validate(s, err);
+    if (st == GLINT_OK)
+        scene->settings = *s;
+    return st;
 }
 
 glint_settings glint_scene_get_settings(const glint_scene *scene)
 {
     return scene->settings;
-}
-
-glint_status camera_validate(const glint_camera *c, glint_error *err)
-{
-    if (!v3_is_finite(c->position) || !v3_is_finite(c->look_at) || !v3_is_finite(c->up) ||
-        !isfinite(c->vfov_degrees))
-        return error_set(err, GLINT_ERR_INVALID, "camera values must be finite");
-    if (!(c->vfov_degrees > 0 && c->vfov_degrees < 180))
-        return error_set(err, GLINT_ERR_INVALID, "camera field of view must be in (0, 180) degrees, got %g",
-                         c->vfov_degrees);
-    vec3 view = v3_sub(c->look_at, c->position);
-    if (v3_length(view) == 0)
-        return error_set(err, GLINT_ERR_INVALID, "camera position and look_at must differ");
-    if (v3_length(v3_cross(v3_normalize(view), v3_normalize(c->up))) < 1e-9)
-        return error_set(err, GLINT_ERR_INVALID, "camera up must not be zero or parallel to the view direction");
-    return GLINT_OK;
 }
 
 glint_status glint_scene_set_camera(glint_scene *scene, const glint_camera *cam, glint_error *err)

@@ -2,6 +2,7 @@
 #ifndef GLINT_SCENE_SCENE_H
 #define GLINT_SCENE_SCENE_H
 
+#include "core/params.h"
 #include "geometry/mesh.h"
 #include "geometry/shape.h"
 #include "shading/light.h"
@@ -37,7 +38,18 @@ int scene_find_material(const glint_scene *scene, const char *name);
 int scene_add_image_pixels(glint_scene *scene, const char *name, int width, int height,
                            const unsigned char *srgb, glint_mapping mapping, glint_error *err);
 
-/* Checks a camera; fills err naming a bad value. */
+/* The keys of the settings and of the camera, with their defaults and
+ * ranges (settings.c). */
+param_table settings_params(void);
+param_table camera_params(void);
+
+/* The camera of a new scene: every key at its default. */
+glint_camera camera_default(void);
+
+/* Check settings and a camera against their tables and the rules across
+ * keys (the pixel limit; a view direction, and up not along it); fill err
+ * naming a bad value. */
+glint_status settings_validate(const glint_settings *s, glint_error *err);
 glint_status camera_validate(const glint_camera *cam, glint_error *err);
 
 #endif

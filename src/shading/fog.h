@@ -4,8 +4,14 @@
 
 #include <stdbool.h>
 #include "core/color.h"
+#include "core/params.h"
 
-/* Checks a fog description; fills err naming a bad value. */
+/* The keys of fog: its type, then those the types read, with defaults and
+ * ranges. */
+param_table fog_params(void);
+
+/* Checks a fog description against the table's keys for its type, and
+ * linear fog's start < end; fills err naming a bad value. */
 glint_status fog_validate(const glint_fog *fog, glint_error *err);
 
 /* How much of the fog colour replaces what a segment of length d shows, in

@@ -1421,7 +1421,7 @@ static const bad_scene BAD[] = {
     {"samples_not_square",
      "settings:\n"
      "  samples: 8\n",
-     "bad.yaml:2:12: 'samples' must be a square number (1, 4, 9, 16, ...), got 8", 1},
+     "bad.yaml:2:12: 'samples' must be a square number from 1 to 4096 (1, 4, 9, 16, ...), got 8", 1},
     {"samples_too_many",
      "settings:\n"
      "  samples: 4225\n",
@@ -1490,7 +1490,7 @@ static const bad_scene BAD[] = {
      "bad.yaml:3:12: 'density' must be positive, got 0", 1},
     {"fog_start_after_end",
      "fog: {type: linear, start: 10, end: 5}\n",
-     "bad.yaml:1:6: linear fog needs finite start < end, got 10 and 5", 1},
+     "bad.yaml:1:6: linear fog needs start < end, got 10 and 5", 1},
     {"fog_type_hint",
      "fog:\n"
      "  type: linera\n",

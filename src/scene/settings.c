@@ -1,0 +1,106 @@
+/* settings.c - the image and integrator settings and the camera: their
+ * keys, defaults and ranges in one table each, and the checks of the C API
+ * (glint_scene_set_settings, glint_scene_set_camera), which the scene-file
+ * loader reads the same tables for. */
+#include <math.h>
+#include <stddef.h>
+#include <string.h>
+#include "core/error.h"
+#include "scene/scene.h"
+
+static bool is_square(double v)
+{
+    double root = floor(sqrt(v) + 0.5);
+    return root * root == v;
+}
+
+static const char *const SAMPLERS[] = {"regular", "jittered"};
+
+#define SETTING(name) .offset = offsetof(glint_settings, name)
+
+static const param SETTINGS_PARAMS[] = {
+    {.key = "width", .type = PARAM_INTEGER, SETTING(width), .def = {640}, .lo = 1, .hi = 65536,
+     .meaning = "image width in pixels; width x height at most 268,435,456 (16384 x 16384)"},
+    {.key = "height", .type = PARAM_INTEGER, SETTING(height), .def = {480}, .lo = 1, .hi = 65536,
+     .meaning = "image height in pixels"},
+    {.key = "samples", .type = PARAM_INTEGER, SETTING(samples_per_pixel), .def = {1}, .lo = 1, .hi = 4096,
+     .rule = is_square, .rule_text = "a square number from 1 to 4096 (1, 4, 9, 16, ...)",
+     .meaning = "samples per pixel, an N x N grid (4 is 2 x 2)"},
+    {.key = "sampler", .type = PARAM_CHOICE, SETTING(sampler), .words = SAMPLERS, .word_count = 2,
+     .meaning = "regular: the centres of the N x N cells; jittered: one random point in each cell"},
+    {.key = "seed", .type = PARAM_UINT32, SETTING(seed), .lo = 0, .hi = 4294967295.0,
+     .meaning = "changes the jittered pattern only"},
+    {.key = "depth", .type = PARAM_INTEGER, SETTING(max_depth), .def = {5}, .lo = 0, .hi = 64,
+     .meaning = "recursion limit for reflected, refracted and see-through rays (0: none)"},
+    {.key = "background", .type = PARAM_COLOR, SETTING(background), .lo = 0, .hi = DBL_MAX,
+     .meaning = "what rays that hit nothing show"},
+    {.key = "ambient", .type = PARAM_COLOR, SETTING(ambient_light), .def = {1, 1, 1}, .lo = 0, .hi = DBL_MAX,
+     .meaning = "ambient light; multiplies each material's ambient term"},
+};
+
+#define CAMERA(name) .offset = offsetof(glint_camera, name)
+
+static const param CAMERA_PARAMS[] = {
+    {.key = "position", .type = PARAM_VEC3, CAMERA(position), .meaning = "where the eye is"},
+    {.key = "look_at", .type = PARAM_VEC3, CAMERA(look_at), .def = {0, 0, -1},
+     .meaning = "a point in the middle of the view; must differ from position"},
+    {.key = "up", .type = PARAM_DIRECTION, CAMERA(up), .def = {0, 1, 0},
+     .meaning = "which way is up in the image; must not be parallel to the view direction"},
+    {.key = "fov", .type = PARAM_NUMBER, CAMERA(vfov_degrees), .def = {45}, .lo = 0, .hi = 180,
+     .bounds = PARAM_OPEN_BOTH, .unit = "degrees", .meaning = "vertical field of view"},
+};
+
+param_table settings_params(void)
+{
+    return PARAM_TABLE(SETTINGS_PARAMS);
+}
+
+param_table camera_params(void)
+{
+    return PARAM_TABLE(CAMERA_PARAMS);
+}
+
+glint_settings glint_settings_default(void)
+{
+    glint_settings s;
+    memset(&s, 0, sizeof s);
+    params_defaults(settings_params(), &s);
+    return s;
+}
+
+glint_camera camera_default(void)
+{
+    glint_camera c;
+    memset(&c, 0, sizeof c);
+    params_defaults(camera_params(), &c);
+    return c;
+}
+
+glint_status settings_validate(const glint_settings *s, glint_error *err)
+{
+    glint_status st = params_check(settings_params(), s, "settings", err);
+    if (st)
+        return st;
+    /* Refused before anything is allocated: the render's float image takes
+     * 12 bytes a pixel (3 GiB at the limit), and a size the system only
+     * pretends to have would be found out pages into the render. */
+    long long pixels = (long long)s->width * s->height;
+    if (pixels > GLINT_MAX_PIXELS)
+        return error_set(err, GLINT_ERR_INVALID,
+                         "image size %dx%d is %lld pixels, more than the limit of %lld (16384 x 16384)", s->width,
+                         s->height, pixels, (long long)GLINT_MAX_PIXELS);
+    return GLINT_OK;
+}
+
+glint_status camera_validate(const glint_camera *c, glint_error *err)
+{
+    glint_status st = params_check(camera_params(), c, "camera", err);
+    if (st)
+        return st;
+    vec3 view = v3_sub(c->look_at, c->position);
+    if (v3_length(view) == 0)
+        return error_set(err, GLINT_ERR_INVALID, "camera position and look_at must differ");
+    if (v3_length(v3_cross(v3_normalize(view), v3_normalize(c->up))) < 1e-9)
+        return error_set(err, GLINT_ERR_INVALID, "camera up must not be parallel to the view direction");
+    return GLINT_OK;
+}
