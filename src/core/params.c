@@ -55,21 +55,38 @@ bool param_in_range(const param *p, double v)
     return !p->rule || p->rule(v);
 }
 
+/* v as %g writes it, but an exponent as people write it: 1e300, not
+ * 1e+300. */
+static void number_text(double v, char *buf, size_t size)
+{
+    char raw[40];
+    snprintf(raw, sizeof raw, "%g", v);
+    char *e = strchr(raw, 'e');
+    if (e && e[1] == '+')
+        memmove(e + 1, e + 2, strlen(e + 2) + 1);
+    snprintf(buf, size, "%s", raw);
+}
+
 void param_range_text(const param *p, char *buf, size_t size)
 {
     const char *unit = p->unit ? p->unit : "";
     const char *space = p->unit ? " " : "";
+    char lo[40], hi[40];
+    number_text(p->lo, lo, sizeof lo);
+    number_text(p->hi, hi, sizeof hi);
     bool unbounded = p->hi >= PARAM_UNBOUNDED;
     if (p->rule_text)
         snprintf(buf, size, "%s", p->rule_text);
     else if (p->bounds == PARAM_OPEN_BOTH)
-        snprintf(buf, size, "between %g and %g%s%s", p->lo, p->hi, space, unit);
+        snprintf(buf, size, "between %s and %s%s%s", lo, hi, space, unit);
+    else if (p->bounds == PARAM_OPEN_LOW && unbounded && p->lo == 0)
+        snprintf(buf, size, "positive");
     else if (p->bounds == PARAM_OPEN_LOW && unbounded)
-        snprintf(buf, size, p->lo == 0 ? "positive" : "above %g%s%s", p->lo, space, unit);
+        snprintf(buf, size, "above %s%s%s", lo, space, unit);
     else if (p->bounds == PARAM_OPEN_LOW)
-        snprintf(buf, size, "above %g and at most %g%s%s", p->lo, p->hi, space, unit);
+        snprintf(buf, size, "above %s and at most %s%s%s", lo, hi, space, unit);
     else
-        snprintf(buf, size, "from %g to %g%s%s", p->lo, p->hi, space, unit);
+        snprintf(buf, size, "from %s to %s%s%s", lo, hi, space, unit);
 }
 
 /* Fills err for number v of p, out of its range. */

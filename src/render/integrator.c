@@ -100,11 +100,15 @@ static void shade_begin(const glint_scene *scene, const ray *r, const accel_hit 
     sp->base = surface_color(scene, &sp->hit, sp->m, &sp->s);
 }
 
+/* The light sample every shading point takes: the lights glint has so far
+ * each shine from one point or one direction and ignore it. */
+#define LIGHT_SAMPLE_U 0.5
+
 /* The shadow segment from sp, seen along ray r, towards light l, when l
  * lights sp's front and its light there is not black before any shadow. */
 static bool shadow_segment(const light *l, const ray *r, const shade_point *sp, light_sample *ls, ray *shadow)
 {
-    if (!light_illuminate(l, sp->s.p, ls) || v3_dot(sp->n, ls->to_light) <= 0 || v3_dot(sp->ns, ls->to_light) <= 0 ||
+    if (!light_sample_at(l, sp->s.p, LIGHT_SAMPLE_U, LIGHT_SAMPLE_U, ls) || v3_dot(sp->n, ls->to_light) <= 0 || v3_dot(sp->ns, ls->to_light) <= 0 ||
         !phong_reaches(sp->m, sp->base, sp->ns, ls->to_light, v3_neg(r->d), ls->radiance))
         return false;
     *shadow = (ray){sp->origin, ls->to_light};

@@ -181,39 +181,26 @@ int object_material(loader *l, const ynode *n)
 
 void read_light(loader *l, const ynode *n)
 {
-    static const char *const kinds[] = {"point", "spot", "directional"};
-    static const char *const keys[3][7] = {
-        {"type", "color", "intensity", "position"},
-        {"type", "color", "intensity", "position", "direction", "angle", "falloff"},
-        {"type", "color", "intensity", "direction"},
-    };
-    static const int key_count[] = {4, 7, 4};
-    int k = typed_map(l, n, "a light", kinds, COUNT(kinds));
+    const char *names[16];
+    int count = 0;
+    for (int i = 0; i < light_kind_count() && count < COUNT(names); i++)
+        names[count++] = light_kind_at(i)->name;
+    int k = typed_map(l, n, "a light", names, count);
     if (k < 0)
         return;
-    char kind_name[32];
-    snprintf(kind_name, sizeof kind_name, "a %s light", kinds[k]);
-    yr_check_keys(&l->r, n, kind_name, keys[k], key_count[k]);
-    glint_light lt = {.kind = (glint_light_kind)k, .color = {1, 1, 1}};
-    double intensity = 1;
-    const char *what = kinds[k];
-    char label[32];
-    snprintf(label, sizeof label, "a %s light", what);
-    bool good = yr_opt_color(&l->r, n, "color", &lt.color) &&
-                ranged(l, n, "intensity", 0, 1e300, CLOSED, "from 0 to 1e300", &intensity);
-    if (k != GLINT_LIGHT_DIRECTIONAL)
-        good = need_vec3(l, n, "position", label, &lt.position) && good;
-    if (k != GLINT_LIGHT_POINT)
-        good = need_vec3(l, n, "direction", label, &lt.direction) && good;
-    if (k == GLINT_LIGHT_SPOT) {
-        good = yr_need(&l->r, n, "angle", label) &&
-               ranged(l, n, "angle", 0, 90, OPEN_LOW, "above 0 and at most 90 degrees", &lt.cone_angle) && good;
-        good = good && ranged(l, n, "falloff", 0, lt.cone_angle, CLOSED, "from 0 to the cone angle",
-                              &lt.falloff_angle);
-    }
-    lt.color = rgb_scale(lt.color, intensity);
+    const light_kind *kind = light_kind_at(k);
+    char what[40];
+    snprintf(what, sizeof what, "a %s light", kind->name);
+    static const char *const type_key[] = {"type"};
+    const char *keys[24];
+    int key_count = param_keys(kind->params, type_key, COUNT(type_key), keys, COUNT(keys));
+    yr_check_keys(&l->r, n, what, keys, key_count);
+    light_spec spec = light_spec_default(kind->id);
+    if (!read_params(l, n, kind->params, what, &spec))
+        return;
+    spec.light.color = rgb_scale(spec.light.color, spec.intensity);
     glint_error err;
-    if (good && glint_scene_add_light(l->scene, &lt, &err) < 0)
+    if (glint_scene_add_light(l->scene, &spec.light, &err) < 0)
         diag_at(&l->d, n, "%s", err.message);
 }
 

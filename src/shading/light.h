@@ -1,36 +1,94 @@
-/* light.h - point, spot and directional lights: where a light is seen from a
- * point and how much of it arrives there before shadowing. */
+/* light.h - lights: where a light is seen from a point and how much of it
+ * arrives there before shadowing.
+ *
+ * Each kind of light is one file (point_light.c, spot_light.c, ...) that
+ * exports one light_kind record: its scene-file name, its parameter table
+ * and its operations; light_registry.c lists them. A light is sampled at a
+ * point with a 2-D random sample in [0, 1)^2 and gives a direction, a
+ * distance, the radiance arriving and the probability density of that
+ * direction: lights of one direction (point, spot, directional) ignore the
+ * sample and give density 1. Adding a kind: docs/architecture.md. */
 #ifndef GLINT_SHADING_LIGHT_H
 #define GLINT_SHADING_LIGHT_H
 
 #include <stdbool.h>
 #include "core/color.h"
+#include "core/params.h"
 #include "core/vec.h"
+
+typedef struct light_kind light_kind;
 
 /* A light with its derived values precomputed. */
 typedef struct light {
+    const light_kind *kind;
     glint_light desc;
     vec3 dir;                 /* unit direction (spot: its axis; directional: travel) */
     double cos_outer;         /* spot: cosine of the cone half-angle */
     double cos_inner;         /* spot: cosine of the half-angle where falloff begins */
 } light;
 
-/* What a light offers to point p. */
+/* What a light offers to point p for one sample. */
 typedef struct light_sample {
     vec3 to_light;            /* unit direction from p towards the light */
     double distance;          /* to the light; INFINITY for directional lights */
-    color radiance;           /* arriving light before shadows */
+    color radiance;           /* arriving light before shadows, divided by pdf's share */
+    double pdf;               /* density of to_light among the light's directions; 1 for a
+                                 light of one direction */
 } light_sample;
 
-/* Validates desc and fills *l; fills err naming a bad value. */
+/* What a scene file says of a light: the public description and the
+ * intensity its colour is scaled by. The kinds' parameter tables give
+ * offsets into this. */
+typedef struct light_spec {
+    glint_light light;
+    double intensity;
+} light_spec;
+
+struct light_kind {
+    const char *name;         /* the scene file's `type` */
+    glint_light_kind id;
+    param_table params;       /* offsets into light_spec */
+    /* Fills the fields of l derived from l->desc after the table's checks,
+     * checking rules across keys; NULL: nothing to do. */
+    glint_status (*init)(light *l, glint_error *err);
+    /* Samples the light from point p with (u1, u2) in [0, 1)^2: false when
+     * it gives p nothing. */
+    bool (*sample)(const light *l, vec3 p, double u1, double u2, light_sample *out);
+};
+
+extern const light_kind point_light, spot_light, directional_light;
+
+/* The kind with that public id, or NULL. */
+const light_kind *light_kind_of(glint_light_kind id);
+
+/* The number of kinds, and kind i, in the order the docs list them. */
+int light_kind_count(void);
+const light_kind *light_kind_at(int i);
+
+/* The description a scene file starts from for a light of kind id: every
+ * parameter at its default (intensity 1). */
+light_spec light_spec_default(glint_light_kind id);
+
+/* Validates desc against its kind's table and rules and fills *l; fills
+ * err naming a bad value. */
 glint_status light_init(light *l, const glint_light *desc, glint_error *err);
 
-/* Fills *out for point p; false when the light gives p nothing. */
-bool light_illuminate(const light *l, vec3 p, light_sample *out);
+/* Samples light l from point p (see light_kind.sample). */
+static inline bool light_sample_at(const light *l, vec3 p, double u1, double u2, light_sample *out)
+{
+    return l->kind->sample(l, p, u1, u2, out);
+}
 
 /* Spotlight factor in [0, 1] for a point whose direction from the light makes
  * cosine cos_angle with the axis: 1 inside the inner cone, 0 outside the
  * outer, a smoothstep between. */
 double spot_factor(const light *l, double cos_angle);
+
+/* The parameters every light has: its colour and intensity. */
+#define LIGHT_COLOR_PARAMS                                                                                     \
+    {.key = "color", .type = PARAM_COLOR, .offset = offsetof(light_spec, light.color), .def = {1, 1, 1},     \
+     .lo = 0, .hi = DBL_MAX, .meaning = "the light's colour"},                                                \
+    {.key = "intensity", .type = PARAM_NUMBER, .offset = offsetof(light_spec, intensity), .def = {1},        \
+     .lo = 0, .hi = 1e300, .meaning = "multiplies color"}
 
 #endif

@@ -1474,7 +1474,7 @@ static const bad_scene BAD[] = {
     {"spot_falloff_above_angle",
      "lights:\n"
      "  - {type: spot, position: [0, 5, 0], direction: [0, -1, 0], angle: 20, falloff: 25}\n",
-     "bad.yaml:2:82: 'falloff' must be from 0 to the cone angle, got 25", 1},
+     "bad.yaml:2:5: spot light falloff must not exceed its angle 20, got 25", 1},
     {"light_intensity_negative",
      "lights:\n"
      "  - {type: point, position: [0, 5, 0], intensity: -1}\n",
@@ -1482,7 +1482,7 @@ static const bad_scene BAD[] = {
     {"light_direction_zero",
      "lights:\n"
      "  - {type: directional, direction: [0, 0, 0]}\n",
-     "bad.yaml:2:5: light direction must be finite and not zero", 1},
+     "bad.yaml:2:36: 'direction' must not be zero", 1},
     {"fog_density_zero",
      "fog:\n"
      "  type: exponential\n"

@@ -87,15 +87,15 @@ static void test_spotlight(void **state)
     light l = make_spot(20, 10);
     light_sample s;
     /* Straight below: full light, at distance 10. */
-    assert_true(light_illuminate(&l, v3(0, 0, 0), &s));
+    assert_true(light_sample_at(&l, v3(0, 0, 0), 0.5, 0.5, &s));
     assert_near(s.distance, 10, EPS);
     assert_vec_near(s.to_light, v3(0, 1, 0), EPS);
     assert_near(s.radiance.r, 1, EPS);
     /* 5 degrees off axis: inside the inner cone (10 degrees). */
-    assert_true(light_illuminate(&l, v3(10 * tan(5 * M_PI / 180), 0, 0), &s));
+    assert_true(light_sample_at(&l, v3(10 * tan(5 * M_PI / 180), 0, 0), 0.5, 0.5, &s));
     assert_near(s.radiance.g, 1, EPS);
     /* 25 degrees off axis: outside the cone. */
-    assert_false(light_illuminate(&l, v3(10 * tan(25 * M_PI / 180), 0, 0), &s));
+    assert_false(light_sample_at(&l, v3(10 * tan(25 * M_PI / 180), 0, 0), 0.5, 0.5, &s));
     /* In the falloff, halfway in cosine: smoothstep(0.5) = 0.5. */
     double c = 0.5 * (cos(20 * M_PI / 180) + cos(10 * M_PI / 180));
     assert_near(spot_factor(&l, c), 0.5, 1e-12);
@@ -105,14 +105,14 @@ static void test_spotlight(void **state)
     light hard = make_spot(8.5, 0);
     assert_near(spot_factor(&hard, cos(8.49 * M_PI / 180)), 1, 0);
     assert_near(spot_factor(&hard, cos(8.51 * M_PI / 180)), 0, 0);
-    /* The same edge through light_illuminate, whose quick rejection of
+    /* The same edge through light_sample_at, whose quick rejection of
      * points outside the cone must leave those just inside lit. */
-    assert_true(light_illuminate(&hard, v3(10 * tan(8.4999 * M_PI / 180), 0, 0), &s));
+    assert_true(light_sample_at(&hard, v3(10 * tan(8.4999 * M_PI / 180), 0, 0), 0.5, 0.5, &s));
     assert_near(s.radiance.r, 1, 0);
-    assert_false(light_illuminate(&hard, v3(10 * tan(8.5001 * M_PI / 180), 0, 0), &s));
-    assert_false(light_illuminate(&hard, v3(0, 10, 5), &s));
+    assert_false(light_sample_at(&hard, v3(10 * tan(8.5001 * M_PI / 180), 0, 0), 0.5, 0.5, &s));
+    assert_false(light_sample_at(&hard, v3(0, 10, 5), 0.5, 0.5, &s));
     /* Behind the spot: nothing. */
-    assert_false(light_illuminate(&l, v3(0, 20, 0), &s));
+    assert_false(light_sample_at(&l, v3(0, 20, 0), 0.5, 0.5, &s));
 }
 
 static void test_point_and_directional(void **state)
@@ -122,12 +122,12 @@ static void test_point_and_directional(void **state)
     light p, d;
     light_sample s;
     assert_int_equal(light_init(&p, &pd, NULL), GLINT_OK);
-    assert_true(light_illuminate(&p, v3(0, 0, 0), &s));
+    assert_true(light_sample_at(&p, v3(0, 0, 0), 0.5, 0.5, &s));
     assert_near(s.distance, 5, EPS);
     assert_vec_near(s.to_light, v3(0.6, 0.8, 0), EPS);
     assert_near(s.radiance.b, 2, EPS);
     assert_int_equal(light_init(&d, &dd, NULL), GLINT_OK);
-    assert_true(light_illuminate(&d, v3(7, 7, 7), &s));
+    assert_true(light_sample_at(&d, v3(7, 7, 7), 0.5, 0.5, &s));
     assert_true(isinf(s.distance));
     assert_vec_near(s.to_light, v3(0, 1, 0), EPS);
 }
@@ -138,15 +138,25 @@ static void test_light_errors(void **state)
     light l;
     glint_light bad = {.kind = GLINT_LIGHT_SPOT, .direction = {0, -1, 0}, .color = {1, 1, 1}, .cone_angle = 95};
     assert_int_equal(light_init(&l, &bad, &err), GLINT_ERR_INVALID);
-    assert_string_equal(err.message, "spotlight cone angle must be in (0, 90] degrees, got 95");
+    assert_string_equal(err.message, "spot light angle must be above 0 and at most 90 degrees, got 95");
     bad.cone_angle = 10;
     bad.direction = v3(0, 0, 0);
     assert_int_equal(light_init(&l, &bad, &err), GLINT_ERR_INVALID);
-    assert_string_equal(err.message, "light direction must be finite and not zero");
+    assert_string_equal(err.message, "spot light direction must not be zero");
     bad.direction = v3(0, -1, 0);
     bad.color.g = NAN;
     assert_int_equal(light_init(&l, &bad, &err), GLINT_ERR_INVALID);
-    assert_string_equal(err.message, "light colour must be finite and not negative");
+    assert_string_equal(err.message, "spot light color must be finite and not negative");
+    bad.color.g = 1;
+    bad.falloff_angle = 12;
+    assert_int_equal(light_init(&l, &bad, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "spot light falloff must not exceed its angle 10, got 12");
+    glint_light far = {.kind = GLINT_LIGHT_POINT, .position = {0, INFINITY, 0}, .color = {1, 1, 1}};
+    assert_int_equal(light_init(&l, &far, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "point light position is not finite");
+    glint_light odd = {.kind = (glint_light_kind)7};
+    assert_int_equal(light_init(&l, &odd, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "unknown light kind 7");
 }
 
 static void test_checker(void **state)
