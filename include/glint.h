@@ -175,18 +175,46 @@ typedef struct glint_mapping {
     glint_mapping_kind kind;
     glint_vec3 center;           /* origin of p */
     glint_vec3 u_axis, v_axis;   /* planar; both zero means x and z */
-    double scale;                /* planar, cylindrical; 0 means 1 */
+    double scale;                /* planar, cylindrical: > 0; 0 is taken as the default, 1 */
 } glint_mapping;
 
+typedef enum glint_texture_kind {
+    GLINT_TEXTURE_CHECKER = 0,  /* two colours in square cells */
+    GLINT_TEXTURE_IMAGE         /* a PNG or JPEG picture */
+} glint_texture_kind;
+
+/* A texture's description: each kind reads the fields named beside them
+ * (docs/scene-format.md lists each kind's keys, defaults and ranges; start
+ * from glint_texture_default). */
+typedef struct glint_texture {
+    glint_texture_kind kind;
+    glint_mapping mapping;
+    glint_color colors[2];    /* checker: cells where floor(u/size) + floor(v/size) is even
+                                 show colors[0], the others colors[1] */
+    double size;              /* checker: cell size in texture units, > 0 */
+    const char *file;         /* image: a PNG or JPEG file (sRGB, converted to linear); u runs
+                                 left to right, v top to bottom, repeating in u, clamped in v */
+} glint_texture;
+
+/* Returns a description of the given kind with every field at its default
+ * and a uv mapping. */
+glint_texture glint_texture_default(glint_texture_kind kind);
+
+/* Adds a texture. Returns its index (>= 0) or -1 and fills err. `name` may
+ * be NULL; a name already taken is refused. */
+int glint_scene_add_texture(glint_scene *scene, const char *name, const glint_texture *texture, glint_error *err);
+
 /* Adds a checkerboard of colours a and b with square cells of `cell` texture
- * units; cell (floor(u/cell) + floor(v/cell)) even shows a. Returns the
- * texture's index (>= 0) or -1 and fills err. `name` may be NULL. */
+ * units; cell (floor(u/cell) + floor(v/cell)) even shows a: a
+ * glint_scene_add_texture of a checker. Returns the texture's index (>= 0)
+ * or -1 and fills err. `name` may be NULL. */
 int glint_scene_add_checker(glint_scene *scene, const char *name, glint_color a, glint_color b,
                             double cell, glint_mapping mapping, glint_error *err);
 
 /* Adds an image texture decoded from a PNG or JPEG file (sRGB, converted to
- * linear). u runs left to right, v top to bottom, repeating in u and clamped
- * in v. Returns the texture's index or -1 and fills err. */
+ * linear): a glint_scene_add_texture of an image. u runs left to right, v
+ * top to bottom, repeating in u and clamped in v. Returns the texture's
+ * index or -1 and fills err. */
 int glint_scene_add_image_file(glint_scene *scene, const char *name, const char *path,
                                glint_mapping mapping, glint_error *err);
 

@@ -37,6 +37,13 @@ void params_defaults(param_table t, void *obj)
         case PARAM_COLOR:
             *(glint_color *)f = (glint_color){p->def[0], p->def[1], p->def[2]};
             break;
+        case PARAM_COLOR_PAIR:
+            ((glint_color *)f)[0] = (glint_color){p->def[0], p->def[1], p->def[2]};
+            ((glint_color *)f)[1] = (glint_color){p->def[3], p->def[4], p->def[5]};
+            break;
+        case PARAM_PATH:
+            *(const char **)f = NULL;
+            break;
         case PARAM_POINTS:
             *(int *)field(obj, p->count_offset) = 0;
             break;
@@ -85,6 +92,8 @@ void param_range_text(const param *p, char *buf, size_t size)
         snprintf(buf, size, "above %s%s%s", lo, space, unit);
     else if (p->bounds == PARAM_OPEN_LOW)
         snprintf(buf, size, "above %s and at most %s%s%s", lo, hi, space, unit);
+    else if (p->hi >= DBL_MAX)
+        snprintf(buf, size, "%s or more%s%s", lo, space, unit);
     else
         snprintf(buf, size, "from %s to %s%s%s", lo, hi, space, unit);
 }
@@ -134,12 +143,22 @@ static glint_status check_one(const param *p, const void *obj, const char *what,
             return error_set(err, GLINT_ERR_INVALID, "%s %s must not be zero", what, p->key);
         return GLINT_OK;
     }
-    case PARAM_COLOR: {
-        glint_color c = *(const glint_color *)f;
-        double channels[3] = {c.r, c.g, c.b};
-        for (int k = 0; k < 3; k++)
-            if (!param_in_range(p, channels[k]))
-                return error_set(err, GLINT_ERR_INVALID, "%s %s must be finite and not negative", what, p->key);
+    case PARAM_COLOR:
+    case PARAM_COLOR_PAIR: {
+        const glint_color *c = f;
+        for (int i = 0; i < (p->type == PARAM_COLOR ? 1 : 2); i++) {
+            double channels[3] = {c[i].r, c[i].g, c[i].b};
+            for (int k = 0; k < 3; k++)
+                if (!param_in_range(p, channels[k]))
+                    return error_set(err, GLINT_ERR_INVALID, "%s %s must be finite and not negative", what,
+                                     p->key);
+        }
+        return GLINT_OK;
+    }
+    case PARAM_PATH: {
+        const char *path = *(const char *const *)f;
+        if (!path || !path[0])
+            return error_set(err, GLINT_ERR_INVALID, "%s needs a %s", what, p->key);
         return GLINT_OK;
     }
     case PARAM_POINTS: {

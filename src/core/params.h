@@ -26,6 +26,8 @@ typedef enum param_type {
     PARAM_VEC3,     /* glint_vec3: any finite vector */
     PARAM_DIRECTION,/* glint_vec3: finite and not zero */
     PARAM_COLOR,    /* glint_color: finite channels within the range */
+    PARAM_COLOR_PAIR,/* glint_color[2]: two colours, as PARAM_COLOR each */
+    PARAM_PATH,     /* const char *: a file, relative to the scene file that names it */
     PARAM_BOOL,     /* bool */
     PARAM_POINTS    /* glint_vec3[], the count in the int at count_offset */
 } param_type;
@@ -38,7 +40,8 @@ typedef struct param {
     param_type type;
     size_t offset;            /* of the field in the kind's struct */
     bool required;            /* a scene file must give it: no default */
-    double def[3];            /* the default: a number, a bool (0 or 1), a vector or colour */
+    double def[6];            /* the default: a number, a bool (0 or 1), a vector or colour,
+                                 two colours */
     double lo, hi;            /* numbers, integers and colour channels: the range */
     param_bounds bounds;
     const char *unit;         /* appended to the range's wording ("degrees"), or NULL */

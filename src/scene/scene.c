@@ -126,17 +126,12 @@ int scene_find_material(const glint_scene *scene, const char *name)
     return -1;
 }
 
-/* Appends a texture after checking its name and mapping; on failure releases
- * what t owns. */
-static int add_texture(glint_scene *scene, texture *t, const char *name, glint_error *err)
+/* Appends texture t, built and checked, under `name` (or none); on failure
+ * releases what t owns. */
+static int append_texture(glint_scene *scene, texture *t, const char *name, glint_error *err)
 {
-    glint_status s = GLINT_OK;
-    if (scene_find_texture(scene, name) >= 0)
-        s = error_set(err, GLINT_ERR_INVALID, "texture '%s' is defined twice", name);
-    if (!s)
-        s = mapping_validate(&t->mapping, err);
-    if (!s)
-        s = grow((void **)&scene->textures, &scene->texture_cap, scene->texture_count, sizeof *t, "textures", err);
+    glint_status s =
+        grow((void **)&scene->textures, &scene->texture_cap, scene->texture_count, sizeof *t, "textures", err);
     if (!s)
         s = copy_name(&t->name, name, err);
     if (s) {
@@ -147,50 +142,75 @@ static int add_texture(glint_scene *scene, texture *t, const char *name, glint_e
     return scene->texture_count++;
 }
 
+/* Refuses a texture name already taken. */
+static bool name_free(const glint_scene *scene, const char *name, glint_error *err)
+{
+    if (scene_find_texture(scene, name) < 0)
+        return true;
+    error_set(err, GLINT_ERR_INVALID, "texture '%s' is defined twice", name);
+    return false;
+}
+
+int glint_scene_add_texture(glint_scene *scene, const char *name, const glint_texture *desc, glint_error *err)
+{
+    texture t;
+    if (!name_free(scene, name, err) || texture_init(&t, desc, err))
+        return -1;
+    return append_texture(scene, &t, name, err);
+}
+
 int glint_scene_add_checker(glint_scene *scene, const char *name, glint_color a, glint_color b, double cell,
                             glint_mapping mapping, glint_error *err)
 {
-    if (!rgb_is_valid(a) || !rgb_is_valid(b)) {
-        error_set(err, GLINT_ERR_INVALID, "checker colours must be finite and not negative");
-        return -1;
-    }
-    if (!(cell > 0 && isfinite(cell))) {
-        error_set(err, GLINT_ERR_INVALID, "checker cell size must be positive, got %g", cell);
-        return -1;
-    }
-    texture t = {.kind = TEXTURE_CHECKER, .mapping = mapping, .a = a, .b = b, .cell = cell};
-    return add_texture(scene, &t, name, err);
+    glint_texture t = glint_texture_default(GLINT_TEXTURE_CHECKER);
+    t.mapping = mapping;
+    t.colors[0] = a;
+    t.colors[1] = b;
+    t.size = cell;
+    return glint_scene_add_texture(scene, name, &t, err);
 }
 
 int glint_scene_add_image_file(glint_scene *scene, const char *name, const char *path, glint_mapping mapping,
                                glint_error *err)
 {
-    texture t = {.kind = TEXTURE_IMAGE, .mapping = mapping};
-    if (texture_image_load_file(&t.image, path, err))
+    glint_texture t = glint_texture_default(GLINT_TEXTURE_IMAGE);
+    t.mapping = mapping;
+    t.file = path;
+    return glint_scene_add_texture(scene, name, &t, err);
+}
+
+/* Adds an image texture over an image decoded here or borrowed, which it
+ * then owns; the mapping is checked as any texture's. */
+static int add_decoded_image(glint_scene *scene, const char *name, texture_image image, glint_mapping mapping,
+                             glint_error *err)
+{
+    texture t = {.kind = &image_texture, .mapping = mapping, .image = image};
+    if (!name_free(scene, name, err) || mapping_validate(&mapping, err)) {
+        texture_release(&t);
         return -1;
-    return add_texture(scene, &t, name, err);
+    }
+    return append_texture(scene, &t, name, err);
 }
 
 int glint_scene_add_image_memory(glint_scene *scene, const char *name, const void *data, size_t size,
                                  glint_mapping mapping, glint_error *err)
 {
-    texture t = {.kind = TEXTURE_IMAGE, .mapping = mapping};
-    if (texture_image_load_memory(&t.image, data, size, name ? name : "image", err))
+    texture_image image;
+    if (texture_image_load_memory(&image, data, size, name ? name : "image", err))
         return -1;
-    return add_texture(scene, &t, name, err);
+    return add_decoded_image(scene, name, image, mapping, err);
 }
 
 int scene_add_image_pixels(glint_scene *scene, const char *name, int width, int height,
                            const unsigned char *srgb, glint_mapping mapping, glint_error *err)
 {
-    texture t = {.kind = TEXTURE_IMAGE, .mapping = mapping, .image = texture_image_borrow(width, height, srgb)};
-    return add_texture(scene, &t, name, err);
+    return add_decoded_image(scene, name, texture_image_borrow(width, height, srgb), mapping, err);
 }
 
 glint_status glint_scene_replace_image(glint_scene *scene, const char *name, const char *path, glint_error *err)
 {
     int i = scene_find_texture(scene, name);
-    if (i < 0 || scene->textures[i].kind != TEXTURE_IMAGE)
+    if (i < 0 || scene->textures[i].kind != &image_texture)
         return error_set(err, GLINT_ERR_INVALID, "no image texture named '%s'", name ? name : "");
     texture_image img;
     glint_status s = texture_image_load_file(&img, path, err);

@@ -32,6 +32,8 @@ typedef struct loader {
     struct imported *imports;                    /* models read so far: each once */
     int import_count, import_cap;
     long bytes;                                  /* bytes read so far, all files */
+    char **paths;                                /* files named by keys, resolved: freed at the end */
+    size_t path_count, path_cap;
 } loader;
 
 /* A model file already imported, so that every object placing it shares

@@ -4,30 +4,32 @@
 #include <string.h>
 #include "scenefile/loader.h"
 
+/* A mapping: a word (its type) or a map of its type's keys. */
 static bool read_mapping(loader *l, const ynode *n, glint_mapping *m)
 {
-    static const char *const kinds[] = {"uv", "planar", "spherical", "cylindrical"};
-    /* The keys each kind of mapping reads, by kind. */
-    static const char *const keys[] = {"type", "center", "scale", "u_axis", "v_axis"};
-    static const int key_count[] = {1, 5, 2, 3};
+    param_table t = mapping_params();
+    const param *kind = &t.params[0];
     const ynode *type = n;
     if (n->kind == YNODE_MAPPING) {
         type = yr_need(&l->r, n, "type", "mapping");
         if (!type)
             return false;
     }
-    int k = word(l, type, n == type ? "mapping" : "type", kinds, COUNT(kinds));
+    int k = word(l, type, n == type ? "mapping" : "type", kind->words, kind->word_count);
     if (k < 0)
         return false;
     m->kind = (glint_mapping_kind)k;
     if (n->kind != YNODE_MAPPING)
         return true;
     char what[40];
-    snprintf(what, sizeof what, "a %s mapping", kinds[k]);
-    yr_check_keys(&l->r, n, what, keys, key_count[k]);
-    bool good = yr_opt_vec3(&l->r, n, "center", &m->center) && yr_opt_vec3(&l->r, n, "u_axis", &m->u_axis) &&
-                yr_opt_vec3(&l->r, n, "v_axis", &m->v_axis) &&
-                ranged(l, n, "scale", 0, 1e300, OPEN_LOW, "positive", &m->scale);
+    snprintf(what, sizeof what, "a %s mapping", kind->words[k]);
+    const char *keys[8];
+    int count = mapping_key_count(m->kind);
+    for (int i = 0; i < count; i++)
+        keys[i] = t.params[i].key;
+    yr_check_keys(&l->r, n, what, keys, count);
+    /* Every key but the type, each where the map gives it. */
+    bool good = read_params(l, n, (param_table){t.params + 1, t.count - 1}, what, m);
     if (good && k == GLINT_MAP_PLANAR && (!yr_get(&l->r, n, "u_axis")) != (!yr_get(&l->r, n, "v_axis"))) {
         diag_at(&l->d, n, "a planar mapping needs both 'u_axis' and 'v_axis', or neither");
         return false;
@@ -35,52 +37,47 @@ static bool read_mapping(loader *l, const ynode *n, glint_mapping *m)
     return good;
 }
 
+/* The node of the first key of table t that names a file, or NULL: a file
+ * that cannot be read is reported there. */
+static const ynode *file_node(loader *l, const ynode *n, param_table t)
+{
+    for (int i = 0; i < t.count; i++)
+        if (t.params[i].type == PARAM_PATH)
+            return yr_get(&l->r, n, t.params[i].key);
+    return NULL;
+}
+
 static void add_texture(loader *l, const char *name, const ynode *n)
 {
-    static const char *const kinds[] = {"checker", "image"};
-    static const char *const keys[2][4] = {{"type", "mapping", "colors", "size"}, {"type", "mapping", "file"}};
     char what[160];
     snprintf(what, sizeof what, "texture '%.100s'", name);
-    int kind = typed_map(l, n, what, kinds, COUNT(kinds));
-    if (kind >= 0)
-        yr_check_keys(&l->r, n, what, keys[kind], kind == 0 ? 4 : 3);
-    glint_mapping mapping = {.kind = GLINT_MAP_UV};
-    const ynode *m = yr_get(&l->r, n, "mapping");
-    if (kind < 0 || (m && !read_mapping(l, m, &mapping)))
+    const char *names[16];
+    int count = 0;
+    for (int i = 0; i < texture_kind_count() && count < COUNT(names); i++)
+        names[count++] = texture_kind_at(i)->name;
+    int k = typed_map(l, n, what, names, count);
+    if (k < 0)
         return;
-    glint_error err;
+    const texture_kind *kind = texture_kind_at(k);
+    static const char *const common[] = {"type", "mapping"};
+    const char *keys[24];
+    int key_count = param_keys(kind->params, common, COUNT(common), keys, COUNT(keys));
+    yr_check_keys(&l->r, n, what, keys, key_count);
+    glint_texture t = glint_texture_default(kind->id);
+    const ynode *m = yr_get(&l->r, n, "mapping");
+    if (m && !read_mapping(l, m, &t.mapping))
+        return;
     if (scene_find_texture(l->scene, name) >= 0) {
         diag_at(&l->d, n, "texture '%.100s' is defined twice", name);
         return;
     }
-    if (kind == 0) {
-        color c[2] = {{0, 0, 0}, {1, 1, 1}};
-        double size = 1;
-        const ynode *colors = yr_get(&l->r, n, "colors");
-        if (colors && (colors->kind != YNODE_SEQUENCE || colors->count != 2)) {
-            diag_at(&l->d, colors, "'colors' must be a list of two colours");
-            return;
-        }
-        if ((colors && (!yr_color(&l->r, colors->items[0], "colors", &c[0]) ||
-                        !yr_color(&l->r, colors->items[1], "colors", &c[1]))) ||
-            !ranged(l, n, "size", 0, 1e300, OPEN_LOW, "positive", &size))
-            return;
-        if (glint_scene_add_checker(l->scene, name, c[0], c[1], size, mapping, &err) < 0)
-            diag_at(&l->d, n, "%s", err.message);
+    if (!read_params(l, n, kind->params, what, &t))
         return;
+    glint_error err;
+    if (glint_scene_add_texture(l->scene, name, &t, &err) < 0) {
+        const ynode *file = file_node(l, n, kind->params);
+        diag_at(&l->d, file ? file : n, "%s", err.message);
     }
-    const ynode *file = yr_need(&l->r, n, "file", what);
-    const char *path;
-    if (!file || !yr_text(&l->r, file, "file", &path))
-        return;
-    char *full = relative_to(n->file, path);
-    if (!full) {
-        diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
-        return;
-    }
-    if (glint_scene_add_image_file(l->scene, name, full, mapping, &err) < 0)
-        diag_at(&l->d, file, "%s", err.message);
-    free(full);
 }
 
 void read_texture(loader *l, const char *name, const ynode *n)
@@ -88,12 +85,10 @@ void read_texture(loader *l, const char *name, const ynode *n)
     add_texture(l, name, n);
     if (scene_find_texture(l->scene, name) < 0) {
         /* A stand-in keeps the name known: no second report at each use. */
-        glint_mapping uv = {.kind = GLINT_MAP_UV};
-        glint_scene_add_checker(l->scene, name, rgb(0, 0, 0), rgb(1, 1, 1), 1, uv, NULL);
+        glint_texture stand_in = glint_texture_default(GLINT_TEXTURE_CHECKER);
+        glint_scene_add_texture(l->scene, name, &stand_in, NULL);
     }
 }
-
-/* ------------------------------------------------------------ materials */
 
 /* Reports an unknown texture or material name at n, with the nearest
  * defined name as a hint. */

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/array.h"
 #include "scenefile/loader.h"
 
 bool need_number(loader *l, const ynode *map, const char *key, const char *what, double *out)
@@ -149,6 +150,27 @@ static bool read_param(loader *l, const ynode *n, const param *p, void *obj)
     }
     case PARAM_COLOR:
         return yr_color(&l->r, n, p->key, f);
+    case PARAM_COLOR_PAIR:
+        if (n->kind != YNODE_SEQUENCE || n->count != 2) {
+            diag_at(&l->d, n, "'%s' must be a list of two colours", p->key);
+            return false;
+        }
+        return yr_color(&l->r, n->items[0], p->key, (color *)f) &&
+               yr_color(&l->r, n->items[1], p->key, (color *)f + 1);
+    case PARAM_PATH: {
+        const char *path;
+        if (!yr_text(&l->r, n, p->key, &path))
+            return false;
+        char *full = relative_to(n->file, path);
+        if (!full || !array_reserve((void **)&l->paths, &l->path_cap, l->path_count + 1, sizeof *l->paths)) {
+            free(full);
+            diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
+            return false;
+        }
+        l->paths[l->path_count++] = full;
+        *(const char **)f = full;
+        return true;
+    }
     case PARAM_POINTS: {
         char list[40];
         snprintf(list, sizeof list, "'%s'", p->key);

@@ -269,6 +269,9 @@ static glint_scene *load(const glint_load_options *o, glint_error *err, const ch
     for (int i = 0; i < l.import_count; i++)
         free(l.imports[i].path);
     free(l.imports);
+    for (size_t i = 0; i < l.path_count; i++)
+        free(l.paths[i]);
+    free(l.paths);
     if (l.d.count > 0) {
         glint_scene_free(l.scene);
         return NULL;

@@ -1,21 +1,13 @@
 /* directional_light.c - light from infinitely far away, all of it
- * travelling one way: the sun. */
+ * travelling one way (the sun): a delta light (light.h) at infinity. */
 #include <stddef.h>
 #include "shading/light.h"
 
 static glint_status directional_init(light *l, glint_error *err)
 {
     l->dir = v3_normalize(l->desc.direction);
+    l->at_infinity = true;
     return GLINT_OK;
-}
-
-static bool directional_sample(const light *l, vec3 p, double u1, double u2, light_sample *out)
-{
-    out->to_light = v3_neg(l->dir);
-    out->distance = INFINITY;
-    out->radiance = l->desc.color;
-    out->pdf = 1;
-    return true;
 }
 
 static const param DIRECTIONAL_PARAMS[] = {
@@ -26,5 +18,5 @@ static const param DIRECTIONAL_PARAMS[] = {
 
 const light_kind directional_light = {
     .name = "directional", .id = GLINT_LIGHT_DIRECTIONAL, .params = PARAM_TABLE(DIRECTIONAL_PARAMS),
-    .init = directional_init, .sample = directional_sample,
+    .init = directional_init, .delta = true, .sample = light_delta_sample_fn,
 };

@@ -1,5 +1,6 @@
 /* light.c - the light interface: checks a description against its kind's
  * table, and the registry of kinds (one line each). */
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 #include "core/error.h"
@@ -30,6 +31,21 @@ light_spec light_spec_default(glint_light_kind id)
     if (k)
         params_defaults(k->params, &s);
     return s;
+}
+
+double spot_factor(const light *l, double cos_angle)
+{
+    if (cos_angle < l->cos_outer)
+        return 0;
+    if (cos_angle >= l->cos_inner)
+        return 1;
+    double t = (cos_angle - l->cos_outer) / (l->cos_inner - l->cos_outer);
+    return t * t * (3 - 2 * t);
+}
+
+bool light_delta_sample_fn(const light *l, vec3 p, double u1, double u2, light_sample *out)
+{
+    return light_delta_sample(l, p, out);
 }
 
 glint_status light_init(light *l, const glint_light *d, glint_error *err)

@@ -1,5 +1,5 @@
 /* spot_light.c - a light at a point shining into a cone, with an optional
- * soft edge inside it. */
+ * soft edge inside it: a delta light (light.h) with a cone. */
 #include <math.h>
 #include <stddef.h>
 #include "core/error.h"
@@ -14,43 +14,8 @@ static glint_status spot_init(light *l, glint_error *err)
     l->cos_outer = cos(d->cone_angle * M_PI / 180);
     l->cos_inner = cos((d->cone_angle - d->falloff_angle) * M_PI / 180);
     l->dir = v3_normalize(d->direction);
+    l->has_cone = true;
     return GLINT_OK;
-}
-
-double spot_factor(const light *l, double cos_angle)
-{
-    if (cos_angle < l->cos_outer)
-        return 0;
-    if (cos_angle >= l->cos_inner)
-        return 1;
-    double t = (cos_angle - l->cos_outer) / (l->cos_inner - l->cos_outer);
-    return t * t * (3 - 2 * t);
-}
-
-/* True when p, at d from spotlight l, is clearly outside its cone: most
- * points of a scene are, and this needs no square root or division. The
- * margin leaves every point the exact test might light to that test. */
-static bool outside_cone(const light *l, vec3 d)
-{
-    double along = -v3_dot(d, l->dir); /* |d| times the cosine from the axis */
-    if (along < 0)
-        return true;
-    return along * along < l->cos_outer * l->cos_outer * v3_dot(d, d) * (1 - 1e-9);
-}
-
-static bool spot_sample(const light *l, vec3 p, double u1, double u2, light_sample *out)
-{
-    vec3 d = v3_sub(l->desc.position, p);
-    if (outside_cone(l, d))
-        return false;
-    out->distance = v3_length(d);
-    if (out->distance == 0)
-        return false;
-    out->to_light = v3_scale(d, 1.0 / out->distance);
-    double factor = spot_factor(l, -v3_dot(out->to_light, l->dir));
-    out->radiance = rgb_scale(l->desc.color, factor);
-    out->pdf = 1;
-    return factor > 0;
 }
 
 static const param SPOT_PARAMS[] = {
@@ -66,6 +31,6 @@ static const param SPOT_PARAMS[] = {
 };
 
 const light_kind spot_light = {
-    .name = "spot", .id = GLINT_LIGHT_SPOT, .params = PARAM_TABLE(SPOT_PARAMS), .init = spot_init,
-    .sample = spot_sample,
+    .name = "spot", .id = GLINT_LIGHT_SPOT, .params = PARAM_TABLE(SPOT_PARAMS), .init = spot_init, .delta = true,
+    .sample = light_delta_sample_fn,
 };

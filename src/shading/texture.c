@@ -1,27 +1,105 @@
-/* texture.c - checkerboards, image lookups and the uv mappings. */
+/* texture.c - the registry of texture kinds, the checks every texture
+ * passes, the uv mappings, and the checker and image look-ups. */
 #include <math.h>
+#include <stddef.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include "core/error.h"
 #include "geometry/shape_math.h"
 #include "shading/texture.h"
 
-glint_status mapping_validate(const glint_mapping *m, glint_error *err)
+static const texture_kind *const KINDS[] = {&checker_texture, &image_texture};
+
+#define KIND_COUNT ((int)(sizeof KINDS / sizeof KINDS[0]))
+
+const texture_kind *texture_kind_of(glint_texture_kind id)
 {
-    if (m->kind < GLINT_MAP_UV || m->kind > GLINT_MAP_CYLINDRICAL)
-        return error_set(err, GLINT_ERR_INVALID, "unknown texture mapping %d", (int)m->kind);
-    if (!v3_is_finite(m->center) || !v3_is_finite(m->u_axis) || !v3_is_finite(m->v_axis) ||
-        !isfinite(m->scale))
-        return error_set(err, GLINT_ERR_INVALID, "texture mapping values must be finite");
-    if (m->scale < 0)
-        return error_set(err, GLINT_ERR_INVALID, "texture mapping scale must not be negative, got %g", m->scale);
-    if (m->kind == GLINT_MAP_PLANAR) {
-        bool u0 = v3_length(m->u_axis) == 0, v0 = v3_length(m->v_axis) == 0;
+    for (int i = 0; i < KIND_COUNT; i++)
+        if (KINDS[i]->id == id)
+            return KINDS[i];
+    return NULL;
+}
+
+int texture_kind_count(void) { return KIND_COUNT; }
+
+const texture_kind *texture_kind_at(int i) { return i >= 0 && i < KIND_COUNT ? KINDS[i] : NULL; }
+
+glint_texture glint_texture_default(glint_texture_kind kind)
+{
+    glint_texture t;
+    memset(&t, 0, sizeof t);
+    t.kind = kind;
+    t.mapping.kind = GLINT_MAP_UV;
+    t.mapping.scale = 1;
+    const texture_kind *k = texture_kind_of(kind);
+    if (k)
+        params_defaults(k->params, &t);
+    return t;
+}
+
+static const char *const MAPPINGS[] = {"uv", "planar", "spherical", "cylindrical"};
+
+#define MAPPING(name) .offset = offsetof(glint_mapping, name)
+
+static const param MAPPING_PARAMS[] = {
+    {.key = "type", .type = PARAM_CHOICE, MAPPING(kind), .required = true, .words = MAPPINGS, .word_count = 4,
+     .meaning = "uv, planar, spherical or cylindrical"},
+    {.key = "center", .type = PARAM_VEC3, MAPPING(center),
+     .meaning = "origin of the mapping, in the shape's own coordinates (planar, spherical, cylindrical)"},
+    {.key = "scale", .type = PARAM_NUMBER, MAPPING(scale), .def = {1}, PARAM_POSITIVE,
+     .meaning = "distance per unit of u and v: 2 makes the texture twice as large (planar, cylindrical)"},
+    {.key = "u_axis", .type = PARAM_VEC3, MAPPING(u_axis),
+     .meaning = "direction of u, with v_axis or not at all; x when neither is given (planar)"},
+    {.key = "v_axis", .type = PARAM_VEC3, MAPPING(v_axis),
+     .meaning = "direction of v, not parallel to u_axis; z when neither is given (planar)"},
+};
+
+param_table mapping_params(void)
+{
+    return PARAM_TABLE(MAPPING_PARAMS);
+}
+
+int mapping_key_count(glint_mapping_kind kind)
+{
+    static const int counts[] = {[GLINT_MAP_UV] = 1, [GLINT_MAP_PLANAR] = 5, [GLINT_MAP_SPHERICAL] = 2,
+                                 [GLINT_MAP_CYLINDRICAL] = 3};
+    return kind >= GLINT_MAP_UV && kind <= GLINT_MAP_CYLINDRICAL ? counts[kind] : 1;
+}
+
+glint_status mapping_validate(const glint_mapping *given, glint_error *err)
+{
+    glint_mapping m = *given;
+    if (m.scale == 0)
+        m.scale = 1;
+    glint_status s = params_check(mapping_params(), &m, "mapping", err);
+    if (s)
+        return s;
+    if (m.kind == GLINT_MAP_PLANAR) {
+        bool u0 = v3_length(m.u_axis) == 0, v0 = v3_length(m.v_axis) == 0;
         if (u0 != v0)
             return error_set(err, GLINT_ERR_INVALID, "planar mapping needs both axes or neither");
-        if (!u0 && v3_length(v3_cross(m->u_axis, m->v_axis)) == 0)
+        if (!u0 && v3_length(v3_cross(m.u_axis, m.v_axis)) == 0)
             return error_set(err, GLINT_ERR_INVALID, "planar mapping axes must not be parallel");
     }
     return GLINT_OK;
+}
+
+glint_status texture_init(texture *t, const glint_texture *desc, glint_error *err)
+{
+    memset(t, 0, sizeof *t);
+    t->kind = texture_kind_of(desc->kind);
+    if (!t->kind)
+        return error_set(err, GLINT_ERR_INVALID, "unknown texture kind %d", (int)desc->kind);
+    char what[40];
+    snprintf(what, sizeof what, "%s texture", t->kind->name);
+    glint_status s = params_check(t->kind->params, desc, what, err);
+    if (!s)
+        s = mapping_validate(&desc->mapping, err);
+    if (s)
+        return s;
+    t->mapping = desc->mapping;
+    return t->kind->init(t, desc, err);
 }
 
 void mapping_apply(const glint_mapping *m, const surface *s, double *u, double *v)
@@ -88,15 +166,6 @@ color image_eval(const texture_image *img, double u, double v)
     color top = rgb_lerp(texel(img, x0, y0), texel(img, x1, y0), tx);
     color bottom = rgb_lerp(texel(img, x0, y1), texel(img, x1, y1), tx);
     return rgb_lerp(top, bottom, ty);
-}
-
-color texture_eval(const texture *t, const surface *s)
-{
-    double u, v;
-    mapping_apply(&t->mapping, s, &u, &v);
-    if (t->kind == TEXTURE_CHECKER)
-        return checker_eval(t->a, t->b, t->cell, u, v);
-    return image_eval(&t->image, u, v);
 }
 
 void texture_release(texture *t)

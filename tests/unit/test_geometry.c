@@ -10,7 +10,7 @@
 #include <float.h>
 #include <math.h>
 #include <string.h>
-#include "geometry/shape.h"
+#include "geometry/shape_kind.h"
 
 #define EPS 1e-9
 
@@ -255,6 +255,87 @@ static void test_plane_hit(void **state)
     /* Floors: u along +x, v along +z, from the plane's point. */
     NEAR(sf.u, 1);
     NEAR(sf.v, 2);
+}
+
+/* A ring about (1, 2, 3) facing +z: outer radius 2, a hole of radius 0.5. */
+static glint_shape test_ring(void)
+{
+    glint_shape d = glint_shape_default(GLINT_SHAPE_DISK);
+    d.center = v3(1, 2, 3);
+    d.normal = v3(0, 0, 4);
+    d.radius = 2;
+    d.inner_radius = 0.5;
+    return d;
+}
+
+/* Discs and rings: exact hits from both sides, the rims on the disc, the
+ * hole and the outside missed, uv across the disc's square, tight bounds,
+ * and what it is: flat, open, crossed once. */
+static void test_disk(void **state)
+{
+    shape s = MAKE(test_ring(), NULL);
+    /* From the front, 5 units away, 1.25 from the centre along +x. */
+    surface sf = HIT(s, R(v3(2.25, 2, 8), v3(0, 0, -1)), 5, 0, v3(2.25, 2, 3), v3(0, 0, 1));
+    /* A wall facing +z: u along +x, v down, over the square of side 4. */
+    NEAR(sf.u, 0.5 + 1.25 / 4);
+    NEAR(sf.v, 0.5);
+    /* From behind, slanted: t where z reaches 3; the normal stays +z. */
+    HIT(s, R(v3(1, 0.5, -1), v3(0, 0.125, 2)), 2, 0, v3(1, 0.75, 3), v3(0, 0, 1));
+    /* Both rims belong to the ring (exact: distances 2 and 0.5 along y). */
+    HIT(s, R(v3(1, 4, 5), v3(0, 0, -1)), 2, 0, v3(1, 4, 3), v3(0, 0, 1));
+    HIT(s, R(v3(1, 2.5, 5), v3(0, 0, -1)), 2, 0, v3(1, 2.5, 3), v3(0, 0, 1));
+    MISS(s, R(v3(1, 2.25, 5), v3(0, 0, -1)));                /* in the hole */
+    MISS(s, R(v3(1, 4.0000001, 5), v3(0, 0, -1)));          /* just outside */
+    MISS(s, R(v3(1, 2, 5), v3(1, 0, 0)));                    /* parallel */
+    MISS_WITHIN(s, R(v3(2.25, 2, 8), v3(0, 0, -1)), 0, 4.5); /* beyond reach */
+    vec3 lo, hi;
+    shape_bounds(&s, &lo, &hi);
+    VNEAR(lo, v3(-1, 0, 3));
+    VNEAR(hi, v3(3, 4, 3));
+    assert_true(s.kind->flat);
+    assert_false(shape_is_closed(&s));
+    assert_int_equal(shape_max_crossings(&s), 1);
+    /* A full disc, tilted 45 degrees about x: reaches sqrt(0.5) r in y, z. */
+    glint_shape tilted = glint_shape_default(GLINT_SHAPE_DISK);
+    tilted.radius = 2;
+    tilted.normal = v3(0, 1, 1);
+    s = MAKE(tilted, NULL);
+    shape_bounds(&s, &lo, &hi);
+    VNEAR(lo, v3(-2, -sqrt(2), -sqrt(2)));
+    VNEAR(hi, v3(2, sqrt(2), sqrt(2)));
+    HIT(s, R(v3(0, 5, 0), v3(0, -1, 0)), 5, 0, v3(0, 0, 0), v3(0, sqrt(0.5), sqrt(0.5)));
+    /* Moved by a transform: a disc of radius 1 facing +y, scaled 3 times. */
+    glint_shape unit = glint_shape_default(GLINT_SHAPE_DISK);
+    unit.radius = 1;
+    glint_transform grow = glint_transform_scale(glint_transform_identity(), 3, 3, 3);
+    s = MAKE(unit, &grow);
+    HIT(s, R(v3(2.9, 4, 0), v3(0, -2, 0)), 2, 0, v3(2.9, 0, 0), v3(0, 1, 0));
+    MISS(s, R(v3(3.1, 4, 0), v3(0, -2, 0)));
+}
+
+static void test_disk_validation(void **state)
+{
+    glint_shape d = test_ring();
+    d.inner_radius = 2;
+    REJECTS(d, NULL, "disk inner_radius must be below its radius 2, got 2");
+    d.inner_radius = -1;
+    REJECTS(d, NULL, "disk inner_radius must be 0 or more, got -1");
+    d = test_ring();
+    d.radius = 0;
+    REJECTS(d, NULL, "disk radius must be positive, got 0");
+    d = test_ring();
+    d.normal = v3(0, 0, 0);
+    REJECTS(d, NULL, "disk normal must not be zero");
+    d = test_ring();
+    d.center.y = NAN;
+    REJECTS(d, NULL, "disk center is not finite");
+    /* The defaults: a full disc about the origin facing +y, its radius
+     * still to be given. */
+    d = glint_shape_default(GLINT_SHAPE_DISK);
+    assert_int_equal(d.kind, GLINT_SHAPE_DISK);
+    VNEAR(d.normal, v3(0, 1, 0));
+    assert_true(d.radius == 0 && d.inner_radius == 0);
+    REJECTS(d, NULL, "disk radius must be positive, got 0");
 }
 
 /* n values in [-5, 5) from a small linear congruential generator, the
@@ -1319,6 +1400,8 @@ int main(void)
         cmocka_unit_test(test_bounds_transformed_sphere),
         cmocka_unit_test(test_validation),
         cmocka_unit_test(test_is_closed),
+        cmocka_unit_test(test_disk),
+        cmocka_unit_test(test_disk_validation),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -396,6 +396,38 @@ static void test_empty_file_holds_no_scene(void **state)
     glint_scene_free(s);
 }
 
+/* A ring facing the camera: the hole and the outside show the background,
+ * the ring its colour; the file's keys reach the shape, the defaults fill
+ * the rest. */
+static void test_disk_ring(void **state)
+{
+    glint_scene *s = load_good("settings: {width: 21, height: 21, background: [0, 0, 1]}\n"
+                               "camera: {position: [0, 0, 10], look_at: [0, 0, 0], fov: 20}\n"
+                               "materials: {red: {color: [1, 0, 0], ambient: 1, diffuse: 0, specular: 0}}\n"
+                               "objects:\n"
+                               "  - {type: disk, radius: 1.5, inner_radius: 0.5, normal: [0, 0, 1], material: red}\n"
+                               "  - {type: disk, center: [0, 0, -50], radius: 0.25, material: red}\n");
+    assert_int_equal(s->shape_count, 2);
+    const glint_shape *ring = &s->shapes[0].desc, *disc = &s->shapes[1].desc;
+    assert_int_equal(ring->kind, GLINT_SHAPE_DISK);
+    assert_exact(ring->radius, 1.5);
+    assert_exact(ring->inner_radius, 0.5);
+    assert_vec(ring->normal, 0, 0, 1, 0);
+    assert_vec(disc->normal, 0, 1, 0, 0); /* the default: facing up */
+    assert_exact(disc->inner_radius, 0);
+    glint_image img = render(s);
+    /* Pixels are 2 tan(10 deg) 10 / 21 = 0.168 units across: the centre
+     * pixel looks through the hole, pixel 16 lands 1.01 from the centre on
+     * the ring, pixel 20 at 1.68 beyond it. */
+    const float *centre = img.pixels + 3 * (10 * 21 + 10), *on = img.pixels + 3 * (10 * 21 + 16),
+                *off = img.pixels + 3 * (10 * 21 + 20);
+    assert_true(centre[0] == 0 && centre[1] == 0 && centre[2] == 1);
+    assert_true(on[0] == 1 && on[1] == 0 && on[2] == 0);
+    assert_true(off[0] == 0 && off[1] == 0 && off[2] == 1);
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
 static void test_camera_every_key(void **state)
 {
     glint_scene *s = load_good("camera:\n"
@@ -459,20 +491,20 @@ static void test_checker_texture(void **state)
                                "  plain: {type: checker}\n");
     assert_int_equal(glint_scene_get_counts(s).textures, 2);
     const texture *t = &s->textures[texture_named(s, "tiles")];
-    assert_int_equal(t->kind, TEXTURE_CHECKER);
+    assert_ptr_equal(t->kind, &checker_texture);
     assert_rgb(t->a, 1, 0, 0, 0);
     assert_rgb(t->b, 0, 0, 1, 0);
     assert_exact(t->cell, 0.25);
     assert_int_equal(t->mapping.kind, GLINT_MAP_PLANAR);
     /* Defaults: black and white cells of one unit, the shape's own (u, v). */
     t = &s->textures[texture_named(s, "plain")];
-    assert_int_equal(t->kind, TEXTURE_CHECKER);
+    assert_ptr_equal(t->kind, &checker_texture);
     assert_rgb(t->a, 0, 0, 0, 0);
     assert_rgb(t->b, 1, 1, 1, 0);
     assert_exact(t->cell, 1);
     assert_int_equal(t->mapping.kind, GLINT_MAP_UV);
     assert_vec(t->mapping.center, 0, 0, 0, 0);
-    assert_exact(t->mapping.scale, 0);
+    assert_exact(t->mapping.scale, 1);
     glint_scene_free(s);
 }
 
@@ -524,7 +556,7 @@ static void test_mapping_as_a_map(void **state)
 /* The texels of tiny.png below, as linear values. */
 static void check_tiny_texels(const texture *t)
 {
-    assert_int_equal(t->kind, TEXTURE_IMAGE);
+    assert_ptr_equal(t->kind, &image_texture);
     assert_int_equal(t->image.width, 2);
     assert_int_equal(t->image.height, 2);
     static const unsigned char want[12] = {255, 0, 0, 0, 128, 255, 10, 20, 30, 255, 255, 255};
@@ -1651,6 +1683,18 @@ static const bad_scene BAD[] = {
      "objects:\n"
      "  - {type: box, material: m, min: [2, 2, 2], max: [1, 1, 1]}\n",
      "bad.yaml:4:5: box min must be below max on every axis", 1},
+    {"disk_hole_too_big",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: disk, material: m, radius: 1, inner_radius: 1.5}\n",
+     "bad.yaml:4:5: disk inner_radius must be below its radius 1, got 1.5", 1},
+    {"disk_every_problem",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: disk, material: m, radius: -1, inner_radius: -2, normal: [0, 0, 0]}\n",
+     "bad.yaml:4:69: 'normal' must not be zero", 3},
     {"plane_normal_zero",
      "materials:\n"
      "  m: {}\n"
@@ -2134,6 +2178,7 @@ int main(void)
         cmocka_unit_test(test_settings_other_values),
         cmocka_unit_test(test_defaults_of_an_empty_scene),
         cmocka_unit_test(test_empty_file_holds_no_scene),
+        cmocka_unit_test(test_disk_ring),
         cmocka_unit_test(test_camera_every_key),
         cmocka_unit_test(test_fog_none),
         cmocka_unit_test(test_fog_linear),

@@ -1,0 +1,23 @@
+/* image_texture.c - a PNG or JPEG picture, bilinearly filtered. */
+#include <stddef.h>
+#include "shading/texture.h"
+
+static glint_status image_init(texture *t, const glint_texture *d, glint_error *err)
+{
+    return texture_image_load_file(&t->image, d->file, err);
+}
+
+static color image_at(const texture *t, double u, double v)
+{
+    return image_eval(&t->image, u, v);
+}
+
+static const param IMAGE_PARAMS[] = {
+    {.key = "file", .type = PARAM_PATH, .offset = offsetof(glint_texture, file), .required = true,
+     .meaning = "a PNG or JPEG file, relative to the scene file"},
+};
+
+const texture_kind image_texture = {
+    .name = "image", .id = GLINT_TEXTURE_IMAGE, .params = PARAM_TABLE(IMAGE_PARAMS), .init = image_init,
+    .eval = image_at,
+};
