@@ -266,8 +266,7 @@ int mesh_import_add_mesh(glint_scene *scene, const mesh_import_ctx *ctx, const g
     glint_error inner;
     int mesh = glint_scene_add_mesh(scene, ctx->stem, d, &inner);
     if (mesh < 0)
-        error_set(err, strstr(inner.message, "out of memory") ? GLINT_ERR_NOMEM : GLINT_ERR_INVALID, "%s: %s",
-                  ctx->file, inner.message);
+        error_set(err, inner.status, "%s: %s", ctx->file, inner.message);
     return mesh;
 }
 

@@ -149,16 +149,6 @@ static glint_material from_gltf(const struct aiMaterial *a)
     return m;
 }
 
-/* The status behind a message from glint's own API, which returns only -1. */
-static glint_status inner_status(const glint_error *inner)
-{
-    if (strstr(inner->message, "out of memory"))
-        return GLINT_ERR_NOMEM;
-    if (strncmp(inner->message, "cannot open", 11) == 0 || strncmp(inner->message, "cannot read", 11) == 0)
-        return GLINT_ERR_IO;
-    return GLINT_ERR_INVALID;
-}
-
 /* Adds the texture embedded as "*N". */
 static glint_status add_embedded(glint_scene *scene, const struct aiScene *ai, const char *ref,
                                  const mesh_import_ctx *ctx, int *out, glint_error *err)
@@ -174,7 +164,7 @@ static glint_status add_embedded(glint_scene *scene, const struct aiScene *ai, c
     glint_error inner;
     *out = glint_scene_add_image_memory(scene, NULL, t->pcData, t->mWidth, uv, &inner);
     if (*out < 0)
-        return error_set(err, inner_status(&inner), "%s: texture '%s': %s", ctx->file, ref, inner.message);
+        return error_set(err, inner.status, "%s: texture '%s': %s", ctx->file, ref, inner.message);
     return GLINT_OK;
 }
 
@@ -190,7 +180,7 @@ static glint_status add_file(glint_scene *scene, const char *ref, const mesh_imp
     *out = glint_scene_add_image_file(scene, NULL, path, uv, &inner);
     free(path);
     if (*out < 0)
-        return error_set(err, inner_status(&inner), "%s: texture '%s': %s", ctx->file, ref, inner.message);
+        return error_set(err, inner.status, "%s: texture '%s': %s", ctx->file, ref, inner.message);
     return GLINT_OK;
 }
 
@@ -232,7 +222,7 @@ static glint_status add_material(glint_scene *scene, const char *what, const gli
     *out = glint_scene_add_material(scene, scene_find_material(scene, name) >= 0 ? NULL : name, m, &inner);
     free(name);
     if (*out < 0)
-        return error_set(err, inner_status(&inner), "%s: %s", ctx->file, inner.message);
+        return error_set(err, inner.status, "%s: %s", ctx->file, inner.message);
     return GLINT_OK;
 }
 

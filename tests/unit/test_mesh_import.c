@@ -665,6 +665,13 @@ static void test_obj_missing_texture(void **state)
     snprintf(want, sizeof want, "texture 'wood.png': cannot open texture '%s/wood.png': No such file or directory",
              tmp_dir);
     expect_refused("bare.obj", NULL, want);
+    /* The failure's kind is the texture's status, whatever its message says. */
+    write_text("bare.mtl", "newmtl paint\nmap_Kd out of memory.png\n");
+    glint_scene *s = new_scene();
+    glint_error err = {0};
+    assert_int_equal(import(s, "bare.obj", NULL, &err), -1);
+    assert_int_equal(err.status, GLINT_ERR_IO);
+    glint_scene_free(s);
 }
 
 /* ------------------------------------------------------------ OBJ reader */
