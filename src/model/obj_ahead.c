@@ -13,12 +13,14 @@
 #include "core/array.h"
 #include "model/obj_ahead.h"
 
+/* What a line was parsed as. */
 typedef enum ahead_kind {
     AHEAD_ITEM,               /* a v, vt or vn statement, parsed */
     AHEAD_FACE,               /* an f statement, its corners parsed */
-    AHEAD_LINE                /* a line for statement() to read */
+    AHEAD_LINE                /* a line for obj_statement() to read */
 } ahead_kind;
 
+/* The record of one line: what the merge does with it. */
 typedef struct ahead {
     uint32_t offset;          /* where the line starts, from the piece's start */
     uint32_t row;             /* its first physical line, from the piece's first (0) */
@@ -39,7 +41,7 @@ static void ahead_face(text_piece *pc, scan_line *l, ahead *a)
     unsigned form = 0;
     while (scan_more(l)) {
         raw_corner rc;
-        if (!obj_scan_corner(l, &rc) || (n > 0 && rc.form != form) || n + 1 >= MESH_IMPORT_MAX_COUNT)
+        if (!obj_scan_corner(l, &rc) || (n > 0 && rc.form != form) || n + 1 >= MODEL_MAX_COUNT)
             goto refused;
         form = rc.form;
         if (!array_reserve((void **)&pc->corners, &pc->corner_cap, pc->corner_count + 3, sizeof *pc->corners)) {
@@ -113,7 +115,7 @@ void *text_piece_parse(void *arg)
 
 /* Reads the line of record a with obj_statement(); `base` is the number of
  * the piece's first line. */
-static glint_status merge_line(obj_reader *r, const text_piece *pc, const ahead *a, long base, glint_error *err)
+static glint_status merge_line(obj_parser *r, const text_piece *pc, const ahead *a, long base, glint_error *err)
 {
     const char *p = pc->start + a->offset;
     scan_span span;
@@ -126,13 +128,13 @@ static glint_status merge_line(obj_reader *r, const text_piece *pc, const ahead 
 /* Adds the face of record a as its line would be read; false, with nothing
  * changed, when its indices do not all resolve or it could pass a limit:
  * then obj_statement() is to read its line. */
-static bool merge_face(obj_reader *r, const text_piece *pc, const ahead *a, long base, glint_status *s,
+static bool merge_face(obj_parser *r, const text_piece *pc, const ahead *a, long base, glint_status *s,
                        glint_error *err)
 {
     obj_model *m = r->m;
     size_t n = a->corners;
     const int32_t *raw = pc->corners + a->u.first;
-    if (m->corner_count + n >= MESH_IMPORT_MAX_COUNT || m->triangle_count + n >= MESH_IMPORT_MAX_COUNT)
+    if (m->corner_count + n >= MODEL_MAX_COUNT || m->triangle_count + n >= MODEL_MAX_COUNT)
         return false;
     if (!obj_face_room(r, n) || !array_reserve((void **)&r->resolved, &r->resolved_cap, n, sizeof *r->resolved)) {
         *s = obj_out_of_memory(r, err);
@@ -160,13 +162,13 @@ static bool merge_face(obj_reader *r, const text_piece *pc, const ahead *a, long
     return true;
 }
 
-glint_status text_piece_merge(obj_reader *r, const text_piece *pc, glint_error *err)
+glint_status text_piece_merge(obj_parser *r, const text_piece *pc, glint_error *err)
 {
     long base = r->line;
     glint_status s = GLINT_OK;
     for (size_t i = 0; !s && i < pc->count; i++) {
         const ahead *a = &pc->items[i];
-        if (a->kind == AHEAD_ITEM && obj_item_count(r->m, a->what) < MESH_IMPORT_MAX_COUNT)
+        if (a->kind == AHEAD_ITEM && obj_item_count(r->m, a->what) < MODEL_MAX_COUNT)
             s = obj_add_item(r->m, a->what, a->u.item) ? GLINT_OK : obj_out_of_memory(r, err);
         else if (a->kind != AHEAD_FACE || !merge_face(r, pc, a, base, &s, err))
             s = merge_line(r, pc, a, base, err);
@@ -176,7 +178,6 @@ glint_status text_piece_merge(obj_reader *r, const text_piece *pc, glint_error *
     r->line = base + pc->rows;
     return s;
 }
-
 
 void text_piece_set(text_piece *pc, const char *start, const char *end, bool last, const char *file)
 {

@@ -34,7 +34,7 @@ void *text_piece_parse(void *piece);
 /* Applies the records of a parsed piece to r's model in order, its first
  * line being r->line; memory that ran out while parsing it counts after
  * the lines it parsed. */
-glint_status text_piece_merge(obj_reader *r, const text_piece *pc, glint_error *err);
+glint_status text_piece_merge(obj_parser *r, const text_piece *pc, glint_error *err);
 
 /* Frees the room of pc's records. */
 void text_piece_free(text_piece *pc);

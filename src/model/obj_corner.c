@@ -73,7 +73,7 @@ bool obj_scan_corner(scan_line *l, raw_corner *rc)
     return whole;
 }
 
-glint_status obj_read_corner(obj_reader *r, scan_line *l, scan_pos at, obj_corner *c, unsigned *form,
+glint_status obj_read_corner(obj_parser *r, scan_line *l, scan_pos at, obj_corner *c, unsigned *form,
                              const char **word_out, size_t *len_out, glint_error *err)
 {
     raw_corner rc;
@@ -139,11 +139,11 @@ static int64_t part_offset(int32_t index, int32_t v)
 }
 
 /* The id of a new corner c. */
-static glint_status corner_new(obj_reader *r, const scan_line *l, scan_pos at, const obj_corner *c, uint32_t *id,
+static glint_status corner_new(obj_parser *r, const scan_line *l, scan_pos at, const obj_corner *c, uint32_t *id,
                                glint_error *err)
 {
     obj_model *m = r->m;
-    if (m->corner_count >= MESH_IMPORT_MAX_COUNT)
+    if (m->corner_count >= MODEL_MAX_COUNT)
         return obj_too_many(l, at, "vertices", err);
     if (!array_reserve((void **)&m->corners, &m->corner_cap, m->corner_count + 1, sizeof *m->corners))
         return obj_out_of_memory(r, err);
@@ -157,7 +157,7 @@ static glint_status corner_new(obj_reader *r, const scan_line *l, scan_pos at, c
  * throughout (the same index, or none): corners related to their vertex
  * as the first corner read was are found by vertex in an array, the rest
  * by hashing. Ids go in the order corners first appear either way. */
-glint_status obj_corner_id(obj_reader *r, const scan_line *l, scan_pos at, const obj_corner *c, uint32_t *id,
+glint_status obj_corner_id(obj_parser *r, const scan_line *l, scan_pos at, const obj_corner *c, uint32_t *id,
                            glint_error *err)
 {
     obj_model *m = r->m;

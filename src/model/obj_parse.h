@@ -1,5 +1,5 @@
 /* obj_parse.h - the inside of glint's OBJ reader (obj_read.h), shared by
- * its files: the reader's state, the face corners of obj_corner.c and the
+ * its files: the parser's state, the face corners of obj_corner.c and the
  * statements of obj_statement.c. Each statement of a logical line goes
  * into the model as it is read; obj_ahead.c parses lines ahead in threads
  * and hands them to the same functions in the file's order, so that the
@@ -13,13 +13,13 @@
 #include "core/error.h"
 #include "glint.h"
 #include "model/id_table.h"
-#include "model/mesh_import.h"
+#include "model/model_build.h"
 #include "model/obj_read.h"
 #include "model/text_scan.h"
 #include "model/triangulate.h"
 
 /* What reading needs besides the model. */
-typedef struct obj_reader {
+typedef struct obj_parser {
     obj_model *m;
     const char *file;
     long line;                /* number of the next line */
@@ -40,7 +40,7 @@ typedef struct obj_reader {
     triangulate_work work;
     int threads;              /* threads that parse ahead (obj_ahead.c), 1 for none */
     size_t piece_min;         /* the least text worth a thread */
-} obj_reader;
+} obj_parser;
 
 /* What a face corner names: a part of the vertex data. */
 typedef enum obj_part {
@@ -64,7 +64,7 @@ typedef enum obj_keyword {
 } obj_keyword;
 
 /* The message of memory running out while reading. */
-static inline glint_status obj_out_of_memory(const obj_reader *r, glint_error *err)
+static inline glint_status obj_out_of_memory(const obj_parser *r, glint_error *err)
 {
     return error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", r->file);
 }
@@ -72,7 +72,7 @@ static inline glint_status obj_out_of_memory(const obj_reader *r, glint_error *e
 /* The message of a count passing glint's mesh limit, at `at`. */
 static inline glint_status obj_too_many(const scan_line *l, scan_pos at, const char *what, glint_error *err)
 {
-    return scan_error(l, at, err, "too many %s (more than %lld)", what, MESH_IMPORT_MAX_COUNT);
+    return scan_error(l, at, err, "too many %s (more than %lld)", what, MODEL_MAX_COUNT);
 }
 
 /* The number of items of part `what` read so far. */
@@ -114,12 +114,12 @@ static inline bool obj_absolute_index(long long index, size_t count, int32_t *ou
  * it: its indices into *c (-1 for parts it lacks), its form as a bit set of
  * parts, and where it is (*word, *len) for messages. Indices must name
  * items read before them. */
-glint_status obj_read_corner(obj_reader *r, scan_line *l, scan_pos at, obj_corner *c, unsigned *form,
+glint_status obj_read_corner(obj_parser *r, scan_line *l, scan_pos at, obj_corner *c, unsigned *form,
                              const char **word, size_t *len, glint_error *err);
 
 /* The id of corner c in the model's distinct corners, entering it when it
  * is new; `at` places the message when that passes the limit. */
-glint_status obj_corner_id(obj_reader *r, const scan_line *l, scan_pos at, const obj_corner *c, uint32_t *id,
+glint_status obj_corner_id(obj_parser *r, const scan_line *l, scan_pos at, const obj_corner *c, uint32_t *id,
                            glint_error *err);
 
 /* ------------------------------------------------- obj_statement.c */
@@ -139,22 +139,22 @@ static inline obj_part obj_item_part(obj_keyword k)
 glint_status obj_parse_item(scan_line *l, scan_pos at, obj_part what, float item[3], glint_error *err);
 
 /* Appends an item of part `what` to the model's positions, uvs or normals;
- * false when memory runs out. The count is below MESH_IMPORT_MAX_COUNT. */
+ * false when memory runs out. The count is below MODEL_MAX_COUNT. */
 bool obj_add_item(obj_model *m, obj_part what, const float item[3]);
 
 /* Room for n corners in r->face and r->face_at. */
-bool obj_face_room(obj_reader *r, size_t n);
+bool obj_face_room(obj_parser *r, size_t n);
 
 /* Adds the triangles of the face of n corners of form `form` whose ids are
  * in r->face (and their vertices in r->face_at), read at `at`. */
-glint_status obj_add_face(obj_reader *r, const scan_line *l, scan_pos at, size_t n, unsigned form,
+glint_status obj_add_face(obj_parser *r, const scan_line *l, scan_pos at, size_t n, unsigned form,
                           glint_error *err);
 
 /* Reads the statement of logical line l into the model. */
-glint_status obj_statement(obj_reader *r, scan_line *l, glint_error *err);
+glint_status obj_statement(obj_parser *r, scan_line *l, glint_error *err);
 
 /* Reads every whole line in [data, data + size), and with `last` the rest
  * too; *used is how far it got. */
-glint_status obj_feed(obj_reader *r, const char *data, size_t size, bool last, size_t *used, glint_error *err);
+glint_status obj_feed(obj_parser *r, const char *data, size_t size, bool last, size_t *used, glint_error *err);
 
 #endif

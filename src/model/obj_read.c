@@ -81,7 +81,7 @@ typedef struct block {
 /* Fills b with the next `size` bytes or so of the text, after `carry`
  * bytes left over from the block before (a file's are copied; memory's
  * are where they are), until it holds a sure line break or the end. */
-static glint_status fill(obj_reader *r, source *src, block *b, size_t size, const char *carry, size_t carry_len,
+static glint_status fill(obj_parser *r, source *src, block *b, size_t size, const char *carry, size_t carry_len,
                          glint_error *err)
 {
     if (src->fd < 0) {
@@ -125,7 +125,7 @@ static glint_status fill(obj_reader *r, source *src, block *b, size_t size, cons
 
 /* Cuts b's whole lines into pieces, as many as the reader's threads while
  * each has at least piece_min bytes, and starts a thread on each. */
-static void parse_start(const obj_reader *r, block *b)
+static void parse_start(const obj_parser *r, block *b)
 {
     b->parsed = false;
     /* Records place their lines in 32 bits: a block beyond that (a line
@@ -166,7 +166,7 @@ static void block_free(block *b)
 }
 
 /* Reads b's whole lines into the model. */
-static glint_status merge_block(obj_reader *r, block *b, glint_error *err)
+static glint_status merge_block(obj_parser *r, block *b, glint_error *err)
 {
     glint_status s = GLINT_OK;
     if (b->count <= 1) {
@@ -180,7 +180,7 @@ static glint_status merge_block(obj_reader *r, block *b, glint_error *err)
 
 /* Reads the whole text of src, `size` bytes a block, the next block
  * parsed while the one before is merged. */
-static glint_status read_source(obj_reader *r, source *src, size_t size, glint_error *err)
+static glint_status read_source(obj_parser *r, source *src, size_t size, glint_error *err)
 {
     block blocks[2] = {0}, *b = &blocks[0], *next = &blocks[1];
     glint_status s = fill(r, src, b, size, NULL, 0, err);
@@ -222,11 +222,11 @@ static glint_status read_source(obj_reader *r, source *src, size_t size, glint_e
 static glint_status read_all(obj_model *m, source *src, const char *file, int threads, size_t piece,
                              size_t piece_min, glint_error *err)
 {
-    obj_reader r;
+    obj_parser r;
     threads = threads < 1 ? 1 : threads > THREADS_MAX ? THREADS_MAX : threads;
     piece = piece > 0 ? piece : 1;
     *m = (obj_model){0};
-    r = (obj_reader){.m = m, .file = file, .line = 1, .material = -1, .threads = threads, .piece_min = piece_min};
+    r = (obj_parser){.m = m, .file = file, .line = 1, .material = -1, .threads = threads, .piece_min = piece_min};
     glint_status s = read_source(&r, src, (size_t)threads * piece, err);
     id_table_free(&r.corner_index);
     free(r.by_vertex);

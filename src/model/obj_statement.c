@@ -62,22 +62,22 @@ bool obj_add_item(obj_model *m, obj_part what, const float item[3])
 
 /* Reads a v, vt or vn statement (`what`), whose keyword is at `at`, and
  * appends its item to the model's positions, uvs or normals. */
-static glint_status read_item(obj_reader *r, scan_line *l, scan_pos at, obj_part what, glint_error *err)
+static glint_status read_item(obj_parser *r, scan_line *l, scan_pos at, obj_part what, glint_error *err)
 {
     float item[3];
     glint_status s = obj_parse_item(l, at, what, item, err);
     if (s)
         return s;
-    if (obj_item_count(r->m, what) >= MESH_IMPORT_MAX_COUNT)
+    if (obj_item_count(r->m, what) >= MODEL_MAX_COUNT)
         return obj_too_many(l, at, obj_part_names[what], err);
     return obj_add_item(r->m, what, item) ? GLINT_OK : obj_out_of_memory(r, err);
 }
 
-static glint_status add_triangle(obj_reader *r, const scan_line *l, scan_pos at, uint32_t a, uint32_t b,
+static glint_status add_triangle(obj_parser *r, const scan_line *l, scan_pos at, uint32_t a, uint32_t b,
                                  uint32_t c, glint_error *err)
 {
     obj_model *m = r->m;
-    if (m->triangle_count >= MESH_IMPORT_MAX_COUNT)
+    if (m->triangle_count >= MODEL_MAX_COUNT)
         return obj_too_many(l, at, "triangles", err);
     if (!array_reserve((void **)&m->triangles, &m->triangle_cap, m->triangle_count + 1, 3 * sizeof(uint32_t)))
         return obj_out_of_memory(r, err);
@@ -100,7 +100,7 @@ static const char *form_text(unsigned form)
     return forms[form & 7];
 }
 
-glint_status obj_add_face(obj_reader *r, const scan_line *l, scan_pos at, size_t n, unsigned form,
+glint_status obj_add_face(obj_parser *r, const scan_line *l, scan_pos at, size_t n, unsigned form,
                           glint_error *err)
 {
     obj_model *m = r->m;
@@ -118,14 +118,14 @@ glint_status obj_add_face(obj_reader *r, const scan_line *l, scan_pos at, size_t
     return s;
 }
 
-bool obj_face_room(obj_reader *r, size_t n)
+bool obj_face_room(obj_parser *r, size_t n)
 {
     size_t cap = r->face_cap;
     return array_reserve((void **)&r->face, &cap, n, sizeof *r->face) &&
            array_reserve((void **)&r->face_at, &r->face_cap, n, sizeof *r->face_at);
 }
 
-static glint_status read_face(obj_reader *r, scan_line *l, scan_pos at, glint_error *err)
+static glint_status read_face(obj_parser *r, scan_line *l, scan_pos at, glint_error *err)
 {
     size_t n = 0;
     unsigned first_form = 0;
@@ -146,7 +146,7 @@ static glint_status read_face(obj_reader *r, scan_line *l, scan_pos at, glint_er
             return scan_error(l, here, err, "face corner '%s' is %s, but the face's first corner is %s", q,
                               form_text(form), form_text(first_form));
         }
-        if (n >= MESH_IMPORT_MAX_COUNT)
+        if (n >= MODEL_MAX_COUNT)
             return obj_too_many(l, here, "corners in one face", err);
         if (!obj_face_room(r, n + 1))
             return obj_out_of_memory(r, err);
@@ -161,7 +161,7 @@ static glint_status read_face(obj_reader *r, scan_line *l, scan_pos at, glint_er
 }
 
 /* Copies the rest of the line into the model's text; *offset is where. */
-static glint_status read_name(obj_reader *r, scan_line *l, scan_pos at, const char *keyword, size_t *offset,
+static glint_status read_name(obj_parser *r, scan_line *l, scan_pos at, const char *keyword, size_t *offset,
                               glint_error *err)
 {
     obj_model *m = r->m;
@@ -185,14 +185,14 @@ static bool name_equal(const void *keys, uint32_t id, const void *key)
     return strcmp(m->text + m->materials[id], key) == 0;
 }
 
-static glint_status read_usemtl(obj_reader *r, scan_line *l, scan_pos at, glint_error *err)
+static glint_status read_usemtl(obj_parser *r, scan_line *l, scan_pos at, glint_error *err)
 {
     obj_model *m = r->m;
     size_t offset = 0;
     glint_status s = read_name(r, l, at, "usemtl", &offset, err);
     if (s)
         return s;
-    if (m->material_count >= MESH_IMPORT_MAX_COUNT)
+    if (m->material_count >= MODEL_MAX_COUNT)
         return obj_too_many(l, at, "materials", err);
     if (!array_reserve((void **)&m->materials, &m->material_cap, m->material_count + 1, sizeof *m->materials))
         return obj_out_of_memory(r, err);
@@ -209,7 +209,7 @@ static glint_status read_usemtl(obj_reader *r, scan_line *l, scan_pos at, glint_
     return GLINT_OK;
 }
 
-static glint_status read_mtllib(obj_reader *r, scan_line *l, scan_pos at, glint_error *err)
+static glint_status read_mtllib(obj_parser *r, scan_line *l, scan_pos at, glint_error *err)
 {
     obj_model *m = r->m;
     size_t offset = 0;
@@ -238,7 +238,7 @@ obj_keyword obj_keyword_of(const char *w, size_t n)
     return KEY_OTHER;
 }
 
-glint_status obj_statement(obj_reader *r, scan_line *l, glint_error *err)
+glint_status obj_statement(obj_parser *r, scan_line *l, glint_error *err)
 {
     if (!scan_more(l))
         return GLINT_OK;
@@ -262,7 +262,7 @@ glint_status obj_statement(obj_reader *r, scan_line *l, glint_error *err)
     }
 }
 
-glint_status obj_feed(obj_reader *r, const char *data, size_t size, bool last, size_t *used, glint_error *err)
+glint_status obj_feed(obj_parser *r, const char *data, size_t size, bool last, size_t *used, glint_error *err)
 {
     const char *p = data, *end = data + size;
     scan_span span;
