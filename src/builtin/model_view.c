@@ -2,21 +2,9 @@
  * model.obj`: the model on a floor, framed by the camera, lit from the
  * front. Built with the public API only. */
 #include <math.h>
-#include <string.h>
-#include <strings.h>
 #include "core/color.h"
 #include "core/error.h"
 #include "core/vec.h"
-
-bool glint_is_model_path(const char *path)
-{
-    static const char *const extensions[] = {".obj", ".ply", ".stl", ".gltf", ".glb"};
-    const char *dot = path ? strrchr(path, '.') : NULL;
-    for (size_t i = 0; dot && i < sizeof extensions / sizeof extensions[0]; i++)
-        if (strcasecmp(dot, extensions[i]) == 0)
-            return true;
-    return false;
-}
 
 /* The camera sits on this direction from the model's centre. */
 static const vec3 VIEW_FROM = {0.45, 0.35, 1.0};

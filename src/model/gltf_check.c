@@ -1,15 +1,21 @@
-/* gltf_check.c - the check made on a glTF model's JSON before Assimp reads
- * it. Assimp's glTF 2 reader takes the part of an embedded image's media
- * type after its '/' without looking for one, so an image whose mimeType is
- * "imagepng", or whose data URI is "data:imagepng;base64,...", makes it read
- * from address 1 (fuzzing found it). Every mimeType and every data URI's
- * media type must therefore have its '/'. The scan decodes JSON strings as
- * a JSON parser does, escapes included, so "mime\u0054ype" is still seen as
- * the key mimeType. */
+/* gltf_check.c - the checks a glTF or GLB model passes before Assimp reads
+ * it. Assimp picks its reader by extension, but falls back to sniffing the
+ * content with every reader it has when none claims the file: a glTF must
+ * start as JSON and a GLB with its magic. A GLB's chunks must fit in the
+ * file, as Assimp allocates whatever length they claim. And Assimp's glTF
+ * 2 reader takes the part of an embedded image's media type after its '/'
+ * without looking for one, so an image whose mimeType is "imagepng", or
+ * whose data URI is "data:imagepng;base64,...", makes it read from address
+ * 1 (fuzzing found it): every mimeType and every data URI's media type must
+ * have its '/'. That scan decodes JSON strings as a JSON parser does,
+ * escapes included, so "mime\u0054ype" is still seen as the key mimeType. */
+#include <ctype.h>
+#include <limits.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <string.h>
 #include "core/error.h"
-#include "model/mesh_import.h"
+#include "model/assimp_check.h"
 
 /* What one decoded JSON string holds, as far as the check needs it. */
 typedef struct json_string {
@@ -117,7 +123,10 @@ static glint_status refuse(const unsigned char *text, const json_string *s, cons
                      column, what, (int)(to - from), s->head + from);
 }
 
-glint_status gltf_check_media_types(const unsigned char *text, size_t size, const char *where, glint_error *err)
+/* Refuses glTF JSON text (size bytes) in which an image's mimeType, or a
+ * data URI's media type, has no '/'. Messages start with `where` and then
+ * "line:column: ", the position in the text. */
+static glint_status check_media_types(const unsigned char *text, size_t size, const char *where, glint_error *err)
 {
     bool after_mime = false, after_uri = false; /* the last key, when its value comes next */
     size_t i = 0;
@@ -148,4 +157,45 @@ glint_status gltf_check_media_types(const unsigned char *text, size_t size, cons
         after_mime = after_uri = false;
     }
     return GLINT_OK;
+}
+
+glint_status gltf_check(const unsigned char *data, size_t size, const char *file, glint_error *err)
+{
+    size_t i = size >= 3 && memcmp(data, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;
+    while (i < size && isspace(data[i]))
+        i++;
+    if (i == size || data[i] != '{')
+        return error_set(err, GLINT_ERR_INVALID, "%s: not a glTF file (it does not start with a JSON object)", file);
+    char where[PATH_MAX + 2];
+    snprintf(where, sizeof where, "%s:", file);
+    return check_media_types(data, size, where, err);
+}
+
+/* The little-endian 32-bit number at p: a GLB's lengths. */
+static uint32_t le32(const unsigned char *p)
+{
+    return (uint32_t)p[0] | (uint32_t)p[1] << 8 | (uint32_t)p[2] << 16 | (uint32_t)p[3] << 24;
+}
+
+/* The JSON chunk, and the binary chunk when the file has one, must fit in
+ * the file (fuzzing found a 2 GB one). */
+glint_status glb_check(const unsigned char *data, size_t size, const char *file, glint_error *err)
+{
+    if (size < 4 || memcmp(data, "glTF", 4) != 0)
+        return error_set(err, GLINT_ERR_INVALID, "%s: not a binary glTF file (it does not start with 'glTF')", file);
+    size_t pos = 12;
+    for (int chunk = 0; chunk < 2 && pos <= size && size - pos >= 8; chunk++) {
+        unsigned long long length = le32(data + pos);
+        if (length > size - pos - 8)
+            return error_set(err, GLINT_ERR_INVALID,
+                             "%s: GLB chunk %d claims %llu bytes, more than the file's %zu after it", file, chunk,
+                             length, size - pos - 8);
+        pos += 8 + (size_t)(length + 3) / 4 * 4;
+    }
+    if (size < 20)
+        return GLINT_OK;
+    /* Chunk 0 is the JSON; positions in messages are within it. */
+    char where[PATH_MAX + 32];
+    snprintf(where, sizeof where, "%s: JSON chunk ", file);
+    return check_media_types(data + 20, le32(data + 12), where, err);
 }

@@ -1,6 +1,7 @@
 /* mtl_read.h - glint's own reader of Wavefront MTL material libraries
  * (docs/meshes.md): the statements glint maps to its materials, checked,
- * with errors naming file:line:column. */
+ * with errors naming file:line:column, and the glint material each
+ * becomes. */
 #ifndef GLINT_MODEL_MTL_READ_H
 #define GLINT_MODEL_MTL_READ_H
 
@@ -42,6 +43,10 @@ glint_status mtl_read(mtl_library *lib, const char *data, size_t size, const cha
 
 /* The material called `name`, or NULL. */
 const mtl_material *mtl_find(const mtl_library *lib, const char *name);
+
+/* The glint material of MTL material m (mtl_material.c), its values
+ * clamped into glint's ranges; no texture. */
+glint_material mtl_to_glint(const mtl_material *m);
 
 /* Frees what lib holds. */
 void mtl_free(mtl_library *lib);

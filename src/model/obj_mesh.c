@@ -5,7 +5,7 @@
 #include "core/error.h"
 #include "model/crease_normals.h"
 #include "model/id_table.h"
-#include "model/mesh_import.h"
+#include "model/model_build.h"
 #include "model/obj_mesh.h"
 
 /* A vertex joined by value: its welded position, texture coordinates and
@@ -65,9 +65,9 @@ static glint_status join(joiner *j, size_t t, int k, const float *normal)
                          slot))
         return out_of_memory(j->file, j->err);
     if (*slot == j->count) {
-        if (j->count >= MESH_IMPORT_MAX_COUNT)
+        if (j->count >= MODEL_MAX_COUNT)
             return error_set(j->err, GLINT_ERR_INVALID, "%s: too many vertices (more than %lld)", j->file,
-                             MESH_IMPORT_MAX_COUNT);
+                             MODEL_MAX_COUNT);
         j->keys[j->count++] = key;
     }
     return GLINT_OK;

@@ -1,10 +1,11 @@
 /* obj_read.h - glint's own reader of Wavefront OBJ text (docs/meshes.md):
- * from memory or from a file read a block at a time, into flat arrays that
- * grow by doubling. A large text's lines are parsed by a thread per
- * processor, a piece of each block each, and merged in the file's order.
- * Face corners with the same (v, vt, vn) indices are joined as they are
- * read, polygons are split into triangles, and every problem is an error
- * naming file:line:column; the model and the messages do not depend on the
+ * from memory or from a file read a block at a time (obj_read.c), into
+ * flat arrays that grow by doubling. A large text's lines are parsed by a
+ * thread per processor, a piece of each block each, and merged in the
+ * file's order (obj_ahead.c). Face corners with the same (v, vt, vn)
+ * indices are joined as they are read (obj_corner.c), polygons are split
+ * into triangles (obj_statement.c), and every problem is an error naming
+ * file:line:column; the model and the messages do not depend on the
  * threads. */
 #ifndef GLINT_MODEL_OBJ_READ_H
 #define GLINT_MODEL_OBJ_READ_H

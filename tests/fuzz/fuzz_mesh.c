@@ -15,7 +15,6 @@
 #include <stdlib.h>
 #include <string.h>
 #include "glint.h"
-#include "model/mesh_import.h"
 #include "model/mtl_read.h"
 #include "model/obj_read.h"
 
@@ -30,7 +29,7 @@ static void fuzz_mtl(const uint8_t *data, size_t size)
     if (mtl_read(&lib, (const char *)data, size, "model.mtl", &err) && strncmp(err.message, "model.mtl", 9) != 0)
         abort();
     for (size_t i = 0; i < lib.count; i++) {
-        glint_material m = mesh_import_from_mtl(&lib.items[i]);
+        glint_material m = mtl_to_glint(&lib.items[i]);
         if (mtl_find(&lib, lib.text + lib.items[i].name) != &lib.items[i] || !(m.ior > 0))
             abort();
     }

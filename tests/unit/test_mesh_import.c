@@ -665,6 +665,13 @@ static void test_obj_missing_texture(void **state)
     snprintf(want, sizeof want, "texture 'wood.png': cannot open texture '%s/wood.png': No such file or directory",
              tmp_dir);
     expect_refused("bare.obj", NULL, want);
+    /* The failure's kind is the texture's status, whatever its message says. */
+    write_text("bare.mtl", "newmtl paint\nmap_Kd out of memory.png\n");
+    glint_scene *s = new_scene();
+    glint_error err = {0};
+    assert_int_equal(import(s, "bare.obj", NULL, &err), -1);
+    assert_int_equal(err.status, GLINT_ERR_IO);
+    glint_scene_free(s);
 }
 
 /* ------------------------------------------------------------ OBJ reader */
@@ -1715,6 +1722,25 @@ static void test_memory_refusals(void **state)
     glint_scene_free(s);
 }
 
+/* glint_is_model_path takes a name by the same table the importer picks its
+ * reader by: what it takes is never refused as an unsupported format. */
+static void test_model_paths(void **state)
+{
+    static const char *const models[] = {"a.obj", "A.OBJ", "dir/b.Ply", "c.stl", "d.gltf", "e.GLB", ".obj"};
+    static const char *const others[] = {"a.fbx", "obj", "dir.obj/file", "a.obj.yaml", "a.", ""};
+    glint_error err = {0};
+    for (size_t i = 0; i < sizeof models / sizeof models[0]; i++) {
+        glint_scene *s = new_scene();
+        assert_true(glint_is_model_path(models[i]));
+        assert_int_equal(glint_scene_import_mesh_memory(s, "", 0, models[i], NULL, &err), -1);
+        assert_null(strstr(err.message, "unsupported format"));
+        glint_scene_free(s);
+    }
+    for (size_t i = 0; i < sizeof others / sizeof others[0]; i++)
+        assert_false(glint_is_model_path(others[i]));
+    assert_false(glint_is_model_path(NULL));
+}
+
 /* --------------------------------------------------------------- refusals */
 
 static void test_refused_files(void **state)
@@ -2031,6 +2057,7 @@ int main(void)
         cmocka_unit_test(test_glb_embedded_texture),
         cmocka_unit_test(test_memory_imports),
         cmocka_unit_test(test_memory_refusals),
+        cmocka_unit_test(test_model_paths),
         cmocka_unit_test(test_refused_files),
         cmocka_unit_test(test_refused_options),
         cmocka_unit_test(test_refused_ply),

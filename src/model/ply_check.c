@@ -1,49 +1,14 @@
-/* mesh_check.c - which formats the importer takes, and the checks made on a
- * model's bytes before Assimp parses them (PLY, STL, glTF and GLB; OBJ has
- * glint's own reader). Assimp picks its reader by extension, but falls back
- * to sniffing the content with every reader it has when none claims the
- * file; its PLY reader allocates whatever element counts the header claims,
- * and goes astray (heap corruption, endless loops) on headers and data that
- * do not follow the format; its GLB reader allocates whatever chunk lengths
- * the file claims. So PLY files are checked in full here, header and data,
- * GLB chunk lengths against the file, glTF and GLB image media types in
- * gltf_check.c, and only the four readers glint documents ever see a
- * file. */
+/* ply_check.c - the check a PLY model passes in full, header and data,
+ * before Assimp parses it: Assimp's PLY reader allocates whatever element
+ * counts the header claims, and goes astray (heap corruption, endless
+ * loops) on headers and data that do not follow the format (fuzzing found
+ * all three). The grammar accepted is docs/meshes.md's. */
 #include <ctype.h>
 #include <limits.h>
-#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <strings.h>
 #include "core/error.h"
-#include "model/mesh_import.h"
-
-static const struct {
-    const char *ext;
-    mesh_format format;
-} formats[] = {
-    {"obj", MESH_FORMAT_OBJ}, {"ply", MESH_FORMAT_PLY}, {"stl", MESH_FORMAT_STL},
-    {"gltf", MESH_FORMAT_GLTF}, {"glb", MESH_FORMAT_GLB},
-};
-
-mesh_format mesh_import_format(const char *name)
-{
-    const char *dot = name ? strrchr(name, '.') : NULL;
-    if (!dot || strchr(dot, '/'))
-        return MESH_FORMAT_NONE;
-    for (size_t i = 0; i < sizeof formats / sizeof formats[0]; i++)
-        if (strcasecmp(dot + 1, formats[i].ext) == 0)
-            return formats[i].format;
-    return MESH_FORMAT_NONE;
-}
-
-const char *mesh_import_extension(mesh_format f)
-{
-    for (size_t i = 0; i < sizeof formats / sizeof formats[0]; i++)
-        if (formats[i].format == f)
-            return formats[i].ext;
-    return "";
-}
+#include "model/assimp_check.h"
 
 #define PLY_MAX_WORDS 6
 #define PLY_MAX_ELEMENTS 64
@@ -336,9 +301,9 @@ static glint_status check_ascii(const unsigned char *data, size_t size, const pl
     return GLINT_OK;
 }
 
-/* Checks the header's grammar, that no element claims more items than the
- * data can hold (before walking them), and that the data matches it. */
-static glint_status check_ply(const unsigned char *data, size_t size, const char *file, glint_error *err)
+/* The header's grammar first, then that no element claims more items than
+ * the data can hold (before walking them), then that the data matches it. */
+glint_status ply_check(const unsigned char *data, size_t size, const char *file, glint_error *err)
 {
     ply_header *h = malloc(sizeof *h);
     if (!h)
@@ -361,50 +326,4 @@ static glint_status check_ply(const unsigned char *data, size_t size, const char
         s = h->format ? check_binary(data, size, h, file, err) : check_ascii(data, size, h, file, err);
     free(h);
     return s;
-}
-
-/* A GLB's JSON chunk, and its binary chunk when the file has one, must fit
- * in the file: Assimp allocates whatever length they claim before reading
- * them (fuzzing found a 2 GB one). */
-static glint_status check_glb(const unsigned char *data, size_t size, const char *file, glint_error *err)
-{
-    if (size < 4 || memcmp(data, "glTF", 4) != 0)
-        return error_set(err, GLINT_ERR_INVALID, "%s: not a binary glTF file (it does not start with 'glTF')", file);
-    size_t pos = 12;
-    for (int chunk = 0; chunk < 2 && pos <= size && size - pos >= 8; chunk++) {
-        unsigned long long length = (unsigned long long)read_int(data + pos, 4, false, false);
-        if (length > size - pos - 8)
-            return error_set(err, GLINT_ERR_INVALID,
-                             "%s: GLB chunk %d claims %llu bytes, more than the file's %zu after it", file, chunk,
-                             length, size - pos - 8);
-        pos += 8 + (size_t)(length + 3) / 4 * 4;
-    }
-    if (size < 20)
-        return GLINT_OK;
-    /* Chunk 0 is the JSON; positions in messages are within it. */
-    size_t json = (size_t)read_int(data + 12, 4, false, false);
-    char where[PATH_MAX + 32];
-    snprintf(where, sizeof where, "%s: JSON chunk ", file);
-    return gltf_check_media_types(data + 20, json, where, err);
-}
-
-glint_status mesh_import_check(mesh_format f, const unsigned char *data, size_t size, const char *file,
-                               glint_error *err)
-{
-    if (f == MESH_FORMAT_GLB)
-        return check_glb(data, size, file, err);
-    if (f == MESH_FORMAT_GLTF) {
-        size_t i = size >= 3 && memcmp(data, "\xEF\xBB\xBF", 3) == 0 ? 3 : 0;
-        while (i < size && isspace(data[i]))
-            i++;
-        if (i == size || data[i] != '{')
-            return error_set(err, GLINT_ERR_INVALID, "%s: not a glTF file (it does not start with a JSON object)",
-                             file);
-        char where[PATH_MAX + 2];
-        snprintf(where, sizeof where, "%s:", file);
-        return gltf_check_media_types(data, size, where, err);
-    }
-    if (f == MESH_FORMAT_PLY)
-        return check_ply(data, size, file, err);
-    return GLINT_OK;
 }

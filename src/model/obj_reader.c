@@ -1,35 +1,37 @@
-/* obj_import.c - an OBJ model into the scene with glint's own readers: the
- * OBJ text (obj_read.c), its vertices (obj_mesh.c), the MTL files it names
- * (mtl_read.c) and the materials and textures its faces use, then one mesh,
- * all through the public API. */
+/* obj_reader.c - the OBJ reader: an OBJ model into the scene with glint's
+ * own readers, the OBJ text (obj_read.c, streamed from a file), its
+ * vertices (obj_mesh.c), the MTL files it names (mtl_read.c) and the
+ * materials and textures its faces use, then one mesh (model_build.c). */
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include "core/array.h"
 #include "core/error.h"
-#include "model/mesh_import.h"
+#include "model/model_build.h"
+#include "model/model_file.h"
+#include "model/mtl_read.h"
 #include "model/obj_mesh.h"
 #include "model/obj_read.h"
 
-static glint_status out_of_memory(const mesh_import_ctx *ctx, glint_error *err)
+static glint_status out_of_memory(const model_import *job, glint_error *err)
 {
-    return error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", ctx->file);
+    return error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", job->file);
 }
 
 /* Reads the MTL file `name` into lib. One that cannot be read is left out,
  * as other readers do: its materials are then undefined. One that does not
  * follow the format is an error. */
-static glint_status read_library(mtl_library *lib, const mesh_import_ctx *ctx, const char *name, glint_error *err)
+static glint_status read_library(mtl_library *lib, const model_import *job, const char *name, glint_error *err)
 {
-    char *path = mesh_import_path(ctx->dir, name);
+    char *path = model_file_path(job->dir, name);
     if (!path)
-        return out_of_memory(ctx, err);
+        return out_of_memory(job, err);
     unsigned char *data;
     size_t size;
     glint_error ignored;
-    glint_status s = mesh_import_read_file(path, &data, &size, &ignored);
+    glint_status s = model_file_read(path, &data, &size, &ignored);
     if (s == GLINT_ERR_NOMEM)
-        s = out_of_memory(ctx, err);
+        s = out_of_memory(job, err);
     else if (s)
         s = GLINT_OK;
     else
@@ -40,9 +42,9 @@ static glint_status read_library(mtl_library *lib, const mesh_import_ctx *ctx, c
 }
 
 /* True when `name`, relative to the model, is a regular file. */
-static bool is_file(const mesh_import_ctx *ctx, const char *name)
+static bool is_file(const model_import *job, const char *name)
 {
-    char *path = mesh_import_path(ctx->dir, name);
+    char *path = model_file_path(job->dir, name);
     struct stat st;
     bool yes = path && stat(path, &st) == 0 && S_ISREG(st.st_mode);
     free(path);
@@ -51,20 +53,20 @@ static bool is_file(const mesh_import_ctx *ctx, const char *name)
 
 /* Reads the MTL files of an mtllib line: the whole line when it names a
  * file (its name may have blanks), and otherwise each of its words. */
-static glint_status read_libraries_of(mtl_library *lib, const mesh_import_ctx *ctx, const char *line,
+static glint_status read_libraries_of(mtl_library *lib, const model_import *job, const char *line,
                                       glint_error *err)
 {
-    if (!strpbrk(line, " \t") || is_file(ctx, line))
-        return read_library(lib, ctx, line, err);
+    if (!strpbrk(line, " \t") || is_file(job, line))
+        return read_library(lib, job, line, err);
     char *word = malloc(strlen(line) + 1);
     if (!word)
-        return out_of_memory(ctx, err);
+        return out_of_memory(job, err);
     glint_status s = GLINT_OK;
     for (const char *p = line + strspn(line, " \t"); !s && *p; p += strspn(p, " \t")) {
         size_t n = strcspn(p, " \t");
         memcpy(word, p, n);
         word[n] = '\0';
-        s = read_library(lib, ctx, word, err);
+        s = read_library(lib, job, word, err);
         p += n;
     }
     free(word);
@@ -73,15 +75,15 @@ static glint_status read_libraries_of(mtl_library *lib, const mesh_import_ctx *c
 
 /* What faces of material `id` (an index of m->materials, or -1 for none)
  * become. */
-static import_material material_of(const obj_model *m, const mtl_library *lib, int32_t id)
+static model_material material_of(const obj_model *m, const mtl_library *lib, int32_t id)
 {
-    import_material im = {0};
+    model_material im = {0};
     if (id < 0)
         return im;
     im.name = m->text + m->materials[id];
     const mtl_material *def = mtl_find(lib, im.name);
     mtl_material given = def ? *def : mtl_default();
-    im.m = mesh_import_from_mtl(&given);
+    im.m = mtl_to_glint(&given);
     im.texture = given.map_kd != MTL_NO_TEXT ? lib->text + given.map_kd : NULL;
     return im;
 }
@@ -89,12 +91,12 @@ static import_material material_of(const obj_model *m, const mtl_library *lib, i
 /* Adds the materials the faces use, in the order they are first used, and
  * sets run_material[r] to the glint material of run r. */
 static glint_status add_materials(glint_scene *scene, const obj_model *m, const mtl_library *lib,
-                                  const mesh_import_ctx *ctx, int *run_material, glint_error *err)
+                                  const model_import *job, int *run_material, glint_error *err)
 {
     size_t n = m->material_count + 1, count = 0;
     int *slot = array_alloc(n, sizeof *slot), *added = array_alloc(n, sizeof *added);
-    import_material *mats = array_alloc(n, sizeof *mats);
-    glint_status s = slot && added && mats ? GLINT_OK : out_of_memory(ctx, err);
+    model_material *mats = array_alloc(n, sizeof *mats);
+    glint_status s = slot && added && mats ? GLINT_OK : out_of_memory(job, err);
     for (size_t i = 0; !s && i < n; i++)
         slot[i] = -1;
     for (size_t r = 0; !s && r < m->run_count; r++) {
@@ -105,7 +107,7 @@ static glint_status add_materials(glint_scene *scene, const obj_model *m, const 
         }
     }
     if (!s)
-        s = mesh_import_add_materials(scene, mats, count, NULL, ctx, added, err);
+        s = model_add_materials(scene, mats, count, model_add_texture_file, NULL, job, added, err);
     for (size_t r = 0; !s && r < m->run_count; r++)
         run_material[r] = added[slot[m->runs[r].material + 1]];
     free(slot);
@@ -116,7 +118,7 @@ static glint_status add_materials(glint_scene *scene, const obj_model *m, const 
 
 /* The material of each triangle from those of the runs, into *out; NULL
  * when all runs have one. */
-static glint_status triangle_materials(const obj_model *m, const int *run_material, const mesh_import_ctx *ctx,
+static glint_status triangle_materials(const obj_model *m, const int *run_material, const model_import *job,
                                        int **out, glint_error *err)
 {
     *out = NULL;
@@ -126,7 +128,7 @@ static glint_status triangle_materials(const obj_model *m, const int *run_materi
     if (r == m->run_count)
         return GLINT_OK;
     if (!(*out = array_alloc(m->triangle_count, sizeof **out)))
-        return out_of_memory(ctx, err);
+        return out_of_memory(job, err);
     for (r = 0; r < m->run_count; r++) {
         size_t end = r + 1 < m->run_count ? m->runs[r + 1].first : m->triangle_count;
         for (size_t t = m->runs[r].first; t < end; t++)
@@ -137,21 +139,21 @@ static glint_status triangle_materials(const obj_model *m, const int *run_materi
 
 /* Builds the mesh of a read model: its vertices, then its materials, then
  * the mesh itself. */
-static int build(glint_scene *scene, obj_model *m, const mesh_import_ctx *ctx, double crease, glint_error *err)
+static int build(glint_scene *scene, obj_model *m, const model_import *job, glint_error *err)
 {
     obj_vertices v = {0};
     mtl_library lib = {0};
     int *run_material = array_alloc(m->run_count, sizeof *run_material), *materials = NULL;
-    glint_status s = run_material ? GLINT_OK : out_of_memory(ctx, err);
+    glint_status s = run_material ? GLINT_OK : out_of_memory(job, err);
     if (!s)
-        s = obj_mesh_vertices(m, crease, ctx->file, &v, err);
-    for (size_t i = 0; !s && ctx->dir && i < m->library_count; i++)
-        s = read_libraries_of(&lib, ctx, m->text + m->libraries[i], err);
+        s = obj_mesh_vertices(m, job->crease, job->file, &v, err);
+    for (size_t i = 0; !s && job->dir && i < m->library_count; i++)
+        s = read_libraries_of(&lib, job, m->text + m->libraries[i], err);
     if (!s)
-        s = add_materials(scene, m, &lib, ctx, run_material, err);
+        s = add_materials(scene, m, &lib, job, run_material, err);
     mtl_free(&lib);
     if (!s)
-        s = triangle_materials(m, run_material, ctx, &materials, err);
+        s = triangle_materials(m, run_material, job, &materials, err);
     int mesh = -1;
     if (!s) {
         glint_mesh_data d = {
@@ -159,7 +161,7 @@ static int build(glint_scene *scene, obj_model *m, const mesh_import_ctx *ctx, d
             .indices = m->triangles, .triangle_count = (int)m->triangle_count, .materials = materials,
             .material = run_material[0],
         };
-        mesh = mesh_import_add_mesh(scene, ctx, &d, err);
+        mesh = model_add_mesh(scene, job, &d, err);
     }
     obj_vertices_free(&v);
     free(run_material);
@@ -167,14 +169,37 @@ static int build(glint_scene *scene, obj_model *m, const mesh_import_ctx *ctx, d
     return mesh;
 }
 
-int mesh_import_obj(glint_scene *scene, const mesh_import_ctx *ctx, int fd, const unsigned char *data, size_t size,
-                    double crease, glint_error *err)
+/* Builds the model that reading gave with status s, when it has
+ * triangles, and frees it. */
+static int build_read(glint_scene *scene, obj_model *m, glint_status s, const model_import *job, glint_error *err)
 {
-    obj_model m;
-    glint_status s = fd >= 0 ? obj_read_fd(&m, fd, ctx->file, err) : obj_read_memory(&m, data, size, ctx->file, err);
-    if (!s && m.triangle_count == 0)
-        s = error_set(err, GLINT_ERR_INVALID, "%s: no triangles", ctx->file);
-    int mesh = s ? -1 : build(scene, &m, ctx, crease, err);
-    obj_model_free(&m);
+    if (!s && m->triangle_count == 0)
+        s = error_set(err, GLINT_ERR_INVALID, "%s: no triangles", job->file);
+    int mesh = s ? -1 : build(scene, m, job, err);
+    obj_model_free(m);
     return mesh;
 }
+
+static int import_file(glint_scene *scene, int fd, const model_import *job, glint_error *err)
+{
+    obj_model m;
+    glint_status s = obj_read_fd(&m, fd, job->file, err);
+    return build_read(scene, &m, s, job, err);
+}
+
+static int import_memory(glint_scene *scene, const unsigned char *data, size_t size, const model_import *job,
+                         glint_error *err)
+{
+    obj_model m;
+    glint_status s = obj_read_memory(&m, data, size, job->file, err);
+    return build_read(scene, &m, s, job, err);
+}
+
+/* OBJ alone: its MTL files are named by its mtllib lines, and read only
+ * when the model may read files (job->dir). */
+static const model_format formats[] = {
+    {.extension = "obj", .names_materials = true},
+    {0},
+};
+
+const model_reader obj_reader = {.formats = formats, .import_file = import_file, .import_memory = import_memory};

@@ -1,0 +1,25 @@
+/* assimp_check.h - the checks a model's bytes pass before Assimp parses
+ * them (model_check_fn, model_format.h): Assimp's readers allocate what a
+ * file claims, loop or crash on some malformed files, and try every reader
+ * they have on bytes the named one refuses. Each refuses with a message
+ * starting with `file`. */
+#ifndef GLINT_MODEL_ASSIMP_CHECK_H
+#define GLINT_MODEL_ASSIMP_CHECK_H
+
+#include <stddef.h>
+#include "glint.h"
+
+/* A PLY file's header follows the grammar of docs/meshes.md, no element
+ * claims more items than the data can hold, and the data matches the
+ * header (ply_check.c). */
+glint_status ply_check(const unsigned char *data, size_t size, const char *file, glint_error *err);
+
+/* A glTF file starts with a JSON object, and each image media type in it
+ * has its '/' (gltf_check.c). */
+glint_status gltf_check(const unsigned char *data, size_t size, const char *file, glint_error *err);
+
+/* A GLB file starts with its magic, its chunks fit in it, and each image
+ * media type in its JSON has its '/' (gltf_check.c). */
+glint_status glb_check(const unsigned char *data, size_t size, const char *file, glint_error *err);
+
+#endif

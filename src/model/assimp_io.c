@@ -1,0 +1,136 @@
+/* assimp_io.c - the file system Assimp reads a model through: the model's
+ * own bytes from memory, so that it is read once and checked before
+ * Assimp parses it, and the files it names (glTF buffers) from disk only
+ * when the model came from disk. Only regular files are opened, never for
+ * writing. */
+#include <limits.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <sys/stat.h>
+#include <sys/types.h>
+#include "model/assimp_io.h"
+
+/* An open file: a window on the model's bytes, or a stdio stream. */
+typedef struct open_file {
+    struct aiFile file;
+    const unsigned char *data;
+    size_t size, pos;
+    FILE *fp;
+} open_file;
+
+static open_file *of(struct aiFile *f)
+{
+    return (open_file *)(void *)f->UserData;
+}
+
+static size_t file_read(struct aiFile *f, char *buf, size_t size, size_t count)
+{
+    open_file *o = of(f);
+    if (o->fp)
+        return fread(buf, size, count, o->fp);
+    if (size == 0 || o->pos >= o->size)
+        return 0;
+    size_t n = (o->size - o->pos) / size;
+    if (n > count)
+        n = count;
+    memcpy(buf, o->data + o->pos, n * size);
+    o->pos += n * size;
+    return n;
+}
+
+static size_t file_write(struct aiFile *f, const char *buf, size_t size, size_t count)
+{
+    return 0;
+}
+
+static size_t file_tell(struct aiFile *f)
+{
+    open_file *o = of(f);
+    if (!o->fp)
+        return o->pos;
+    off_t p = ftello(o->fp);
+    return p < 0 ? 0 : (size_t)p;
+}
+
+static size_t file_size(struct aiFile *f)
+{
+    return of(f)->size;
+}
+
+/* Assimp passes backward offsets as size_t; they are read as signed. As with
+ * fseek, the position may go past the end, where reads return nothing. */
+static enum aiReturn file_seek(struct aiFile *f, size_t offset, enum aiOrigin origin)
+{
+    open_file *o = of(f);
+    long long delta = (long long)offset;
+    if (origin != aiOrigin_SET && origin != aiOrigin_CUR && origin != aiOrigin_END)
+        return aiReturn_FAILURE;
+    if (o->fp) {
+        int whence = origin == aiOrigin_SET ? SEEK_SET : origin == aiOrigin_CUR ? SEEK_CUR : SEEK_END;
+        return fseeko(o->fp, (off_t)delta, whence) == 0 ? aiReturn_SUCCESS : aiReturn_FAILURE;
+    }
+    if (origin == aiOrigin_SET) {
+        o->pos = offset;
+        return aiReturn_SUCCESS;
+    }
+    long long base = origin == aiOrigin_CUR ? (long long)o->pos : (long long)o->size;
+    if (delta < -base || (delta > 0 && base > LLONG_MAX - delta))
+        return aiReturn_FAILURE;
+    o->pos = (size_t)(base + delta);
+    return aiReturn_SUCCESS;
+}
+
+static void file_flush(struct aiFile *f)
+{
+}
+
+/* Opens a regular file from disk, or NULL. */
+static FILE *open_regular(const char *path, size_t *size)
+{
+    FILE *fp = fopen(path, "rb");
+    struct stat st;
+    if (fp && fstat(fileno(fp), &st) == 0 && S_ISREG(st.st_mode)) {
+        *size = (size_t)st.st_size;
+        return fp;
+    }
+    if (fp)
+        fclose(fp);
+    return NULL;
+}
+
+static struct aiFile *io_open(struct aiFileIO *io, const char *name, const char *mode)
+{
+    const assimp_source *src = (const assimp_source *)(void *)io->UserData;
+    if (!name || !mode || strpbrk(mode, "wa+"))
+        return NULL;
+    open_file *o = calloc(1, sizeof *o);
+    if (!o)
+        return NULL;
+    if (strcmp(name, src->name) == 0) {
+        o->data = src->data;
+        o->size = src->size;
+    } else if (!src->disk || !(o->fp = open_regular(name, &o->size))) {
+        free(o);
+        return NULL;
+    }
+    o->file = (struct aiFile){.ReadProc = file_read, .WriteProc = file_write, .TellProc = file_tell,
+                              .FileSizeProc = file_size, .SeekProc = file_seek, .FlushProc = file_flush,
+                              .UserData = (aiUserData)(void *)o};
+    return &o->file;
+}
+
+static void io_close(struct aiFileIO *io, struct aiFile *f)
+{
+    if (!f)
+        return;
+    open_file *o = of(f);
+    if (o->fp)
+        fclose(o->fp);
+    free(o);
+}
+
+void assimp_io_init(struct aiFileIO *io, assimp_source *src)
+{
+    *io = (struct aiFileIO){.OpenProc = io_open, .CloseProc = io_close, .UserData = (aiUserData)(void *)src};
+}

@@ -1,0 +1,17 @@
+/* assimp_material.h - the materials of a model Assimp read, as glint's
+ * (assimp_material.c). */
+#ifndef GLINT_MODEL_ASSIMP_MATERIAL_H
+#define GLINT_MODEL_ASSIMP_MATERIAL_H
+
+#include <stdbool.h>
+#include <assimp/scene.h>
+#include "glint.h"
+#include "model/model_format.h"
+
+/* Adds a glint material for each of Assimp's materials with used[i] set,
+ * with the images they name (embedded in the file, or files beside it),
+ * and sets index[i] to it. */
+glint_status assimp_add_materials(glint_scene *scene, const struct aiScene *ai, const bool *used, int *index,
+                                  const model_import *job, glint_error *err);
+
+#endif

@@ -1,0 +1,280 @@
+/* obj_statement.c - the statements of OBJ text, one logical line at a
+ * time, straight into the model.
+ *
+ * Read: v (x y z; a w or vertex colour after them is ignored), vt (u [v
+ * [w]]), vn (x y z), f (three or more corners, obj_corner.c; polygons are
+ * split into triangles), usemtl and mtllib (the rest of the line is the
+ * name). Ignored: o, g, s, l and p (lines and points are not drawn), and
+ * any statement glint does not know, as other readers do. */
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+#include "core/array.h"
+#include "model/obj_parse.h"
+
+static float finite_or_zero(double x)
+{
+    float f = (float)x;
+    return isfinite(f) ? f : 0.0f;
+}
+
+glint_status obj_parse_item(scan_line *l, scan_pos at, obj_part what, float item[3], glint_error *err)
+{
+    static const struct {
+        const char *keyword, *needs;
+        int least, most;
+    } kinds[] = {
+        {"v", "at least 3 numbers (x y z)", 3, INT32_MAX},
+        {"vt", "1 to 3 numbers (u [v [w]])", 1, 3},
+        {"vn", "3 numbers (x y z)", 3, 3},
+    };
+    double c[3] = {0, 0, 0};
+    scan_pos where[3];
+    int n = scan_numbers(l, c, where, 3, err);
+    if (n < 0)
+        return GLINT_ERR_INVALID;
+    if (n < kinds[what].least || n > kinds[what].most)
+        return scan_error(l, at, err, "'%s' needs %s, got %d", kinds[what].keyword, kinds[what].needs, n);
+    for (int k = 0; k < 3; k++)
+        item[k] = (float)c[k];
+    for (int k = 0; what == PART_V && k < 3; k++)
+        if (!isfinite(item[k]))
+            return scan_error(l, where[k], err, "a vertex is not finite (%g %g %g)", item[0], item[1], item[2]);
+    if (what == PART_VT)
+        c[1] = 1 - c[1]; /* OBJ's v = 0 is the image's bottom row, glint's its top */
+    for (int k = 0; what != PART_V && k < 3; k++)
+        item[k] = finite_or_zero(c[k]);
+    return GLINT_OK;
+}
+
+bool obj_add_item(obj_model *m, obj_part what, const float item[3])
+{
+    float **items[] = {&m->positions, &m->uvs, &m->normals};
+    size_t *counts[] = {&m->position_count, &m->uv_count, &m->normal_count};
+    size_t *caps[] = {&m->position_cap, &m->uv_cap, &m->normal_cap};
+    size_t floats = what == PART_VT ? 2 : 3, *count = counts[what];
+    if (!array_reserve((void **)items[what], caps[what], *count + 1, floats * sizeof(float)))
+        return false;
+    memcpy(*items[what] + floats * *count, item, floats * sizeof(float));
+    ++*count;
+    return true;
+}
+
+/* Reads a v, vt or vn statement (`what`), whose keyword is at `at`, and
+ * appends its item to the model's positions, uvs or normals. */
+static glint_status read_item(obj_parser *r, scan_line *l, scan_pos at, obj_part what, glint_error *err)
+{
+    float item[3];
+    glint_status s = obj_parse_item(l, at, what, item, err);
+    if (s)
+        return s;
+    if (obj_item_count(r->m, what) >= MODEL_MAX_COUNT)
+        return obj_too_many(l, at, obj_part_names[what], err);
+    return obj_add_item(r->m, what, item) ? GLINT_OK : obj_out_of_memory(r, err);
+}
+
+static glint_status add_triangle(obj_parser *r, const scan_line *l, scan_pos at, uint32_t a, uint32_t b,
+                                 uint32_t c, glint_error *err)
+{
+    obj_model *m = r->m;
+    if (m->triangle_count >= MODEL_MAX_COUNT)
+        return obj_too_many(l, at, "triangles", err);
+    if (!array_reserve((void **)&m->triangles, &m->triangle_cap, m->triangle_count + 1, 3 * sizeof(uint32_t)))
+        return obj_out_of_memory(r, err);
+    if (m->run_count == 0 || m->runs[m->run_count - 1].material != r->material) {
+        if (!array_reserve((void **)&m->runs, &m->run_cap, m->run_count + 1, sizeof *m->runs))
+            return obj_out_of_memory(r, err);
+        m->runs[m->run_count++] = (obj_run){(uint32_t)m->triangle_count, r->material};
+    }
+    uint32_t *t = m->triangles + 3 * m->triangle_count++;
+    t[0] = a;
+    t[1] = b;
+    t[2] = c;
+    return GLINT_OK;
+}
+
+/* The form of a face corner as written, for messages. */
+static const char *form_text(unsigned form)
+{
+    static const char *const forms[] = {"", "v", "", "v/vt", "", "v//vn", "", "v/vt/vn"};
+    return forms[form & 7];
+}
+
+glint_status obj_add_face(obj_parser *r, const scan_line *l, scan_pos at, size_t n, unsigned form,
+                          glint_error *err)
+{
+    obj_model *m = r->m;
+    glint_status s = GLINT_OK;
+    m->generate |= !(form & 1u << PART_VN);
+    m->textured |= (form & 1u << PART_VT) != 0;
+    if (n == 3)
+        return add_triangle(r, l, at, r->face[0], r->face[1], r->face[2], err);
+    if (!array_reserve((void **)&r->split, &r->split_cap, 3 * (n - 2), sizeof *r->split) ||
+        !triangulate_polygon(&r->work, m->positions, r->face_at, n, r->split))
+        return obj_out_of_memory(r, err);
+    for (size_t t = 0; !s && t < n - 2; t++)
+        s = add_triangle(r, l, at, r->face[r->split[3 * t]], r->face[r->split[3 * t + 1]],
+                         r->face[r->split[3 * t + 2]], err);
+    return s;
+}
+
+bool obj_face_room(obj_parser *r, size_t n)
+{
+    size_t cap = r->face_cap;
+    return array_reserve((void **)&r->face, &cap, n, sizeof *r->face) &&
+           array_reserve((void **)&r->face_at, &r->face_cap, n, sizeof *r->face_at);
+}
+
+static glint_status read_face(obj_parser *r, scan_line *l, scan_pos at, glint_error *err)
+{
+    size_t n = 0;
+    unsigned first_form = 0;
+    glint_status s = GLINT_OK;
+    while (!s && scan_more(l)) {
+        scan_pos here = scan_here(l);
+        obj_corner c;
+        unsigned form = 0;
+        const char *word = NULL;
+        size_t len = 0;
+        if ((s = obj_read_corner(r, l, here, &c, &form, &word, &len, err)))
+            break;
+        if (n == 0) {
+            first_form = form;
+        } else if (form != first_form) {
+            char q[32];
+            scan_quote(word, len, q, sizeof q);
+            return scan_error(l, here, err, "face corner '%s' is %s, but the face's first corner is %s", q,
+                              form_text(form), form_text(first_form));
+        }
+        if (n >= MODEL_MAX_COUNT)
+            return obj_too_many(l, here, "corners in one face", err);
+        if (!obj_face_room(r, n + 1))
+            return obj_out_of_memory(r, err);
+        r->face_at[n] = (uint32_t)c.v;
+        s = obj_corner_id(r, l, here, &c, &r->face[n++], err);
+    }
+    if (s)
+        return s;
+    if (n < 3)
+        return scan_error(l, at, err, "a face needs at least 3 corners, got %zu", n);
+    return obj_add_face(r, l, at, n, first_form, err);
+}
+
+/* Copies the rest of the line into the model's text; *offset is where. */
+static glint_status read_name(obj_parser *r, scan_line *l, scan_pos at, const char *keyword, size_t *offset,
+                              glint_error *err)
+{
+    obj_model *m = r->m;
+    const char *s, *e;
+    if (!scan_rest(l, &s, &e))
+        return scan_error(l, at, err, "'%s' needs a name", keyword);
+    if (!scan_keep_text(&m->text, &m->text_len, &m->text_cap, s, e, offset))
+        return obj_out_of_memory(r, err);
+    return GLINT_OK;
+}
+
+static uint32_t name_hash(const void *keys, uint32_t id)
+{
+    const obj_model *m = keys;
+    return id_hash_text(m->text + m->materials[id]);
+}
+
+static bool name_equal(const void *keys, uint32_t id, const void *key)
+{
+    const obj_model *m = keys;
+    return strcmp(m->text + m->materials[id], key) == 0;
+}
+
+static glint_status read_usemtl(obj_parser *r, scan_line *l, scan_pos at, glint_error *err)
+{
+    obj_model *m = r->m;
+    size_t offset = 0;
+    glint_status s = read_name(r, l, at, "usemtl", &offset, err);
+    if (s)
+        return s;
+    if (m->material_count >= MODEL_MAX_COUNT)
+        return obj_too_many(l, at, "materials", err);
+    if (!array_reserve((void **)&m->materials, &m->material_cap, m->material_count + 1, sizeof *m->materials))
+        return obj_out_of_memory(r, err);
+    const char *name = m->text + offset;
+    uint32_t id;
+    if (!id_table_intern(&r->name_index, id_hash_text(name), name, (uint32_t)m->material_count, name_hash,
+                         name_equal, m, &id))
+        return obj_out_of_memory(r, err);
+    if (id == m->material_count)
+        m->materials[m->material_count++] = offset;
+    else
+        m->text_len = offset; /* known already: its copy is not needed */
+    r->material = (int32_t)id;
+    return GLINT_OK;
+}
+
+static glint_status read_mtllib(obj_parser *r, scan_line *l, scan_pos at, glint_error *err)
+{
+    obj_model *m = r->m;
+    size_t offset = 0;
+    glint_status s = read_name(r, l, at, "mtllib", &offset, err);
+    if (!s && !array_reserve((void **)&m->libraries, &m->library_cap, m->library_count + 1, sizeof *m->libraries))
+        s = obj_out_of_memory(r, err);
+    if (!s)
+        m->libraries[m->library_count++] = offset;
+    return s;
+}
+
+obj_keyword obj_keyword_of(const char *w, size_t n)
+{
+    if (n == 1 && w[0] == 'v')
+        return KEY_V;
+    if (n == 1 && w[0] == 'f')
+        return KEY_F;
+    if (n == 2 && w[0] == 'v' && w[1] == 'n')
+        return KEY_VN;
+    if (n == 2 && w[0] == 'v' && w[1] == 't')
+        return KEY_VT;
+    if (scan_word_is(w, n, "usemtl"))
+        return KEY_USEMTL;
+    if (scan_word_is(w, n, "mtllib"))
+        return KEY_MTLLIB;
+    return KEY_OTHER;
+}
+
+glint_status obj_statement(obj_parser *r, scan_line *l, glint_error *err)
+{
+    if (!scan_more(l))
+        return GLINT_OK;
+    scan_pos at = scan_here(l);
+    size_t n;
+    const char *w = scan_word(l, &n);
+    obj_keyword k = obj_keyword_of(w, n);
+    switch (k) {
+    case KEY_V:
+    case KEY_VT:
+    case KEY_VN:
+        return read_item(r, l, at, obj_item_part(k), err);
+    case KEY_F:
+        return read_face(r, l, at, err);
+    case KEY_USEMTL:
+        return read_usemtl(r, l, at, err);
+    case KEY_MTLLIB:
+        return read_mtllib(r, l, at, err);
+    default:
+        return GLINT_OK;
+    }
+}
+
+glint_status obj_feed(obj_parser *r, const char *data, size_t size, bool last, size_t *used, glint_error *err)
+{
+    const char *p = data, *end = data + size;
+    scan_span span;
+    glint_status s = GLINT_OK;
+    while (!s && p < end && scan_next_line(p, end, last, &span)) {
+        scan_line l;
+        scan_start(&l, p, span.end, r->line, r->file);
+        s = obj_statement(r, &l, err);
+        r->line += span.rows;
+        p = span.next;
+    }
+    *used = (size_t)(p - data);
+    return s;
+}
+
