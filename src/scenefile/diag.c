@@ -18,18 +18,30 @@ void diag_raw(diag *d, glint_status status, const char *message)
     d->count++;
 }
 
+/* Reports body at n with the given status. */
+static void report_at(diag *d, const ynode *n, glint_status status, const char *body)
+{
+    char line[512];
+    if (n)
+        snprintf(line, sizeof line, "%s:%d:%d: %.400s", n->file, n->line, n->column, body);
+    else
+        snprintf(line, sizeof line, "%.500s", body);
+    diag_raw(d, status, line);
+}
+
 void diag_at(diag *d, const ynode *n, const char *fmt, ...)
 {
-    char body[400], line[512];
+    char body[400];
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(body, sizeof body, fmt, ap);
     va_end(ap);
-    if (n)
-        snprintf(line, sizeof line, "%s:%d:%d: %s", n->file, n->line, n->column, body);
-    else
-        snprintf(line, sizeof line, "%s", body);
-    diag_raw(d, GLINT_ERR_INVALID, line);
+    report_at(d, n, GLINT_ERR_INVALID, body);
+}
+
+void diag_error(diag *d, const ynode *n, const glint_error *err)
+{
+    report_at(d, n, err->status ? err->status : GLINT_ERR_INVALID, err->message);
 }
 
 bool diag_full(const diag *d)

@@ -21,6 +21,10 @@ typedef struct diag {
  * is NULL and file is given). */
 void diag_at(diag *d, const ynode *n, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
+/* Reports a failed call's error at node n with the call's status, so that
+ * running out of memory stays GLINT_ERR_NOMEM. */
+void diag_error(diag *d, const ynode *n, const glint_error *err);
+
 /* Reports a message that already carries its place, or has none. */
 void diag_raw(diag *d, glint_status status, const char *message);
 

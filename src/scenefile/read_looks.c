@@ -76,7 +76,7 @@ static void add_texture(loader *l, const char *name, const ynode *n)
     glint_error err;
     if (glint_scene_add_texture(l->scene, name, &t, &err) < 0) {
         const ynode *file = file_node(l, n, kind->params);
-        diag_at(&l->d, file ? file : n, "%s", err.message);
+        diag_error(&l->d, file ? file : n, &err);
     }
 }
 
@@ -146,7 +146,7 @@ void read_material(loader *l, const char *name, const ynode *n)
     if (good && glint_scene_add_material(l->scene, name, &m, &err) >= 0)
         return;
     if (good) /* a rule across keys: transparency + refraction */
-        diag_at(&l->d, n, "%s", err.message);
+        diag_error(&l->d, n, &err);
     /* The name stays known, with the defaults: no second report at each use. */
     m = glint_material_default();
     glint_scene_add_material(l->scene, name, &m, NULL);
@@ -160,7 +160,7 @@ int object_material(loader *l, const ynode *n)
         glint_error err;
         int i = -1;
         if (read_material_keys(l, n, "material", &m) && (i = glint_scene_add_material(l->scene, NULL, &m, &err)) < 0)
-            diag_at(&l->d, n, "%s", err.message);
+            diag_error(&l->d, n, &err);
         return i;
     }
     const char *name;
@@ -196,6 +196,6 @@ void read_light(loader *l, const ynode *n)
     spec.light.color = rgb_scale(spec.light.color, spec.intensity);
     glint_error err;
     if (glint_scene_add_light(l->scene, &spec.light, &err) < 0)
-        diag_at(&l->d, n, "%s", err.message);
+        diag_error(&l->d, n, &err);
 }
 

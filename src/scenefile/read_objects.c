@@ -89,7 +89,7 @@ static int import_model(loader *l, const ynode *file, const char *path, double c
     glint_error err;
     int mesh_index = glint_scene_import_mesh(l->scene, path, &o, &err);
     if (mesh_index < 0) {
-        diag_at(&l->d, file, "%s", err.message);
+        diag_error(&l->d, file, &err);
         return -1;
     }
     if (l->import_count == l->import_cap) {
@@ -125,7 +125,7 @@ static void place_mesh(loader *l, const ynode *n, int override, const glint_tran
     free(full);
     glint_error err;
     if (mesh_index >= 0 && glint_scene_add_instance(l->scene, mesh_index, override, to_world, &err) < 0)
-        diag_at(&l->d, n, "%s", err.message);
+        diag_error(&l->d, n, &err);
 }
 
 /* The object types that are not shapes. */
@@ -207,7 +207,7 @@ static void read_object(loader *l, const ynode *n, const context *outer)
     }
     glint_error err;
     if (glint_scene_add_shape(l->scene, &s, ctx.material, &ctx.to_world, &err) < 0)
-        diag_at(&l->d, n, "%s", err.message);
+        diag_error(&l->d, n, &err);
 }
 
 void read_objects(loader *l, const ynode *list, const context *ctx)

@@ -203,9 +203,9 @@ static void read_file(loader *l, const char *path, const ynode *from)
     char *data = slurp(path, &size, &err);
     if (!data) {
         if (from)
-            diag_at(&l->d, from, "%s", err.message);
+            diag_error(&l->d, from, &err);
         else
-            diag_raw(&l->d, GLINT_ERR_IO, err.message);
+            diag_raw(&l->d, err.status, err.message);
         return;
     }
     l->bytes += (long)size;
@@ -233,7 +233,7 @@ static void finish(loader *l, const char *name)
         if (i == 2 && (!l->fog_node || fog_complete(l)))
             s[2] = glint_scene_set_fog(l->scene, &l->fog, &err);
         if (s[i] && where[i])
-            diag_at(&l->d, where[i], "%s", err.message);
+            diag_error(&l->d, where[i], &err);
         else if (s[i]) {
             char msg[600];
             snprintf(msg, sizeof msg, "%s: %s", name, err.message);

@@ -2049,6 +2049,12 @@ static void test_error_status_of_first_problem(void **state)
     assert_int_equal(err.status, GLINT_ERR_INVALID);
     assert_string_equal(err.message, "material 3 does not exist");
     glint_scene_free(s);
+    /* A call the loader makes keeps its own status: a texture file that is
+     * not there is an I/O problem, reported where the file is named. */
+    const char *missing = "textures: {t: {type: image, file: no-such-picture.png}}\n";
+    assert_null(glint_scene_load_memory(missing, strlen(missing), "bad.yaml", &lo, &err));
+    assert_int_equal(err.status, GLINT_ERR_IO);
+    assert_non_null(strstr(err.message, "bad.yaml:1:35: cannot open texture"));
 }
 
 /* Groups nest through aliases without nesting in the text. */
