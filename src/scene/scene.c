@@ -3,6 +3,7 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/array.h"
 #include "core/error.h"
 #include "scene/scene.h"
 #include "shading/fog.h"
@@ -46,19 +47,13 @@ void glint_scene_free(glint_scene *s)
     free(s);
 }
 
-/* Makes room for one more element in a growing array. */
-static glint_status grow(void **items, int *cap, int count, size_t size, const char *what, glint_error *err)
+/* Makes room for one more element in a growing array, up to the limit. */
+static glint_status grow(void **items, size_t *cap, int count, size_t size, const char *what, glint_error *err)
 {
-    if (count < *cap)
-        return GLINT_OK;
     if (count >= SCENE_MAX_ITEMS)
         return error_set(err, GLINT_ERR_INVALID, "too many %s (limit %d)", what, SCENE_MAX_ITEMS);
-    int ncap = *cap ? *cap * 2 : 16;
-    void *p = realloc(*items, (size_t)ncap * size);
-    if (!p)
+    if (!array_reserve(items, cap, (size_t)count + 1, size))
         return error_set(err, GLINT_ERR_NOMEM, "out of memory adding %s", what);
-    *items = p;
-    *cap = ncap;
     return GLINT_OK;
 }
 

@@ -14,17 +14,23 @@ struct glint_scene {
     glint_camera camera;
     glint_fog fog;
     texture *textures;
-    int texture_count, texture_cap;
+    int texture_count;
+    size_t texture_cap;
     material *materials;
-    int material_count, material_cap;
+    int material_count;
+    size_t material_cap;
     shape *shapes;
-    int shape_count, shape_cap;
+    int shape_count;
+    size_t shape_cap;
     light *lights;
-    int light_count, light_cap;
+    int light_count;
+    size_t light_cap;
     mesh *meshes;
-    int mesh_count, mesh_cap;
+    int mesh_count;
+    size_t mesh_cap;
     instance *instances;
-    int instance_count, instance_cap;
+    int instance_count;
+    size_t instance_cap;
     char *output;             /* image path a scene file asked for, or NULL */
 };
 

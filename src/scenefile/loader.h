@@ -27,10 +27,12 @@ typedef struct loader {
     const char *chain[MAX_INCLUDE_DEPTH + 1];   /* canonical paths of the files being read */
     int depth;
     ydoc *docs;                                  /* kept until the end: nodes name their file */
-    int doc_count, doc_cap;
+    int doc_count;
+    size_t doc_cap;
     int files;                                   /* files read so far */
     struct imported *imports;                    /* models read so far: each once */
-    int import_count, import_cap;
+    int import_count;
+    size_t import_cap;
     long bytes;                                  /* bytes read so far, all files */
     char **paths;                                /* files named by keys, resolved: freed at the end */
     size_t path_count, path_cap;

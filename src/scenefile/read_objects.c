@@ -7,6 +7,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/array.h"
 #include "core/transform.h"
 #include "geometry/shape_kind.h"
 #include "scenefile/loader.h"
@@ -92,14 +93,9 @@ static int import_model(loader *l, const ynode *file, const char *path, double c
         diag_error(&l->d, file, &err);
         return -1;
     }
-    if (l->import_count == l->import_cap) {
-        int ncap = l->import_cap ? 2 * l->import_cap : 8;
-        struct imported *p = realloc(l->imports, (size_t)ncap * sizeof *p);
-        if (!p)
-            return mesh_index;
-        l->imports = p;
-        l->import_cap = ncap;
-    }
+    /* Without room to remember it, a later object imports the file again. */
+    if (!array_reserve((void **)&l->imports, &l->import_cap, (size_t)l->import_count + 1, sizeof *l->imports))
+        return mesh_index;
     char *copy = strdup(canonical);
     if (copy)
         l->imports[l->import_count++] = (struct imported){copy, crease, mesh_index};

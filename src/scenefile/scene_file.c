@@ -11,6 +11,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "core/array.h"
 #include "core/error.h"
 #include "scenefile/loader.h"
 
@@ -100,15 +101,9 @@ static void read_root(loader *l, const ynode *root)
 /* Parses bytes named `name` and walks them; the tree stays alive in l. */
 static void read_bytes(loader *l, const char *data, size_t size, const char *name)
 {
-    if (l->doc_count == l->doc_cap) {
-        int ncap = l->doc_cap ? l->doc_cap * 2 : 4;
-        ydoc *p = realloc(l->docs, (size_t)ncap * sizeof *p);
-        if (!p) {
-            diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
-            return;
-        }
-        l->docs = p;
-        l->doc_cap = ncap;
+    if (!array_reserve((void **)&l->docs, &l->doc_cap, (size_t)l->doc_count + 1, sizeof *l->docs)) {
+        diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
+        return;
     }
     glint_error err;
     ydoc *doc = &l->docs[l->doc_count];

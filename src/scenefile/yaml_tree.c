@@ -2,6 +2,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <yaml.h>
+#include "core/array.h"
 #include "core/error.h"
 #include "scenefile/yaml_tree.h"
 
@@ -21,7 +22,8 @@ typedef struct builder {
     ynode *stack[YAML_MAX_DEPTH];
     int depth;
     anchor *anchors;
-    int anchor_count, anchor_cap;
+    int anchor_count;
+    size_t anchor_cap;
     int documents;
     glint_error *err;
 } builder;
@@ -39,14 +41,8 @@ static glint_status out_of_memory(builder *b)
 
 static bool push_item(ynode *parent, ynode *child)
 {
-    if (parent->count == parent->cap) {
-        int ncap = parent->cap ? parent->cap * 2 : 8;
-        ynode **p = realloc(parent->items, (size_t)ncap * sizeof *p);
-        if (!p)
-            return false;
-        parent->items = p;
-        parent->cap = ncap;
-    }
+    if (!array_reserve((void **)&parent->items, &parent->cap, (size_t)parent->count + 1, sizeof *parent->items))
+        return false;
     parent->items[parent->count++] = child;
     return true;
 }
@@ -56,14 +52,8 @@ static ynode *new_node(builder *b, ynode_kind kind, yaml_mark_t mark)
     ydoc *d = b->doc;
     if (d->node_count >= YAML_MAX_NODES)
         return NULL;
-    if (d->node_count == d->node_cap) {
-        int ncap = d->node_cap ? d->node_cap * 2 : 64;
-        ynode **p = realloc(d->nodes, (size_t)ncap * sizeof *p);
-        if (!p)
-            return NULL;
-        d->nodes = p;
-        d->node_cap = ncap;
-    }
+    if (!array_reserve((void **)&d->nodes, &d->node_cap, (size_t)d->node_count + 1, sizeof *d->nodes))
+        return NULL;
     ynode *n = calloc(1, sizeof *n);
     if (!n)
         return NULL;
@@ -82,14 +72,8 @@ static glint_status remember_anchor(builder *b, const yaml_char_t *name, ynode *
     if (b->anchor_count >= YAML_MAX_ANCHORS)
         return error_set(b->err, GLINT_ERR_INVALID, "%s:%d:%d: too many anchors (limit %d)", b->doc->name, n->line,
                          n->column, YAML_MAX_ANCHORS);
-    if (b->anchor_count == b->anchor_cap) {
-        int ncap = b->anchor_cap ? b->anchor_cap * 2 : 16;
-        anchor *p = realloc(b->anchors, (size_t)ncap * sizeof *p);
-        if (!p)
-            return out_of_memory(b);
-        b->anchors = p;
-        b->anchor_cap = ncap;
-    }
+    if (!array_reserve((void **)&b->anchors, &b->anchor_cap, (size_t)b->anchor_count + 1, sizeof *b->anchors))
+        return out_of_memory(b);
     char *copy = strdup((const char *)name);
     if (!copy)
         return out_of_memory(b);

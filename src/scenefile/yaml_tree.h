@@ -19,7 +19,7 @@ typedef struct ynode {
     bool quoted;               /* scalar written in quotes or as a block */
     struct ynode **items;      /* sequence: items; mapping: key, value, key, value... */
     int count;                 /* entries in items */
-    int cap;
+    size_t cap;
     bool complete;             /* the node's end has been read */
 } ynode;
 
@@ -27,7 +27,8 @@ typedef struct ydoc {
     char *name;
     ynode *root;               /* NULL for an empty document */
     ynode **nodes;             /* every node, for freeing */
-    int node_count, node_cap;
+    int node_count;
+    size_t node_cap;
 } ydoc;
 
 /* Parses `size` bytes of YAML named `name` into doc. On a syntax error
