@@ -14,6 +14,7 @@
 #include "core/array.h"
 #include "core/error.h"
 #include "scenefile/loader.h"
+#include "scenefile/scene_reader.h"
 
 #define MAX_FILES 1000            /* files read for one scene, includes counted */
 #define MAX_SCENE_FILE_BYTES (64L << 20)
@@ -284,14 +285,20 @@ static void body_memory(loader *l, const void *data, size_t size, const char *na
     read_bytes(l, data, size, name);
 }
 
-glint_scene *glint_scene_load_file(const char *path, const glint_load_options *options, glint_error *err)
+static glint_scene *yaml_load_file(const char *path, const glint_load_options *options, glint_error *err)
 {
     return load(options, err, path, body_file, NULL, 0);
 }
 
-glint_scene *glint_scene_load_memory(const char *data, size_t size, const char *name,
+static glint_scene *yaml_load_memory(const char *data, size_t size, const char *name,
                                      const glint_load_options *options, glint_error *err)
 {
     return load(options, err, name ? name : "<memory>", body_memory, data, size);
 }
+
+static const char *const YAML_EXTENSIONS[] = {".yaml", ".yml", NULL};
+
+const scene_reader yaml_scene_reader = {
+    .name = "YAML", .extensions = YAML_EXTENSIONS, .load_file = yaml_load_file, .load_memory = yaml_load_memory,
+};
 
