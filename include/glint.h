@@ -475,15 +475,31 @@ typedef struct glint_render_options {
 glint_status glint_render(const glint_scene *scene, const glint_render_options *options,
                           glint_image *out, glint_render_stats *stats, glint_error *err);
 
-/* Writes the image as 8-bit sRGB PNG (".png") or binary PPM (".ppm"),
- * chosen by the extension, case-insensitively. The file is written under a
- * temporary name beside it and renamed into place, so a failure never leaves
- * a partial file and never destroys an existing one. */
+/* Writes the image in the format its path's extension names, in any case
+ * (glint_image_format_for_path): 8-bit sRGB PNG (".png") or binary PPM
+ * (".ppm"). The file is written under a temporary name beside it and
+ * renamed into place, so a failure never leaves a partial file and never
+ * destroys an existing one. */
 glint_status glint_image_write(const glint_image *image, const char *path, glint_error *err);
 
 /* Checks, before rendering, that glint_image_write could write `path`: a
  * known extension and a writable directory. */
 glint_status glint_image_check_path(const char *path, glint_error *err);
+
+/* An image file format glint_image_write writes. */
+typedef struct glint_image_format {
+    const char *name;              /* "PNG", "PPM" */
+    const char *const *extensions; /* lower case, each with its dot, NULL after the last */
+    const char *meaning;           /* one line: what the file holds */
+} glint_image_format;
+
+/* The index-th format glint_image_write writes, counting from 0, or NULL
+ * past the last: for listing them, as `glint --help` does. */
+const glint_image_format *glint_image_format_at(int index);
+
+/* The format glint_image_write writes `path` in, by the extension of its
+ * last component, in any case; NULL when none has it (or path is NULL). */
+const glint_image_format *glint_image_format_for_path(const char *path);
 
 #ifdef __cplusplus
 }

@@ -18,8 +18,8 @@ static const char USAGE[] =
     "(the COSC363 scene), to an image. Flags override the file's settings.\n"
     "\n"
     "options:\n"
-    "  -o, --output FILE      image to write, .png (8-bit sRGB) or .ppm (default: the\n"
-    "                         scene's output setting, else glint.png)\n"
+    "  -o, --output FILE      image to write, in the format its extension names (below;\n"
+    "                         default: the scene's output setting, else glint.png)\n"
     "      --check            validate the scene file, report every problem, render nothing\n"
     "  -w, --width N          image width in pixels, 1..65536\n"
     "  -h, --height N         image height in pixels, 1..65536; at most 16384 x 16384\n"
@@ -39,7 +39,10 @@ static const char USAGE[] =
     "                         black) instead of nothing, and still exit 4\n"
     "  -q, --quiet            no progress line and no summary on stderr\n"
     "      --help             show this help and exit\n"
-    "      --version          print the version and exit\n"
+    "      --version          print the version and exit\n";
+
+/* The help's end, after the list of image formats. */
+static const char USAGE_END[] =
     "\n"
     "Exit codes: 0 success, 1 bad input (scene file, texture), 2 bad usage, 3 the output\n"
     "cannot be written, 4 interrupted (SIGINT or SIGTERM), 5 internal failure (out of\n"
@@ -47,6 +50,22 @@ static const char USAGE[] =
     "unless --partial. The image is written under a temporary name and renamed into\n"
     "place, so a failed or interrupted run never leaves a half-written file or destroys\n"
     "an existing one.\n";
+
+/* The help: the flags, the image formats as the library lists them, and
+ * the exit codes. */
+static void print_help(void)
+{
+    fputs(USAGE, stdout);
+    puts("\nImage formats, by the output's extension in any case:");
+    const glint_image_format *f;
+    for (int i = 0; (f = glint_image_format_at(i)) != NULL; i++) {
+        printf(" ");
+        for (const char *const *ext = f->extensions; *ext; ext++)
+            printf(" %s", *ext);
+        printf("  %s: %s\n", f->name, f->meaning);
+    }
+    fputs(USAGE_END, stdout);
+}
 
 int cli_complain(int code, const char *fmt, ...)
 {
@@ -125,7 +144,7 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0) {
-            fputs(USAGE, stdout);
+            print_help();
             return CLI_EXIT_OK;
         }
         if (strcmp(a, "--version") == 0) {

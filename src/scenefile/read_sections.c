@@ -1,7 +1,6 @@
 /* read_sections.c - the scene file's settings, camera and fog sections. */
 #include <stdio.h>
-#include <string.h>
-#include <strings.h>
+#include "image/image_format.h"
 #include "scenefile/loader.h"
 #include "shading/fog.h"
 
@@ -18,9 +17,10 @@ void read_settings(loader *l, const ynode *n)
     const ynode *out = yr_get(&l->r, n, "output");
     const char *path;
     if (out && yr_text(&l->r, out, "output", &path)) {
-        size_t len = strlen(path);
-        if (len < 5 || (strcasecmp(path + len - 4, ".png") != 0 && strcasecmp(path + len - 4, ".ppm") != 0))
-            diag_at(&l->d, out, "'output' must name a .png or .ppm file, got '%.100s'", path);
+        char known[64];
+        if (!image_writer_for_path(path))
+            diag_at(&l->d, out, "'output' must name a %s file, got '%.100s'",
+                    image_writer_extensions(known, sizeof known), path);
         else
             l->output = path;
     }

@@ -1,5 +1,6 @@
-/* test_image_io.c - the sRGB curve, PNG/PPM writing with its atomic replace,
- * and PNG/JPEG texture decoding, including every refusal message. */
+/* test_image_io.c - the sRGB curve, the image format registry, PNG/PPM
+ * writing with its atomic replace, and PNG/JPEG texture decoding, including
+ * every refusal message. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -640,6 +641,30 @@ static void test_unknown_extension(void **state)
     assert_int_equal(access("out.bmp", F_OK), -1);
 }
 
+/* Formats are found by the extension of the path's last component, in any
+ * case, and listed in the registry's order, each found by its extensions. */
+static void test_format_lookup(void **state)
+{
+    assert_string_equal(glint_image_format_for_path("out.png")->name, "PNG");
+    assert_string_equal(glint_image_format_for_path("renders/OUT.PpM")->name, "PPM");
+    assert_null(glint_image_format_for_path("out.bmp"));
+    assert_null(glint_image_format_for_path("dir.png/out"));
+    assert_null(glint_image_format_for_path("png"));
+    assert_null(glint_image_format_for_path(NULL));
+    assert_null(glint_image_format_at(-1));
+    static const char *const names[] = {"PNG", "PPM"};
+    int count = 0;
+    for (const glint_image_format *f; (f = glint_image_format_at(count)) != NULL; count++) {
+        assert_true(count < 2);
+        assert_string_equal(f->name, names[count]);
+        assert_non_null(f->meaning);
+        assert_non_null(f->extensions[0]);
+        for (const char *const *ext = f->extensions; *ext; ext++)
+            assert_ptr_equal(glint_image_format_for_path(*ext), f);
+    }
+    assert_int_equal(count, 2);
+}
+
 static void test_write_empty_image(void **state)
 {
     glint_error err = {0};
@@ -1152,6 +1177,7 @@ int main(void)
         cmocka_unit_test(test_write_over_directory),
         cmocka_unit_test(test_check_path_parent_is_file),
         cmocka_unit_test(test_unknown_extension),
+        cmocka_unit_test(test_format_lookup),
         cmocka_unit_test(test_write_empty_image),
         cmocka_unit_test(test_write_png_too_large),
         cmocka_unit_test(test_png_encode_any_thread_count),
