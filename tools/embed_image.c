@@ -1,5 +1,5 @@
 /* embed_image.c - a build step: decodes a PNG or JPEG image with glint's own
- * texture decoder (src/io/texture_image.c) and writes its pixels as C
+ * texture decoder (src/image/texture_image.c) and writes its pixels as C
  * source, so that a texture compiled into glint needs no decoding when glint
  * runs. The bytes are those texture_image_load_file gives for the file.
  *
