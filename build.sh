@@ -11,8 +11,8 @@
 set -euo pipefail
 cd "$(dirname "$0")"
 
-PACKAGES=(gcc make cmake pkg-config libembree-dev zlib1g-dev libpng-dev libjpeg62-turbo-dev libyaml-dev libassimp-dev libcmocka-dev
-          clang libclang-rt-14-dev)
+PACKAGES=(gcc make cmake pkg-config libembree-dev zlib1g-dev libpng-dev libjpeg62-turbo-dev libyaml-dev libassimp-dev
+          libopenexr-dev libcmocka-dev clang libclang-rt-14-dev openexr)
 
 install_missing() {
     local missing=()

@@ -3,9 +3,9 @@
  *
  * A program builds a scene (camera, settings, textures, materials, shapes,
  * lights, fog), renders it into a linear float RGB image and writes that
- * image as PNG or PPM. Every function that can fail returns a glint_status
- * and, when given a glint_error, fills it with a one-line message. The
- * library never prints and never exits.
+ * image as PNG, PPM or OpenEXR. Every function that can fail returns a
+ * glint_status and, when given a glint_error, fills it with a one-line
+ * message. The library never prints and never exits.
  *
  * Colours are linear RGB, nominally 0..1. Angles are in degrees. y is up.
  */
@@ -476,11 +476,29 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
                           glint_image *out, glint_render_stats *stats, glint_error *err);
 
 /* Writes the image in the format its path's extension names, in any case
- * (glint_image_format_for_path): 8-bit sRGB PNG (".png") or binary PPM
- * (".ppm"). The file is written under a temporary name beside it and
- * renamed into place, so a failure never leaves a partial file and never
- * destroys an existing one. */
+ * (glint_image_format_for_path): 8-bit sRGB PNG (".png"), binary PPM
+ * (".ppm"), or OpenEXR (".exr": the linear values as they are, half
+ * floats). The file is written under a temporary name beside it and renamed
+ * into place, so a failure never leaves a partial file and never destroys
+ * an existing one. The same as glint_image_write_ex with NULL options. */
 glint_status glint_image_write(const glint_image *image, const char *path, glint_error *err);
+
+/* The pixel type of an OpenEXR file's channels. */
+typedef enum glint_exr_pixel {
+    GLINT_EXR_HALF = 0,  /* 16-bit float, the default: what compositors expect of a
+                            beauty pass; values of 65520 and more become +inf */
+    GLINT_EXR_FLOAT = 1  /* 32-bit float: the rendered values exactly */
+} glint_exr_pixel;
+
+/* How glint_image_write_ex writes; all zero is the default. */
+typedef struct glint_image_write_options {
+    glint_exr_pixel exr_pixel; /* .exr files only; the other formats ignore it */
+} glint_image_write_options;
+
+/* As glint_image_write, with options (NULL: the defaults). An exr_pixel
+ * that is not a glint_exr_pixel is GLINT_ERR_INVALID. */
+glint_status glint_image_write_ex(const glint_image *image, const char *path,
+                                  const glint_image_write_options *options, glint_error *err);
 
 /* Checks, before rendering, that glint_image_write could write `path`: a
  * known extension and a writable directory. */
@@ -488,7 +506,7 @@ glint_status glint_image_check_path(const char *path, glint_error *err);
 
 /* An image file format glint_image_write writes. */
 typedef struct glint_image_format {
-    const char *name;              /* "PNG", "PPM" */
+    const char *name;              /* "PNG", "PPM", "OpenEXR" */
     const char *const *extensions; /* lower case, each with its dot, NULL after the last */
     const char *meaning;           /* one line: what the file holds */
 } glint_image_format;

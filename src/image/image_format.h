@@ -11,10 +11,12 @@
 #include "glint.h"
 
 /* Writes the whole image (positive size, pixels present) into fd, a new
- * empty file open for writing, and nothing else: the caller syncs, closes
- * and renames it, or removes it after a failure. path is the name the file
- * will have, for messages. */
-typedef glint_status (*image_write_fn)(int fd, const glint_image *image, const char *path, glint_error *err);
+ * empty file open for writing, as options (never NULL, already checked)
+ * ask, and nothing else: the caller syncs, closes and renames it, or
+ * removes it after a failure. path is the name the file will have, for
+ * messages. */
+typedef glint_status (*image_write_fn)(int fd, const glint_image *image, const glint_image_write_options *options,
+                                       const char *path, glint_error *err);
 
 typedef struct image_writer {
     glint_image_format format; /* name, extensions and meaning, as glint.h describes */

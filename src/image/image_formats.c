@@ -8,11 +8,12 @@
 #include "core/word_list.h"
 #include "image/image_format.h"
 
-extern const image_writer png_writer, ppm_writer;
+extern const image_writer png_writer, ppm_writer, exr_writer;
 
 static const image_writer *const writers[] = {
     &png_writer, /* png_write.c */
     &ppm_writer, /* ppm_write.c */
+    &exr_writer, /* exr_write.c */
 };
 
 #define WRITER_COUNT ((int)(sizeof writers / sizeof writers[0]))

@@ -79,14 +79,14 @@ static int create_temporary(const char *path, char **tmp_out)
 /* The temporary file sits in the target's directory so that rename() is an
  * atomic replacement on one file system; it is synced first so that after a
  * crash the name points at either the old image or the whole new one. */
-static glint_status write_replacing(const image_writer *writer, const glint_image *image, const char *path,
-                                    glint_error *err)
+static glint_status write_replacing(const image_writer *writer, const glint_image *image,
+                                    const glint_image_write_options *options, const char *path, glint_error *err)
 {
     char *tmp = NULL;
     int fd = create_temporary(path, &tmp);
     if (fd < 0)
         return image_write_io_error(path, errno, err);
-    glint_status st = writer->write(fd, image, path, err);
+    glint_status st = writer->write(fd, image, options, path, err);
     int e = 0;
     if (st == GLINT_OK && fsync(fd) != 0)
         e = errno;
@@ -104,6 +104,13 @@ static glint_status write_replacing(const image_writer *writer, const glint_imag
 
 glint_status glint_image_write(const glint_image *image, const char *path, glint_error *err)
 {
+    return glint_image_write_ex(image, path, NULL, err);
+}
+
+glint_status glint_image_write_ex(const glint_image *image, const char *path,
+                                  const glint_image_write_options *options, glint_error *err)
+{
+    static const glint_image_write_options defaults = {.exr_pixel = GLINT_EXR_HALF};
     if (!path)
         return error_set(err, GLINT_ERR_INVALID, "cannot write an image without a path");
     const image_writer *writer = image_writer_for_path(path);
@@ -113,7 +120,12 @@ glint_status glint_image_write(const glint_image *image, const char *path, glint
         return error_set(err, GLINT_ERR_INVALID, "cannot write '%s': the image is empty", path);
     if ((size_t)image->width > SIZE_MAX / 3 / (size_t)image->height)
         return image_write_no_memory(path, err);
-    return write_replacing(writer, image, path, err);
+    if (!options)
+        options = &defaults;
+    if (options->exr_pixel != GLINT_EXR_HALF && options->exr_pixel != GLINT_EXR_FLOAT)
+        return error_set(err, GLINT_ERR_INVALID, "cannot write '%s': unknown OpenEXR pixel type %d", path,
+                         (int)options->exr_pixel);
+    return write_replacing(writer, image, options, path, err);
 }
 
 glint_status glint_image_check_path(const char *path, glint_error *err)

@@ -6,7 +6,8 @@
 #include "image/image_format.h"
 #include "image/png_encode.h"
 
-static glint_status write_png(int fd, const glint_image *image, const char *path, glint_error *err)
+static glint_status write_png(int fd, const glint_image *image, const glint_image_write_options *options,
+                               const char *path, glint_error *err)
 {
     if (image->width > PNG_ENCODE_MAX_SIDE || image->height > PNG_ENCODE_MAX_SIDE)
         return error_set(err, GLINT_ERR_INVALID,

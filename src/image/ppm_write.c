@@ -5,7 +5,8 @@
 #include "image/image_format.h"
 #include "image/srgb.h"
 
-static glint_status write_ppm(int fd, const glint_image *image, const char *path, glint_error *err)
+static glint_status write_ppm(int fd, const glint_image *image, const glint_image_write_options *options,
+                               const char *path, glint_error *err)
 {
     char header[40];
     size_t header_size = (size_t)snprintf(header, sizeof header, "P6\n%d %d\n255\n", image->width, image->height);

@@ -1,9 +1,10 @@
 #!/usr/bin/env bash
 # Command-line errors that need files around them: a missing scene, an output
 # path that cannot be written, missing and unreadable textures, an existing
-# file left alone; then good runs, --help and the progress line. Each error
-# gives its message on stderr, its exit code, and leaves no file behind. The
-# errors of flags alone are in the catalogue, tests/bad/flags/expected.txt.
+# file left alone; then good runs (PNG, PPM, OpenEXR), --help and the
+# progress line. Each error gives its message on stderr, its exit code, and
+# leaves no file behind. The errors of flags alone are in the catalogue,
+# tests/bad/flags/expected.txt.
 # Usage: errors.sh PATH/TO/glint
 set -u
 GLINT=$1
@@ -37,9 +38,11 @@ expect() {
 small=(-w 8 -h 8 --spp 1 --quiet)
 expect 1 $'cannot read scene \'missing.yaml\': No such file or directory\nglint: missing.yaml: 1 problem; nothing rendered' -- missing.yaml
 expect 3 "glint: cannot write 'missing/dir/a.png': No such file or directory" -- "${small[@]}" -o missing/dir/a.png
+expect 3 "glint: cannot write 'missing/dir/a.exr': No such file or directory" -- "${small[@]}" -o missing/dir/a.exr
 mkdir ro && chmod a-w ro
 if [ "$(id -u)" -ne 0 ]; then
     expect 3 "glint: cannot write 'ro/a.png': Permission denied" -- "${small[@]}" -o ro/a.png
+    expect 3 "glint: cannot write 'ro/a.exr': Permission denied" -- "${small[@]}" -o ro/a.exr
 fi
 expect 1 "glint: cannot open texture 'nope.jpg': No such file or directory" -- "${small[@]}" --texture moon=nope.jpg -o a.png
 echo "this is not an image" > not-an-image.jpg
@@ -85,6 +88,29 @@ if [ "$(head -c 8 ok.png | od -An -tx1 | tr -d ' \n')" = "89504e470d0a1a0a" ] &&
     passed=$((passed + 1))
 else
     echo "FAIL: good PNG run"; failed=$((failed + 1))
+fi
+
+# An OpenEXR render, named by -o or by the scene's output setting, in half
+# floats: OpenEXR's exrheader reads R, G and B of that type, the size and
+# ZIP compression.
+exr_header_ok() { # FILE TYPE
+    local header
+    header=$(exrheader "$1" 2>&1) &&
+    grep -q "dataWindow (type box2i): (0 0) - (31 23)" <<<"$header" &&
+    grep -q "compression (type compression): zip" <<<"$header" &&
+    [ "$(grep -c "^ *[RGB], $2, sampling 1 1$" <<<"$header")" -eq 3 ]
+}
+printf 'settings: {width: 32, height: 24, samples: 1, output: scene.EXR}\n' > exr.yaml
+"$GLINT" -w 32 -h 24 --spp 1 --quiet -o x.exr && "$GLINT" exr.yaml --quiet
+if [ "$(head -c 4 x.exr | od -An -tx1 | tr -d ' \n')" != "762f3101" ] || [ ! -s scene.EXR ]; then
+    echo "FAIL: OpenEXR runs"; failed=$((failed + 1))
+elif ! command -v exrheader >/dev/null; then
+    echo "skipped: exrheader is not installed (Debian: openexr), so the OpenEXR headers are not read"
+elif exr_header_ok x.exr "16-bit floating-point" && exr_header_ok scene.EXR "16-bit floating-point"; then
+    passed=$((passed + 1))
+else
+    echo "FAIL: exrheader does not read the OpenEXR files as written:"; exrheader x.exr scene.EXR
+    failed=$((failed + 1))
 fi
 
 # On a terminal, a progress line (percent, elapsed, remaining) comes before

@@ -248,12 +248,7 @@ static size_t forge_png(unsigned char *buf, uint32_t width, uint32_t height)
 
 static int setup_dir(void **state)
 {
-    const char *base = getenv("GLINT_TEST_TMP");
-    if (!base || !*base)
-        base = "/tmp";
-    snprintf(tmp_dir, sizeof tmp_dir, "%s/glint-image-io-%ld", base, (long)getpid());
-    remove_tree(tmp_dir);
-    return mkdir(tmp_dir, 0755) == 0 ? 0 : -1;
+    return make_tmp_tree(tmp_dir, sizeof tmp_dir, "glint-image-io");
 }
 
 static int teardown_dir(void **state)
@@ -558,11 +553,11 @@ static void test_write_read_only_directory(void **state)
 /* A file size limit makes the write fail half way, even for root. */
 static void test_failed_write_keeps_existing_file(void **state)
 {
-    static const char *names[] = {"kept.ppm", "kept.png"};
+    static const char *names[] = {"kept.ppm", "kept.png", "kept.exr"};
     static const char old[] = "an earlier image that must survive";
     glint_image img = noise_image(64, 64);
 
-    for (int i = 0; i < 2; i++) {
+    for (int i = 0; i < 3; i++) {
         char path[PATH_SIZE], want[2 * PATH_SIZE];
         glint_error err = {0};
         tmp_path(path, names[i]);
@@ -630,13 +625,13 @@ static void test_unknown_extension(void **state)
     glint_error err = {0};
     glint_image img = sample_image();
     expect_error(glint_image_check_path("out.bmp", &err), &err, GLINT_ERR_INVALID,
-                 "cannot write 'out.bmp': unknown image format (use .png or .ppm)");
+                 "cannot write 'out.bmp': unknown image format (use .png, .ppm or .exr)");
     expect_error(glint_image_write(&img, "out.bmp", &err), &err, GLINT_ERR_INVALID,
-                 "cannot write 'out.bmp': unknown image format (use .png or .ppm)");
+                 "cannot write 'out.bmp': unknown image format (use .png, .ppm or .exr)");
     expect_error(glint_image_check_path("out", &err), &err, GLINT_ERR_INVALID,
-                 "cannot write 'out': unknown image format (use .png or .ppm)");
+                 "cannot write 'out': unknown image format (use .png, .ppm or .exr)");
     expect_error(glint_image_check_path("dir.png/out", &err), &err, GLINT_ERR_INVALID,
-                 "cannot write 'dir.png/out': unknown image format (use .png or .ppm)");
+                 "cannot write 'dir.png/out': unknown image format (use .png, .ppm or .exr)");
     glint_image_free(&img);
     assert_int_equal(access("out.bmp", F_OK), -1);
 }
@@ -647,22 +642,23 @@ static void test_format_lookup(void **state)
 {
     assert_string_equal(glint_image_format_for_path("out.png")->name, "PNG");
     assert_string_equal(glint_image_format_for_path("renders/OUT.PpM")->name, "PPM");
+    assert_string_equal(glint_image_format_for_path("a.b.Exr")->name, "OpenEXR");
     assert_null(glint_image_format_for_path("out.bmp"));
     assert_null(glint_image_format_for_path("dir.png/out"));
     assert_null(glint_image_format_for_path("png"));
     assert_null(glint_image_format_for_path(NULL));
     assert_null(glint_image_format_at(-1));
-    static const char *const names[] = {"PNG", "PPM"};
+    static const char *const names[] = {"PNG", "PPM", "OpenEXR"};
     int count = 0;
     for (const glint_image_format *f; (f = glint_image_format_at(count)) != NULL; count++) {
-        assert_true(count < 2);
+        assert_true(count < 3);
         assert_string_equal(f->name, names[count]);
         assert_non_null(f->meaning);
         assert_non_null(f->extensions[0]);
         for (const char *const *ext = f->extensions; *ext; ext++)
             assert_ptr_equal(glint_image_format_for_path(*ext), f);
     }
-    assert_int_equal(count, 2);
+    assert_int_equal(count, 3);
 }
 
 static void test_write_empty_image(void **state)

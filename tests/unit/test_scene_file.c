@@ -1568,7 +1568,7 @@ static const bad_scene BAD[] = {
     {"output_not_image",
      "settings:\n"
      "  output: render.bmp\n",
-     "bad.yaml:2:11: 'output' must name a .png or .ppm file, got 'render.bmp'", 1},
+     "bad.yaml:2:11: 'output' must name a .png, .ppm or .exr file, got 'render.bmp'", 1},
     {"radius_nan",
      "materials:\n"
      "  m: {}\n"

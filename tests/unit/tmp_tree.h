@@ -1,10 +1,11 @@
-/* tmp_tree.h - removing a test's temporary folder tree, shared by the unit
- * tests that write files. */
+/* tmp_tree.h - making and removing a test's temporary folder tree, shared
+ * by the unit tests that write files. */
 #ifndef GLINT_TESTS_TMP_TREE_H
 #define GLINT_TESTS_TMP_TREE_H
 
 #include <dirent.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -34,6 +35,18 @@ static inline void remove_tree(const char *path)
         closedir(d);
     }
     rmdir(path);
+}
+
+/* Makes dir (size bytes) a new, empty folder GLINT_TEST_TMP/NAME-PID, or
+ * under /tmp without GLINT_TEST_TMP; 0, or -1 when it cannot. */
+static inline int make_tmp_tree(char *dir, size_t size, const char *name)
+{
+    const char *base = getenv("GLINT_TEST_TMP");
+    if (!base || !*base)
+        base = "/tmp";
+    snprintf(dir, size, "%s/%s-%ld", base, name, (long)getpid());
+    remove_tree(dir);
+    return mkdir(dir, 0755) == 0 ? 0 : -1;
 }
 
 #endif
