@@ -1,6 +1,6 @@
-/* args.c - the glint command's flags: the help text, the table of number
- * flags and their ranges, and the parser that fills cli_options, printing
- * why a command line does not parse. */
+/* args.c - the glint command's flags: the help text, the tables of number
+ * flags with their ranges and of word flags with their words, and the parser
+ * that fills cli_options, printing why a command line does not parse. */
 #include <errno.h>
 #include <stdarg.h>
 #include <stddef.h>
@@ -9,6 +9,7 @@
 #include <string.h>
 #include "glint.h"
 #include "cli/args.h"
+#include "core/word_list.h"
 #include "scene/scene.h"
 
 static const char USAGE[] =
@@ -20,6 +21,8 @@ static const char USAGE[] =
     "options:\n"
     "  -o, --output FILE      image to write, in the format its extension names (below;\n"
     "                         default: the scene's output setting, else glint.png)\n"
+    "      --exr-pixel TYPE   pixel type of .exr output: half (16-bit float, the default;\n"
+    "                         values of 65520 and more become infinity) or float (32-bit)\n"
     "      --check            validate the scene file, report every problem, render nothing\n"
     "  -w, --width N          image width in pixels, 1..65536\n"
     "  -h, --height N         image height in pixels, 1..65536; at most 16384 x 16384\n"
@@ -122,6 +125,46 @@ static bool parse_number_flag(const number_flag *nf, const char *v, long long *o
     return parse_int(v, lo, hi, out) && (!p || param_in_range(p, (double)*out));
 }
 
+/* A flag whose value is one of a few words, each setting the flag's field
+ * to its index, the enum's value: one that overrides a scene setting takes
+ * the setting's words from its parameter table, so the flag and the scene
+ * file accept the same words. */
+typedef struct word_flag {
+    const char *name;
+    size_t field;                 /* offset of the int in cli_options */
+    const char *setting;          /* the settings key it overrides, or NULL */
+    const char *const *words;     /* without a setting: the words, in the enum's order */
+    int word_count;
+} word_flag;
+
+static const char *const EXR_PIXELS[] = {"half", "float"}; /* glint_exr_pixel's order */
+
+static const word_flag WORD_FLAGS[] = {
+    {"--sampler", offsetof(cli_options, sampler), "sampler", NULL, 0},
+    {"--exr-pixel", offsetof(cli_options, exr_pixel), NULL, EXR_PIXELS, 2},
+};
+
+/* Sets wf's field to the index of the word v; false, with the words
+ * quoted in `what` ("'half' or 'float'"), when v is none of them (even
+ * after an earlier good value). */
+static bool parse_word_flag(const word_flag *wf, const char *v, int *field, char *what, size_t size)
+{
+    const param *p = wf->setting ? params_find(settings_params(), wf->setting) : NULL;
+    const char *const *words = p ? p->words : wf->words;
+    int count = p ? p->word_count : wf->word_count, found = -1;
+    what[0] = '\0';
+    for (int k = 0; k < count; k++) {
+        char quoted[64];
+        snprintf(quoted, sizeof quoted, "'%s'", words[k]);
+        word_list_append(what, size, quoted, k, count);
+        if (strcmp(v, words[k]) == 0)
+            found = k;
+    }
+    if (found >= 0)
+        *field = found;
+    return found >= 0;
+}
+
 static int parse_texture_swap(cli_options *o, const char *arg)
 {
     const char *eq = strchr(arg, '=');
@@ -140,7 +183,7 @@ static int parse_texture_swap(cli_options *o, const char *arg)
 int cli_parse_args(int argc, char **argv, cli_options *o)
 {
     *o = (cli_options){.width = -1, .height = -1, .spp = -1, .depth = -1,
-                       .threads = -1, .seed = -1, .sampler = -1};
+                       .threads = -1, .seed = -1, .sampler = -1, .exr_pixel = -1};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         if (strcmp(a, "--help") == 0) {
@@ -174,8 +217,12 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
             if (strcmp(a, NUMBER_FLAGS[k].long_name) == 0 ||
                 (NUMBER_FLAGS[k].short_name && strcmp(a, NUMBER_FLAGS[k].short_name) == 0))
                 nf = &NUMBER_FLAGS[k];
-        bool takes_value = nf || strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0 ||
-                           strcmp(a, "--sampler") == 0 || strcmp(a, "--texture") == 0;
+        const word_flag *wf = NULL;
+        for (size_t k = 0; k < sizeof WORD_FLAGS / sizeof WORD_FLAGS[0]; k++)
+            if (strcmp(a, WORD_FLAGS[k].name) == 0)
+                wf = &WORD_FLAGS[k];
+        bool takes_value = nf || wf || strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0 ||
+                           strcmp(a, "--texture") == 0;
         if (!takes_value)
             return cli_complain(CLI_EXIT_USAGE, "unknown option '%s' (try 'glint --help')", a);
         if (i + 1 >= argc)
@@ -186,15 +233,10 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
             char what[96];
             if (!parse_number_flag(nf, v, field, what, sizeof what))
                 return cli_complain(CLI_EXIT_USAGE, "%s needs %s, got '%s'", nf->long_name, what, v);
-        } else if (strcmp(a, "--sampler") == 0) {
-            /* The scene file's words for the samplers, in the enum's order. */
-            const param *p = params_find(settings_params(), "sampler");
-            for (int k = 0; k < p->word_count; k++)
-                if (strcmp(v, p->words[k]) == 0)
-                    o->sampler = k;
-            if (o->sampler < 0)
-                return cli_complain(CLI_EXIT_USAGE, "--sampler needs '%s' or '%s', got '%s'", p->words[0],
-                                    p->words[1], v);
+        } else if (wf) {
+            char what[160];
+            if (!parse_word_flag(wf, v, (int *)((char *)o + wf->field), what, sizeof what))
+                return cli_complain(CLI_EXIT_USAGE, "%s needs %s, got '%s'", wf->name, what, v);
         } else if (strcmp(a, "--texture") == 0) {
             int code = parse_texture_swap(o, v);
             if (code)

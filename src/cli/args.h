@@ -29,6 +29,7 @@ typedef struct cli_options {
     bool check;
     long long width, height, spp, depth, threads, seed; /* -1: the scene's own */
     int sampler;                                        /* -1: the scene's own, else a glint_sampler */
+    int exr_pixel;                                      /* -1: not given, else a glint_exr_pixel */
     bool quiet;
     bool partial;
     const char *swap_name[CLI_MAX_TEXTURE_SWAPS], *swap_path[CLI_MAX_TEXTURE_SWAPS];

@@ -139,12 +139,12 @@ static int check_only(const cli_options *o)
 /* An interrupted render: nothing written, or with --partial its finished
  * tiles. Either way the exit code says it was interrupted. */
 static int interrupted_run(const cli_options *o, const glint_image *image, const glint_render_stats *stats,
-                           const char *output)
+                           const char *output, const glint_image_write_options *write_options)
 {
     if (!o->partial)
         return cli_complain(CLI_EXIT_INTERRUPTED, "interrupted: nothing written");
     glint_error err = {0};
-    glint_status st = glint_image_write(image, output, &err);
+    glint_status st = glint_image_write_ex(image, output, write_options, &err);
     if (st)
         return cli_complain(exit_code_of(st), "interrupted, and the finished tiles were not written: %s", err.message);
     return cli_complain(CLI_EXIT_INTERRUPTED, "interrupted: %d of %d tiles finished, written to %s (the rest black)",
@@ -165,6 +165,14 @@ static int run(const cli_options *o)
         glint_scene_free(scene);
         return cli_complain(st == GLINT_ERR_INVALID ? CLI_EXIT_USAGE : exit_code_of(st), "%s", err.message);
     }
+    /* A pixel type asked for and not given would be a surprise found after
+     * the render. */
+    if (o->exr_pixel >= 0 && strcmp(glint_image_format_for_path(output)->name, "OpenEXR") != 0) {
+        code = cli_complain(CLI_EXIT_USAGE, "--exr-pixel is for .exr output, not '%s'", output);
+        glint_scene_free(scene); /* last: output may point into it */
+        return code;
+    }
+    glint_image_write_options write_options = {.exr_pixel = o->exr_pixel >= 0 ? o->exr_pixel : GLINT_EXR_HALF};
     for (int i = 0; i < o->swaps && !st; i++)
         st = glint_scene_replace_image(scene, o->swap_name[i], o->swap_path[i], &err);
     glint_settings settings = glint_scene_get_settings(scene);
@@ -198,13 +206,13 @@ static int run(const cli_options *o)
     if (ro.progress && st == GLINT_ERR_CANCELLED)
         fputs("\r\033[K", stderr); /* the progress line stopped short */
     if (st == GLINT_ERR_CANCELLED) {
-        code = interrupted_run(o, &image, &stats, output);
+        code = interrupted_run(o, &image, &stats, output, &write_options);
         glint_image_free(&image);
         glint_scene_free(scene);
         return code;
     }
     if (!st)
-        st = glint_image_write(&image, output, &err);
+        st = glint_image_write_ex(&image, output, &write_options, &err);
     glint_image_free(&image);
     if (st) {
         glint_scene_free(scene);

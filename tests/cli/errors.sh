@@ -91,8 +91,8 @@ else
 fi
 
 # An OpenEXR render, named by -o or by the scene's output setting, in half
-# floats: OpenEXR's exrheader reads R, G and B of that type, the size and
-# ZIP compression.
+# floats or, with --exr-pixel float, in 32-bit ones: OpenEXR's exrheader
+# reads R, G and B of that type, the size and ZIP compression.
 exr_header_ok() { # FILE TYPE
     local header
     header=$(exrheader "$1" 2>&1) &&
@@ -101,16 +101,26 @@ exr_header_ok() { # FILE TYPE
     [ "$(grep -c "^ *[RGB], $2, sampling 1 1$" <<<"$header")" -eq 3 ]
 }
 printf 'settings: {width: 32, height: 24, samples: 1, output: scene.EXR}\n' > exr.yaml
-"$GLINT" -w 32 -h 24 --spp 1 --quiet -o x.exr && "$GLINT" exr.yaml --quiet
-if [ "$(head -c 4 x.exr | od -An -tx1 | tr -d ' \n')" != "762f3101" ] || [ ! -s scene.EXR ]; then
+"$GLINT" -w 32 -h 24 --spp 1 --quiet -o x.exr && "$GLINT" -w 32 -h 24 --spp 1 --quiet --exr-pixel float -o f.exr &&
+    "$GLINT" exr.yaml --quiet
+if [ "$(head -c 4 x.exr | od -An -tx1 | tr -d ' \n')" != "762f3101" ] || [ ! -s f.exr ] || [ ! -s scene.EXR ]; then
     echo "FAIL: OpenEXR runs"; failed=$((failed + 1))
 elif ! command -v exrheader >/dev/null; then
     echo "skipped: exrheader is not installed (Debian: openexr), so the OpenEXR headers are not read"
-elif exr_header_ok x.exr "16-bit floating-point" && exr_header_ok scene.EXR "16-bit floating-point"; then
+elif exr_header_ok x.exr "16-bit floating-point" && exr_header_ok f.exr "32-bit floating-point" &&
+     exr_header_ok scene.EXR "16-bit floating-point"; then
     passed=$((passed + 1))
 else
-    echo "FAIL: exrheader does not read the OpenEXR files as written:"; exrheader x.exr scene.EXR
+    echo "FAIL: exrheader does not read the OpenEXR files as written:"; exrheader x.exr f.exr scene.EXR
     failed=$((failed + 1))
+fi
+# --exr-pixel with a scene whose output is not OpenEXR is refused before rendering.
+printf 'settings: {output: scene.png}\n' > png.yaml
+err=$("$GLINT" png.yaml --exr-pixel float 2>&1 >/dev/null)
+if [ $? -eq 2 ] && [ "$err" = "glint: --exr-pixel is for .exr output, not 'scene.png'" ] && [ ! -e scene.png ]; then
+    passed=$((passed + 1))
+else
+    echo "FAIL: --exr-pixel with a scene's PNG output: $err"; failed=$((failed + 1))
 fi
 
 # On a terminal, a progress line (percent, elapsed, remaining) comes before

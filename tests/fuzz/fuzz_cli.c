@@ -4,7 +4,8 @@
  * cli_parse_args, whose promises are checked: it returns -1 (go on), 0
  * (only for --help or --version) or 2 (usage), and when it goes on, every
  * number is -1 or within its flag's range (the ranges glint --help gives),
- * the sampler a known one, and every string one the command line holds.
+ * the sampler and the OpenEXR pixel type known ones, and every string one
+ * the command line holds.
  * A broken promise aborts, which libFuzzer counts as a crash. The help,
  * the version and the complaints are printed as glint prints them: run it
  * with -close_fd_mask=3 (tests/fuzz/README.md). */
@@ -60,6 +61,8 @@ static void check_options(const cli_options *o, int argc, char **argv)
         !unset_or_in(o->seed, 0, 4294967295LL))
         abort();
     if (o->sampler != -1 && o->sampler != GLINT_SAMPLER_REGULAR && o->sampler != GLINT_SAMPLER_JITTERED)
+        abort();
+    if (o->exr_pixel != -1 && o->exr_pixel != GLINT_EXR_HALF && o->exr_pixel != GLINT_EXR_FLOAT)
         abort();
     if (o->scene && (!is_argument(o->scene, argc, argv) || (o->scene[0] == '-' && o->scene[1] != '\0')))
         abort();
