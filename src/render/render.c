@@ -12,6 +12,7 @@
 #include "core/parallel.h"
 #include "core/processors.h"
 #include "render/camera.h"
+#include "render/hit.h"
 #include "render/integrator.h"
 
 #define MAX_THREADS 1024
@@ -258,31 +259,6 @@ static void *worker_run(void *arg)
     return NULL;
 }
 
-/* The accelerator's opacity lists: which shapes, and which instances (over
- * all their triangles), block all light. False when memory runs out. */
-static bool opacity(const glint_scene *scene, bool **shapes, bool **instances)
-{
-    const material *mats = scene->materials;
-    *shapes = malloc(((size_t)scene->shape_count + 1) * sizeof **shapes);
-    *instances = malloc(((size_t)scene->instance_count + 1) * sizeof **instances);
-    bool *mesh_opaque = malloc(((size_t)scene->mesh_count + 1) * sizeof *mesh_opaque);
-    bool ok = *shapes && *instances && mesh_opaque;
-    for (int i = 0; ok && i < scene->shape_count; i++)
-        (*shapes)[i] = material_is_opaque(&mats[scene->shapes[i].material].m);
-    for (int i = 0; ok && i < scene->mesh_count; i++) {
-        const mesh *m = &scene->meshes[i];
-        mesh_opaque[i] = material_is_opaque(&mats[m->material].m);
-        for (int k = 0; m->materials && k < m->triangle_count && mesh_opaque[i]; k++)
-            mesh_opaque[i] = material_is_opaque(&mats[m->materials[k]].m);
-    }
-    for (int i = 0; ok && i < scene->instance_count; i++) {
-        const instance *inst = &scene->instances[i];
-        (*instances)[i] = inst->material >= 0 ? material_is_opaque(&mats[inst->material].m) : mesh_opaque[inst->mesh];
-    }
-    free(mesh_opaque);
-    return ok;
-}
-
 static double now_seconds(void)
 {
     struct timespec ts;
@@ -348,7 +324,7 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
     accel *acc = NULL;
     bool *shape_opaque, *instance_opaque;
     glint_status st = GLINT_OK;
-    if (!opacity(scene, &shape_opaque, &instance_opaque)) {
+    if (!hit_opacity(scene, &shape_opaque, &instance_opaque)) {
         st = error_set(err, GLINT_ERR_NOMEM, "out of memory building the accelerator");
     } else {
         accel_geometry geo = {build_threads, scene->shapes, scene->shape_count, scene->meshes, scene->mesh_count,
