@@ -140,12 +140,37 @@ static bool shadow_ray(const light *l, vec3 p, vec3 ng, vec3 dir, struct RTCRay 
     return true;
 }
 
+/* The camera rays through the centres of pixels (px[i], py[i]), as glint
+ * makes them: a packet at a time. */
+static void centre_rays(const camera *c, const int px[RAY8], const int py[RAY8], ray8 *out)
+{
+    camera_sample8 s;
+    for (int i = 0; i < RAY8; i++) {
+        s.x[i] = px[i] + 0.5;
+        s.y[i] = py[i] + 0.5;
+        s.lens_u[i] = s.lens_v[i] = s.time[i] = 0.5;
+    }
+    camera_rays8(c, &s, out);
+}
+
 static uint64_t trace_single(bench *b, int x0, int y0, int x1, int y1, struct RTCIntersectContext *ctx)
 {
     uint64_t rays = 0;
     for (int y = y0; y < y1; y++) {
+        ray8 row;
         for (int x = x0; x < x1; x++) {
-            ray r = camera_ray(&b->cam, x + 0.5, y + 0.5);
+            /* The rays of the row's next RAY8 pixels are made together and
+             * traced one by one. */
+            int lane = (x - x0) % RAY8;
+            if (lane == 0) {
+                int px[RAY8], py[RAY8];
+                for (int i = 0; i < RAY8; i++) {
+                    px[i] = x + i;
+                    py[i] = y;
+                }
+                centre_rays(&b->cam, px, py, &row);
+            }
+            ray r = ray8_get(&row, lane);
             struct RTCRayHit rh = {.ray = {.org_x = (float)r.o.x, .org_y = (float)r.o.y, .org_z = (float)r.o.z,
                                            .dir_x = (float)r.d.x, .dir_y = (float)r.d.y, .dir_z = (float)r.d.z,
                                            .tfar = INFINITY, .mask = 0xFFFFFFFFu},
@@ -192,12 +217,18 @@ static uint64_t trace_packets(bench *b, int x0, int y0, int x1, int y1, struct R
     for (int y = y0; y < y1; y += 2) {
         for (int x = x0; x < x1; x += 4) {
             _Alignas(32) int valid[8];
+            int px[8], py[8];
             ray r[8];
+            ray8 r8;
             struct RTCRayHit8 rh;
             for (int i = 0; i < 8; i++) {
-                int px = x + i % 4, py = y + i / 4;
-                valid[i] = px < x1 && py < y1 ? -1 : 0;
-                r[i] = camera_ray(&b->cam, px + 0.5, py + 0.5);
+                px[i] = x + i % 4;
+                py[i] = y + i / 4;
+            }
+            centre_rays(&b->cam, px, py, &r8);
+            for (int i = 0; i < 8; i++) {
+                valid[i] = px[i] < x1 && py[i] < y1 ? -1 : 0;
+                r[i] = ray8_get(&r8, i);
                 struct RTCRay one = {.org_x = (float)r[i].o.x, .org_y = (float)r[i].o.y, .org_z = (float)r[i].o.z,
                                      .dir_x = (float)r[i].d.x, .dir_y = (float)r[i].d.y, .dir_z = (float)r[i].d.z,
                                      .tfar = INFINITY, .mask = 0xFFFFFFFFu};

@@ -1,57 +1,35 @@
-/* camera.c - pinhole projection. */
-#include <math.h>
-#include "core/lanes.h"
-#include "render/camera.h"
+/* camera.c - the list of camera kinds, one line per kind, and the calls
+ * that go to a camera's kind. */
+#include <string.h>
+#include "render/camera_kind.h"
 
-void camera_init(camera *c, const glint_camera *d, int width, int height)
+static const camera_kind *const KINDS[] = {
+    &pinhole_camera,
+};
+
+#define KIND_COUNT ((int)(sizeof KINDS / sizeof KINDS[0]))
+
+const camera_kind *camera_kind_named(const char *name)
 {
-    c->position = d->position;
-    c->forward = v3_normalize(v3_sub(d->look_at, d->position));
-    c->right = v3_normalize(v3_cross(c->forward, d->up));
-    c->up = v3_cross(c->right, c->forward);
-    double half_height = tan(d->vfov_degrees * M_PI / 360.0);
-    c->width = width;
-    c->height = height;
-    c->per_x = half_height * width / height / width;
-    c->per_y = half_height / height;
+    for (int i = 0; i < KIND_COUNT; i++)
+        if (strcmp(KINDS[i]->name, name) == 0)
+            return KINDS[i];
+    return NULL;
 }
 
-/* The unit directions through the image positions (x[k], y[k]) of four
- * rays: no division but the normalisation's, and the image centre and every
- * pixel edge there map exactly onto the view axis. Each lane is what the
- * same steps in scalar code would give. */
-static inline void directions(const camera *c, quad_f64 x, quad_f64 y, quad_f64 *dx, quad_f64 *dy, quad_f64 *dz)
+const camera_kind *camera_kind_for(const glint_camera *desc)
 {
-    vec3 f = c->forward, r = c->right, u = c->up;
-    quad_f64 sx = (quad_splat(2) * x - quad_splat(c->width)) * quad_splat(c->per_x);
-    quad_f64 sy = (quad_splat(c->height) - quad_splat(2) * y) * quad_splat(c->per_y);
-    quad_f64 ex = quad_splat(f.x) + (quad_splat(r.x) * sx + quad_splat(u.x) * sy);
-    quad_f64 ey = quad_splat(f.y) + (quad_splat(r.y) * sx + quad_splat(u.y) * sy);
-    quad_f64 ez = quad_splat(f.z) + (quad_splat(r.z) * sx + quad_splat(u.z) * sy);
-    quad_f64 l = quad_sqrt(ex * ex + ey * ey + ez * ez);
-    quad_f64 inv = quad_select(l > 0, quad_splat(1) / l, quad_splat(1));
-    *dx = ex * inv;
-    *dy = ey * inv;
-    *dz = ez * inv;
+    (void)desc;
+    return camera_kind_named("pinhole");
 }
 
-ray camera_ray(const camera *c, double x, double y)
+void camera_init(camera *c, const glint_camera *desc, int width, int height)
 {
-    quad_f64 dx, dy, dz;
-    directions(c, quad_splat(x), quad_splat(y), &dx, &dy, &dz);
-    return (ray){c->position, {dx[0], dy[0], dz[0]}};
+    c->kind = camera_kind_for(desc);
+    c->kind->init(c, desc, width, height);
 }
 
-void camera_rays8(const camera *c, const double x[RAY8], const double y[RAY8], ray8 *out)
+void camera_rays8(const camera *c, const camera_sample8 *s, ray8 *out)
 {
-    for (int i = 0; i < RAY8; i += QUAD) {
-        quad_f64 dx, dy, dz;
-        directions(c, quad_load(x + i), quad_load(y + i), &dx, &dy, &dz);
-        quad_store(out->dx + i, dx);
-        quad_store(out->dy + i, dy);
-        quad_store(out->dz + i, dz);
-        quad_store(out->ox + i, quad_splat(c->position.x));
-        quad_store(out->oy + i, quad_splat(c->position.y));
-        quad_store(out->oz + i, quad_splat(c->position.z));
-    }
+    c->kind->rays8(c, s, out);
 }

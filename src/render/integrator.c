@@ -3,6 +3,7 @@
  * transparency, refraction with optional Fresnel, and fog per segment. */
 #include <math.h>
 #include <string.h>
+#include "render/hit.h"
 #include "render/integrator.h"
 #include "shading/fog.h"
 #include "shading/optics.h"
@@ -19,49 +20,9 @@ static vec3 offset_point(vec3 p, vec3 n)
     return v3_madd(p, n, 1e-7 * scale);
 }
 
-/* The mesh of a mesh hit (h->shape < 0). */
-static const mesh *hit_mesh(const glint_scene *scene, const accel_hit *h)
-{
-    return &scene->meshes[scene->instances[h->instance].mesh];
-}
-
-/* The material hit, whether a shape or a mesh triangle. */
-static const glint_material *hit_material(const glint_scene *scene, const accel_hit *h)
-{
-    if (h->shape >= 0)
-        return &scene->materials[scene->shapes[h->shape].material].m;
-    return &scene->materials[mesh_material(hit_mesh(scene, h), &scene->instances[h->instance], h->triangle)].m;
-}
-
-/* Describes the surface at a hit; for meshes this refines h->t. */
-static void hit_surface(const glint_scene *scene, const ray *r, accel_hit *h, surface *s)
-{
-    if (h->shape >= 0) {
-        shape_surface(&scene->shapes[h->shape], r, &h->on_shape, s);
-        return;
-    }
-    mesh_surface(hit_mesh(scene, h), &scene->instances[h->instance], r, h->triangle, h->b1, h->b2, &h->t, s);
-}
-
-/* The colour of textured material m at s. */
-static color texture_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s)
-{
-    const texture *t = &scene->textures[m->texture];
-    /* Meshes carry their uv already; shapes compute it only when asked. */
-    if (t->mapping.kind == GLINT_MAP_UV && h->shape >= 0)
-        shape_surface_uv(&scene->shapes[h->shape], s);
-    return texture_eval(t, s);
-}
-
-/* The colour of material m at s. Most materials have no texture: that test
- * is kept small enough to be inlined at each hit, apart from the look-up. */
-static inline color surface_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s)
-{
-    return m->texture < 0 ? m->color : texture_color(scene, h, m, s);
-}
-
-/* What one surface crossing passes to a shadow ray. A closed shape, and any
- * mesh, filters once, where the ray enters it (through its front). */
+/* What one surface crossing passes to a shadow ray. A closed thing (a
+ * closed shape, a mesh) filters once, where the ray enters it (through its
+ * front). */
 static color shadow_filter(void *user, const ray *r, const accel_hit *hit)
 {
     const glint_scene *scene = ((tracer *)user)->scene;
@@ -71,10 +32,9 @@ static color shadow_filter(void *user, const ray *r, const accel_hit *hit)
     accel_hit h = *hit;
     surface s;
     hit_surface(scene, r, &h, &s);
-    bool closed = h.shape < 0 || shape_is_closed(&scene->shapes[h.shape]);
-    if (closed && v3_dot(r->d, s.n) > 0)
+    if (hit_is_closed(scene, &h) && v3_dot(r->d, s.n) > 0)
         return rgb(1, 1, 1);
-    return rgb_scale(material_filter(m, surface_color(scene, &h, m, &s)), m->transparency + m->refraction);
+    return rgb_scale(material_filter(m, hit_color(scene, &h, m, &s)), m->transparency + m->refraction);
 }
 
 /* What shading needs of a hit, between finding it and finishing its colour. */
@@ -87,7 +47,8 @@ typedef struct shade_point {
     color base;               /* the surface colour */
 } shade_point;
 
-/* Describes the hit h of ray r for shading; for meshes this refines h's t. */
+/* Describes the hit h of ray r for shading, its distance refined where
+ * Embree's was single precision (hit_surface). */
 static void shade_begin(const glint_scene *scene, const ray *r, const accel_hit *h, shade_point *sp)
 {
     sp->hit = *h;
@@ -97,7 +58,7 @@ static void shade_begin(const glint_scene *scene, const ray *r, const accel_hit 
     sp->n = front ? sp->s.n : v3_neg(sp->s.n);
     sp->ns = front ? sp->s.shading_n : v3_neg(sp->s.shading_n);
     sp->origin = offset_point(sp->s.p, sp->n);
-    sp->base = surface_color(scene, &sp->hit, sp->m, &sp->s);
+    sp->base = hit_color(scene, &sp->hit, sp->m, &sp->s);
 }
 
 /* The light sample every shading point takes: the lights glint has so far
@@ -142,14 +103,6 @@ typedef struct branches {
     unsigned on;              /* bit k: branch k is open */
 } branches;
 
-/* The shape a ray leaving sp along d cannot meet again, which the
- * accelerator need not test, or -1. */
-static int left_behind(const glint_scene *scene, const shade_point *sp, vec3 d)
-{
-    int k = sp->hit.shape;
-    return k >= 0 && shape_is_left_behind(&scene->shapes[k], sp->s.n, d) ? k : -1;
-}
-
 /* Opens branch k of b: a ray leaving sp along unit direction d, starting on
  * the side of the surface that d points to. */
 static void branch(const glint_scene *scene, const shade_point *sp, branches *b, int k, vec3 d, color filter,
@@ -157,7 +110,7 @@ static void branch(const glint_scene *scene, const shade_point *sp, branches *b,
 {
     vec3 n = sp->n;
     b->r[k] = (ray){offset_point(sp->s.p, v3_dot(d, n) > 0 ? n : v3_neg(n)), d};
-    b->skip[k] = left_behind(scene, sp, d);
+    b->skip[k] = hit_left_behind(scene, &sp->hit, sp->s.n, d);
     b->filter[k] = filter;
     b->scale[k] = scale;
     b->on |= 1u << k;
@@ -233,7 +186,7 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
                 shadow = *r;
             lit[i] = any = true;
             dist[i] = ls[i].distance;
-            skip[i] = left_behind(scene, &sp[i], ls[i].to_light);
+            skip[i] = hit_left_behind(scene, &sp[i].hit, sp[i].s.n, ls[i].to_light);
             ray8_set(&shadow, i, si);
             t->rays++;
         }
@@ -265,11 +218,12 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
      * together rather than one lane's at a time. */
     if (scene->instance_count > 0)
         for (int i = 0; i < ACCEL_PACKET; i++)
-            if (found[i] && hits[i].shape < 0)
-                mesh_prefetch(hit_mesh(scene, &hits[i]), hits[i].triangle);
+            if (found[i])
+                hit_prefetch(scene, &hits[i]);
     /* A hit the fog hides completely looks like a miss, the fog colour
      * exactly (fog_apply gives it at factor 1 whatever the light), so it
-     * is not shaded. A mesh hit's distance is exact only once refined. */
+     * is not shaded further. Its distance is exact only once described (a
+     * mesh hit's is refined). */
     bool fog = scene->fog.kind != GLINT_FOG_NONE;
     /* bools are bytes of 0 or 1: their bits counted are the active lanes. */
     uint64_t lanes;
@@ -279,13 +233,9 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (!found[i])
             continue;
-        if (fog && hits[i].shape >= 0 && fog_hides(&scene->fog, hits[i].t)) {
-            found[i] = false;
-            continue;
-        }
         ray ri = ray8_get(r, i);
         shade_begin(scene, &ri, &hits[i], &sp[i]);
-        if (fog && hits[i].shape < 0 && fog_hides(&scene->fog, sp[i].hit.t))
+        if (fog && fog_hides(&scene->fog, sp[i].hit.t))
             found[i] = false;
         else
             local[i] = ambient(scene, &sp[i]);

@@ -1,0 +1,154 @@
+/* accel_shapes.c - the analytic shapes inside Embree: one user geometry,
+ * one primitive per bounded shape, whose callbacks Embree calls during a
+ * query. They test each lane's double-precision ray (kept in the query)
+ * exactly, four lanes at a time where the shape allows, and record the hit
+ * in the query; for a shadow query they block the lane, or filter its light
+ * through each crossing of a shape that lets some pass. */
+#include <math.h>
+#include "accel/accel_internal.h"
+
+/* Pads float bounds so the float ray in Embree's traversal never misses a
+ * box that the exact double test would hit. */
+static float pad_down(double v, double pad) { return nextafterf((float)(v - pad), -INFINITY); }
+static float pad_up(double v, double pad) { return nextafterf((float)(v + pad), INFINITY); }
+
+/* The bounds padded as above, for primitive primID's shape. */
+void accel_shape_bounds(const struct RTCBoundsFunctionArguments *args)
+{
+    const accel *a = args->geometryUserPtr;
+    vec3 lo, hi;
+    shape_bounds(&a->shapes[a->prim_shape[args->primID]], &lo, &hi);
+    double pad = 1e-6 * (v3_length(v3_sub(hi, lo)) + fmax(v3_length(lo), v3_length(hi)));
+    struct RTCBounds *b = args->bounds_o;
+    b->lower_x = pad_down(lo.x, pad);
+    b->lower_y = pad_down(lo.y, pad);
+    b->lower_z = pad_down(lo.z, pad);
+    b->upper_x = pad_up(hi.x, pad);
+    b->upper_y = pad_up(hi.y, pad);
+    b->upper_z = pad_up(hi.z, pad);
+}
+
+/* Records in lane i of a packet of n that it hit shape `index` at (t, part). */
+static inline void record_hit(const struct RTCIntersectFunctionNArguments *args, unsigned n, unsigned i, int index,
+                              double t, int part)
+{
+    query *q = (query *)args->context;
+    struct RTCRayHitN *rh = args->rayhit;
+    q->tmax[i] = t;
+    q->hit_t[i] = t;
+    q->hit_part[i] = part;
+    q->index[i] = index;
+    *ray_lane_tfar((struct RTCRayN *)rh, n, i) = float_far(t);
+    *rayhit_lane_uint(rh, n, HIT_GEOM, i) = args->geomID;
+    *rayhit_lane_uint(rh, n, HIT_PRIM, i) = args->primID;
+    *rayhit_lane_uint(rh, n, HIT_INST, i) = RTC_INVALID_GEOMETRY_ID;
+}
+
+/* accel_shape_intersect's work for n = args->N lanes, one at a time: inlined twice,
+ * once with n a constant for the packets glint sends, whose lanes are then
+ * cheaper to address. */
+static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *args, unsigned n, int index,
+                                   const shape *s)
+{
+    query *q = (query *)args->context;
+    for (unsigned i = 0; i < n; i++) {
+        if (!args->valid[i] || q->skip[i] == index)
+            continue;
+        float tfar = *ray_lane_tfar((struct RTCRayN *)args->rayhit, n, i);
+        shape_hit h;
+        /* A triangle found first may have shortened the ray below q->tmax. */
+        double tmax = q->tmax[i] < tfar ? q->tmax[i] : (double)tfar;
+        ray r = ray8_get(q->r, (int)i);
+        if (shape_intersect(s, &r, 0, tmax, &h))
+            record_hit(args, n, i, index, h.t, h.part);
+    }
+}
+
+/* Shape `index` (s, which shape_intersect4 takes) for the four lanes of a
+ * packet of glint's from lane `first` on: the mask of the valid lanes that
+ * hit it in (0, tmax) and do not skip it, and *t. Every lane is tested,
+ * the invalid ones too, which costs less than picking them out. */
+static inline quad_mask shape_quad(const query *q, const int *valid, int index, const shape *s, int first,
+                                   quad_f64 tmax, quad_f64 *t)
+{
+    return shape_intersect4(s, q->r, first, tmax, t) & quad_int_ne(valid + first, 0) &
+           quad_int_ne(q->skip + first, index);
+}
+
+/* intersect_lanes for a packet of glint's and a shape that
+ * shape_intersect4 takes: four lanes at a time. */
+static void intersect_quads(const struct RTCIntersectFunctionNArguments *args, int index, const shape *s)
+{
+    query *q = (query *)args->context;
+    const float *tfar = ray_lane_tfar((struct RTCRayN *)args->rayhit, ACCEL_PACKET, 0);
+    for (int k = 0; k < ACCEL_PACKET; k += QUAD) {
+        quad_f64 mine = quad_load(q->tmax + k), far = quad_from_floats(tfar + k);
+        quad_f64 t;
+        quad_mask hit = shape_quad(q, args->valid, index, s, k, quad_select(mine < far, mine, far), &t);
+        for (int j = 0; j < QUAD; j++)
+            if (hit[j])
+                record_hit(args, ACCEL_PACKET, (unsigned)(k + j), index, t[j], 0);
+    }
+}
+
+/* Glint's packets meet a shape that allows it four lanes at a time. */
+void accel_shape_intersect(const struct RTCIntersectFunctionNArguments *args)
+{
+    const query *q = (const query *)args->context;
+    int index = q->acc->prim_shape[args->primID];
+    const shape *s = &q->acc->shapes[index];
+    if (args->N != ACCEL_PACKET)
+        intersect_lanes(args, args->N, index, s);
+    else if (shape_has_intersect4(s))
+        intersect_quads(args, index, s);
+    else
+        intersect_lanes(args, ACCEL_PACKET, index, s);
+}
+
+/* An opaque shape blocks the lanes it crosses, four at a time where it
+ * can; any other filters each lane's light through each of its crossings
+ * in the segment, once a lane (the seen set). */
+void accel_shape_occluded(const struct RTCOccludedFunctionNArguments *args)
+{
+    query *q = (query *)args->context;
+    int index = q->acc->prim_shape[args->primID];
+    const shape *s = &q->acc->shapes[index];
+    bool opaque = shape_opaque(q->acc, index);
+    if (opaque && args->N == ACCEL_PACKET && shape_has_intersect4(s)) {
+        /* As below, four lanes at a time. */
+        for (int k = 0; k < ACCEL_PACKET; k += QUAD) {
+            quad_f64 t;
+            quad_mask hit = shape_quad(q, args->valid, index, s, k, quad_load(q->tmax + k), &t);
+            for (int j = 0; j < QUAD; j++)
+                if (hit[j])
+                    *ray_lane_tfar(args->ray, ACCEL_PACKET, (unsigned)(k + j)) = -INFINITY;
+        }
+        return;
+    }
+    for (unsigned i = 0; i < args->N; i++) {
+        if (!args->valid[i] || q->skip[i] == index)
+            continue;
+        ray r = ray8_get(q->r, (int)i);
+        if (opaque) {
+            /* Blocking twice is harmless, so no record of it is kept. */
+            shape_hit h;
+            if (shape_intersect(s, &r, 0, q->tmax[i], &h))
+                *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
+            continue;
+        }
+        if (!seen_add(&q->seen[i], (uint64_t)index))
+            continue;
+        double tmin = 0;
+        accel_hit h = {.shape = index, .instance = -1};
+        int crossings = shape_max_crossings(s);
+        for (int crossing = 0; crossing < crossings && shape_intersect(s, &r, tmin, q->tmax[i], &h.on_shape);
+             crossing++) {
+            h.t = h.on_shape.t;
+            if (!pass_through(q, i, &h)) {
+                *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
+                break;
+            }
+            tmin = h.t;
+        }
+    }
+}

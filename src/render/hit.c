@@ -1,0 +1,28 @@
+/* hit.c - which shapes and mesh placements block all light: the opacity
+ * lists the accelerator is built with, once a render. The per-hit calls
+ * are in hit.h (which says why). */
+#include <stdlib.h>
+#include "render/hit.h"
+
+bool hit_opacity(const glint_scene *scene, bool **shapes, bool **instances)
+{
+    const material *mats = scene->materials;
+    *shapes = malloc(((size_t)scene->shape_count + 1) * sizeof **shapes);
+    *instances = malloc(((size_t)scene->instance_count + 1) * sizeof **instances);
+    bool *mesh_opaque = malloc(((size_t)scene->mesh_count + 1) * sizeof *mesh_opaque);
+    bool ok = *shapes && *instances && mesh_opaque;
+    for (int i = 0; ok && i < scene->shape_count; i++)
+        (*shapes)[i] = material_is_opaque(&mats[scene->shapes[i].material].m);
+    for (int i = 0; ok && i < scene->mesh_count; i++) {
+        const mesh *m = &scene->meshes[i];
+        mesh_opaque[i] = material_is_opaque(&mats[m->material].m);
+        for (int k = 0; m->materials && k < m->triangle_count && mesh_opaque[i]; k++)
+            mesh_opaque[i] = material_is_opaque(&mats[m->materials[k]].m);
+    }
+    for (int i = 0; ok && i < scene->instance_count; i++) {
+        const instance *inst = &scene->instances[i];
+        (*instances)[i] = inst->material >= 0 ? material_is_opaque(&mats[inst->material].m) : mesh_opaque[inst->mesh];
+    }
+    free(mesh_opaque);
+    return ok;
+}

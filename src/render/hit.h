@@ -1,0 +1,107 @@
+/* hit.h - what the renderer knows of a hit: given the accelerator's
+ * accel_hit and the ray that found it, the material there, the surface (a
+ * mesh hit's distance refined), its colour, whether the thing hit encloses
+ * a volume, which shape a ray leaving it need not test, and which shapes
+ * and mesh placements block all light. Whether a hit is an analytic shape's
+ * or a mesh triangle's is asked here and nowhere else in the renderer, so
+ * the integrator is written once for both (and for any kind of thing a
+ * scene gains later).
+ *
+ * The per-hit calls are defined here, static, for the integrator to
+ * compile as its own: they run for every hit of every ray. Not `inline`:
+ * with the keyword GCC inlined them early, then left shape_surface and the
+ * texture look-up out of line in the shading (seed room +1.2%, bunny +1.3%
+ * instructions); as functions in hit.c, even with link-time optimisation,
+ * +2.2% and +2.3%. Static without it they cost what they did inside the
+ * integrator. (`unused`: a file that includes this and calls only some of
+ * them is no mistake.) */
+#ifndef GLINT_RENDER_HIT_H
+#define GLINT_RENDER_HIT_H
+
+#include <stdbool.h>
+#include "accel/accel.h"
+#include "scene/scene.h"
+
+/* The mesh of a mesh triangle's hit (h->shape < 0), for the calls below. */
+static __attribute__((unused)) const mesh *hit_mesh(const glint_scene *scene, const accel_hit *h)
+{
+    return &scene->meshes[scene->instances[h->instance].mesh];
+}
+
+/* The material at hit h. */
+static __attribute__((unused)) const glint_material *hit_material(const glint_scene *scene, const accel_hit *h)
+{
+    if (h->shape >= 0)
+        return &scene->materials[scene->shapes[h->shape].material].m;
+    return &scene->materials[mesh_material(hit_mesh(scene, h), &scene->instances[h->instance], h->triangle)].m;
+}
+
+/* Describes the surface at hit h of ray r, all but a shape's uv (which
+ * hit_color computes when a texture asks). A mesh hit's h->t is Embree's
+ * single-precision distance until this refines it in double precision, so
+ * anything that compares the distance exactly (fog) comes after it. */
+static __attribute__((unused)) void hit_surface(const glint_scene *scene, const ray *r, accel_hit *h, surface *s)
+{
+    if (h->shape >= 0) {
+        shape_surface(&scene->shapes[h->shape], r, &h->on_shape, s);
+        return;
+    }
+    mesh_surface(hit_mesh(scene, h), &scene->instances[h->instance], r, h->triangle, h->b1, h->b2, &h->t, s);
+}
+
+/* hit_color for a textured material (most materials have none). */
+static __attribute__((unused)) color hit_texture_color(const glint_scene *scene, const accel_hit *h,
+                                                        const glint_material *m, surface *s)
+{
+    const texture *t = &scene->textures[m->texture];
+    /* Meshes carry their uv already; shapes compute it only when asked. */
+    if (t->mapping.kind == GLINT_MAP_UV && h->shape >= 0)
+        shape_surface_uv(&scene->shapes[h->shape], s);
+    return texture_eval(t, s);
+}
+
+/* The colour of material m (hit_material's) at the surface s of hit h
+ * (hit_surface's): its colour, or its texture's there. A shape's uv is
+ * filled into s only when the texture maps by it; a mesh carries its own.
+ * Inline, unlike the others: the test for a texture is kept small enough
+ * to be inlined at each hit, apart from the look-up. */
+static inline color hit_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s)
+{
+    return m->texture < 0 ? m->color : hit_texture_color(scene, h, m, s);
+}
+
+/* Whether what h hit encloses a volume, so that a ray crossing it enters
+ * and later leaves it: a closed shape, and any mesh (a model is taken to
+ * be closed; shadows filter once, on the way in, through its front). */
+static __attribute__((unused)) bool hit_is_closed(const glint_scene *scene, const accel_hit *h)
+{
+    return h->shape < 0 || shape_is_closed(&scene->shapes[h->shape]);
+}
+
+/* The shape a ray leaving hit h along d cannot meet again, which the
+ * accelerator then need not test (accel_intersect8's skip), or -1. n is
+ * the surface's outward normal there (hit_surface's s.n). Mesh triangles
+ * are never skipped: a ray may meet the same mesh again. */
+static __attribute__((unused)) int hit_left_behind(const glint_scene *scene, const accel_hit *h, vec3 n, vec3 d)
+{
+    int k = h->shape;
+    return k >= 0 && shape_is_left_behind(&scene->shapes[k], n, d) ? k : -1;
+}
+
+/* Asks the processor to start loading what hit_surface will read of h: a
+ * large mesh's vertices are seldom in cache, and the loads of a packet's
+ * hits then overlap. Nothing to do for a shape. */
+static __attribute__((unused)) void hit_prefetch(const glint_scene *scene, const accel_hit *h)
+{
+    if (h->shape < 0)
+        mesh_prefetch(hit_mesh(scene, h), h->triangle);
+}
+
+/* The accelerator's opacity lists (accel_geometry's shape_opaque and
+ * instance_opaque): which shapes, and which mesh placements over all their
+ * triangles, block all light, so that a shadow ray stops at them without
+ * asking what passes. *shapes and *instances are the caller's to free
+ * (both, even on failure); false when memory runs out. */
+bool hit_opacity(const glint_scene *scene, bool **shapes, bool **instances);
+
+#endif
