@@ -144,13 +144,12 @@ static bool shadow_ray(const light *l, vec3 p, vec3 ng, vec3 dir, struct RTCRay 
  * makes them: a packet at a time. */
 static void centre_rays(const camera *c, const int px[RAY8], const int py[RAY8], ray8 *out)
 {
-    camera_sample8 s;
+    double x[RAY8], y[RAY8];
     for (int i = 0; i < RAY8; i++) {
-        s.x[i] = px[i] + 0.5;
-        s.y[i] = py[i] + 0.5;
-        s.lens_u[i] = s.lens_v[i] = s.time[i] = 0.5;
+        x[i] = px[i] + 0.5;
+        y[i] = py[i] + 0.5;
     }
-    camera_rays8(c, &s, out);
+    camera_rays8(c, x, y, &camera_lens_centre, camera_shutter_middle, out);
 }
 
 static uint64_t trace_single(bench *b, int x0, int y0, int x1, int y1, struct RTCIntersectContext *ctx)

@@ -1,5 +1,6 @@
-/* camera.c - the list of camera kinds, one line per kind, and the calls
- * that go to a camera's kind. */
+/* camera.c - the list of camera kinds, one line per kind; the calls that go
+ * to a camera's kind; and the lens sample and time that callers without
+ * those samples pass. */
 #include <string.h>
 #include "render/camera_kind.h"
 
@@ -8,6 +9,11 @@ static const camera_kind *const KINDS[] = {
 };
 
 #define KIND_COUNT ((int)(sizeof KINDS / sizeof KINDS[0]))
+
+const camera_lens8 camera_lens_centre = {{0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5},
+                                         {0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5}};
+const double camera_shutter_middle[RAY8] = {0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5, 0.5};
+_Static_assert(RAY8 == 8, "the lanes above are spelled out");
 
 const camera_kind *camera_kind_named(const char *name)
 {
@@ -19,7 +25,7 @@ const camera_kind *camera_kind_named(const char *name)
 
 const camera_kind *camera_kind_for(const glint_camera *desc)
 {
-    (void)desc;
+    (void)desc; /* names no kind yet */
     return camera_kind_named("pinhole");
 }
 
@@ -29,7 +35,8 @@ void camera_init(camera *c, const glint_camera *desc, int width, int height)
     c->kind->init(c, desc, width, height);
 }
 
-void camera_rays8(const camera *c, const camera_sample8 *s, ray8 *out)
+void camera_rays8(const camera *c, const double x[RAY8], const double y[RAY8], const camera_lens8 *lens,
+                  const double time[RAY8], ray8 *out)
 {
-    c->kind->rays8(c, s, out);
+    c->kind->rays8(c, x, y, lens, time, out);
 }

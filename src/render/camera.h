@@ -10,16 +10,11 @@
 
 typedef struct camera_kind camera_kind;
 
-/* What a camera is asked for the RAY8 lanes of a packet. */
-typedef struct camera_sample8 {
-    /* Image positions in pixels: (0, 0) is the top-left corner of the
-     * image and (width, height) the bottom-right. */
-    double x[RAY8], y[RAY8];
-    /* Where on the lens, each in [0, 1) (the lens's centre at 0.5, 0.5). */
-    double lens_u[RAY8], lens_v[RAY8];
-    /* When in the shutter's interval, in [0, 1). */
-    double time[RAY8];
-} camera_sample8;
+/* Where the lanes of a packet pass the lens: lane i at (u[i], v[i]), each
+ * in [0, 1), the lens's centre at (0.5, 0.5). */
+typedef struct camera_lens8 {
+    double u[RAY8], v[RAY8];
+} camera_lens8;
 
 /* A camera set up for one image: its kind, and the values its kind's
  * init derives from the scene's camera (a kind with more, such as a thin
@@ -38,7 +33,17 @@ typedef struct camera {
  * camera_validate. */
 void camera_init(camera *c, const glint_camera *desc, int width, int height);
 
-/* The unit-direction rays for the lanes of *s, into the lanes of *out. */
-void camera_rays8(const camera *c, const camera_sample8 *s, ray8 *out);
+/* The unit-direction rays of a packet's RAY8 lanes, into the lanes of
+ * *out. Lane i's ray goes through image position (x[i], y[i]) in pixels,
+ * where (0, 0) is the top-left corner of the image and (width, height) the
+ * bottom-right; it passes the lens at lane i of *lens, at time[i] in the
+ * shutter's interval, [0, 1). */
+void camera_rays8(const camera *c, const double x[RAY8], const double y[RAY8], const camera_lens8 *lens,
+                  const double time[RAY8], ray8 *out);
+
+/* The lens's centre and the shutter's middle in every lane: what a caller
+ * that samples neither passes to camera_rays8. */
+extern const camera_lens8 camera_lens_centre;
+extern const double camera_shutter_middle[RAY8];
 
 #endif

@@ -15,9 +15,10 @@ struct camera_kind {
     /* Fills c's values (all but c->kind) from the scene's camera, which
      * has passed camera_validate, for an image of width x height pixels. */
     void (*init)(camera *c, const glint_camera *desc, int width, int height);
-    /* The rays for the lanes of *s (camera_rays8): called for every packet
-     * of camera rays, so it works on the lanes side by side. */
-    void (*rays8)(const camera *c, const camera_sample8 *s, ray8 *out);
+    /* camera_rays8: called for every packet of camera rays, so it works
+     * on the lanes side by side. */
+    void (*rays8)(const camera *c, const double x[RAY8], const double y[RAY8], const camera_lens8 *lens,
+                  const double time[RAY8], ray8 *out);
 };
 
 /* A pinhole: every ray starts at the camera's position; the lens sample

@@ -38,11 +38,12 @@ static inline void directions(const camera *c, quad_f64 x, quad_f64 y, quad_f64 
     *dz = ez * inv;
 }
 
-static void pinhole_rays8(const camera *c, const camera_sample8 *s, ray8 *out)
+static void pinhole_rays8(const camera *c, const double x[RAY8], const double y[RAY8], const camera_lens8 *lens,
+                          const double time[RAY8], ray8 *out)
 {
     for (int i = 0; i < RAY8; i += QUAD) {
         quad_f64 dx, dy, dz;
-        directions(c, quad_load(s->x + i), quad_load(s->y + i), &dx, &dy, &dz);
+        directions(c, quad_load(x + i), quad_load(y + i), &dx, &dy, &dz);
         quad_store(out->dx + i, dx);
         quad_store(out->dy + i, dy);
         quad_store(out->dz + i, dz);

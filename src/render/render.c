@@ -83,25 +83,22 @@ __attribute__((always_inline)) static inline void trace_samples(tracer *t, const
     bool jittered = s->sampler == GLINT_SAMPLER_JITTERED;
     ray8 rays;
     color c[ACCEL_PACKET];
-    /* The sampler makes image positions only: every ray goes through the
-     * lens's centre, at the shutter's middle. */
-    camera_sample8 cs;
-    for (int i = 0; i < ACCEL_PACKET; i++)
-        cs.lens_u[i] = cs.lens_v[i] = cs.time[i] = 0.5;
     film_block_start(b);
     for (int sy = 0; sy < n; sy++) {
         for (int sx = 0; sx < n; sx++) {
-            double ox = 0, oy = 0;
+            double x[ACCEL_PACKET], y[ACCEL_PACKET], ox = 0, oy = 0;
             /* The regular grid's offsets are the same for every lane. */
             if (!jittered)
                 sample_offset(s, n, px[0], py[0], sx, sy, &ox, &oy);
             for (int i = 0; i < ACCEL_PACKET; i++) {
                 if (jittered)
                     sample_offset(s, n, px[i], py[i], sx, sy, &ox, &oy);
-                cs.x[i] = px[i] + ox;
-                cs.y[i] = py[i] + oy;
+                x[i] = px[i] + ox;
+                y[i] = py[i] + oy;
             }
-            camera_rays8(&j->cam, &cs, &rays);
+            /* The sampler makes image positions only: every ray passes the
+             * lens's centre at the shutter's middle. */
+            camera_rays8(&j->cam, x, y, &camera_lens_centre, camera_shutter_middle, &rays);
             tracer_trace8(t, &rays, active, c);
             film_block_add(b, active, c, careful);
         }

@@ -23,14 +23,13 @@ static camera make(const glint_camera *d, int width, int height)
 /* The ray through image position (x, y): lane 0 of a packet of such lanes. */
 static ray ray_at_position(const camera *c, double x, double y)
 {
-    camera_sample8 s;
+    double xs[RAY8], ys[RAY8];
     for (int i = 0; i < RAY8; i++) {
-        s.x[i] = x;
-        s.y[i] = y;
-        s.lens_u[i] = s.lens_v[i] = s.time[i] = 0.5;
+        xs[i] = x;
+        ys[i] = y;
     }
     ray8 out;
-    camera_rays8(c, &s, &out);
+    camera_rays8(c, xs, ys, &camera_lens_centre, camera_shutter_middle, &out);
     return ray8_get(&out, 0);
 }
 
@@ -95,16 +94,15 @@ static void test_pinhole_lanes_are_the_formula(void **state)
         x[5] = 500; /* the image centre */
         y[5] = 300;
         for (int base = 0; base < N; base += RAY8) {
-            camera_sample8 s;
+            camera_lens8 lens;
+            double time[RAY8];
             for (int i = 0; i < RAY8; i++) {
-                s.x[i] = x[base + i];
-                s.y[i] = y[base + i];
-                s.lens_u[i] = i / 8.0;
-                s.lens_v[i] = 1 - (i + 1) / 8.0;
-                s.time[i] = (i * 3 % 8) / 8.0;
+                lens.u[i] = i / 8.0;
+                lens.v[i] = 1 - (i + 1) / 8.0;
+                time[i] = (i * 3 % 8) / 8.0;
             }
             ray8 out;
-            camera_rays8(&c, &s, &out);
+            camera_rays8(&c, x + base, y + base, &lens, time, &out);
             for (int i = 0; i < RAY8; i++) {
                 ray want = pinhole_formula(descs[k], 1000, 600, x[base + i], y[base + i]), lane = ray8_get(&out, i);
                 assert_memory_equal(&lane, &want, sizeof want);
