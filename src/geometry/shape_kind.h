@@ -58,9 +58,6 @@ bool shape_closed_if_capped(const glint_shape *d);
 /* The kind with that public id, or NULL for an id no kind has. */
 const shape_kind *shape_kind_of(glint_shape_kind id);
 
-/* The kind with that scene-file name, or NULL. */
-const shape_kind *shape_kind_named(const char *name);
-
 /* The number of kinds, and kind i of them, in the order the docs list them. */
 int shape_kind_count(void);
 const shape_kind *shape_kind_at(int i);

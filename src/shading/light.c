@@ -4,23 +4,12 @@
 #include <stdio.h>
 #include <string.h>
 #include "core/error.h"
+#include "core/registry.h"
 #include "shading/light.h"
 
 static const light_kind *const KINDS[] = {&point_light, &spot_light, &directional_light};
 
-#define KIND_COUNT ((int)(sizeof KINDS / sizeof KINDS[0]))
-
-const light_kind *light_kind_of(glint_light_kind id)
-{
-    for (int i = 0; i < KIND_COUNT; i++)
-        if (KINDS[i]->id == id)
-            return KINDS[i];
-    return NULL;
-}
-
-int light_kind_count(void) { return KIND_COUNT; }
-
-const light_kind *light_kind_at(int i) { return i >= 0 && i < KIND_COUNT ? KINDS[i] : NULL; }
+REGISTRY_LOOKUPS(light_kind, light_kind, glint_light_kind, KINDS)
 
 light_spec light_spec_default(glint_light_kind id)
 {

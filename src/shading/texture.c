@@ -6,24 +6,13 @@
 #include <stdlib.h>
 #include <string.h>
 #include "core/error.h"
+#include "core/registry.h"
 #include "geometry/shape_math.h"
 #include "shading/texture.h"
 
 static const texture_kind *const KINDS[] = {&checker_texture, &image_texture};
 
-#define KIND_COUNT ((int)(sizeof KINDS / sizeof KINDS[0]))
-
-const texture_kind *texture_kind_of(glint_texture_kind id)
-{
-    for (int i = 0; i < KIND_COUNT; i++)
-        if (KINDS[i]->id == id)
-            return KINDS[i];
-    return NULL;
-}
-
-int texture_kind_count(void) { return KIND_COUNT; }
-
-const texture_kind *texture_kind_at(int i) { return i >= 0 && i < KIND_COUNT ? KINDS[i] : NULL; }
+REGISTRY_LOOKUPS(texture_kind, texture_kind, glint_texture_kind, KINDS)
 
 glint_texture glint_texture_default(glint_texture_kind kind)
 {
