@@ -33,16 +33,17 @@ static const char USAGE[] =
     "      --seed N           seed of the jittered sampler, 0..4294967295\n"
     "      --depth N          reflection and refraction recursion limit, 0..64\n"
     "                         (the seed room: 1000 x 1000, 4 samples, regular, depth 5)\n"
-    "      --threads N        render threads, 1..1024 (default: one per core); the image\n"
-    "                         is the same for any count\n"
+    "      --threads N        render threads, 0..1024 (0, the default: one per core);\n"
+    "                         the image is the same for any count\n"
     "      --texture NAME=FILE\n"
     "                         replace the image of the scene's texture NAME (the seed\n"
     "                         room's is 'moon') with a PNG or JPEG file\n"
     "      --partial          when interrupted, write the finished tiles (the rest\n"
     "                         black) instead of nothing, and still exit 4\n"
     "  -q, --quiet            no progress line and no summary on stderr\n"
-    "      --help             show this help and exit\n"
-    "      --version          print the version and exit\n";
+    "  -h, --help             show this help and exit (-h alone, with no number)\n"
+    "      --version          print the version and exit\n"
+    "Long options take their value as the next argument or after '=': --width=320.\n";
 
 /* The help's end, after the list of image formats. */
 static const char USAGE_END[] =
@@ -108,7 +109,7 @@ static const number_flag NUMBER_FLAGS[] = {
     {"--height", "-h", offsetof(cli_options, height), "height", 0, 0},
     {"--spp", NULL, offsetof(cli_options, spp), "samples", 0, 0},
     {"--depth", NULL, offsetof(cli_options, depth), "depth", 0, 0},
-    {"--threads", NULL, offsetof(cli_options, threads), NULL, 1, 1024},
+    {"--threads", NULL, offsetof(cli_options, threads), NULL, 0, 1024},
     {"--seed", NULL, offsetof(cli_options, seed), "seed", 0, 0},
 };
 
@@ -180,13 +181,38 @@ static int parse_texture_swap(cli_options *o, const char *arg)
     return 0;
 }
 
+/* Whether a is a flag that takes no value. */
+static bool is_switch(const char *a)
+{
+    static const char *const SWITCHES[] = {"--help", "--version", "-q", "--quiet", "--check", "--partial"};
+    for (size_t k = 0; k < sizeof SWITCHES / sizeof SWITCHES[0]; k++)
+        if (strcmp(a, SWITCHES[k]) == 0)
+            return true;
+    return false;
+}
+
 int cli_parse_args(int argc, char **argv, cli_options *o)
 {
     *o = (cli_options){.width = -1, .height = -1, .spp = -1, .depth = -1,
                        .threads = -1, .seed = -1, .sampler = -1, .exr_pixel = -1};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
-        if (strcmp(a, "--help") == 0) {
+        /* GNU's --name=value is --name value: split, into a copy of the name. */
+        char name[32];
+        const char *attached = NULL, *eq = strchr(a, '=');
+        if (a[0] == '-' && a[1] == '-' && eq) {
+            if ((size_t)(eq - a) >= sizeof name)
+                return cli_complain(CLI_EXIT_USAGE, "unknown option '%.*s' (try 'glint --help')", (int)(eq - a), a);
+            memcpy(name, a, (size_t)(eq - a));
+            name[eq - a] = '\0';
+            a = name;
+            attached = eq + 1;
+        }
+        if (attached && is_switch(a))
+            return cli_complain(CLI_EXIT_USAGE, "option '%s' takes no value, got '%s'", a, attached);
+        /* -h is the height's short flag; alone at the end it asks for help,
+         * as it does in most programs. */
+        if (strcmp(a, "--help") == 0 || (strcmp(a, "-h") == 0 && i + 1 == argc)) {
             print_help();
             return CLI_EXIT_OK;
         }
@@ -225,9 +251,9 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
                            strcmp(a, "--texture") == 0;
         if (!takes_value)
             return cli_complain(CLI_EXIT_USAGE, "unknown option '%s' (try 'glint --help')", a);
-        if (i + 1 >= argc)
+        if (!attached && i + 1 >= argc)
             return cli_complain(CLI_EXIT_USAGE, "option '%s' needs a value", a);
-        const char *v = argv[++i];
+        const char *v = attached ? attached : argv[++i];
         if (nf) {
             long long *field = (long long *)((char *)o + nf->field);
             char what[96];
@@ -244,6 +270,10 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
         } else {
             if (v[0] == '\0')
                 return cli_complain(CLI_EXIT_USAGE, "%s needs a file name", a);
+            /* "-o -q" is a forgotten name far more often than a file called -q. */
+            if (v[0] == '-' && v[1] != '\0')
+                return cli_complain(CLI_EXIT_USAGE, "%s needs a file name, got '%s' (write ./%s for a file of that name)",
+                                    a, v, v);
             o->output = v;
         }
     }

@@ -123,6 +123,24 @@ else
     echo "FAIL: --exr-pixel with a scene's PNG output: $err"; failed=$((failed + 1))
 fi
 
+# GNU habits: -h alone is the help, --name=value is --name value (the same
+# bytes), and --threads 0 is one thread per core (the same bytes again).
+help=$("$GLINT" -h 2>/dev/null)
+if [ $? -eq 0 ] && [[ "$help" == usage:* ]] && grep -q -- "--width=320" <<<"$help"; then
+    passed=$((passed + 1))
+else
+    echo "FAIL: glint -h alone: $help"; failed=$((failed + 1))
+fi
+"$GLINT" -w 24 -h 16 --spp 4 --quiet -o spaced.ppm &&
+    "$GLINT" --width=24 --height=16 --spp=4 --quiet --output=equals.ppm &&
+    "$GLINT" -w 24 -h 16 --spp 4 --threads 0 --quiet -o cores.ppm
+if [ $? -eq 0 ] && cmp -s spaced.ppm equals.ppm && cmp -s spaced.ppm cores.ppm; then
+    passed=$((passed + 1))
+else
+    echo "FAIL: --name=value or --threads 0 rendered differently"; failed=$((failed + 1))
+fi
+rm -f spaced.ppm equals.ppm cores.ppm
+
 # On a terminal, a progress line (percent, elapsed, remaining) comes before
 # the summary; off a terminal there is none.
 if command -v script >/dev/null; then
