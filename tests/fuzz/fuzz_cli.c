@@ -2,7 +2,7 @@
  * split at its NUL bytes, is a command line (argv[0] "glint", at most
  * MAX_ARGS arguments after it; a final argument needs no NUL after it) for
  * cli_parse_args, whose promises are checked: it returns -1 (go on), 0
- * (only for --help or --version) or 2 (usage), and when it goes on, every
+ * (only for --help, --version or a last -h) or 2 (usage), and when it goes on, every
  * number is -1 or within its flag's range (the ranges glint --help gives),
  * the sampler and the OpenEXR pixel type known ones, and every string one
  * the command line holds.
@@ -44,6 +44,18 @@ static bool is_argument(const char *s, int argc, char **argv)
     return false;
 }
 
+/* Whether v is a flag's value as the parser takes it: a whole argument, or
+ * the part after the first '=' of a long option's argument (--name=value). */
+static bool is_value(const char *v, int argc, char **argv)
+{
+    for (int i = 1; i < argc; i++) {
+        const char *eq = strchr(argv[i], '=');
+        if (v == argv[i] || (argv[i][0] == '-' && argv[i][1] == '-' && eq && v == eq + 1))
+            return true;
+    }
+    return false;
+}
+
 /* Whether some argument is exactly s. */
 static bool has_argument(const char *s, int argc, char **argv)
 {
@@ -57,7 +69,7 @@ static void check_options(const cli_options *o, int argc, char **argv)
 {
     if (!unset_or_in(o->width, 1, 65536) || !unset_or_in(o->height, 1, 65536) ||
         !unset_or_in(o->spp, 1, 4096) || (o->spp != -1 && !is_square(o->spp)) ||
-        !unset_or_in(o->depth, 0, 64) || !unset_or_in(o->threads, 1, 1024) ||
+        !unset_or_in(o->depth, 0, 64) || !unset_or_in(o->threads, 0, 1024) ||
         !unset_or_in(o->seed, 0, 4294967295LL))
         abort();
     if (o->sampler != -1 && o->sampler != GLINT_SAMPLER_REGULAR && o->sampler != GLINT_SAMPLER_JITTERED)
@@ -68,7 +80,8 @@ static void check_options(const cli_options *o, int argc, char **argv)
         abort();
     if (o->check && !o->scene)
         abort();
-    if (o->output && (!is_argument(o->output, argc, argv) || o->output[0] == '\0'))
+    if (o->output && (!is_value(o->output, argc, argv) || o->output[0] == '\0' ||
+                      (o->output[0] == '-' && o->output[1] != '\0')))
         abort();
     if (o->swaps < 0 || o->swaps > CLI_MAX_TEXTURE_SWAPS)
         abort();
@@ -78,7 +91,7 @@ static void check_options(const cli_options *o, int argc, char **argv)
         /* The name is what came before the first '=' of an argument, and
          * the file all after it. */
         if (len == 0 || len >= sizeof o->swap_buf[i] || strchr(name, '=') || path[0] == '\0' ||
-            !is_argument(path - len - 1, argc, argv) || path[-1] != '=' || memcmp(path - len - 1, name, len) != 0)
+            !is_value(path - len - 1, argc, argv) || path[-1] != '=' || memcmp(path - len - 1, name, len) != 0)
             abort();
     }
 }
@@ -103,7 +116,9 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     if (code == -1)
         check_options(&o, argc, argv);
     else if (code == CLI_EXIT_OK) {
-        if (!has_argument("--help", argc, argv) && !has_argument("--version", argc, argv))
+        /* -h alone, the last argument, asks for the help too. */
+        bool help_last = argc > 1 && strcmp(argv[argc - 1], "-h") == 0;
+        if (!has_argument("--help", argc, argv) && !has_argument("--version", argc, argv) && !help_last)
             abort();
     } else if (code != CLI_EXIT_USAGE)
         abort();
