@@ -70,17 +70,6 @@ bool need_number(loader *l, const ynode *map, const char *key, const char *what,
 /* A required vector. */
 bool need_vec3(loader *l, const ynode *map, const char *key, const char *what, vec3 *out);
 
-/* Which ends of a range are excluded. */
-typedef enum bounds { CLOSED, OPEN_LOW, OPEN_BOTH } bounds;
-
-/* Reads an optional number and checks it lies between lo and hi, reporting
- * "'key' must be <range>, got v" where range is the human wording. */
-bool ranged(loader *l, const ynode *map, const char *key, double lo, double hi, bounds open, const char *range,
-            double *out);
-
-/* True when key is present in map and a whole number in [lo, hi]. */
-bool present_integer(loader *l, const ynode *map, const char *key, long long lo, long long hi, long long *v);
-
 /* Matches a scalar against a list of words; reports with a hint. */
 int word(loader *l, const ynode *n, const char *key, const char *const *words, int count);
 

@@ -102,15 +102,20 @@ static int import_model(loader *l, const ynode *file, const char *path, double c
     return mesh_index;
 }
 
+/* A mesh object's crease angle, read through the parameter tables like
+ * every other ranged key. */
+static const param CREASE_ANGLE = {.key = "crease_angle", .type = PARAM_NUMBER, .def = {80}, .lo = 0, .hi = 180,
+                                   .unit = "degrees", .meaning = "where generated normals stay sharp"};
+
 /* A mesh object: its model file's triangles, placed; `override` (>= 0)
  * replaces the file's own materials. */
 static void place_mesh(loader *l, const ynode *n, int override, const glint_transform *to_world)
 {
     const ynode *file = yr_need(&l->r, n, "file", "mesh");
     const char *path;
-    double crease = 80;
+    double crease = CREASE_ANGLE.def[0];
     if (!file || !yr_text(&l->r, file, "file", &path) ||
-        !ranged(l, n, "crease_angle", 0, 180, CLOSED, "from 0 to 180 degrees", &crease))
+        !read_params(l, n, (param_table){&CREASE_ANGLE, 1}, "mesh", &crease))
         return;
     char *full = relative_to(n->file, path);
     if (!full) {

@@ -19,32 +19,6 @@ bool need_vec3(loader *l, const ynode *map, const char *key, const char *what, v
     return n && yr_vec3(&l->r, n, key, out);
 }
 
-/* Reads an optional number and checks it lies between lo and hi, reporting
- * "'key' must be <range>, got v" where range is the human wording. */
-bool ranged(loader *l, const ynode *map, const char *key, double lo, double hi, bounds open,
-                   const char *range, double *out)
-{
-    const ynode *n = yr_get(&l->r, map, key);
-    double v = *out;
-    if (!n)
-        return true;
-    if (!yr_number(&l->r, n, key, &v))
-        return false;
-    if (v < lo || v > hi || (open != CLOSED && v == lo) || (open == OPEN_BOTH && v == hi)) {
-        diag_at(&l->d, n, "'%s' must be %s, got %g", key, range, v);
-        return false;
-    }
-    *out = v;
-    return true;
-}
-
-/* True when key is present in map and a whole number in [lo, hi]. */
-bool present_integer(loader *l, const ynode *map, const char *key, long long lo, long long hi, long long *v)
-{
-    const ynode *n = yr_get(&l->r, map, key);
-    return n && yr_integer(&l->r, n, key, lo, hi, v);
-}
-
 /* Matches a scalar against a list of words; reports with a hint. */
 int word(loader *l, const ynode *n, const char *key, const char *const *words, int count)
 {
