@@ -1112,8 +1112,8 @@ static void test_render_background_and_fog(void **state)
     glint_image_free(&img);
     glint_scene_free(s);
 
-    /* The single pixel sees the wall 5 units away: halfway from 0 to 10. */
-    s = load_good("settings: {width: 1, height: 1}\n"
+    /* The single pixel's one sample sees the wall 5 units away: halfway from 0 to 10. */
+    s = load_good("settings: {width: 1, height: 1, samples: 1}\n"
                   "fog: {type: linear, color: {linear: [0, 0, 0.5]}, start: 0, end: 10}\n"
                   "materials:\n"
                   "  glow: {color: {linear: [1, 1, 1]}, ambient: 1, diffuse: 0, specular: 0}\n"
