@@ -61,7 +61,7 @@ static const char USAGE_END[] =
     "memory, Embree). An interrupted render stops within a moment and writes nothing\n"
     "unless --partial. The image is written under a temporary name and renamed into\n"
     "place, so a failed or interrupted run never leaves a half-written file or destroys\n"
-    "an existing one.\n";
+    "an existing one; standard output gets the whole image in one pass.\n";
 
 /* The help: the flags, the image formats as the library lists them, and
  * the exit codes. */

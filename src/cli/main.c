@@ -115,6 +115,7 @@ static glint_scene *load_scene(const char *path, const char *outcome, int *code)
     glint_error err = {0};
     glint_scene *scene;
     const char *name = scene_name(path);
+    bool from_stdin = strcmp(path, "-") == 0;
     if (glint_is_model_path(path)) {
         scene = glint_scene_for_model(path, &err);
         if (!scene)
@@ -122,7 +123,7 @@ static glint_scene *load_scene(const char *path, const char *outcome, int *code)
     } else {
         int problems = 0;
         glint_load_options lo = {.report = print_problem, .report_user = &problems, .max_errors = MAX_PROBLEMS};
-        scene = name != path ? glint_scene_load_stream(stdin, name, &lo, &err) : glint_scene_load_file(path, &lo, &err);
+        scene = from_stdin ? glint_scene_load_stream(stdin, name, &lo, &err) : glint_scene_load_file(path, &lo, &err);
         if (!scene)
             cli_complain(CLI_EXIT_BAD_INPUT, "%s: %d problem%s%s; %s", name, problems, problems == 1 ? "" : "s",
                          problems >= MAX_PROBLEMS ? " (stopped at the limit)" : "", outcome);
