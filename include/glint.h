@@ -14,6 +14,7 @@
 
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdbool.h>
 
 #ifdef __cplusplus
@@ -414,6 +415,16 @@ glint_scene *glint_scene_load_file(const char *path, const glint_load_options *o
 glint_scene *glint_scene_load_memory(const char *data, size_t size, const char *name,
                                      const glint_load_options *options, glint_error *err);
 
+/* As glint_scene_load_file, from the open stream `in` read to its end, for
+ * standard input: at most the 64 MiB a scene file may have (more is
+ * GLINT_ERR_INVALID, "scene 'NAME' is too large"), and nothing at all is
+ * "NAME: the file holds no scene". `name` stands for the stream in messages
+ * ("<stdin>:3:5: ..."; NULL: "<stream>"), and relative paths resolve
+ * against its directory part, so against the current directory for a name
+ * without a '/'. The stream is left open. */
+glint_scene *glint_scene_load_stream(FILE *in, const char *name, const glint_load_options *options,
+                                     glint_error *err);
+
 /* Sets the output image path a scene file asked for (NULL clears it). */
 glint_status glint_scene_set_output(glint_scene *scene, const char *path, glint_error *err);
 
@@ -518,6 +529,22 @@ const glint_image_format *glint_image_format_at(int index);
 /* The format glint_image_write writes `path` in, by the extension of its
  * last component, in any case; NULL when none has it (or path is NULL). */
 const glint_image_format *glint_image_format_for_path(const char *path);
+
+/* The format whose name or one of whose extensions without the dot is
+ * `name`, in any case ("png", "PPM", "exr", "OpenEXR"); NULL when none is
+ * (or name is NULL): for choosing a format by a word, as `glint --format`
+ * does. */
+const glint_image_format *glint_image_format_named(const char *name);
+
+/* As glint_image_write_ex, in `format` (glint_image_format_at, _for_path
+ * or _named), to fd, a file descriptor open for writing such as standard
+ * output or a pipe: from its position on, in one pass (it never seeks), and
+ * left open. Unlike a path, fd gets no temporary file: a write that fails
+ * partway leaves what was written. `name` stands for it in messages
+ * ("<stdout>"; NULL: "<output>"). A format not from glint_image_format_*
+ * is GLINT_ERR_INVALID; a failed write is GLINT_ERR_IO with the errno text. */
+glint_status glint_image_write_fd(const glint_image *image, int fd, const glint_image_format *format,
+                                  const glint_image_write_options *options, const char *name, glint_error *err);
 
 #ifdef __cplusplus
 }

@@ -13,17 +13,24 @@
 #include "scene/scene.h"
 
 static const char USAGE[] =
-    "usage: glint [SCENE.yaml | MODEL] [options]\n"
-    "Renders a scene file (docs/scene-format.md), a model file (.obj, .ply, .stl,\n"
-    ".gltf, .glb: framed on a floor, lit), or without either the built-in seed room\n"
-    "(the COSC363 scene), to an image. Flags override the file's settings.\n"
+    "usage: glint [SCENE.yaml | MODEL | -] [options]\n"
+    "       glint --check SCENE.yaml...\n"
+    "Renders a scene file (docs/scene-format.md; '-' reads it from standard input), a\n"
+    "model file (.obj, .ply, .stl, .gltf, .glb: framed on a floor, lit), or without\n"
+    "either the built-in seed room (the COSC363 scene), to an image. Flags override\n"
+    "the file's settings.\n"
     "\n"
     "options:\n"
     "  -o, --output FILE      image to write, in the format its extension names (below;\n"
-    "                         default: the scene's output setting, else glint.png)\n"
+    "                         default: the scene's output setting, else glint.png);\n"
+    "                         '-' is standard output (not a terminal)\n"
+    "      --format png|ppm|exr\n"
+    "                         format of standard output (default png), or of the\n"
+    "                         default glint.png; a file's extension must agree\n"
     "      --exr-pixel TYPE   pixel type of .exr output: half (16-bit float, the default;\n"
     "                         values of 65520 and more become infinity) or float (32-bit)\n"
-    "      --check            validate the scene file, report every problem, render nothing\n"
+    "      --check            validate each scene file given (several may be), report\n"
+    "                         every problem, render nothing (exit 0: all valid)\n"
     "  -w, --width N          image width in pixels, 1..65536\n"
     "  -h, --height N         image height in pixels, 1..65536; at most 16384 x 16384\n"
     "                         pixels in all\n"
@@ -32,7 +39,8 @@ static const char USAGE[] =
     "                         each cell of the grid)\n"
     "      --seed N           seed of the jittered sampler, 0..4294967295\n"
     "      --depth N          reflection and refraction recursion limit, 0..64\n"
-    "                         (the seed room: 1000 x 1000, 4 samples, regular, depth 5)\n"
+    "                         (defaults: seed room 1000 x 1000, scene file 640 x 480,\n"
+    "                         model 800 x 600; 4 samples, regular, depth 5)\n"
     "      --threads N        render threads, 0..1024 (0, the default: one per core);\n"
     "                         the image is the same for any count\n"
     "      --texture NAME=FILE\n"
@@ -53,7 +61,7 @@ static const char USAGE_END[] =
     "memory, Embree). An interrupted render stops within a moment and writes nothing\n"
     "unless --partial. The image is written under a temporary name and renamed into\n"
     "place, so a failed or interrupted run never leaves a half-written file or destroys\n"
-    "an existing one.\n";
+    "an existing one; standard output gets the whole image in one pass.\n";
 
 /* The help: the flags, the image formats as the library lists them, and
  * the exit codes. */
@@ -181,6 +189,25 @@ static int parse_texture_swap(cli_options *o, const char *arg)
     return 0;
 }
 
+/* Sets o->format to the format named v; the formats' first extensions are
+ * the words (--format png). */
+static int parse_format(cli_options *o, const char *v)
+{
+    o->format = glint_image_format_named(v);
+    if (o->format)
+        return 0;
+    int count = 0;
+    while (glint_image_format_at(count))
+        count++;
+    char words[160] = "";
+    for (int i = 0; i < count; i++) {
+        char quoted[40];
+        snprintf(quoted, sizeof quoted, "'%s'", glint_image_format_at(i)->extensions[0] + 1);
+        word_list_append(words, sizeof words, quoted, i, count);
+    }
+    return cli_complain(CLI_EXIT_USAGE, "--format needs %s, got '%s'", words, v);
+}
+
 /* Whether a is a flag that takes no value. */
 static bool is_switch(const char *a)
 {
@@ -195,6 +222,8 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
 {
     *o = (cli_options){.width = -1, .height = -1, .spp = -1, .depth = -1,
                        .threads = -1, .seed = -1, .sampler = -1, .exr_pixel = -1};
+    /* The scene files move to argv[1] on: no slot is written before it is read. */
+    int files = 0;
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         /* GNU's --name=value is --name value: split, into a copy of the name. */
@@ -233,9 +262,10 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
             continue;
         }
         if (a[0] != '-' || a[1] == '\0') {
-            if (o->scene)
-                return cli_complain(CLI_EXIT_USAGE, "unexpected argument '%s': one scene file at a time (try 'glint --help')", a);
-            o->scene = a;
+            for (int k = 0; k < files; k++)
+                if (strcmp(a, "-") == 0 && strcmp(argv[1 + k], "-") == 0)
+                    return cli_complain(CLI_EXIT_USAGE, "'-' (standard input) can be read only once");
+            argv[1 + files++] = argv[i];
             continue;
         }
         const number_flag *nf = NULL;
@@ -248,7 +278,7 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
             if (strcmp(a, WORD_FLAGS[k].name) == 0)
                 wf = &WORD_FLAGS[k];
         bool takes_value = nf || wf || strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0 ||
-                           strcmp(a, "--texture") == 0;
+                           strcmp(a, "--texture") == 0 || strcmp(a, "--format") == 0;
         if (!takes_value)
             return cli_complain(CLI_EXIT_USAGE, "unknown option '%s' (try 'glint --help')", a);
         if (!attached && i + 1 >= argc)
@@ -263,8 +293,8 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
             char what[160];
             if (!parse_word_flag(wf, v, (int *)((char *)o + wf->field), what, sizeof what))
                 return cli_complain(CLI_EXIT_USAGE, "%s needs %s, got '%s'", wf->name, what, v);
-        } else if (strcmp(a, "--texture") == 0) {
-            int code = parse_texture_swap(o, v);
+        } else if (strcmp(a, "--texture") == 0 || strcmp(a, "--format") == 0) {
+            int code = strcmp(a, "--texture") == 0 ? parse_texture_swap(o, v) : parse_format(o, v);
             if (code)
                 return code;
         } else {
@@ -277,7 +307,13 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
             o->output = v;
         }
     }
+    o->scenes = (const char *const *)argv + 1;
+    o->scene_count = files;
+    o->scene = files > 0 ? argv[1] : NULL;
     if (o->check && !o->scene)
         return cli_complain(CLI_EXIT_USAGE, "--check needs a scene file");
+    if (files > 1 && !o->check)
+        return cli_complain(CLI_EXIT_USAGE, "unexpected argument '%s': one scene file at a time, unless --check",
+                            argv[2]);
     return -1;
 }

@@ -5,6 +5,7 @@
 #define GLINT_CLI_ARGS_H
 
 #include <stdbool.h>
+#include "glint.h"
 
 /* What the glint command's exit status means (glint --help lists them). */
 enum cli_exit_code {
@@ -24,8 +25,11 @@ enum cli_exit_code {
  * strings point into argv or into the options themselves, so they must not
  * outlive argv nor the options be copied. */
 typedef struct cli_options {
-    const char *scene;          /* NULL: the built-in seed room */
-    const char *output;         /* NULL: the scene's, else glint.png */
+    const char *scene;          /* NULL: the built-in seed room; "-": standard input */
+    const char *const *scenes;  /* all the scene files named, scenes[0] == scene: several only with --check */
+    int scene_count;
+    const char *output;         /* NULL: the scene's, else glint.png; "-": standard output */
+    const glint_image_format *format; /* --format: NULL, else the output's format (PNG on standard output) */
     bool check;
     long long width, height, spp, depth, threads, seed; /* -1: the scene's own */
     int sampler;                                        /* -1: the scene's own, else a glint_sampler */
@@ -42,7 +46,8 @@ typedef struct cli_options {
 int cli_complain(int code, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
 
 /* Fills all of *o from the argc arguments in argv (argv[0] the program's
- * name, skipped). Returns -1 to go on and render or check, or the code to
+ * name, skipped), moving the scene files named to argv[1] on, in their
+ * order, as GNU's getopt does (o->scenes points there). Returns -1 to go on and render or check, or the code to
  * exit with at once: CLI_EXIT_OK after printing the help or the version on
  * stdout, CLI_EXIT_USAGE after printing why the flags do not parse on
  * stderr (cli_complain). */

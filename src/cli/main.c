@@ -1,6 +1,7 @@
 /* main.c - the glint command: reads its flags (args.c), renders the scene
- * or the built-in seed room through the public API, shows progress and
- * writes the image. */
+ * (a file, standard input) or the built-in seed room through the public
+ * API, shows progress and writes the image to a file or standard output;
+ * or checks scene files. */
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
@@ -31,7 +32,9 @@ static void on_signal(int sig)
     }
 }
 
-/* SIGINT and SIGTERM go to on_signal from here on. */
+/* SIGINT and SIGTERM go to on_signal from here on. A reader of standard
+ * output that goes away makes the write fail with EPIPE, reported and exit
+ * code 3, rather than kill glint without a word. */
 static void catch_signals(void)
 {
     struct sigaction sa;
@@ -39,6 +42,7 @@ static void catch_signals(void)
     sa.sa_handler = on_signal;
     sigaction(SIGINT, &sa, NULL);
     sigaction(SIGTERM, &sa, NULL);
+    signal(SIGPIPE, SIG_IGN);
 }
 
 static int exit_code_of(glint_status s)
@@ -96,14 +100,22 @@ static void print_problem(void *user, const char *message)
     fprintf(stderr, "%s\n", message);
 }
 
-/* Loads the scene file (or builds a scene around a model file), printing
- * every problem and a last line saying what became of the run; NULL after
- * reporting, with *code the exit code: bad input, or an internal failure
- * when memory ran out. */
+/* The name of a scene file in messages: "<stdin>" for '-'. */
+static const char *scene_name(const char *path)
+{
+    return strcmp(path, "-") == 0 ? "<stdin>" : path;
+}
+
+/* Loads the scene file, or standard input for '-' (or builds a scene
+ * around a model file), printing every problem and a last line saying what
+ * became of the run; NULL after reporting, with *code the exit code: bad
+ * input, or an internal failure when memory ran out. */
 static glint_scene *load_scene(const char *path, const char *outcome, int *code)
 {
     glint_error err = {0};
     glint_scene *scene;
+    const char *name = scene_name(path);
+    bool from_stdin = strcmp(path, "-") == 0;
     if (glint_is_model_path(path)) {
         scene = glint_scene_for_model(path, &err);
         if (!scene)
@@ -111,67 +123,150 @@ static glint_scene *load_scene(const char *path, const char *outcome, int *code)
     } else {
         int problems = 0;
         glint_load_options lo = {.report = print_problem, .report_user = &problems, .max_errors = MAX_PROBLEMS};
-        scene = glint_scene_load_file(path, &lo, &err);
+        scene = from_stdin ? glint_scene_load_stream(stdin, name, &lo, &err) : glint_scene_load_file(path, &lo, &err);
         if (!scene)
-            cli_complain(CLI_EXIT_BAD_INPUT, "%s: %d problem%s%s; %s", path, problems, problems == 1 ? "" : "s",
+            cli_complain(CLI_EXIT_BAD_INPUT, "%s: %d problem%s%s; %s", name, problems, problems == 1 ? "" : "s",
                          problems >= MAX_PROBLEMS ? " (stopped at the limit)" : "", outcome);
     }
     *code = err.status == GLINT_ERR_NOMEM ? CLI_EXIT_INTERNAL : CLI_EXIT_BAD_INPUT;
     return scene;
 }
 
-static int check_only(const cli_options *o)
+/* Prints `before`, then n and the word for n things: "1 texture", "2 textures". */
+static void print_count(const char *before, long long n, const char *one, const char *many)
+{
+    printf("%s%lld %s", before, n, n == 1 ? one : many);
+}
+
+/* Checks one scene file: what it holds on stdout, or its problems on stderr. */
+static int check_one(const char *path)
 {
     int code;
-    glint_scene *scene = load_scene(o->scene, "not valid", &code);
+    glint_scene *scene = load_scene(path, "not valid", &code);
     if (!scene)
         return code;
     glint_scene_counts c = glint_scene_get_counts(scene);
-    printf("%s: ok: %d textures, %d materials, %d shapes, %d lights", o->scene, c.textures, c.materials, c.shapes,
-           c.lights);
-    if (c.meshes > 0)
-        printf(", %d meshes (%lld triangles) placed %d times", c.meshes, c.triangles, c.instances);
+    printf("%s: ok:", scene_name(path));
+    print_count(" ", c.textures, "texture", "textures");
+    print_count(", ", c.materials, "material", "materials");
+    print_count(", ", c.shapes, "shape", "shapes");
+    print_count(", ", c.lights, "light", "lights");
+    if (c.meshes > 0) {
+        print_count(", ", c.meshes, "mesh", "meshes");
+        print_count(" (", c.triangles, "triangle", "triangles");
+        if (c.instances == 1)
+            fputs(") placed once", stdout);
+        else
+            printf(") placed %d times", c.instances);
+    }
     putchar('\n');
     glint_scene_free(scene);
     return CLI_EXIT_OK;
 }
 
+/* Checks every file named, each reported in turn; the exit code is the
+ * worst of theirs, the highest: 5 (out of memory) over 1 (not valid) over
+ * 0. */
+static int check_only(const cli_options *o)
+{
+    int worst = CLI_EXIT_OK;
+    for (int i = 0; i < o->scene_count; i++) {
+        int code = check_one(o->scenes[i]);
+        if (code > worst)
+            worst = code;
+        /* In order with the problems on stderr, when both go to one place. */
+        fflush(stdout);
+    }
+    return worst;
+}
+
+/* Where the image goes: a file, or standard output for "-". */
+typedef struct destination {
+    const char *path;                 /* the file, or "-" */
+    const glint_image_format *format;
+    const char *shown;                /* its name in messages: the file's, or "<stdout>" */
+    char default_path[32];            /* glint.png, or glint.EXT of --format */
+} destination;
+
+/* Chooses where the image goes and in which format, and checks before
+ * rendering that it can go there: -o, else the scene's output setting, else
+ * glint.png (glint.ppm with --format ppm); a --format that disagrees with
+ * the file's extension, or an --exr-pixel for other formats, is refused.
+ * Returns -1 to go on, or the exit code after complaining. The path may
+ * point into the scene. */
+static int choose_destination(const cli_options *o, const glint_scene *scene, destination *d)
+{
+    d->path = o->output ? o->output : glint_scene_get_output(scene);
+    if (!d->path) {
+        snprintf(d->default_path, sizeof d->default_path, "glint%s", o->format ? o->format->extensions[0] : ".png");
+        d->path = d->default_path;
+    }
+    glint_error err = {0};
+    if (strcmp(d->path, "-") == 0) {
+        d->format = o->format ? o->format : glint_image_format_named("png");
+        d->shown = "<stdout>";
+    } else {
+        glint_status st = glint_image_check_path(d->path, &err);
+        if (st)
+            return cli_complain(st == GLINT_ERR_INVALID ? CLI_EXIT_USAGE : exit_code_of(st), "%s", err.message);
+        d->format = glint_image_format_for_path(d->path);
+        d->shown = d->path;
+        if (o->format && o->format != d->format)
+            return cli_complain(CLI_EXIT_USAGE, "--format %s does not match the output '%s', a %s file by its extension",
+                                o->format->extensions[0] + 1, d->path, d->format->name);
+    }
+    /* A pixel type asked for and not given would be a surprise found after
+     * the render. */
+    if (o->exr_pixel >= 0 && strcmp(d->format->name, "OpenEXR") != 0)
+        return strcmp(d->path, "-") != 0
+                   ? cli_complain(CLI_EXIT_USAGE, "--exr-pixel is for .exr output, not '%s'", d->path)
+                   : cli_complain(CLI_EXIT_USAGE, "--exr-pixel is for .exr output, not %s on standard output "
+                                                  "(add --format exr)", d->format->name);
+    return -1;
+}
+
+/* Writes the image to its destination. */
+static glint_status write_image(const destination *d, const glint_image *image,
+                                const glint_image_write_options *options, glint_error *err)
+{
+    return strcmp(d->path, "-") == 0 ? glint_image_write_fd(image, STDOUT_FILENO, d->format, options, d->shown, err)
+                                     : glint_image_write_ex(image, d->path, options, err);
+}
+
 /* An interrupted render: nothing written, or with --partial its finished
  * tiles. Either way the exit code says it was interrupted. */
 static int interrupted_run(const cli_options *o, const glint_image *image, const glint_render_stats *stats,
-                           const char *output, const glint_image_write_options *write_options)
+                           const destination *d, const glint_image_write_options *write_options)
 {
     if (!o->partial)
         return cli_complain(CLI_EXIT_INTERRUPTED, "interrupted: nothing written");
     glint_error err = {0};
-    glint_status st = glint_image_write_ex(image, output, write_options, &err);
+    glint_status st = write_image(d, image, write_options, &err);
     if (st)
         return cli_complain(exit_code_of(st), "interrupted, and the finished tiles were not written: %s", err.message);
     return cli_complain(CLI_EXIT_INTERRUPTED, "interrupted: %d of %d tiles finished, written to %s (the rest black)",
-                        stats->tiles_done, stats->tiles_total, output);
+                        stats->tiles_done, stats->tiles_total, d->shown);
 }
 
 static int run(const cli_options *o)
 {
+    /* Image bytes on a terminal are a mistake, found before the work. */
+    if (o->output && strcmp(o->output, "-") == 0 && isatty(STDOUT_FILENO))
+        return cli_complain(CLI_EXIT_USAGE, "will not write a%s %s image to a terminal; redirect stdout or give -o FILE",
+                            o->format && strchr("AEIOU", o->format->name[0]) ? "n" : "",
+                            o->format ? o->format->name : "PNG");
     glint_error err = {0};
     int code = CLI_EXIT_INTERNAL;
     glint_scene *scene = o->scene ? load_scene(o->scene, "nothing rendered", &code) : glint_scene_seed_room(&err);
     if (!scene)
         return o->scene ? code : cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
-    const char *output = o->output ? o->output : glint_scene_get_output(scene) ? glint_scene_get_output(scene)
-                                                                                 : "glint.png";
-    glint_status st = glint_image_check_path(output, &err);
-    if (st) {
-        glint_scene_free(scene);
-        return cli_complain(st == GLINT_ERR_INVALID ? CLI_EXIT_USAGE : exit_code_of(st), "%s", err.message);
-    }
-    /* A pixel type asked for and not given would be a surprise found after
-     * the render. */
-    if (o->exr_pixel >= 0 && strcmp(glint_image_format_for_path(output)->name, "OpenEXR") != 0) {
-        code = cli_complain(CLI_EXIT_USAGE, "--exr-pixel is for .exr output, not '%s'", output);
-        glint_scene_free(scene); /* last: output may point into it */
+    destination d;
+    code = choose_destination(o, scene, &d);
+    if (code >= 0) {
+        glint_scene_free(scene); /* last: the path may point into it */
         return code;
     }
+    glint_status st = GLINT_OK;
     glint_image_write_options write_options = {.exr_pixel = o->exr_pixel >= 0 ? o->exr_pixel : GLINT_EXR_HALF};
     for (int i = 0; i < o->swaps && !st; i++)
         st = glint_scene_replace_image(scene, o->swap_name[i], o->swap_path[i], &err);
@@ -206,13 +301,13 @@ static int run(const cli_options *o)
     if (ro.progress && st == GLINT_ERR_CANCELLED)
         fputs("\r\033[K", stderr); /* the progress line stopped short */
     if (st == GLINT_ERR_CANCELLED) {
-        code = interrupted_run(o, &image, &stats, output, &write_options);
+        code = interrupted_run(o, &image, &stats, &d, &write_options);
         glint_image_free(&image);
         glint_scene_free(scene);
         return code;
     }
     if (!st)
-        st = glint_image_write_ex(&image, output, &write_options, &err);
+        st = write_image(&d, &image, &write_options, &err);
     glint_image_free(&image);
     if (st) {
         glint_scene_free(scene);
@@ -229,7 +324,7 @@ static int run(const cli_options *o)
         fprintf(stderr, "glint: %dx%d, %d spp, %ld thread%s: %.3f s, %llu samples, %llu rays, %.1f Mrays/s -> %s\n",
                 settings.width, settings.height, settings.samples_per_pixel, threads, threads == 1 ? "" : "s", stats.seconds,
                 (unsigned long long)stats.samples, (unsigned long long)stats.rays,
-                stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, output);
+                stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, d.shown);
     }
     glint_scene_free(scene); /* last: output may point into it */
     return CLI_EXIT_OK;

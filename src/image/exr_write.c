@@ -4,12 +4,18 @@
  * scanline blocks of 16 rows compressed with ZIP (deflate: lossless, and
  * Blender's default) on every processor (exr_encode.c). The header holds only the attributes every OpenEXR
  * file must have; without a chromaticities attribute, readers take the
- * primaries to be Rec. 709's, which are linear sRGB's, glint's own. */
-#include <errno.h>
+ * primaries to be Rec. 709's, which are linear sRGB's, glint's own.
+ *
+ * OpenEXR goes back to fill in the table of block offsets after the
+ * blocks, which a pipe cannot do, so the file is made in memory and then
+ * written in one pass, as PNG and PPM are: the same code for a file and
+ * for standard output (glint_image_write_fd). */
 #include <stdint.h>
 #include <stdio.h>
-#include <unistd.h>
+#include <stdlib.h>
+#include <string.h>
 #include <OpenEXR/openexr.h>
+#include "core/array.h"
 #include "core/error.h"
 #include "image/exr_encode.h"
 #include "image/image_format.h"
@@ -23,10 +29,11 @@
  * for files of rendered half floats a tenth smaller. */
 #define ZIP_LEVEL 4
 
-/* Where OpenEXR's bytes go, and what stopped them. */
+/* The file as OpenEXR makes it, and what stopped it. */
 typedef struct exr_sink {
-    int fd;
-    int errnum;        /* errno of the write that failed, else 0 */
+    unsigned char *bytes;
+    size_t size, cap;  /* bytes made (the furthest end written), room */
+    bool no_memory;    /* the file outgrew the memory */
     char message[256]; /* OpenEXR's first error message, else empty */
 } exr_sink;
 
@@ -36,19 +43,16 @@ static int64_t sink_write(exr_const_context_t ctxt, void *user, const void *buff
                           exr_stream_error_func_ptr_t error_cb)
 {
     exr_sink *sink = user;
-    const unsigned char *bytes = buffer;
-    for (uint64_t left = size; left > 0;) {
-        ssize_t n = pwrite(sink->fd, bytes, left, (off_t)offset);
-        if (n < 0 && errno == EINTR)
-            continue;
-        if (n <= 0) {
-            sink->errnum = n < 0 ? errno : EIO;
-            return -1;
-        }
-        bytes += n;
-        offset += (uint64_t)n;
-        left -= (uint64_t)n;
+    if (offset > SIZE_MAX - size || !array_reserve((void **)&sink->bytes, &sink->cap, (size_t)(offset + size), 1)) {
+        sink->no_memory = true;
+        return -1;
     }
+    /* Nothing skips ahead, but a gap would be zeros, never old memory. */
+    if (offset > sink->size)
+        memset(sink->bytes + sink->size, 0, (size_t)offset - sink->size);
+    memcpy(sink->bytes + offset, buffer, (size_t)size);
+    if (offset + size > sink->size)
+        sink->size = (size_t)(offset + size);
     return (int64_t)size;
 }
 
@@ -79,9 +83,7 @@ static exr_result_t define_header(exr_context_t ctxt, const glint_image *image, 
 
 static glint_status failure(const exr_sink *sink, exr_result_t rv, const char *path, glint_error *err)
 {
-    if (sink->errnum != 0)
-        return image_write_io_error(path, sink->errnum, err);
-    if (rv == EXR_ERR_OUT_OF_MEMORY)
+    if (sink->no_memory || rv == EXR_ERR_OUT_OF_MEMORY)
         return image_write_no_memory(path, err);
     return error_set(err, GLINT_ERR_IO, "cannot write '%s': OpenEXR: %s", path,
                      sink->message[0] ? sink->message : exr_get_default_error_message(rv));
@@ -93,7 +95,7 @@ static glint_status write_exr(int fd, const glint_image *image, const glint_imag
     if (image->width > EXR_MAX_WIDTH)
         return error_set(err, GLINT_ERR_INVALID, "cannot write '%s': an OpenEXR image is at most %d pixels wide, got %d",
                          path, EXR_MAX_WIDTH, image->width);
-    exr_sink sink = {.fd = fd};
+    exr_sink sink = {0};
     exr_context_initializer_t init = EXR_DEFAULT_CONTEXT_INITIALIZER;
     init.user_data = &sink;
     init.write_fn = sink_write;
@@ -112,7 +114,10 @@ static glint_status write_exr(int fd, const glint_image *image, const glint_imag
     exr_result_t finished = ctxt ? exr_finish(&ctxt) : EXR_ERR_SUCCESS;
     if (rv == EXR_ERR_SUCCESS)
         rv = finished;
-    return rv == EXR_ERR_SUCCESS ? GLINT_OK : failure(&sink, rv, path, err);
+    glint_status st = rv == EXR_ERR_SUCCESS ? image_write_bytes(fd, sink.bytes, sink.size, path, err)
+                                            : failure(&sink, rv, path, err);
+    free(sink.bytes);
+    return st;
 }
 
 static const char *const exr_extensions[] = {".exr", NULL};

@@ -10,10 +10,11 @@
 #include <stddef.h>
 #include "glint.h"
 
-/* Writes the whole image (positive size, pixels present) into fd, a new
- * empty file open for writing, as options (never NULL, already checked)
- * ask, and nothing else: the caller syncs, closes and renames it, or
- * removes it after a failure. path is the name the file will have, for
+/* Writes the whole image (positive size, pixels present) into fd, open for
+ * writing, as options (never NULL, already checked) ask, and nothing else,
+ * in order from fd's position, never seeking, so that fd may be a pipe:
+ * for a file, the caller syncs, closes and renames it, or removes it after
+ * a failure. path is the name the file will have (or "<stdout>"), for
  * messages. */
 typedef glint_status (*image_write_fn)(int fd, const glint_image *image, const glint_image_write_options *options,
                                        const char *path, glint_error *err);
@@ -26,6 +27,10 @@ typedef struct image_writer {
 /* The writer for path, by the extension of its last component, in any
  * case; NULL when no format has it. */
 const image_writer *image_writer_for_path(const char *path);
+
+/* The writer of format, one of the registry's (glint_image_format_at);
+ * NULL for any other pointer. */
+const image_writer *image_writer_for_format(const glint_image_format *format);
 
 /* Fills buf with every format's extensions as a message lists them
  * (".png, .ppm or .exr"), cut short when buf is too small; returns buf. */

@@ -29,6 +29,14 @@ const image_writer *image_writer_for_path(const char *path)
     return NULL;
 }
 
+const image_writer *image_writer_for_format(const glint_image_format *format)
+{
+    for (int i = 0; i < WRITER_COUNT; i++)
+        if (&writers[i]->format == format)
+            return writers[i];
+    return NULL;
+}
+
 const char *image_writer_extensions(char *buf, size_t size)
 {
     int count = 0, index = 0;
@@ -51,4 +59,16 @@ const glint_image_format *glint_image_format_for_path(const char *path)
 {
     const image_writer *writer = path ? image_writer_for_path(path) : NULL;
     return writer ? &writer->format : NULL;
+}
+
+const glint_image_format *glint_image_format_named(const char *name)
+{
+    for (int i = 0; name && i < WRITER_COUNT; i++) {
+        if (strcasecmp(name, writers[i]->format.name) == 0)
+            return &writers[i]->format;
+        for (const char *const *ext = writers[i]->format.extensions; *ext; ext++)
+            if (strcasecmp(name, *ext + 1) == 0)
+                return &writers[i]->format;
+    }
+    return NULL;
 }

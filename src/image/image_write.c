@@ -3,7 +3,8 @@
  * writer fills a new temporary file beside the target, which is synced and
  * renamed over it, so a failure at any step leaves neither a partial image
  * nor a damaged earlier one, and is reported with the errno text of the
- * step that failed. */
+ * step that failed. Writing to a descriptor already open (standard output)
+ * goes through the same writers and checks, straight into it. */
 #include <errno.h>
 #include <fcntl.h>
 #include <stdatomic.h>
@@ -107,25 +108,49 @@ glint_status glint_image_write(const glint_image *image, const char *path, glint
     return glint_image_write_ex(image, path, NULL, err);
 }
 
+/* The checks every write makes before its writer runs, with messages that
+ * name the destination: an image to write and a known pixel type. */
+static glint_status check_write(const glint_image *image, const glint_image_write_options *options, const char *name,
+                                glint_error *err)
+{
+    if (!image || !image->pixels || image->width <= 0 || image->height <= 0)
+        return error_set(err, GLINT_ERR_INVALID, "cannot write '%s': the image is empty", name);
+    if ((size_t)image->width > SIZE_MAX / 3 / (size_t)image->height)
+        return image_write_no_memory(name, err);
+    if (options->exr_pixel != GLINT_EXR_HALF && options->exr_pixel != GLINT_EXR_FLOAT)
+        return error_set(err, GLINT_ERR_INVALID, "cannot write '%s': unknown OpenEXR pixel type %d", name,
+                         (int)options->exr_pixel);
+    return GLINT_OK;
+}
+
+static const glint_image_write_options default_options = {.exr_pixel = GLINT_EXR_HALF};
+
 glint_status glint_image_write_ex(const glint_image *image, const char *path,
                                   const glint_image_write_options *options, glint_error *err)
 {
-    static const glint_image_write_options defaults = {.exr_pixel = GLINT_EXR_HALF};
     if (!path)
         return error_set(err, GLINT_ERR_INVALID, "cannot write an image without a path");
     const image_writer *writer = image_writer_for_path(path);
     if (!writer)
         return unknown_format(path, err);
-    if (!image || !image->pixels || image->width <= 0 || image->height <= 0)
-        return error_set(err, GLINT_ERR_INVALID, "cannot write '%s': the image is empty", path);
-    if ((size_t)image->width > SIZE_MAX / 3 / (size_t)image->height)
-        return image_write_no_memory(path, err);
     if (!options)
-        options = &defaults;
-    if (options->exr_pixel != GLINT_EXR_HALF && options->exr_pixel != GLINT_EXR_FLOAT)
-        return error_set(err, GLINT_ERR_INVALID, "cannot write '%s': unknown OpenEXR pixel type %d", path,
-                         (int)options->exr_pixel);
-    return write_replacing(writer, image, options, path, err);
+        options = &default_options;
+    glint_status st = check_write(image, options, path, err);
+    return st ? st : write_replacing(writer, image, options, path, err);
+}
+
+glint_status glint_image_write_fd(const glint_image *image, int fd, const glint_image_format *format,
+                                  const glint_image_write_options *options, const char *name, glint_error *err)
+{
+    if (!name)
+        name = "<output>";
+    const image_writer *writer = format ? image_writer_for_format(format) : NULL;
+    if (!writer)
+        return error_set(err, GLINT_ERR_INVALID, "cannot write '%s': no such image format", name);
+    if (!options)
+        options = &default_options;
+    glint_status st = check_write(image, options, name, err);
+    return st ? st : writer->write(fd, image, options, name, err);
 }
 
 glint_status glint_image_check_path(const char *path, glint_error *err)

@@ -99,8 +99,9 @@ static void read_root(loader *l, const ynode *root)
         read_objects(l, n, &top);
 }
 
-/* Parses bytes named `name` and walks them; the tree stays alive in l. */
-static void read_bytes(loader *l, const char *data, size_t size, const char *name)
+/* Parses bytes named `name` and walks them; the tree stays alive in l.
+ * root: whether they are the scene's own, not an include's. */
+static void read_bytes(loader *l, const char *data, size_t size, const char *name, bool root)
 {
     if (!array_reserve((void **)&l->docs, &l->doc_cap, (size_t)l->doc_count + 1, sizeof *l->docs)) {
         diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
@@ -115,7 +116,7 @@ static void read_bytes(loader *l, const char *data, size_t size, const char *nam
     }
     l->doc_count++;
     bool empty = !doc->root || strcmp(ynode_describe(doc->root), "nothing") == 0;
-    if (empty && l->depth <= 1) {
+    if (empty && root) {
         /* Rendering black for an empty scene hides a wrong path or an
          * editor's lost save. An empty include is fine: a placeholder. */
         char msg[600];
@@ -125,6 +126,35 @@ static void read_bytes(loader *l, const char *data, size_t size, const char *nam
     }
     if (!empty)
         read_root(l, doc->root);
+}
+
+/* Reads all of the stream f, named `name`, to its end, at most
+ * MAX_SCENE_FILE_BYTES; NULL with a message in err on failure. */
+static char *read_all(FILE *f, const char *name, size_t *size, glint_error *err)
+{
+    char *data = NULL;
+    size_t cap = 0, n = 0, got;
+    do {
+        if (!array_reserve((void **)&data, &cap, n + 65536, 1)) {
+            free(data);
+            error_set(err, GLINT_ERR_NOMEM, "out of memory reading '%s'", name);
+            return NULL;
+        }
+        /* One byte past the limit tells a stream at the limit from a larger one. */
+        size_t left = (size_t)MAX_SCENE_FILE_BYTES + 1 - n;
+        n += got = fread(data + n, 1, cap - n < left ? cap - n : left, f);
+    } while (got > 0 && n <= (size_t)MAX_SCENE_FILE_BYTES);
+    if (ferror(f))
+        error_set(err, GLINT_ERR_IO, "cannot read scene '%s': %s", name, strerror(errno));
+    else if (n > (size_t)MAX_SCENE_FILE_BYTES)
+        error_set(err, GLINT_ERR_INVALID, "scene '%s' is too large: more than %ld bytes (the limit)", name,
+                  MAX_SCENE_FILE_BYTES);
+    else {
+        *size = n;
+        return data;
+    }
+    free(data);
+    return NULL;
 }
 
 /* Reads a whole file (bounded); NULL with a message in err on failure. */
@@ -142,18 +172,14 @@ static char *slurp(const char *path, size_t *size, glint_error *err)
         return NULL;
     }
     char *data = NULL;
+    /* The size first, so that a file too large is refused unread. */
     if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode))
         error_set(err, GLINT_ERR_IO, "cannot read scene '%s': not a regular file", path);
     else if (st.st_size > MAX_SCENE_FILE_BYTES)
         error_set(err, GLINT_ERR_INVALID, "scene '%s' is too large: %lld bytes (limit %ld)", path,
                   (long long)st.st_size, MAX_SCENE_FILE_BYTES);
-    else if (!(data = malloc((size_t)st.st_size + 1)))
-        error_set(err, GLINT_ERR_NOMEM, "out of memory reading '%s'", path);
-    else if ((*size = fread(data, 1, (size_t)st.st_size, f)) != (size_t)st.st_size || ferror(f)) {
-        error_set(err, GLINT_ERR_IO, "cannot read scene '%s': read error", path);
-        free(data);
-        data = NULL;
-    }
+    else
+        data = read_all(f, path, size, err);
     fclose(f);
     return data;
 }
@@ -212,7 +238,7 @@ static void read_file(loader *l, const char *path, const ynode *from)
         return;
     }
     l->chain[l->depth++] = canonical;
-    read_bytes(l, data, size, path);
+    read_bytes(l, data, size, path, from == NULL);
     l->depth--;
     free(data);
 }
@@ -282,7 +308,23 @@ static void body_file(loader *l, const void *data, size_t size, const char *name
 
 static void body_memory(loader *l, const void *data, size_t size, const char *name)
 {
-    read_bytes(l, data, size, name);
+    read_bytes(l, data, size, name, true);
+}
+
+/* The stream is read whole first: the tree's nodes point into the bytes,
+ * and the limit is a file's. */
+static void body_stream(loader *l, const void *stream, size_t unused, const char *name)
+{
+    glint_error err;
+    size_t size = 0;
+    char *data = read_all((FILE *)stream, name, &size, &err);
+    if (!data) {
+        diag_raw(&l->d, err.status, err.message);
+        return;
+    }
+    l->bytes = (long)size;
+    read_bytes(l, data, size, name, true);
+    free(data);
 }
 
 static glint_scene *yaml_load_file(const char *path, const glint_load_options *options, glint_error *err)
@@ -296,9 +338,16 @@ static glint_scene *yaml_load_memory(const char *data, size_t size, const char *
     return load(options, err, name ? name : "<memory>", body_memory, data, size);
 }
 
+static glint_scene *yaml_load_stream(FILE *in, const char *name, const glint_load_options *options,
+                                     glint_error *err)
+{
+    return load(options, err, name ? name : "<stream>", body_stream, in, 0);
+}
+
 static const char *const YAML_EXTENSIONS[] = {".yaml", ".yml", NULL};
 
 const scene_reader yaml_scene_reader = {
     .name = "YAML", .extensions = YAML_EXTENSIONS, .load_file = yaml_load_file, .load_memory = yaml_load_memory,
+    .load_stream = yaml_load_stream,
 };
 

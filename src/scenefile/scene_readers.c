@@ -26,3 +26,9 @@ glint_scene *glint_scene_load_memory(const char *data, size_t size, const char *
 {
     return scene_reader_for(name)->load_memory(data, size, name, options, err);
 }
+
+glint_scene *glint_scene_load_stream(FILE *in, const char *name, const glint_load_options *options,
+                                     glint_error *err)
+{
+    return scene_reader_for(name)->load_stream(in, name, options, err);
+}

@@ -3,15 +3,10 @@
 # exit code 4, writes nothing and leaves the file already at the output path
 # as it was, whether it comes while a model loads, while its BVH builds or
 # while the image renders; with --partial it writes the finished tiles as a
-# valid PNG of the whole size, and still exits 4.
+# valid PNG of the whole size, and still exits 4; the same to standard
+# output.
 # Usage: interrupt.sh PATH/TO/glint
-set -u
-GLINT=$1
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-cd "$work" || exit 1
-passed=0
-failed=0
+source "$(dirname "$0")/lib/harness.sh"
 fail() {
     echo "FAIL: $*"
     failed=$((failed + 1))
@@ -102,5 +97,30 @@ head=$(od -A n -t x1 -N 24 out.png | tr -d ' \n')
 [ "$(ls -A | sort | tr '\n' ' ')" = "check.ppm err.txt out.png " ] || fail "--partial: left $(ls -A)"
 [ "$failed" -eq "$before" ] && passed=$((passed + 1))
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+# To standard output (-o -) the same: nothing without --partial, and with
+# it the finished tiles as a whole image (a 2000 x 2000 PPM: its header and
+# 12,000,000 bytes), exit 4 either way.
+for partial in "" --partial; do
+    before=$failed
+    "$GLINT" -w 2000 -h 2000 --spp 64 --threads 2 -o - --format ppm $partial >out.ppm 2>err.txt &
+    pid=$!
+    sleep 1.5
+    kill -INT "$pid"
+    wait "$pid"
+    status=$?
+    err=$(cat err.txt)
+    [ "$status" -eq 4 ] || fail "-o - $partial: exit $status, expected 4"
+    if [ -z "$partial" ]; then
+        [ "$err" = "glint: interrupted: nothing written" ] || fail "-o -: stderr '$err'"
+        [ ! -s out.ppm ] || fail "-o -: $(stat -c %s out.ppm) bytes written"
+    else
+        [[ "$err" =~ ^glint:\ interrupted:\ [0-9]+\ of\ 3969\ tiles\ finished,\ written\ to\ \<stdout\>\ \(the\ rest\ black\)$ ]] ||
+            fail "-o - --partial: stderr '$err'"
+        head -c 17 out.ppm | cmp -s - <(printf 'P6\n2000 2000\n255\n') && [ "$(stat -c %s out.ppm)" -eq 12000017 ] ||
+            fail "-o - --partial: not a whole 2000 x 2000 PPM"
+    fi
+    [ "$failed" -eq "$before" ] && passed=$((passed + 1))
+done
+rm -f out.ppm
+
+finish

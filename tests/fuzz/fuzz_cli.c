@@ -4,8 +4,10 @@
  * cli_parse_args, whose promises are checked: it returns -1 (go on), 0
  * (only for --help, --version or a last -h) or 2 (usage), and when it goes on, every
  * number is -1 or within its flag's range (the ranges glint --help gives),
- * the sampler and the OpenEXR pixel type known ones, and every string one
- * the command line holds.
+ * the sampler, the OpenEXR pixel type and the image format known ones,
+ * every string one the command line holds, and the scene files those
+ * arguments that are not flags nor their values, in order, "-" at most
+ * once, several only with --check.
  * A broken promise aborts, which libFuzzer counts as a crash. The help,
  * the version and the complaints are printed as glint prints them: run it
  * with -close_fd_mask=3 (tests/fuzz/README.md). */
@@ -65,6 +67,35 @@ static bool has_argument(const char *s, int argc, char **argv)
     return false;
 }
 
+/* Whether the scene files are arguments as given, in their order, none a
+ * flag ("-" is stdin, at most once), several only with --check, and scene
+ * the first. */
+static bool scenes_ok(const cli_options *o, int argc, char **argv)
+{
+    if (o->scene_count < 0 || o->scene_count > argc - 1 || (o->scene_count > 1 && !o->check) ||
+        o->scene != (o->scene_count > 0 ? o->scenes[0] : NULL))
+        return false;
+    int stdin_count = 0, at = 0;
+    for (int k = 0; k < o->scene_count; k++) {
+        const char *f = o->scenes[k];
+        while (++at < argc && argv[at] != f)
+            ;
+        if (at >= argc || (f[0] == '-' && f[1] != '\0'))
+            return false;
+        stdin_count += strcmp(f, "-") == 0;
+    }
+    return stdin_count <= 1;
+}
+
+/* Whether format is NULL or one of the library's formats. */
+static bool known_format(const glint_image_format *format)
+{
+    for (int i = 0; format && glint_image_format_at(i); i++)
+        if (glint_image_format_at(i) == format)
+            return true;
+    return format == NULL;
+}
+
 static void check_options(const cli_options *o, int argc, char **argv)
 {
     if (!unset_or_in(o->width, 1, 65536) || !unset_or_in(o->height, 1, 65536) ||
@@ -76,7 +107,7 @@ static void check_options(const cli_options *o, int argc, char **argv)
         abort();
     if (o->exr_pixel != -1 && o->exr_pixel != GLINT_EXR_HALF && o->exr_pixel != GLINT_EXR_FLOAT)
         abort();
-    if (o->scene && (!is_argument(o->scene, argc, argv) || (o->scene[0] == '-' && o->scene[1] != '\0')))
+    if (!scenes_ok(o, argc, argv) || !known_format(o->format))
         abort();
     if (o->check && !o->scene)
         abort();
@@ -109,16 +140,20 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         argv[argc++] = text + at;
     argv[argc] = NULL;
 
+    /* The parser moves the scene files to the front of its argv: the
+     * promises are checked against the arguments as given. */
+    char *given[MAX_ARGS + 2];
+    memcpy(given, argv, sizeof argv);
     cli_options o;
     /* Garbage first, so that a field the parser forgets to set shows. */
     memset(&o, 0xa5, sizeof o);
     int code = cli_parse_args(argc, argv, &o);
     if (code == -1)
-        check_options(&o, argc, argv);
+        check_options(&o, argc, given);
     else if (code == CLI_EXIT_OK) {
         /* -h alone, the last argument, asks for the help too. */
-        bool help_last = argc > 1 && strcmp(argv[argc - 1], "-h") == 0;
-        if (!has_argument("--help", argc, argv) && !has_argument("--version", argc, argv) && !help_last)
+        bool help_last = argc > 1 && strcmp(given[argc - 1], "-h") == 0;
+        if (!has_argument("--help", argc, given) && !has_argument("--version", argc, given) && !help_last)
             abort();
     } else if (code != CLI_EXIT_USAGE)
         abort();

@@ -3,12 +3,17 @@
  * sanitizers catch any crash, leak, overflow or hang in libyaml's use, the
  * tree builder, the alias/merge-key walker, includes and every section's
  * reader; a refused scene without an error message also counts as a crash.
+ * The same bytes read as a stream (glint_scene_load_stream, `glint -`) must
+ * load or be refused alike, with the same first message.
  * Problems are only counted (NULL report): the library must stay silent.
  * Relative includes and texture files resolve against the working
  * directory, since the input is named "fuzz.yaml" (tests/fuzz/README.md). */
+#define _GNU_SOURCE /* fmemopen */
 #include <stddef.h>
 #include <stdint.h>
+#include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include "glint.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
@@ -16,12 +21,24 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     glint_load_options options = {.report = NULL, .report_user = NULL, .max_errors = 0};
-    glint_error err;
-    err.message[0] = '\0';
+    glint_error err, stream_err;
+    err.message[0] = stream_err.message[0] = '\0';
     glint_scene *scene = glint_scene_load_memory((const char *)data, size, "fuzz.yaml", &options, &err);
     /* The API's promise: a refused scene always comes with its first problem. */
     if (!scene && err.message[0] == '\0')
         abort();
+    /* fmemopen takes no empty buffer on every libc: an empty input is a
+     * one-byte buffer of which nothing is read. */
+    FILE *in = fmemopen(size ? (void *)data : (void *)"", size ? size : 1, "r");
+    if (in && size == 0)
+        fseek(in, 1, SEEK_SET);
+    if (in) {
+        glint_scene *streamed = glint_scene_load_stream(in, "fuzz.yaml", &options, &stream_err);
+        if (!streamed != !scene || (!scene && strcmp(err.message, stream_err.message) != 0))
+            abort();
+        glint_scene_free(streamed);
+        fclose(in);
+    }
     glint_scene_free(scene);
     return 0;
 }

@@ -9,6 +9,7 @@
 
 #include <dirent.h>
 #include <errno.h>
+#include <fcntl.h>
 #include <math.h>
 #include <signal.h>
 #include <stdio.h>
@@ -661,6 +662,72 @@ static void test_format_lookup(void **state)
     assert_int_equal(count, 3);
 }
 
+/* A format is also found by a word: its name or an extension without the
+ * dot, in any case (glint --format). */
+static void test_format_named(void **state)
+{
+    assert_string_equal(glint_image_format_named("png")->name, "PNG");
+    assert_string_equal(glint_image_format_named("PPM")->name, "PPM");
+    assert_string_equal(glint_image_format_named("exr")->name, "OpenEXR");
+    assert_string_equal(glint_image_format_named("openexr")->name, "OpenEXR");
+    assert_null(glint_image_format_named(".png"));
+    assert_null(glint_image_format_named("gif"));
+    assert_null(glint_image_format_named(""));
+    assert_null(glint_image_format_named(NULL));
+}
+
+/* Written to a pipe, which cannot seek, every format gives the bytes its
+ * file has (OpenEXR's table of offsets included), and leaves the pipe open. */
+static void test_write_fd_is_the_file(void **state)
+{
+    for (int i = 0; glint_image_format_at(i); i++) {
+        const glint_image_format *f = glint_image_format_at(i);
+        char name[32], path[PATH_SIZE];
+        snprintf(name, sizeof name, "fd%s", f->extensions[0]);
+        glint_image img = sample_image();
+        glint_error err = {0};
+        int fds[2];
+        assert_int_equal(pipe(fds), 0);
+        assert_int_equal(glint_image_write_fd(&img, fds[1], f, NULL, "<pipe>", &err), GLINT_OK);
+        assert_int_equal(fcntl(fds[1], F_GETFD), 0);
+        close(fds[1]);
+        unsigned char piped[4096];
+        size_t got = 0;
+        for (ssize_t n; (n = read(fds[0], piped + got, sizeof piped - got)) > 0;)
+            got += (size_t)n;
+        close(fds[0]);
+        size_t size;
+        unsigned char *file = write_and_read(&img, name, path, &size);
+        assert_int_equal(got, size);
+        assert_memory_equal(piped, file, size);
+        free(file);
+    }
+}
+
+/* What a descriptor cannot take is said with the name given for it. */
+static void test_write_fd_errors(void **state)
+{
+    glint_image img = sample_image();
+    glint_error err = {0};
+    const glint_image_format *png = glint_image_format_named("png");
+    expect_error(glint_image_write_fd(&img, -1, png, NULL, "<stdout>", &err), &err, GLINT_ERR_IO,
+                 "cannot write '<stdout>': Bad file descriptor");
+    expect_error(glint_image_write_fd(&img, -1, png, NULL, NULL, &err), &err, GLINT_ERR_IO,
+                 "cannot write '<output>': Bad file descriptor");
+    glint_image_format copy = *png;
+    expect_error(glint_image_write_fd(&img, 1, &copy, NULL, "<stdout>", &err), &err, GLINT_ERR_INVALID,
+                 "cannot write '<stdout>': no such image format");
+    expect_error(glint_image_write_fd(&img, 1, NULL, NULL, "<stdout>", &err), &err, GLINT_ERR_INVALID,
+                 "cannot write '<stdout>': no such image format");
+    glint_image_write_options bad = {.exr_pixel = (glint_exr_pixel)7};
+    expect_error(glint_image_write_fd(&img, 1, png, &bad, "<stdout>", &err), &err, GLINT_ERR_INVALID,
+                 "cannot write '<stdout>': unknown OpenEXR pixel type 7");
+    glint_image empty = {0, 0, NULL};
+    expect_error(glint_image_write_fd(&empty, 1, png, NULL, "<stdout>", &err), &err, GLINT_ERR_INVALID,
+                 "cannot write '<stdout>': the image is empty");
+    glint_image_free(&img);
+}
+
 static void test_write_empty_image(void **state)
 {
     glint_error err = {0};
@@ -1174,6 +1241,9 @@ int main(void)
         cmocka_unit_test(test_check_path_parent_is_file),
         cmocka_unit_test(test_unknown_extension),
         cmocka_unit_test(test_format_lookup),
+        cmocka_unit_test(test_format_named),
+        cmocka_unit_test(test_write_fd_is_the_file),
+        cmocka_unit_test(test_write_fd_errors),
         cmocka_unit_test(test_write_empty_image),
         cmocka_unit_test(test_write_png_too_large),
         cmocka_unit_test(test_png_encode_any_thread_count),

@@ -24,6 +24,8 @@ static glint_scene *new_scene(int w, int h, glint_vec3 eye, glint_vec3 at, glint
     glint_settings st = glint_settings_default();
     st.width = w;
     st.height = h;
+    /* One sample, at each pixel's centre, where the analytic values hold. */
+    st.samples_per_pixel = 1;
     assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
     glint_camera cam = {eye, at, up, fov};
     assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);

@@ -396,6 +396,40 @@ static void test_empty_file_holds_no_scene(void **state)
     glint_scene_free(s);
 }
 
+/* A scene read from a stream (glint -) is read whole and loads as from a
+ * file: problems at their line and column under the name given, an empty
+ * stream refused, an empty include fine, and the stream left open. */
+static void test_load_stream(void **state)
+{
+    static char bad[] = "settings: {width: 8}\nobjects:\n  - {type: sphere, radius: -1}\n";
+    FILE *in = fmemopen(bad, strlen(bad), "r");
+    assert_non_null(in);
+    report_log log = {0};
+    glint_load_options o = {.report = log_report, .report_user = &log};
+    glint_error err = {0};
+    assert_null(glint_scene_load_stream(in, "<stdin>", &o, &err));
+    assert_string_equal(err.message, "<stdin>:3:28: 'radius' must be positive, got -1");
+    assert_int_equal(log.count, 1);
+    assert_int_equal(fclose(in), 0);
+
+    static char nothing[] = "# nothing\n";
+    in = fmemopen(nothing, strlen(nothing), "r");
+    assert_null(glint_scene_load_stream(in, NULL, NULL, &err));
+    assert_string_equal(err.message, "<stream>: the file holds no scene");
+    assert_int_equal(err.status, GLINT_ERR_INVALID);
+    fclose(in);
+
+    write_tmp("stream/nothing.yaml", "# nothing yet\n");
+    char text[2 * PATH_SIZE];
+    with_tmp("include: @TMP@/stream/nothing.yaml\nsettings: {width: 7}\n", text, sizeof text);
+    in = fmemopen(text, strlen(text), "r");
+    glint_scene *s = glint_scene_load_stream(in, "<stdin>", NULL, &err);
+    assert_non_null(s);
+    assert_int_equal(glint_scene_get_settings(s).width, 7);
+    glint_scene_free(s);
+    fclose(in);
+}
+
 /* A ring facing the camera: the hole and the outside show the background,
  * the ring its colour; the file's keys reach the shape, the defaults fill
  * the rest. */
@@ -1112,8 +1146,8 @@ static void test_render_background_and_fog(void **state)
     glint_image_free(&img);
     glint_scene_free(s);
 
-    /* The single pixel sees the wall 5 units away: halfway from 0 to 10. */
-    s = load_good("settings: {width: 1, height: 1}\n"
+    /* The single pixel's one sample sees the wall 5 units away: halfway from 0 to 10. */
+    s = load_good("settings: {width: 1, height: 1, samples: 1}\n"
                   "fog: {type: linear, color: {linear: [0, 0, 0.5]}, start: 0, end: 10}\n"
                   "materials:\n"
                   "  glow: {color: {linear: [1, 1, 1]}, ambient: 1, diffuse: 0, specular: 0}\n"
@@ -2184,6 +2218,7 @@ int main(void)
         cmocka_unit_test(test_settings_other_values),
         cmocka_unit_test(test_defaults_of_an_empty_scene),
         cmocka_unit_test(test_empty_file_holds_no_scene),
+        cmocka_unit_test(test_load_stream),
         cmocka_unit_test(test_disk_ring),
         cmocka_unit_test(test_camera_every_key),
         cmocka_unit_test(test_fog_none),
