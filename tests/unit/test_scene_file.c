@@ -1503,11 +1503,11 @@ static const bad_scene BAD[] = {
     {"fov_0",
      "camera:\n"
      "  fov: 0\n",
-     "bad.yaml:2:8: 'fov' must be between 0 and 180 degrees, got 0", 1},
+     "bad.yaml:2:8: 'fov' must be more than 0 and less than 180 degrees, got 0", 1},
     {"fov_180",
      "camera:\n"
      "  fov: 180\n",
-     "bad.yaml:2:8: 'fov' must be between 0 and 180 degrees, got 180", 1},
+     "bad.yaml:2:8: 'fov' must be more than 0 and less than 180 degrees, got 180", 1},
     {"camera_looks_at_itself",
      "camera:\n"
      "  position: [1, 2, 3]\n"
@@ -1532,11 +1532,11 @@ static const bad_scene BAD[] = {
     {"spot_angle_0",
      "lights:\n"
      "  - {type: spot, position: [0, 5, 0], direction: [0, -1, 0], angle: 0}\n",
-     "bad.yaml:2:69: 'angle' must be above 0 and at most 90 degrees, got 0", 1},
+     "bad.yaml:2:69: 'angle' must be more than 0 and at most 90 degrees, got 0", 1},
     {"spot_angle_95",
      "lights:\n"
      "  - {type: spot, position: [0, 5, 0], direction: [0, -1, 0], angle: 95}\n",
-     "bad.yaml:2:69: 'angle' must be above 0 and at most 90 degrees, got 95", 1},
+     "bad.yaml:2:69: 'angle' must be more than 0 and at most 90 degrees, got 95", 1},
     {"spot_falloff_above_angle",
      "lights:\n"
      "  - {type: spot, position: [0, 5, 0], direction: [0, -1, 0], angle: 20, falloff: 25}\n",
@@ -1923,7 +1923,7 @@ static void test_every_problem_in_order(void **state)
              0, &log, &err);
     assert_string_equal(log.all, "bad.yaml:2:10: 'width' must be a whole number from 1 to 65536, got '0'\n"
                                  "bad.yaml:3:12: 'sampler' must be regular or jittered, got 'jitterd' (did you mean 'jittered'?)\n"
-                                 "bad.yaml:4:15: 'fov' must be between 0 and 180 degrees, got 0\n"
+                                 "bad.yaml:4:15: 'fov' must be more than 0 and less than 180 degrees, got 0\n"
                                  "bad.yaml:6:19: unknown key 'colour' in material 'm' (did you mean 'color'?)\n"
                                  "bad.yaml:6:16: 'ambient' must be from 0 to 1, got 2\n"
                                  "bad.yaml:8:5: a spot light needs 'position'\n"
