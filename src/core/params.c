@@ -5,9 +5,6 @@
 #include "core/error.h"
 #include "core/params.h"
 
-/* Numbers at least this large read as "no upper limit" in the wording. */
-#define PARAM_UNBOUNDED 1e300
-
 static void *field(void *obj, size_t offset) { return (char *)obj + offset; }
 static const void *cfield(const void *obj, size_t offset) { return (const char *)obj + offset; }
 
@@ -84,7 +81,7 @@ void param_range_text(const param *p, char *buf, size_t size)
     number_text(p->lo, lo, sizeof lo);
     number_text(p->hi, hi, sizeof hi);
     bool open_low = p->bounds != PARAM_CLOSED, open_high = p->bounds == PARAM_OPEN_BOTH;
-    bool no_high = p->hi >= PARAM_UNBOUNDED, no_low = p->lo <= -PARAM_UNBOUNDED;
+    bool no_high = p->hi >= DBL_MAX, no_low = p->lo <= -DBL_MAX;
     if (p->rule_text)
         snprintf(buf, size, "%s", p->rule_text);
     else if (open_low && no_high && p->lo == 0)

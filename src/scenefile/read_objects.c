@@ -125,8 +125,9 @@ static void place_mesh(loader *l, const ynode *n, int override, const glint_tran
     const ynode *file = yr_need(&l->r, n, "file", "mesh");
     const char *path;
     double crease = CREASE_ANGLE.def[0];
-    bool good = read_params(l, n, (param_table){&CREASE_ANGLE, 1}, "mesh", &crease);
-    if (!file || !yr_text(&l->r, file, "file", &path) || !good)
+    /* A bad crease angle leaves the default, with which the file is read. */
+    read_params(l, n, (param_table){&CREASE_ANGLE, 1}, "mesh", &crease);
+    if (!file || !yr_text(&l->r, file, "file", &path))
         return;
     char *full = relative_to(n->file, path);
     if (!full) {
