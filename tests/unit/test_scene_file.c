@@ -401,7 +401,7 @@ static void test_empty_file_holds_no_scene(void **state)
  * stream refused, an empty include fine, and the stream left open. */
 static void test_load_stream(void **state)
 {
-    static char bad[] = "settings: {width: 8}\nobjects:\n  - {type: sphere, radius: -1}\n";
+    static char bad[] = "settings: {width: 8}\nobjects:\n  - {type: sphere, radius: -1, material: {}}\n";
     FILE *in = fmemopen(bad, strlen(bad), "r");
     assert_non_null(in);
     report_log log = {0};
