@@ -5,9 +5,6 @@
 #include "core/error.h"
 #include "core/params.h"
 
-/* Numbers at least this large read as "no upper limit" in the wording. */
-#define PARAM_UNBOUNDED 1e300
-
 static void *field(void *obj, size_t offset) { return (char *)obj + offset; }
 static const void *cfield(const void *obj, size_t offset) { return (const char *)obj + offset; }
 
@@ -76,26 +73,28 @@ static void number_text(double v, char *buf, size_t size)
 
 void param_range_text(const param *p, char *buf, size_t size)
 {
+    /* Each end says whether it is included: "from 1 to 10" and "at least"
+     * or "at most" include it, "more than" and "less than" do not. */
     const char *unit = p->unit ? p->unit : "";
     const char *space = p->unit ? " " : "";
     char lo[40], hi[40];
     number_text(p->lo, lo, sizeof lo);
     number_text(p->hi, hi, sizeof hi);
-    bool unbounded = p->hi >= PARAM_UNBOUNDED;
+    bool open_low = p->bounds != PARAM_CLOSED, open_high = p->bounds == PARAM_OPEN_BOTH;
+    bool no_high = p->hi >= DBL_MAX, no_low = p->lo <= -DBL_MAX;
     if (p->rule_text)
         snprintf(buf, size, "%s", p->rule_text);
-    else if (p->bounds == PARAM_OPEN_BOTH)
-        snprintf(buf, size, "between %s and %s%s%s", lo, hi, space, unit);
-    else if (p->bounds == PARAM_OPEN_LOW && unbounded && p->lo == 0)
+    else if (open_low && no_high && p->lo == 0)
         snprintf(buf, size, "positive");
-    else if (p->bounds == PARAM_OPEN_LOW && unbounded)
-        snprintf(buf, size, "above %s%s%s", lo, space, unit);
-    else if (p->bounds == PARAM_OPEN_LOW)
-        snprintf(buf, size, "above %s and at most %s%s%s", lo, hi, space, unit);
-    else if (p->hi >= DBL_MAX)
-        snprintf(buf, size, "%s or more%s%s", lo, space, unit);
-    else
+    else if (no_high)
+        snprintf(buf, size, "%s %s%s%s", open_low ? "more than" : "at least", lo, space, unit);
+    else if (no_low)
+        snprintf(buf, size, "%s %s%s%s", open_high ? "less than" : "at most", hi, space, unit);
+    else if (!open_low && !open_high)
         snprintf(buf, size, "from %s to %s%s%s", lo, hi, space, unit);
+    else
+        snprintf(buf, size, "%s %s and %s %s%s%s", open_low ? "more than" : "at least", lo,
+                 open_high ? "less than" : "at most", hi, space, unit);
 }
 
 /* Fills err for number v of p, out of its range. */

@@ -81,8 +81,10 @@ glint_status params_check(param_table t, const void *obj, const char *what, glin
 /* Whether number v lies in p's range and keeps its rule. */
 bool param_in_range(const param *p, double v);
 
-/* Writes p's range in words ("from 0 to 1", "positive", "between 0 and 180
- * degrees", or the rule's wording) into buf. */
+/* Writes p's range in words, each end saying whether it is included
+ * ("from 0 to 1", "positive", "at least 0", "more than 0 and less than 180
+ * degrees", "more than 0 and at most 90 degrees"), or the rule's wording,
+ * into buf. */
 void param_range_text(const param *p, char *buf, size_t size);
 
 /* The parameter of the table with that key, or NULL. */

@@ -18,10 +18,13 @@ void diag_raw(diag *d, glint_status status, const char *message)
     d->count++;
 }
 
-/* Reports body at n with the given status. */
+/* Reports body at n with the given status; a note on n (a colour that a
+ * comment hid) says what the problem really is, instead of body. */
 static void report_at(diag *d, const ynode *n, glint_status status, const char *body)
 {
     char line[512];
+    if (n && n->note)
+        body = n->note;
     if (n)
         snprintf(line, sizeof line, "%s:%d:%d: %.400s", n->file, n->line, n->column, body);
     else
@@ -76,10 +79,49 @@ static int distance(const char *a, const char *b, int cap)
     return d[la][lb] > cap ? cap + 1 : d[la][lb];
 }
 
+/* word lower-cased, without '_', '-' or spaces, into buf (64 bytes and the
+ * NUL); false when it does not fit. */
+static bool fold(const char *word, char buf[65])
+{
+    size_t n = 0;
+    for (; *word; word++) {
+        if (*word == '_' || *word == '-' || *word == ' ')
+            continue;
+        if (n == 64)
+            return false;
+        buf[n++] = (char)(*word >= 'A' && *word <= 'Z' ? *word - 'A' + 'a' : *word);
+    }
+    buf[n] = '\0';
+    return n > 0;
+}
+
+/* The one candidate that starts with the first `len` bytes of word, or
+ * NULL when none or several do. */
+static const char *only_start(const char *word, size_t len, const char *const *candidates, int count)
+{
+    const char *found = NULL;
+    for (int i = 0; i < count; i++) {
+        if (strncmp(candidates[i], word, len) != 0)
+            continue;
+        if (found)
+            return NULL;
+        found = candidates[i];
+    }
+    return found;
+}
+
 const char *diag_suggest(const char *word, const char *const *candidates, int count)
 {
-    /* Short words allow one edit, longer ones two, as a typo usually is. */
-    int cap = strlen(word) <= 4 ? 1 : 2;
+    /* The same word written another way ("rotateY", "rotate-y" for
+     * rotate_y): before any typo, which would find the nearer "rotate". */
+    char folded[65], other[65];
+    if (fold(word, folded))
+        for (int i = 0; i < count; i++)
+            if (fold(candidates[i], other) && strcmp(folded, other) == 0)
+                return candidates[i];
+    /* A typo: short words allow one edit, longer ones two. */
+    size_t len = strlen(word);
+    int cap = len <= 4 ? 1 : 2;
     const char *best = NULL;
     int best_d = cap + 1;
     for (int i = 0; i < count; i++) {
@@ -89,5 +131,10 @@ const char *diag_suggest(const char *word, const char *const *candidates, int co
             best = candidates[i];
         }
     }
-    return best;
+    if (best)
+        return best;
+    /* A word cut short ("pos" for position), or another ending of the same
+     * stem ("sphere" for spherical, "cylinder" for cylindrical). */
+    const char *start = len >= 3 ? only_start(word, len, candidates, count) : NULL;
+    return start ? start : len >= 6 ? only_start(word, len - 2, candidates, count) : NULL;
 }

@@ -18,7 +18,8 @@ typedef struct diag {
 } diag;
 
 /* Reports "file:line:column: message" at node n (or "file: message" when n
- * is NULL and file is given). */
+ * is NULL and file is given). When n has a note (yaml_tree.h), the note is
+ * the message. */
 void diag_at(diag *d, const ynode *n, const char *fmt, ...) __attribute__((format(printf, 3, 4)));
 
 /* Reports a failed call's error at node n with the call's status, so that
@@ -31,8 +32,12 @@ void diag_raw(diag *d, glint_status status, const char *message);
 /* True once the limit of problems is reached: the walk should stop. */
 bool diag_full(const diag *d);
 
-/* Of `count` candidate words, the closest to `word` within a small edit
- * distance, or NULL: for "did you mean" hints. */
+/* Of `count` candidate words, the one `word` most likely meant, or NULL:
+ * for "did you mean" hints. First one that differs only in case and in
+ * '_', '-' or spaces; then the closest within a small edit distance (one
+ * edit for words of up to 4 letters, two for longer ones); then the only
+ * one that starts with word (3 letters or more) or with all of it but its
+ * last two letters (6 letters or more). */
 const char *diag_suggest(const char *word, const char *const *candidates, int count);
 
 #endif

@@ -48,10 +48,14 @@ struct imported {
 
 enum { FOG_TYPE = 1, FOG_START = 2, FOG_END = 4, FOG_DENSITY = 8 };
 
+/* A group's material that was wrong and reported: the objects inside it
+ * are not reported again as having no material. */
+#define MATERIAL_REPORTED (-2)
+
 /* What an object inherits from the groups around it. */
 typedef struct context {
     glint_transform to_world;
-    int material;             /* -1: none yet */
+    int material;             /* -1: none yet; MATERIAL_REPORTED: a bad one */
     int depth;
 } context;
 

@@ -64,14 +64,14 @@ static void add_texture(loader *l, const char *name, const ynode *n)
     int key_count = param_keys(kind->params, common, COUNT(common), keys, COUNT(keys));
     yr_check_keys(&l->r, n, what, keys, key_count);
     glint_texture t = glint_texture_default(kind->id);
-    const ynode *m = yr_get(&l->r, n, "mapping");
-    if (m && !read_mapping(l, m, &t.mapping))
-        return;
     if (scene_find_texture(l->scene, name) >= 0) {
         diag_at(&l->d, n, "texture '%.100s' is defined twice", name);
         return;
     }
-    if (!read_params(l, n, kind->params, what, &t))
+    /* A bad mapping does not hide the other keys' problems. */
+    const ynode *m = yr_get(&l->r, n, "mapping");
+    bool good = !m || read_mapping(l, m, &t.mapping);
+    if (!read_params(l, n, kind->params, what, &t) || !good)
         return;
     glint_error err;
     if (glint_scene_add_texture(l->scene, name, &t, &err) < 0) {

@@ -14,63 +14,71 @@
 
 #define MAX_GROUP_DEPTH 32
 
-static bool read_transform(loader *l, const ynode *n, glint_transform *t)
+/* One step of a transform, applied to *t; false after a report. */
+static bool read_step(loader *l, const ynode *step, glint_transform *t)
 {
     static const char *const steps[] = {"translate", "rotate", "rotate_x", "rotate_y", "rotate_z", "scale"};
     static const char *const rotate_keys[] = {"axis", "angle"};
+    if (step->kind != YNODE_MAPPING || step->count != 2) {
+        diag_at(&l->d, step, "each transform step is a map with one key: translate, rotate, rotate_x, "
+                             "rotate_y, rotate_z or scale");
+        return false;
+    }
+    const ynode *key = step->items[0], *v = step->items[1];
+    int k = word(l, key, "transform step", steps, COUNT(steps));
+    vec3 vec;
+    double a;
+    if (k == 0) {
+        if (!yr_vec3(&l->r, v, "translate", &vec))
+            return false;
+        *t = glint_transform_translate(*t, vec.x, vec.y, vec.z);
+    } else if (k == 1) {
+        if (!yr_is_map(&l->r, v, "'rotate'"))
+            return false;
+        yr_check_keys(&l->r, v, "rotate", rotate_keys, COUNT(rotate_keys));
+        const ynode *axis = yr_need(&l->r, v, "axis", "rotate"), *angle = yr_need(&l->r, v, "angle", "rotate");
+        bool good = axis && yr_vec3(&l->r, axis, "axis", &vec);
+        if (good && v3_length(vec) == 0) {
+            diag_at(&l->d, axis, "'axis' must not be zero");
+            good = false;
+        }
+        if (!(angle && yr_number(&l->r, angle, "angle", &a)) || !good)
+            return false;
+        *t = glint_transform_rotate(*t, vec, a);
+    } else if (k >= 2 && k <= 4) {
+        if (!yr_number(&l->r, v, steps[k], &a))
+            return false;
+        vec3 axis = v3(k == 2, k == 3, k == 4);
+        *t = glint_transform_rotate(*t, axis, a);
+    } else if (k == 5) {
+        if (v->kind == YNODE_SCALAR) {
+            if (!yr_number(&l->r, v, "scale", &a))
+                return false;
+            vec = v3(a, a, a);
+        } else if (!yr_vec3(&l->r, v, "scale", &vec)) {
+            return false;
+        }
+        if (vec.x == 0 || vec.y == 0 || vec.z == 0) {
+            diag_at(&l->d, v, "'scale' must not be zero");
+            return false;
+        }
+        *t = glint_transform_scale(*t, vec.x, vec.y, vec.z);
+    }
+    return k >= 0;
+}
+
+/* A transform: every step is read, so that each bad one is reported. */
+static bool read_transform(loader *l, const ynode *n, glint_transform *t)
+{
     if (!yr_is_list(&l->r, n, "'transform'"))
         return false;
-    for (int i = 0; i < n->count; i++) {
-        const ynode *step = n->items[i];
-        if (!yr_visit(&l->r, step))
+    bool good = true;
+    for (int i = 0; i < n->count && ok(l); i++) {
+        if (!yr_visit(&l->r, n->items[i]))
             return false;
-        if (step->kind != YNODE_MAPPING || step->count != 2) {
-            diag_at(&l->d, step, "each transform step is a map with one key: translate, rotate, rotate_x, "
-                                 "rotate_y, rotate_z or scale");
-            return false;
-        }
-        const ynode *key = step->items[0], *v = step->items[1];
-        int k = word(l, key, "transform step", steps, COUNT(steps));
-        vec3 vec;
-        double a;
-        if (k == 0) {
-            if (!yr_vec3(&l->r, v, "translate", &vec))
-                return false;
-            *t = glint_transform_translate(*t, vec.x, vec.y, vec.z);
-        } else if (k == 1) {
-            if (!yr_is_map(&l->r, v, "'rotate'"))
-                return false;
-            yr_check_keys(&l->r, v, "rotate", rotate_keys, COUNT(rotate_keys));
-            if (!need_vec3(l, v, "axis", "rotate", &vec) || !need_number(l, v, "angle", "rotate", &a))
-                return false;
-            if (v3_length(vec) == 0) {
-                diag_at(&l->d, yr_get(&l->r, v, "axis"), "'axis' must not be zero");
-                return false;
-            }
-            *t = glint_transform_rotate(*t, vec, a);
-        } else if (k >= 2 && k <= 4) {
-            if (!yr_number(&l->r, v, steps[k], &a))
-                return false;
-            vec3 axis = v3(k == 2, k == 3, k == 4);
-            *t = glint_transform_rotate(*t, axis, a);
-        } else if (k == 5) {
-            if (v->kind == YNODE_SCALAR) {
-                if (!yr_number(&l->r, v, "scale", &a))
-                    return false;
-                vec = v3(a, a, a);
-            } else if (!yr_vec3(&l->r, v, "scale", &vec)) {
-                return false;
-            }
-            if (vec.x == 0 || vec.y == 0 || vec.z == 0) {
-                diag_at(&l->d, v, "'scale' must not be zero");
-                return false;
-            }
-            *t = glint_transform_scale(*t, vec.x, vec.y, vec.z);
-        } else {
-            return false;
-        }
+        good = read_step(l, n->items[i], t) && good;
     }
-    return true;
+    return good;
 }
 
 void read_objects(loader *l, const ynode *list, const context *ctx);
@@ -108,14 +116,18 @@ static const param CREASE_ANGLE = {.key = "crease_angle", .type = PARAM_NUMBER, 
                                    .unit = "degrees", .meaning = "where generated normals stay sharp"};
 
 /* A mesh object: its model file's triangles, placed; `override` (>= 0)
- * replaces the file's own materials. */
-static void place_mesh(loader *l, const ynode *n, int override, const glint_transform *to_world)
+ * replaces the file's own materials. The file is read (and a file that
+ * cannot be is reported) even when the object has other problems, but
+ * placed only when it has none: when the count of problems is still
+ * `before` and its material was not a bad one. */
+static void place_mesh(loader *l, const ynode *n, int override, const glint_transform *to_world, int before)
 {
     const ynode *file = yr_need(&l->r, n, "file", "mesh");
     const char *path;
     double crease = CREASE_ANGLE.def[0];
-    if (!file || !yr_text(&l->r, file, "file", &path) ||
-        !read_params(l, n, (param_table){&CREASE_ANGLE, 1}, "mesh", &crease))
+    /* A bad crease angle leaves the default, with which the file is read. */
+    read_params(l, n, (param_table){&CREASE_ANGLE, 1}, "mesh", &crease);
+    if (!file || !yr_text(&l->r, file, "file", &path))
         return;
     char *full = relative_to(n->file, path);
     if (!full) {
@@ -125,7 +137,8 @@ static void place_mesh(loader *l, const ynode *n, int override, const glint_tran
     int mesh_index = import_model(l, file, full, crease);
     free(full);
     glint_error err;
-    if (mesh_index >= 0 && glint_scene_add_instance(l->scene, mesh_index, override, to_world, &err) < 0)
+    if (mesh_index >= 0 && l->d.count == before && override != MATERIAL_REPORTED &&
+        glint_scene_add_instance(l->scene, mesh_index, override, to_world, &err) < 0)
         diag_error(&l->d, n, &err);
 }
 
@@ -174,18 +187,21 @@ static void read_object(loader *l, const ynode *n, const context *outer)
     const char *what = kind ? kind->name : NOT_SHAPES[type];
     yr_check_keys(&l->r, n, what, keys, count);
 
+    /* Every key is read even after a bad one, so that one run reports all
+     * of the object's problems; the object is added only when it has none. */
+    int before = l->d.count;
     context ctx = *outer;
     glint_transform own = glint_transform_identity();
     const ynode *xf = yr_get(&l->r, n, "transform");
-    if (xf && !read_transform(l, xf, &own))
-        return;
+    if (xf)
+        read_transform(l, xf, &own);
     ctx.to_world = xf_mul(&outer->to_world, &own);
     const ynode *mat = yr_get(&l->r, n, "material");
     if (mat && (ctx.material = object_material(l, mat)) < 0)
-        return;
+        ctx.material = MATERIAL_REPORTED;
 
     if (type == OBJECT_MESH) {
-        place_mesh(l, n, mat ? ctx.material : -1, &ctx.to_world);
+        place_mesh(l, n, mat ? ctx.material : -1, &ctx.to_world, before);
         return;
     }
     if (type == OBJECT_GROUP) {
@@ -200,14 +216,11 @@ static void read_object(loader *l, const ynode *n, const context *outer)
         return;
     }
     glint_shape s = glint_shape_default(kind->id);
-    if (!read_params(l, n, kind->params, kind->name, &s))
-        return;
-    if (ctx.material < 0) {
+    read_params(l, n, kind->params, kind->name, &s);
+    if (ctx.material == -1)
         diag_at(&l->d, n, "%s needs 'material'", kind->name);
-        return;
-    }
     glint_error err;
-    if (glint_scene_add_shape(l->scene, &s, ctx.material, &ctx.to_world, &err) < 0)
+    if (ctx.material >= 0 && l->d.count == before && glint_scene_add_shape(l->scene, &s, ctx.material, &ctx.to_world, &err) < 0)
         diag_error(&l->d, n, &err);
 }
 

@@ -99,6 +99,35 @@ static void read_root(loader *l, const ynode *root)
         read_objects(l, n, &top);
 }
 
+/* Reports each alias of document docs[index] that names no anchor before
+ * it, saying where that anchor is when a later line or another file has
+ * one: anchors do not cross files. */
+static void report_unknown_aliases(loader *l, int index)
+{
+    const ydoc *doc = &l->docs[index];
+    for (int i = 0; i < doc->unknown_count && ok(l); i++) {
+        const char *name = doc->unknown[i].name, *file = NULL;
+        const ynode *later = NULL;
+        for (int k = 0; k < doc->anchor_count && !later; k++)
+            if (strcmp(doc->anchors[k].name, name) == 0)
+                later = doc->anchors[k].node;
+        for (int d = 0; d < l->doc_count && !file; d++)
+            for (int k = 0; d != index && k < l->docs[d].anchor_count && !file; k++)
+                if (strcmp(l->docs[d].anchors[k].name, name) == 0)
+                    file = l->docs[d].name;
+        const ynode *at = doc->unknown[i].node;
+        if (later)
+            diag_at(&l->d, at, "unknown anchor '%.100s': '&%.100s' comes later, at line %d, and an anchor must come "
+                               "before its aliases", name, name, later->line);
+        else if (file)
+            diag_at(&l->d, at, "unknown anchor '%.100s': anchors do not cross files (it is defined in %.200s)", name,
+                    file);
+        else
+            diag_at(&l->d, at, "unknown anchor '%.100s': no '&%.100s' comes before it%s", name, name,
+                    l->doc_count > 1 ? " in this file (anchors do not cross files)" : "");
+    }
+}
+
 /* Parses bytes named `name` and walks them; the tree stays alive in l.
  * root: whether they are the scene's own, not an include's. */
 static void read_bytes(loader *l, const char *data, size_t size, const char *name, bool root)
@@ -115,6 +144,15 @@ static void read_bytes(loader *l, const char *data, size_t size, const char *nam
         return;
     }
     l->doc_count++;
+    if (doc->unknown_count) {
+        /* The includes first: an anchor in one of them is named in the message. */
+        const ynode *include = doc->root ? yr_get(&l->r, doc->root, "include") : NULL;
+        int index = l->doc_count - 1;
+        if (include)
+            read_includes(l, include);
+        report_unknown_aliases(l, index);
+        return;
+    }
     bool empty = !doc->root || strcmp(ynode_describe(doc->root), "nothing") == 0;
     if (empty && root) {
         /* Rendering black for an empty scene hides a wrong path or an

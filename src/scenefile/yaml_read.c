@@ -134,17 +134,17 @@ bool yr_is_list(reader *r, const ynode *n, const char *what)
     return false;
 }
 
-/* Parses a plain scalar as a finite number; `why` says what went wrong. */
-static bool parse_number(const ynode *n, double *out, const char **why)
+/* Parses text as a finite number; `why` says what went wrong. */
+static bool parse_text(const char *text, double *out, const char **why)
 {
     *why = "a number";
-    if (n->kind != YNODE_SCALAR || n->quoted || n->value[0] == '\0')
+    if (text[0] == '\0')
         return false;
     char *end;
-    double v = strtod(n->value, &end);
-    if (end == n->value || *end != '\0') {
+    double v = strtod(text, &end);
+    if (end == text || *end != '\0') {
         /* YAML's own spellings of infinity and not-a-number. */
-        const char *word = n->value + (n->value[0] == '-' || n->value[0] == '+');
+        const char *word = text + (text[0] == '-' || text[0] == '+');
         if (!strcasecmp(word, ".inf") || !strcasecmp(word, ".nan"))
             *why = "a finite number";
         return false;
@@ -157,10 +157,21 @@ static bool parse_number(const ynode *n, double *out, const char **why)
     return true;
 }
 
-/* How a wrong value is named in a message: its text, or what it is. */
-static void got(const ynode *n, char *buf, size_t size)
+/* Parses a plain scalar as a finite number: quotes make text. */
+static bool parse_number(const ynode *n, double *out, const char **why)
 {
-    if (n->kind == YNODE_SCALAR && n->quoted)
+    *why = "a number";
+    return n->kind == YNODE_SCALAR && !n->quoted && parse_text(n->value, out, why);
+}
+
+/* How a wrong value is named in a message: its text, or what it is. A
+ * value in quotes that would be right without them (right_bare) says so:
+ * in YAML, quotes make text of "1" and "false". */
+static void got(const ynode *n, bool right_bare, char *buf, size_t size)
+{
+    if (n->kind == YNODE_SCALAR && n->quoted && right_bare)
+        snprintf(buf, size, "'%.60s' in quotes, which is text: write %.60s without quotes", n->value, n->value);
+    else if (n->kind == YNODE_SCALAR && n->quoted)
         snprintf(buf, size, "'%.60s' in quotes, which is text", n->value);
     else if (n->kind == YNODE_SCALAR && strcmp(ynode_describe(n), "nothing") != 0)
         snprintf(buf, size, "'%.60s'", n->value);
@@ -168,13 +179,23 @@ static void got(const ynode *n, char *buf, size_t size)
         snprintf(buf, size, "%s", ynode_describe(n));
 }
 
+/* Whether scalar n's text, without its quotes, is a number from lo to hi
+ * (whole when `whole`). */
+static bool bare_number(const ynode *n, bool whole, double lo, double hi)
+{
+    double v;
+    const char *why;
+    return n->kind == YNODE_SCALAR && parse_text(n->value, &v, &why) && (!whole || v == floor(v)) && v >= lo &&
+           v <= hi;
+}
+
 bool yr_number(reader *r, const ynode *n, const char *key, double *out)
 {
     const char *why;
-    char what[100];
+    char what[200];
     if (parse_number(n, out, &why))
         return true;
-    got(n, what, sizeof what);
+    got(n, bare_number(n, false, -INFINITY, INFINITY), what, sizeof what);
     diag_at(r->d, n, "'%s' must be %s, got %s", key, why, what);
     return false;
 }
@@ -183,24 +204,25 @@ bool yr_integer(reader *r, const ynode *n, const char *key, long long lo, long l
 {
     double v;
     const char *why;
-    char what[100];
+    char what[200];
     if (parse_number(n, &v, &why) && v == floor(v) && v >= (double)lo && v <= (double)hi) {
         *out = (long long)v;
         return true;
     }
-    got(n, what, sizeof what);
+    got(n, bare_number(n, true, (double)lo, (double)hi), what, sizeof what);
     diag_at(r->d, n, "'%s' must be a whole number from %lld to %lld, got %s", key, lo, hi, what);
     return false;
 }
 
 bool yr_bool(reader *r, const ynode *n, const char *key, bool *out)
 {
-    if (n->kind == YNODE_SCALAR && !n->quoted && (!strcmp(n->value, "true") || !strcmp(n->value, "false"))) {
+    bool word = n->kind == YNODE_SCALAR && (!strcmp(n->value, "true") || !strcmp(n->value, "false"));
+    if (word && !n->quoted) {
         *out = n->value[0] == 't';
         return true;
     }
-    char what[100];
-    got(n, what, sizeof what);
+    char what[200];
+    got(n, word, what, sizeof what);
     diag_at(r->d, n, "'%s' must be true or false, got %s", key, what);
     return false;
 }

@@ -4,6 +4,7 @@
 #include <yaml.h>
 #include "core/array.h"
 #include "core/error.h"
+#include "scenefile/yaml_hints.h"
 #include "scenefile/yaml_tree.h"
 
 /* Deeper nesting than this is refused: nothing in a scene needs it, and the
@@ -12,20 +13,16 @@
 #define YAML_MAX_NODES 2000000
 #define YAML_MAX_ANCHORS 100000
 
-typedef struct anchor {
-    char *name;
-    ynode *node;
-} anchor;
-
 typedef struct builder {
     ydoc *doc;
     ynode *stack[YAML_MAX_DEPTH];
     int depth;
-    anchor *anchors;
-    int anchor_count;
-    size_t anchor_cap;
     int documents;
     glint_error *err;
+    const char *data;          /* the text, for the hints of yaml_hints.h */
+    size_t size;
+    int flow_level;            /* depth of the outermost open {...} or [...], or -1 */
+    yaml_mark_t flow_start;    /* and where it starts */
 } builder;
 
 static glint_status fail_at(builder *b, yaml_mark_t mark, const char *what)
@@ -65,28 +62,39 @@ static ynode *new_node(builder *b, ynode_kind kind, yaml_mark_t mark)
     return n;
 }
 
-static glint_status remember_anchor(builder *b, const yaml_char_t *name, ynode *n)
+/* Why new_node gave no node. */
+static glint_status no_node(builder *b, yaml_mark_t mark)
 {
-    if (!name)
-        return GLINT_OK;
-    if (b->anchor_count >= YAML_MAX_ANCHORS)
+    return b->doc->node_count >= YAML_MAX_NODES ? fail_at(b, mark, "too many nodes in one file") : out_of_memory(b);
+}
+
+/* Adds name and n to a list of anchors or unknown aliases. */
+static glint_status add_anchor(builder *b, yanchor **list, int *count, size_t *cap, const char *name, ynode *n)
+{
+    if (*count >= YAML_MAX_ANCHORS)
         return error_set(b->err, GLINT_ERR_INVALID, "%s:%d:%d: too many anchors (limit %d)", b->doc->name, n->line,
                          n->column, YAML_MAX_ANCHORS);
-    if (!array_reserve((void **)&b->anchors, &b->anchor_cap, (size_t)b->anchor_count + 1, sizeof *b->anchors))
+    if (!array_reserve((void **)list, cap, (size_t)*count + 1, sizeof **list))
         return out_of_memory(b);
-    char *copy = strdup((const char *)name);
+    char *copy = strdup(name);
     if (!copy)
         return out_of_memory(b);
-    /* A later anchor of the same name hides the earlier one, as in YAML. */
-    b->anchors[b->anchor_count++] = (anchor){copy, n};
+    (*list)[(*count)++] = (yanchor){copy, n};
     return GLINT_OK;
+}
+
+static glint_status remember_anchor(builder *b, const yaml_char_t *name, ynode *n)
+{
+    ydoc *d = b->doc;
+    return name ? add_anchor(b, &d->anchors, &d->anchor_count, &d->anchor_cap, (const char *)name, n) : GLINT_OK;
 }
 
 static ynode *find_anchor(const builder *b, const char *name)
 {
-    for (int i = b->anchor_count - 1; i >= 0; i--)
-        if (strcmp(b->anchors[i].name, name) == 0)
-            return b->anchors[i].node;
+    /* A later anchor of the same name hides the earlier one, as in YAML. */
+    for (int i = b->doc->anchor_count - 1; i >= 0; i--)
+        if (strcmp(b->doc->anchors[i].name, name) == 0)
+            return b->doc->anchors[i].node;
     return NULL;
 }
 
@@ -100,12 +108,47 @@ static glint_status attach(builder *b, ynode *n, yaml_mark_t mark)
     return push_item(b->stack[b->depth - 1], n) ? GLINT_OK : out_of_memory(b);
 }
 
+/* An empty value followed by "#0000ff" on its line: the colour became a
+ * comment. Notes it at the '#'; true when out of memory. */
+static bool note_hidden_colour(builder *b, ynode *n, yaml_mark_t mark)
+{
+    char msg[256];
+    long at = yaml_hidden_colour(b->data, b->size, mark.index, msg, sizeof msg);
+    if (at < 0)
+        return false;
+    n->column += (int)at;
+    n->note = strdup(msg);
+    return !n->note;
+}
+
+/* libyaml's message for a syntax error, in plain words where it would
+ * puzzle; sets *mark to where the mistake is. */
+static void syntax_message(const builder *b, const yaml_parser_t *p, yaml_mark_t *mark, char *msg, size_t size)
+{
+    const char *problem = p->problem ? p->problem : "unknown";
+    *mark = p->problem_mark;
+    if (strstr(problem, "cannot start any token") && yaml_tab_indent(b->data, b->size, mark->index)) {
+        snprintf(msg, size, "YAML forbids tabs for indentation: indent with spaces");
+        return;
+    }
+    long hash = b->flow_level < 0 || mark->index > b->size ? -1
+                : yaml_hidden_colour_between(b->data, b->flow_start.index, mark->index, msg, size);
+    if (hash >= 0) {
+        *mark = b->flow_start;
+        yaml_advance(b->data, b->flow_start.index, b->flow_start.index + (size_t)hash, &mark->line, &mark->column);
+        return;
+    }
+    if (p->context)
+        snprintf(msg, size, "syntax error: %s %s", problem, p->context);
+    else
+        snprintf(msg, size, "syntax error: %s", problem);
+}
+
 static glint_status on_scalar(builder *b, const yaml_event_t *ev)
 {
     ynode *n = new_node(b, YNODE_SCALAR, ev->start_mark);
     if (!n)
-        return b->doc->node_count >= YAML_MAX_NODES ? fail_at(b, ev->start_mark, "too many nodes in one file")
-                                                    : out_of_memory(b);
+        return no_node(b, ev->start_mark);
     n->value = malloc(ev->data.scalar.length + 1);
     if (!n->value)
         return out_of_memory(b);
@@ -115,18 +158,24 @@ static glint_status on_scalar(builder *b, const yaml_event_t *ev)
         return fail_at(b, ev->start_mark, "a NUL character inside a value");
     n->quoted = ev->data.scalar.style != YAML_PLAIN_SCALAR_STYLE;
     n->complete = true;
+    if (!n->quoted && !n->value[0] && note_hidden_colour(b, n, ev->start_mark))
+        return out_of_memory(b);
     glint_status s = remember_anchor(b, ev->data.scalar.anchor, n);
     return s ? s : attach(b, n, ev->start_mark);
 }
 
-static glint_status on_start(builder *b, const yaml_event_t *ev, ynode_kind kind, const yaml_char_t *anchor_name)
+static glint_status on_start(builder *b, const yaml_event_t *ev, ynode_kind kind, const yaml_char_t *anchor_name,
+                             bool flow)
 {
     if (b->depth >= YAML_MAX_DEPTH)
         return fail_at(b, ev->start_mark, "nesting too deep (limit 64 levels)");
+    if (flow && b->flow_level < 0) {
+        b->flow_level = b->depth;
+        b->flow_start = ev->start_mark;
+    }
     ynode *n = new_node(b, kind, ev->start_mark);
     if (!n)
-        return b->doc->node_count >= YAML_MAX_NODES ? fail_at(b, ev->start_mark, "too many nodes in one file")
-                                                    : out_of_memory(b);
+        return no_node(b, ev->start_mark);
     glint_status s = remember_anchor(b, anchor_name, n);
     if (!s)
         s = attach(b, n, ev->start_mark);
@@ -141,8 +190,16 @@ static glint_status on_alias(builder *b, const yaml_event_t *ev)
     ynode *target = find_anchor(b, name);
     char msg[256];
     if (!target) {
-        snprintf(msg, sizeof msg, "unknown alias '*%.200s'", name);
-        return fail_at(b, ev->start_mark, msg);
+        /* An empty node stands in, listed for the caller to explain. */
+        ynode *n = new_node(b, YNODE_SCALAR, ev->start_mark);
+        if (!n)
+            return no_node(b, ev->start_mark);
+        if (!(n->value = strdup("")))
+            return out_of_memory(b);
+        n->complete = true;
+        ydoc *d = b->doc;
+        glint_status s = add_anchor(b, &d->unknown, &d->unknown_count, &d->unknown_cap, name, n);
+        return s ? s : attach(b, n, ev->start_mark);
     }
     if (!target->complete) {
         snprintf(msg, sizeof msg, "alias '*%.200s' is inside the node it names", name);
@@ -163,12 +220,16 @@ static glint_status on_event(builder *b, const yaml_event_t *ev, bool *done)
     case YAML_ALIAS_EVENT:
         return on_alias(b, ev);
     case YAML_SEQUENCE_START_EVENT:
-        return on_start(b, ev, YNODE_SEQUENCE, ev->data.sequence_start.anchor);
+        return on_start(b, ev, YNODE_SEQUENCE, ev->data.sequence_start.anchor,
+                        ev->data.sequence_start.style == YAML_FLOW_SEQUENCE_STYLE);
     case YAML_MAPPING_START_EVENT:
-        return on_start(b, ev, YNODE_MAPPING, ev->data.mapping_start.anchor);
+        return on_start(b, ev, YNODE_MAPPING, ev->data.mapping_start.anchor,
+                        ev->data.mapping_start.style == YAML_FLOW_MAPPING_STYLE);
     case YAML_SEQUENCE_END_EVENT:
     case YAML_MAPPING_END_EVENT:
         b->stack[--b->depth]->complete = true;
+        if (b->depth == b->flow_level)
+            b->flow_level = -1;
         return GLINT_OK;
     case YAML_STREAM_END_EVENT:
         *done = true;
@@ -181,7 +242,7 @@ static glint_status on_event(builder *b, const yaml_event_t *ev, bool *done)
 glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *name, glint_error *err)
 {
     memset(doc, 0, sizeof *doc);
-    builder b = {.doc = doc, .err = err};
+    builder b = {.doc = doc, .err = err, .data = data, .size = size, .flow_level = -1};
     doc->name = strdup(name);
     if (!doc->name)
         return error_set(err, GLINT_ERR_NOMEM, "out of memory reading '%s'", name);
@@ -195,21 +256,15 @@ glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *na
         yaml_event_t ev;
         if (!yaml_parser_parse(&parser, &ev)) {
             char msg[400];
-            if (parser.context)
-                snprintf(msg, sizeof msg, "syntax error: %s %s", parser.problem ? parser.problem : "",
-                         parser.context);
-            else
-                snprintf(msg, sizeof msg, "syntax error: %s", parser.problem ? parser.problem : "unknown");
-            s = fail_at(&b, parser.problem_mark, msg);
+            yaml_mark_t mark;
+            syntax_message(&b, &parser, &mark, msg, sizeof msg);
+            s = fail_at(&b, mark, msg);
             break;
         }
         s = on_event(&b, &ev, &done);
         yaml_event_delete(&ev);
     }
     yaml_parser_delete(&parser);
-    for (int i = 0; i < b.anchor_count; i++)
-        free(b.anchors[i].name);
-    free(b.anchors);
     if (s)
         ydoc_free(doc);
     return s;
@@ -219,10 +274,17 @@ void ydoc_free(ydoc *doc)
 {
     for (int i = 0; i < doc->node_count; i++) {
         free(doc->nodes[i]->value);
+        free(doc->nodes[i]->note);
         free(doc->nodes[i]->items);
         free(doc->nodes[i]);
     }
     free(doc->nodes);
+    for (int i = 0; i < doc->anchor_count; i++)
+        free(doc->anchors[i].name);
+    free(doc->anchors);
+    for (int i = 0; i < doc->unknown_count; i++)
+        free(doc->unknown[i].name);
+    free(doc->unknown);
     free(doc->name);
     memset(doc, 0, sizeof *doc);
 }

@@ -21,7 +21,16 @@ typedef struct ynode {
     int count;                 /* entries in items */
     size_t cap;
     bool complete;             /* the node's end has been read */
+    char *note;                /* or NULL: what any problem at this node really is
+                                  ("'#' starts a comment..."), said instead */
 } ynode;
+
+/* An anchor (&name) and the node it names; or an alias (*name) that named
+ * no anchor before it, and the empty node that stands in its place. */
+typedef struct yanchor {
+    char *name;
+    ynode *node;
+} yanchor;
 
 typedef struct ydoc {
     char *name;
@@ -29,10 +38,21 @@ typedef struct ydoc {
     ynode **nodes;             /* every node, for freeing */
     int node_count;
     size_t node_cap;
+    yanchor *anchors;          /* every anchor, in the order of the file */
+    int anchor_count;
+    size_t anchor_cap;
+    yanchor *unknown;          /* aliases to no anchor before them, in order */
+    int unknown_count;
+    size_t unknown_cap;
 } ydoc;
 
 /* Parses `size` bytes of YAML named `name` into doc. On a syntax error
- * returns GLINT_ERR_INVALID with err holding "name:line:column: message". */
+ * returns GLINT_ERR_INVALID with err holding "name:line:column: message",
+ * in plain words for a tab in the indentation and for a colour that a '#'
+ * made a comment of. An empty value that such a comment hid gets a note.
+ * An alias to no anchor before it is not an error here but listed in
+ * doc->unknown, so that the caller can say where the anchor is (another
+ * file, later in this one): a document with such aliases is not a scene. */
 glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *name, glint_error *err);
 
 /* Frees every node of the document. */

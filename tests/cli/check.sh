@@ -57,9 +57,11 @@ expect "several files, stdin among them, all valid" 0 "$two
 <stdin>: ok: 1 texture, 1 material, 1 shape, 1 light" -- two.yaml --check -
 expect "bad and missing files among good ones: each reported, exit 1" 1 "$one
 bad.yaml:2:28: 'radius' must be positive, got -1
+bad.yaml:2:5: sphere needs 'material'
 bad.yaml:3:5: box needs 'min'
 bad.yaml:3:5: box needs 'max'
-glint: bad.yaml: 3 problems; not valid
+bad.yaml:3:5: box needs 'material'
+glint: bad.yaml: 5 problems; not valid
 cannot read scene 'missing.yaml': No such file or directory
 glint: missing.yaml: 1 problem; not valid
 $two" -- --check one.yaml bad.yaml missing.yaml two.yaml

@@ -88,7 +88,7 @@ check "relative paths from the current directory: $err" [ "$err" = "<stdin>:1:10
 glint: <stdin>: 3 problems; nothing rendered" ]
 
 # Problems name <stdin> with the line and column.
-err=$(printf 'settings: {width: 8}\nobjects:\n  - {type: sphere, radius: -1}\n' | "$GLINT" - -q 2>&1)
+err=$(printf 'settings: {width: 8}\nobjects:\n  - {type: sphere, radius: -1, material: {}}\n' | "$GLINT" - -q 2>&1)
 status=$?
 [ "$status" -eq 1 ] && [ "$err" = $'<stdin>:3:28: \'radius\' must be positive, got -1\nglint: <stdin>: 1 problem; nothing rendered' ]
 verdict $? "a problem at <stdin>:3:28: exit $status, $err"

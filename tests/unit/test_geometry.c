@@ -319,7 +319,7 @@ static void test_disk_validation(void **state)
     d.inner_radius = 2;
     REJECTS(d, NULL, "disk inner_radius must be below its radius 2, got 2");
     d.inner_radius = -1;
-    REJECTS(d, NULL, "disk inner_radius must be 0 or more, got -1");
+    REJECTS(d, NULL, "disk inner_radius must be at least 0, got -1");
     d = test_ring();
     d.radius = 0;
     REJECTS(d, NULL, "disk radius must be positive, got 0");

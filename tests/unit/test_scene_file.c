@@ -401,7 +401,7 @@ static void test_empty_file_holds_no_scene(void **state)
  * stream refused, an empty include fine, and the stream left open. */
 static void test_load_stream(void **state)
 {
-    static char bad[] = "settings: {width: 8}\nobjects:\n  - {type: sphere, radius: -1}\n";
+    static char bad[] = "settings: {width: 8}\nobjects:\n  - {type: sphere, radius: -1, material: {}}\n";
     FILE *in = fmemopen(bad, strlen(bad), "r");
     assert_non_null(in);
     report_log log = {0};
@@ -1185,14 +1185,14 @@ static const bad_scene BAD[] = {
     {"syntax_tab_indent",
      "settings:\n"
      "\twidth: 10\n",
-     "bad.yaml:2:1: syntax error: found character that cannot start any token while scanning for the next token", 1},
+     "bad.yaml:2:1: YAML forbids tabs for indentation: indent with spaces", 1},
     {"syntax_unclosed_quote",
      "settings:\n"
      "  output: \"a.png\n",
      "bad.yaml:3:1: syntax error: found unexpected end of stream while scanning a quoted scalar", 1},
     {"syntax_unknown_alias",
      "settings: *nope\n",
-     "bad.yaml:1:11: unknown alias '*nope'", 1},
+     "bad.yaml:1:11: unknown anchor 'nope': no '&nope' comes before it", 1},
     {"two_documents",
      "glint: 1\n"
      "---\n"
@@ -1503,11 +1503,11 @@ static const bad_scene BAD[] = {
     {"fov_0",
      "camera:\n"
      "  fov: 0\n",
-     "bad.yaml:2:8: 'fov' must be between 0 and 180 degrees, got 0", 1},
+     "bad.yaml:2:8: 'fov' must be more than 0 and less than 180 degrees, got 0", 1},
     {"fov_180",
      "camera:\n"
      "  fov: 180\n",
-     "bad.yaml:2:8: 'fov' must be between 0 and 180 degrees, got 180", 1},
+     "bad.yaml:2:8: 'fov' must be more than 0 and less than 180 degrees, got 180", 1},
     {"camera_looks_at_itself",
      "camera:\n"
      "  position: [1, 2, 3]\n"
@@ -1532,11 +1532,11 @@ static const bad_scene BAD[] = {
     {"spot_angle_0",
      "lights:\n"
      "  - {type: spot, position: [0, 5, 0], direction: [0, -1, 0], angle: 0}\n",
-     "bad.yaml:2:69: 'angle' must be above 0 and at most 90 degrees, got 0", 1},
+     "bad.yaml:2:69: 'angle' must be more than 0 and at most 90 degrees, got 0", 1},
     {"spot_angle_95",
      "lights:\n"
      "  - {type: spot, position: [0, 5, 0], direction: [0, -1, 0], angle: 95}\n",
-     "bad.yaml:2:69: 'angle' must be above 0 and at most 90 degrees, got 95", 1},
+     "bad.yaml:2:69: 'angle' must be more than 0 and at most 90 degrees, got 95", 1},
     {"spot_falloff_above_angle",
      "lights:\n"
      "  - {type: spot, position: [0, 5, 0], direction: [0, -1, 0], angle: 20, falloff: 25}\n",
@@ -1870,6 +1870,89 @@ static const bad_scene BAD[] = {
      "objects:\n"
      "  - {type: sphere, material: m, raduis: 1}\n",
      "bad.yaml:4:33: unknown key 'raduis' in sphere (did you mean 'radius'?)", 2},
+    /* "Did you mean": another spelling, a word cut short, another ending;
+     * nothing when the start fits several words. */
+    {"hint_other_spelling",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: sphere, radius: 1, material: m, transform: [{rotateY: 30}]}\n",
+     "bad.yaml:3:57: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z or scale, got 'rotateY' (did you mean 'rotate_y'?)", 1},
+    {"hint_cut_short",
+     "camera: {pos: [0, 1, 5]}\n",
+     "bad.yaml:1:10: unknown key 'pos' in camera (did you mean 'position'?)", 1},
+    {"hint_other_ending",
+     "textures:\n"
+     "  t: {type: checker, mapping: cylinder}\n",
+     "bad.yaml:2:31: 'mapping' must be uv, planar, spherical or cylindrical, got 'cylinder' (did you mean 'cylindrical'?)", 1},
+    {"hint_none_for_several",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: sphere, radius: 1, material: m, transform: [{rot: 30}]}\n",
+     "bad.yaml:3:57: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z or scale, got 'rot'", 1},
+    /* A value in quotes is text; when it would be right without them, the
+     * message says so. */
+    {"quoted_number",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: sphere, radius: \"2\", material: m}\n",
+     "bad.yaml:3:28: 'radius' must be a number, got '2' in quotes, which is text: write 2 without quotes", 1},
+    {"quoted_whole_number",
+     "settings: {width: \"320\"}\n",
+     "bad.yaml:1:19: 'width' must be a whole number from 1 to 65536, got '320' in quotes, which is text: write 320 without quotes", 1},
+    {"quoted_whole_number_out_of_range",
+     "settings: {width: \"0\"}\n",
+     "bad.yaml:1:19: 'width' must be a whole number from 1 to 65536, got '0' in quotes, which is text", 1},
+    {"quoted_text_for_a_bool",
+     "materials: {m: {fresnel: \"yes\"}}\n",
+     "bad.yaml:1:26: 'fresnel' must be true or false, got 'yes' in quotes, which is text", 1},
+    /* '#' starts a comment: a colour without quotes, in a flow map (libyaml
+     * stumbles on a later line) or a block one (the value is empty). */
+    {"hash_colour_in_flow_map",
+     "materials:\n"
+     "  m: {ambient: 0.1, color: #0000ff}\n",
+     "bad.yaml:2:28: '#' starts a comment in YAML: write the colour in quotes, color: \"#0000ff\"", 1},
+    {"hash_colour_in_flow_list",
+     "textures:\n"
+     "  t: {type: checker, colors: [\"#ffffff\", #000]}\n",
+     "bad.yaml:2:42: '#' starts a comment in YAML: write the colour in quotes, \"#000\"", 1},
+    {"hash_colour_in_block_map",
+     "materials:\n"
+     "  m:\n"
+     "    color:   #ff8800   \n"
+     "    ambient: 0.1\n",
+     "bad.yaml:3:14: '#' starts a comment in YAML: write the colour in quotes, color: \"#ff8800\"", 1},
+    /* A '#' in quotes is no comment; a comment that is no colour leaves
+     * libyaml's words. */
+    {"hash_in_quotes_then_syntax_error",
+     "materials:\n"
+     "  m: {color: \"#0000ff\", ambient: 0.1 ]\n",
+     "bad.yaml:2:38: syntax error: did not find expected ',' or '}' while parsing a flow mapping", 1},
+    {"hash_comment_then_syntax_error",
+     "materials:\n"
+     "  m: {color: [1, 1, 1],  # red\n"
+     "      ambient: 0.1 ]\n",
+     "bad.yaml:3:20: syntax error: did not find expected ',' or '}' while parsing a flow mapping", 1},
+    {"hash_comment_empty_value",
+     "camera:\n"
+     "  fov: # later\n",
+     "bad.yaml:2:7: 'fov' must be a number, got nothing", 1},
+    /* A tab in the indentation, nested deeper; a tab after a value is fine
+     * and only the bad key is reported. */
+    {"tab_indent_nested",
+     "materials:\n"
+     "  m:\n"
+     "  \tcolor: [1, 1, 1]\n",
+     "bad.yaml:3:3: YAML forbids tabs for indentation: indent with spaces", 1},
+    {"tab_after_value",
+     "settings:\n"
+     "  widht:\t10\n",
+     "bad.yaml:2:3: unknown key 'widht' in settings (did you mean 'width'?)", 1},
+    /* An alias before its anchor, each named once in the file. */
+    {"alias_before_its_anchor",
+     "materials:\n"
+     "  a: *shiny\n"
+     "  b: &shiny {specular: 1}\n",
+     "bad.yaml:2:6: unknown anchor 'shiny': '&shiny' comes later, at line 3, and an anchor must come before its aliases", 1},
 };
 
 static void test_bad_scene(void **state)
@@ -1923,7 +2006,7 @@ static void test_every_problem_in_order(void **state)
              0, &log, &err);
     assert_string_equal(log.all, "bad.yaml:2:10: 'width' must be a whole number from 1 to 65536, got '0'\n"
                                  "bad.yaml:3:12: 'sampler' must be regular or jittered, got 'jitterd' (did you mean 'jittered'?)\n"
-                                 "bad.yaml:4:15: 'fov' must be between 0 and 180 degrees, got 0\n"
+                                 "bad.yaml:4:15: 'fov' must be more than 0 and less than 180 degrees, got 0\n"
                                  "bad.yaml:6:19: unknown key 'colour' in material 'm' (did you mean 'color'?)\n"
                                  "bad.yaml:6:16: 'ambient' must be from 0 to 1, got 2\n"
                                  "bad.yaml:8:5: a spot light needs 'position'\n"
@@ -1932,6 +2015,49 @@ static void test_every_problem_in_order(void **state)
                                  "bad.yaml:10:41: 'radius' must be positive, got -1\n"
                                  "bad.yaml:11:5: box min must be below max on every axis\n");
     assert_int_equal(log.count, 10);
+}
+
+/* One bad value does not hide another of the same object: each key's,
+ * each transform step's and the material's problem is reported, and the
+ * object is not added. A group's bad material is not reported again at
+ * each object inside it, nor a bad crease angle hides a missing model. */
+static void test_every_problem_of_an_object(void **state)
+{
+    report_log log = {0};
+    glint_error err = {0};
+    load_bad("materials:\n"
+             "  steel: {}\n"
+             "textures:\n"
+             "  t: {type: checker, mapping: spherica, size: -1}\n"
+             "objects:\n"
+             "  - {type: cylinder, radius: -1, height: -1, capped: \"false\", material: stell,\n"
+             "     transform: [{rotatey: 30}, {scale: 0}, {rotate: {}}]}\n"
+             "  - type: group\n"
+             "    material: nothing\n"
+             "    transform: [{spin: 1}]\n"
+             "    objects:\n"
+             "      - {type: sphere, radius: 0}\n"
+             "      - {type: sphere, radius: 1}\n"
+             "  - {type: mesh, file: missing.obj, crease_angle: 200, transform: [{scale: [1, 0, 1]}]}\n",
+             0, &log, &err);
+    assert_string_equal(log.all,
+                        "bad.yaml:4:31: 'mapping' must be uv, planar, spherical or cylindrical, got 'spherica' (did you mean 'spherical'?)\n"
+                        "bad.yaml:4:47: 'size' must be positive, got -1\n"
+                        "bad.yaml:7:19: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z or scale, got 'rotatey' (did you mean 'rotate_y'?)\n"
+                        "bad.yaml:7:41: 'scale' must not be zero\n"
+                        "bad.yaml:7:54: rotate needs 'axis'\n"
+                        "bad.yaml:7:54: rotate needs 'angle'\n"
+                        "bad.yaml:6:73: unknown material 'stell' (did you mean 'steel'?)\n"
+                        "bad.yaml:6:30: 'radius' must be positive, got -1\n"
+                        "bad.yaml:6:42: 'height' must be positive, got -1\n"
+                        "bad.yaml:6:54: 'capped' must be true or false, got 'false' in quotes, which is text: write false without quotes\n"
+                        "bad.yaml:10:18: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z or scale, got 'spin'\n"
+                        "bad.yaml:9:15: unknown material 'nothing'\n"
+                        "bad.yaml:12:32: 'radius' must be positive, got 0\n"
+                        "bad.yaml:14:76: 'scale' must not be zero\n"
+                        "bad.yaml:14:51: 'crease_angle' must be from 0 to 180 degrees, got 200\n"
+                        "bad.yaml:14:24: cannot read model 'missing.obj': No such file or directory\n");
+    assert_int_equal(log.count, 16);
 }
 
 /* 25 problems: the default stops at 20 reported, max_errors at its own. */
@@ -1975,6 +2101,35 @@ static void load_bad_file(const char *name, report_log *log, glint_error *err)
         fail_msg("%s loaded", path);
     }
     assert_string_equal(err->message, log->first);
+}
+
+/* An alias names only an anchor of its own file: one in another file, in
+ * either direction of an include, is named in the message. */
+static void test_anchors_do_not_cross_files(void **state)
+{
+    write_tmp("anchors/main.yaml", "include: parts/wood.yaml\n"
+                                   "materials:\n"
+                                   "  steel: &steel {specular: 1}\n"
+                                   "objects:\n"
+                                   "  - {type: sphere, radius: 1, material: *wood}\n"
+                                   "  - {type: sphere, radius: 1, material: *glass}\n");
+    write_tmp("anchors/parts/wood.yaml", "materials:\n"
+                                         "  wood: &wood {color: [0.5, 0.3, 0.1]}\n"
+                                         "  bolt: *steel\n");
+    report_log log = {0};
+    glint_error err = {0};
+    load_bad_file("anchors/main.yaml", &log, &err);
+    char want[5 * PATH_SIZE + 400];
+    snprintf(want, sizeof want,
+             "%s/anchors/parts/wood.yaml:3:9: unknown anchor 'steel': anchors do not cross files (it is defined "
+             "in %s/anchors/main.yaml)\n"
+             "%s/anchors/main.yaml:5:41: unknown anchor 'wood': anchors do not cross files (it is defined in "
+             "%s/anchors/parts/wood.yaml)\n"
+             "%s/anchors/main.yaml:6:41: unknown anchor 'glass': no '&glass' comes before it in this file (anchors "
+             "do not cross files)\n",
+             tmp_dir, tmp_dir, tmp_dir, tmp_dir, tmp_dir);
+    assert_string_equal(log.all, want);
+    assert_int_equal(log.count, 3);
 }
 
 static void test_include_cycle(void **state)
@@ -2245,6 +2400,8 @@ int main(void)
         cmocka_unit_test(test_render_background_and_fog),
         cmocka_unit_test(test_problems_without_a_report),
         cmocka_unit_test(test_every_problem_in_order),
+        cmocka_unit_test(test_every_problem_of_an_object),
+        cmocka_unit_test(test_anchors_do_not_cross_files),
         cmocka_unit_test(test_max_errors),
         cmocka_unit_test(test_include_cycle),
         cmocka_unit_test(test_include_fan_out_is_bounded),

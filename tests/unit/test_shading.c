@@ -138,7 +138,7 @@ static void test_light_errors(void **state)
     light l;
     glint_light bad = {.kind = GLINT_LIGHT_SPOT, .direction = {0, -1, 0}, .color = {1, 1, 1}, .cone_angle = 95};
     assert_int_equal(light_init(&l, &bad, &err), GLINT_ERR_INVALID);
-    assert_string_equal(err.message, "spot light angle must be above 0 and at most 90 degrees, got 95");
+    assert_string_equal(err.message, "spot light angle must be more than 0 and at most 90 degrees, got 95");
     bad.cone_angle = 10;
     bad.direction = v3(0, 0, 0);
     assert_int_equal(light_init(&l, &bad, &err), GLINT_ERR_INVALID);
