@@ -24,6 +24,8 @@ static const char USAGE[] =
     "      --exr-pixel TYPE   pixel type of .exr output: half (16-bit float, the default;\n"
     "                         values of 65520 and more become infinity) or float (32-bit)\n"
     "      --check            validate the scene file, report every problem, render nothing\n"
+    "      --print-scene      write the scene glint would render, the flags applied, as a\n"
+    "                         scene file on stdout, and render nothing\n"
     "  -w, --width N          image width in pixels, 1..65536\n"
     "  -h, --height N         image height in pixels, 1..65536; at most 16384 x 16384\n"
     "                         pixels in all\n"
@@ -184,7 +186,8 @@ static int parse_texture_swap(cli_options *o, const char *arg)
 /* Whether a is a flag that takes no value. */
 static bool is_switch(const char *a)
 {
-    static const char *const SWITCHES[] = {"--help", "--version", "-q", "--quiet", "--check", "--partial"};
+    static const char *const SWITCHES[] = {"--help", "--version", "-q", "--quiet", "--check", "--partial",
+                                             "--print-scene"};
     for (size_t k = 0; k < sizeof SWITCHES / sizeof SWITCHES[0]; k++)
         if (strcmp(a, SWITCHES[k]) == 0)
             return true;
@@ -226,6 +229,10 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
         }
         if (strcmp(a, "--check") == 0) {
             o->check = true;
+            continue;
+        }
+        if (strcmp(a, "--print-scene") == 0) {
+            o->print_scene = true;
             continue;
         }
         if (strcmp(a, "--partial") == 0) {
@@ -279,5 +286,7 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
     }
     if (o->check && !o->scene)
         return cli_complain(CLI_EXIT_USAGE, "--check needs a scene file");
+    if (o->check && o->print_scene)
+        return cli_complain(CLI_EXIT_USAGE, "--check and --print-scene do not go together: choose one");
     return -1;
 }

@@ -1724,13 +1724,13 @@ static const bad_scene BAD[] = {
      "  m: {}\n"
      "objects:\n"
      "  - {type: sphere, material: m, radius: 1, transform: [{translat: [1, 2, 3]}]}\n",
-     "bad.yaml:4:57: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z or scale, got 'translat' (did you mean 'translate'?)", 1},
+     "bad.yaml:4:57: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z, scale or matrix, got 'translat' (did you mean 'translate'?)", 1},
     {"transform_step_two_keys",
      "materials:\n"
      "  m: {}\n"
      "objects:\n"
      "  - {type: sphere, material: m, radius: 1, transform: [{translate: [1, 2, 3], scale: 2}]}\n",
-     "bad.yaml:4:56: each transform step is a map with one key: translate, rotate, rotate_x, rotate_y, rotate_z or scale", 1},
+     "bad.yaml:4:56: each transform step is a map with one key: translate, rotate, rotate_x, rotate_y, rotate_z, scale or matrix", 1},
     {"planar_mapping_one_axis",
      "textures:\n"
      "  t: {type: checker, mapping: {type: planar, u_axis: [1, 0, 0]}}\n",
