@@ -4,8 +4,9 @@
  * cli_parse_args, whose promises are checked: it returns -1 (go on), 0
  * (only for --help, --version or a last -h) or 2 (usage), and when it goes on, every
  * number is -1 or within its flag's range (the ranges glint --help gives),
- * the sampler and the OpenEXR pixel type known ones, and every string one
- * the command line holds.
+ * the sampler and the OpenEXR pixel type known ones, --print-scene only
+ * when given and never with --check, and every string one the command
+ * line holds.
  * A broken promise aborts, which libFuzzer counts as a crash. The help,
  * the version and the complaints are printed as glint prints them: run it
  * with -close_fd_mask=3 (tests/fuzz/README.md). */
@@ -79,6 +80,8 @@ static void check_options(const cli_options *o, int argc, char **argv)
     if (o->scene && (!is_argument(o->scene, argc, argv) || (o->scene[0] == '-' && o->scene[1] != '\0')))
         abort();
     if (o->check && !o->scene)
+        abort();
+    if (o->print_scene && (o->check || !has_argument("--print-scene", argc, argv)))
         abort();
     if (o->output && (!is_value(o->output, argc, argv) || o->output[0] == '\0' ||
                       (o->output[0] == '-' && o->output[1] != '\0')))
