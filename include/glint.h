@@ -431,6 +431,25 @@ glint_status glint_scene_set_output(glint_scene *scene, const char *path, glint_
 /* Returns the output path a scene file asked for, or NULL. */
 const char *glint_scene_get_output(const glint_scene *scene);
 
+/* Writes the scene as a YAML scene file (docs/scene-format.md) that
+ * glint_scene_load_file reads back to the same scene, so that it renders
+ * to the same image bytes: what `glint --print-scene` prints. The settings
+ * and camera are written with every key; textures, materials, lights and
+ * objects with the keys whose values differ from their defaults. Each
+ * object is written placed, its transform one exact `matrix` step (groups
+ * are gone); a mesh is written as its model file, whose import makes its
+ * own materials and textures again. Numbers are written in the fewest
+ * digits that read back to the same bits, colours as display values where
+ * those convert back exactly, else as {linear: [r, g, b]}. Paths are
+ * written as the scene holds them: relative to the current directory when
+ * it was loaded with relative paths, so the file belongs there (or give
+ * absolute paths). Nothing is written and GLINT_ERR_INVALID returned when
+ * a scene file cannot say what the scene holds: a mesh built from arrays
+ * or bytes rather than a model file, or imported with a default material;
+ * an image texture decoded from bytes in memory. GLINT_ERR_IO when
+ * writing to `out` fails. */
+glint_status glint_scene_write_yaml(const glint_scene *scene, FILE *out, glint_error *err);
+
 /* Counts of what a scene holds, for reports such as `glint --check`. */
 typedef struct glint_scene_counts {
     int textures, materials, shapes, lights, meshes, instances;

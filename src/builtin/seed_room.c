@@ -7,7 +7,8 @@
 #include "scene/scene.h"
 
 /* assets/moon.jpg, decoded when glint was built (tools/embed_image.c): no
- * JPEG decoding at start-up, which took 4 ms of every render of this scene. */
+ * JPEG decoding at start-up, which took 4 ms of every render of this scene.
+ * GLINT_MOON_FILE is where that file was (CMakeLists.txt). */
 extern const int glint_asset_moon_width, glint_asset_moon_height;
 extern const unsigned char glint_asset_moon_srgb[];
 
@@ -119,7 +120,7 @@ static void props(builder *b)
     glint_material moon = glint_material_default();
     moon.specular = 0;
     moon.texture = check(b, scene_add_image_pixels(b->scene, "moon", glint_asset_moon_width, glint_asset_moon_height,
-                                                    glint_asset_moon_srgb, own_uv, b->err));
+                                                    glint_asset_moon_srgb, GLINT_MOON_FILE, own_uv, b->err));
     if (moon.texture >= 0)
         sphere(b, v3(3, 2, -80), 4, check(b, glint_scene_add_material(b->scene, "moon", &moon, b->err)));
     upright(b, GLINT_SHAPE_CONE, v3(3, -5, -80), 4, 6, add_material(b, display(0.5, 0.5, 0.5), 1));

@@ -31,6 +31,8 @@ static const char USAGE[] =
     "                         values of 65520 and more become infinity) or float (32-bit)\n"
     "      --check            validate each scene file given (several may be), report\n"
     "                         every problem, render nothing (exit 0: all valid)\n"
+    "      --print-scene      write the scene glint would render, the flags applied, as a\n"
+    "                         scene file on stdout, and render nothing\n"
     "  -w, --width N          image width in pixels, 1..65536\n"
     "  -h, --height N         image height in pixels, 1..65536; at most 16384 x 16384\n"
     "                         pixels in all\n"
@@ -211,7 +213,8 @@ static int parse_format(cli_options *o, const char *v)
 /* Whether a is a flag that takes no value. */
 static bool is_switch(const char *a)
 {
-    static const char *const SWITCHES[] = {"--help", "--version", "-q", "--quiet", "--check", "--partial"};
+    static const char *const SWITCHES[] = {"--help", "--version", "-q", "--quiet", "--check", "--partial",
+                                             "--print-scene"};
     for (size_t k = 0; k < sizeof SWITCHES / sizeof SWITCHES[0]; k++)
         if (strcmp(a, SWITCHES[k]) == 0)
             return true;
@@ -255,6 +258,10 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
         }
         if (strcmp(a, "--check") == 0) {
             o->check = true;
+            continue;
+        }
+        if (strcmp(a, "--print-scene") == 0) {
+            o->print_scene = true;
             continue;
         }
         if (strcmp(a, "--partial") == 0) {
@@ -315,5 +322,7 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
     if (files > 1 && !o->check)
         return cli_complain(CLI_EXIT_USAGE, "unexpected argument '%s': one scene file at a time, unless --check",
                             argv[2]);
+    if (o->check && o->print_scene)
+        return cli_complain(CLI_EXIT_USAGE, "--check and --print-scene do not go together: choose one");
     return -1;
 }

@@ -31,6 +31,7 @@ typedef struct cli_options {
     const char *output;         /* NULL: the scene's, else glint.png; "-": standard output */
     const glint_image_format *format; /* --format: NULL, else the output's format (PNG on standard output) */
     bool check;
+    bool print_scene;           /* write the scene as YAML on stdout instead of rendering */
     long long width, height, spp, depth, threads, seed; /* -1: the scene's own */
     int sampler;                                        /* -1: the scene's own, else a glint_sampler */
     int exr_pixel;                                      /* -1: not given, else a glint_exr_pixel */

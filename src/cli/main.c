@@ -248,6 +248,18 @@ static int interrupted_run(const cli_options *o, const glint_image *image, const
                         stats->tiles_done, stats->tiles_total, d->shown);
 }
 
+/* --print-scene: the scene, with the output -o names, as a scene file on
+ * stdout. */
+static int print_scene(glint_scene *scene, const char *output)
+{
+    glint_error err = {0};
+    glint_status st = output ? glint_scene_set_output(scene, output, &err) : GLINT_OK;
+    if (!st)
+        st = glint_scene_write_yaml(scene, stdout, &err);
+    glint_scene_free(scene);
+    return st ? cli_complain(exit_code_of(st), "%s", err.message) : CLI_EXIT_OK;
+}
+
 static int run(const cli_options *o)
 {
     /* Image bytes on a terminal are a mistake, found before the work. */
@@ -283,6 +295,9 @@ static int run(const cli_options *o)
         glint_scene_free(scene);
         return cli_complain(CLI_EXIT_USAGE, "%s", err.message);
     }
+
+    if (o->print_scene)
+        return print_scene(scene, o->output);
 
     /* From here on a signal cancels the render (its BVH build included),
      * which then writes nothing, or with --partial its finished tiles. */

@@ -185,6 +185,40 @@ glint_status params_check(param_table t, const void *obj, const char *what, glin
     return GLINT_OK;
 }
 
+/* Whether the n doubles at f are those of def, bit for bit. */
+static bool same_doubles(const void *f, const double *def, int n)
+{
+    return memcmp(f, def, (size_t)n * sizeof(double)) == 0;
+}
+
+bool param_is_default(const param *p, const void *obj)
+{
+    const void *f = cfield(obj, p->offset);
+    if (p->required)
+        return false;
+    switch (p->type) {
+    case PARAM_NUMBER:
+        return same_doubles(f, p->def, 1);
+    case PARAM_INTEGER:
+    case PARAM_CHOICE:
+        return *(const int *)f == (int)p->def[0];
+    case PARAM_UINT32:
+        return *(const uint32_t *)f == (uint32_t)p->def[0];
+    case PARAM_BOOL:
+        return *(const bool *)f == (p->def[0] != 0);
+    case PARAM_VEC3:
+    case PARAM_DIRECTION:
+    case PARAM_COLOR:
+        return same_doubles(f, p->def, 3);
+    case PARAM_COLOR_PAIR:
+        return same_doubles(f, p->def, 6);
+    case PARAM_PATH:
+    case PARAM_POINTS:
+        return false;
+    }
+    return false;
+}
+
 const param *params_find(param_table t, const char *key)
 {
     for (int i = 0; i < t.count; i++)

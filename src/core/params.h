@@ -87,6 +87,11 @@ bool param_in_range(const param *p, double v);
  * into buf. */
 void param_range_text(const param *p, char *buf, size_t size);
 
+/* Whether p's field in obj holds p's default bit for bit (a -0 is not a
+ * default 0). A required parameter, a path and a list of points have no
+ * default to hold: false. */
+bool param_is_default(const param *p, const void *obj);
+
 /* The parameter of the table with that key, or NULL. */
 const param *params_find(param_table t, const char *key);
 

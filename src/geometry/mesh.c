@@ -72,6 +72,7 @@ glint_status mesh_init(mesh *m, const char *name, const glint_mesh_data *d, int 
 void mesh_release(mesh *m)
 {
     free(m->name);
+    free(m->origin.file);
     free(m->positions);
     free(m->normals);
     free(m->uvs);

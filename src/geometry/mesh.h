@@ -7,8 +7,21 @@
 #include <stdint.h>
 #include "geometry/shape.h"
 
+/* Where a mesh came from, for writing the scene back as a file
+ * (glint_scene_write_yaml): its model file and import options, and the
+ * materials and textures its import added, which a scene file's mesh
+ * object makes again. */
+typedef struct mesh_origin {
+    char *file;               /* owned; NULL: a mesh from arrays or from bytes in memory */
+    double crease_angle;      /* degrees, as the import used it */
+    int default_material;     /* as the import was given it; -1: its own grey */
+    int first_material, material_count;
+    int first_texture, texture_count;
+} mesh_origin;
+
 typedef struct mesh {
     char *name;               /* may be NULL */
+    mesh_origin origin;
     float *positions;         /* 3 per vertex, then padding Embree may read */
     float *normals;           /* 3 per vertex, or NULL: flat shading */
     float *uvs;               /* 2 per vertex, or NULL */

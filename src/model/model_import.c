@@ -10,6 +10,7 @@
 #include "core/error.h"
 #include "model/model_file.h"
 #include "model/model_format.h"
+#include "scene/scene.h"
 
 #define DEFAULT_CREASE_DEGREES 80.0
 
@@ -55,9 +56,9 @@ static int import_bytes(glint_scene *scene, const model_reader *reader, int fd, 
         data = read;
     if (!s && job->format->check)
         s = job->format->check(data, size, job->file, err);
-    int mesh = s ? -1 : reader->import_memory(scene, data, size, job, err);
+    int mesh_index = s ? -1 : reader->import_memory(scene, data, size, job, err);
     free(read);
-    return mesh;
+    return mesh_index;
 }
 
 /* Imports the model in the open file fd, of `size` bytes, or, when fd is
@@ -78,14 +79,24 @@ static int import(glint_scene *scene, int fd, const unsigned char *data, size_t 
         s = name_parts(file, fd >= 0, &stem, &dir, err);
     job.stem = stem;
     job.dir = dir;
-    int mesh = -1;
+    glint_scene_counts before = glint_scene_get_counts(scene);
+    int mesh_index = -1;
     if (!s && fd >= 0 && reader->import_file)
-        mesh = reader->import_file(scene, fd, &job, err);
+        mesh_index = reader->import_file(scene, fd, &job, err);
     else if (!s)
-        mesh = import_bytes(scene, reader, fd, data, size, &job, err);
+        mesh_index = import_bytes(scene, reader, fd, data, size, &job, err);
+    if (mesh_index >= 0) {
+        /* What a scene file needs to import it again, and what it added. */
+        glint_scene_counts after = glint_scene_get_counts(scene);
+        mesh_origin origin = {NULL, job.crease, job.default_material, before.materials,
+                              after.materials - before.materials, before.textures,
+                              after.textures - before.textures};
+        if (scene_set_mesh_origin(scene, mesh_index, fd >= 0 ? file : NULL, &origin, err))
+            mesh_index = -1;
+    }
     free(stem);
     free(dir);
-    return mesh;
+    return mesh_index;
 }
 
 int glint_scene_import_mesh(glint_scene *scene, const char *path, const glint_import_options *options,
@@ -99,9 +110,9 @@ int glint_scene_import_mesh(glint_scene *scene, const char *path, const glint_im
     size_t size;
     if (model_file_open(path, &fd, &size, err))
         return -1;
-    int mesh = import(scene, fd, NULL, size, path, options, err);
+    int mesh_index = import(scene, fd, NULL, size, path, options, err);
     close(fd);
-    return mesh;
+    return mesh_index;
 }
 
 int glint_scene_import_mesh_memory(glint_scene *scene, const void *data, size_t size, const char *name,

@@ -175,11 +175,19 @@ int glint_scene_add_image_file(glint_scene *scene, const char *name, const char 
 }
 
 /* Adds an image texture over an image decoded here or borrowed, which it
- * then owns; the mapping is checked as any texture's. */
+ * then owns, remembering `file` (NULL: bytes from memory) as the image's
+ * source; the mapping is checked as any texture's. */
 static int add_decoded_image(glint_scene *scene, const char *name, texture_image image, glint_mapping mapping,
-                             glint_error *err)
+                             const char *file, glint_error *err)
 {
-    texture t = {.kind = &image_texture, .mapping = mapping, .image = image};
+    texture t = {.kind = &image_texture, .mapping = mapping, .image = image,
+                 .desc = glint_texture_default(GLINT_TEXTURE_IMAGE)};
+    t.desc.mapping = mapping;
+    if (!texture_set_file(&t, file)) {
+        texture_release(&t);
+        error_set(err, GLINT_ERR_NOMEM, "out of memory");
+        return -1;
+    }
     if (!name_free(scene, name, err) || mapping_validate(&mapping, err)) {
         texture_release(&t);
         return -1;
@@ -193,13 +201,13 @@ int glint_scene_add_image_memory(glint_scene *scene, const char *name, const voi
     texture_image image;
     if (texture_image_load_memory(&image, data, size, name ? name : "image", err))
         return -1;
-    return add_decoded_image(scene, name, image, mapping, err);
+    return add_decoded_image(scene, name, image, mapping, NULL, err);
 }
 
 int scene_add_image_pixels(glint_scene *scene, const char *name, int width, int height,
-                           const unsigned char *srgb, glint_mapping mapping, glint_error *err)
+                           const unsigned char *srgb, const char *file, glint_mapping mapping, glint_error *err)
 {
-    return add_decoded_image(scene, name, texture_image_borrow(width, height, srgb), mapping, err);
+    return add_decoded_image(scene, name, texture_image_borrow(width, height, srgb), mapping, file, err);
 }
 
 glint_status glint_scene_replace_image(glint_scene *scene, const char *name, const char *path, glint_error *err)
@@ -211,6 +219,10 @@ glint_status glint_scene_replace_image(glint_scene *scene, const char *name, con
     glint_status s = texture_image_load_file(&img, path, err);
     if (s)
         return s;
+    if (!texture_set_file(&scene->textures[i], path)) {
+        texture_image_free(&img);
+        return error_set(err, GLINT_ERR_NOMEM, "out of memory");
+    }
     texture_image_free(&scene->textures[i].image);
     scene->textures[i].image = img;
     return GLINT_OK;
@@ -318,5 +330,19 @@ glint_status glint_scene_mesh_bounds(const glint_scene *scene, int mesh_index, g
         return error_set(err, GLINT_ERR_INVALID, "mesh %d does not exist", mesh_index);
     *lo = scene->meshes[mesh_index].lo;
     *hi = scene->meshes[mesh_index].hi;
+    return GLINT_OK;
+}
+
+glint_status scene_set_mesh_origin(glint_scene *scene, int mesh_index, const char *path, const mesh_origin *origin,
+                                   glint_error *err)
+{
+    mesh_origin *o = &scene->meshes[mesh_index].origin;
+    char *file = NULL;
+    glint_status s = copy_name(&file, path, err);
+    if (s)
+        return s;
+    free(o->file);
+    *o = *origin;
+    o->file = file;
     return GLINT_OK;
 }

@@ -39,15 +39,25 @@ int scene_find_texture(const glint_scene *scene, const char *name);
 int scene_find_material(const glint_scene *scene, const char *name);
 
 /* Adds an image texture over pixels decoded ahead of time (see
- * texture_image_borrow: they are not copied and must outlive the scene).
+ * texture_image_borrow: they are not copied and must outlive the scene)
+ * from the image file `file`, which a scene written back as a file names.
  * Returns the texture's index or -1 and fills err. */
 int scene_add_image_pixels(glint_scene *scene, const char *name, int width, int height,
-                           const unsigned char *srgb, glint_mapping mapping, glint_error *err);
+                           const unsigned char *srgb, const char *file, glint_mapping mapping, glint_error *err);
+
+/* Records where mesh `mesh` came from: `origin`, with a copy of `file`
+ * (NULL: none) as its file; fills err when out of memory. */
+glint_status scene_set_mesh_origin(glint_scene *scene, int mesh, const char *file, const mesh_origin *origin,
+                                   glint_error *err);
 
 /* The keys of the settings and of the camera, with their defaults and
  * ranges (settings.c). */
 param_table settings_params(void);
 param_table camera_params(void);
+
+/* The keys of a scene file's mesh object that are import options (offsets
+ * into glint_import_options): the crease angle. */
+param_table import_params(void);
 
 /* The camera of a new scene: every key at its default. */
 glint_camera camera_default(void);

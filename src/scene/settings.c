@@ -50,6 +50,19 @@ static const param CAMERA_PARAMS[] = {
      .bounds = PARAM_OPEN_BOTH, .unit = "degrees", .meaning = "vertical field of view"},
 };
 
+#define IMPORT(name) .offset = offsetof(glint_import_options, name)
+
+/* A scene file's mesh object reads its model's import options here. */
+static const param IMPORT_PARAMS[] = {
+    {.key = "crease_angle", .type = PARAM_NUMBER, IMPORT(crease_angle), .def = {80}, .lo = 0, .hi = 180,
+     .unit = "degrees", .meaning = "where generated normals stay sharp"},
+};
+
+param_table import_params(void)
+{
+    return PARAM_TABLE(IMPORT_PARAMS);
+}
+
 param_table settings_params(void)
 {
     return PARAM_TABLE(SETTINGS_PARAMS);

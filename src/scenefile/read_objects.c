@@ -14,14 +14,41 @@
 
 #define MAX_GROUP_DEPTH 32
 
+/* A matrix step's value: three rows of four numbers, the glint_transform
+ * that maps (x, y, z, 1). */
+static bool read_matrix(loader *l, const ynode *v, glint_transform *m)
+{
+    if (v->kind == YNODE_SEQUENCE && v->count == 3) {
+        bool good = true;
+        for (int i = 0; i < 3 && good; i++) {
+            const ynode *row = v->items[i];
+            good = row->kind == YNODE_SEQUENCE && row->count == 4;
+            for (int j = 0; j < 4 && good; j++)
+                good = yr_visit(&l->r, row->items[j]) && yr_number(&l->r, row->items[j], "matrix", &m->m[i][j]);
+        }
+        if (good)
+            return true;
+    }
+    diag_at(&l->d, v, "'matrix' must be 3 rows of 4 numbers, [[a, b, c, d], [e, f, g, h], [i, j, k, l]]");
+    return false;
+}
+
+/* t followed by m. With the identity on either side it is the other, bit
+ * for bit, as the product could turn a -0 into a 0: a scene written back as
+ * a file (glint_scene_write_yaml) must place its objects exactly. */
+static glint_transform then(const glint_transform *t, const glint_transform *m)
+{
+    return xf_is_identity(t) ? *m : xf_is_identity(m) ? *t : xf_mul(m, t);
+}
+
 /* One step of a transform, applied to *t; false after a report. */
 static bool read_step(loader *l, const ynode *step, glint_transform *t)
 {
-    static const char *const steps[] = {"translate", "rotate", "rotate_x", "rotate_y", "rotate_z", "scale"};
+    static const char *const steps[] = {"translate", "rotate", "rotate_x", "rotate_y", "rotate_z", "scale", "matrix"};
     static const char *const rotate_keys[] = {"axis", "angle"};
     if (step->kind != YNODE_MAPPING || step->count != 2) {
         diag_at(&l->d, step, "each transform step is a map with one key: translate, rotate, rotate_x, "
-                             "rotate_y, rotate_z or scale");
+                             "rotate_y, rotate_z, scale or matrix");
         return false;
     }
     const ynode *key = step->items[0], *v = step->items[1];
@@ -63,6 +90,11 @@ static bool read_step(loader *l, const ynode *step, glint_transform *t)
             return false;
         }
         *t = glint_transform_scale(*t, vec.x, vec.y, vec.z);
+    } else if (k == 6) {
+        glint_transform m;
+        if (!read_matrix(l, v, &m))
+            return false;
+        *t = then(t, &m);
     }
     return k >= 0;
 }
@@ -110,11 +142,6 @@ static int import_model(loader *l, const ynode *file, const char *path, double c
     return mesh_index;
 }
 
-/* A mesh object's crease angle, read through the parameter tables like
- * every other ranged key. */
-static const param CREASE_ANGLE = {.key = "crease_angle", .type = PARAM_NUMBER, .def = {80}, .lo = 0, .hi = 180,
-                                   .unit = "degrees", .meaning = "where generated normals stay sharp"};
-
 /* A mesh object: its model file's triangles, placed; `override` (>= 0)
  * replaces the file's own materials. The file is read (and a file that
  * cannot be is reported) even when the object has other problems, but
@@ -124,9 +151,10 @@ static void place_mesh(loader *l, const ynode *n, int override, const glint_tran
 {
     const ynode *file = yr_need(&l->r, n, "file", "mesh");
     const char *path;
-    double crease = CREASE_ANGLE.def[0];
+    glint_import_options options;
+    params_defaults(import_params(), &options);
     /* A bad crease angle leaves the default, with which the file is read. */
-    read_params(l, n, (param_table){&CREASE_ANGLE, 1}, "mesh", &crease);
+    read_params(l, n, import_params(), "mesh", &options);
     if (!file || !yr_text(&l->r, file, "file", &path))
         return;
     char *full = relative_to(n->file, path);
@@ -134,7 +162,7 @@ static void place_mesh(loader *l, const ynode *n, int override, const glint_tran
         diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
         return;
     }
-    int mesh_index = import_model(l, file, full, crease);
+    int mesh_index = import_model(l, file, full, options.crease_angle);
     free(full);
     glint_error err;
     if (mesh_index >= 0 && l->d.count == before && override != MATERIAL_REPORTED &&
@@ -195,7 +223,7 @@ static void read_object(loader *l, const ynode *n, const context *outer)
     const ynode *xf = yr_get(&l->r, n, "transform");
     if (xf)
         read_transform(l, xf, &own);
-    ctx.to_world = xf_mul(&outer->to_world, &own);
+    ctx.to_world = then(&own, &outer->to_world);
     const ynode *mat = yr_get(&l->r, n, "material");
     if (mat && (ctx.material = object_material(l, mat)) < 0)
         ctx.material = MATERIAL_REPORTED;

@@ -31,6 +31,16 @@ param_table fog_params(void)
     return PARAM_TABLE(FOG_PARAMS);
 }
 
+bool fog_reads(glint_fog_kind kind, const param *p)
+{
+    ptrdiff_t i = p - FOG_PARAMS;
+    if (i == FOG_TYPE_PARAM || i == FOG_COLOR_PARAM)
+        return true;
+    if (i == FOG_START_PARAM || i == FOG_END_PARAM)
+        return kind == GLINT_FOG_LINEAR;
+    return i == FOG_DENSITY_PARAM && kind == GLINT_FOG_EXPONENTIAL;
+}
+
 glint_status fog_validate(const glint_fog *f, glint_error *err)
 {
     if (f->kind == GLINT_FOG_NONE)

@@ -10,6 +10,11 @@
  * ranges. */
 param_table fog_params(void);
 
+/* Whether a fog of that kind reads parameter p of fog_params: every kind
+ * its type and colour, linear fog its start and end, exponential fog its
+ * density. */
+bool fog_reads(glint_fog_kind kind, const param *p);
+
 /* Checks a fog description against the table's keys for its type, and
  * linear fog's start < end; fills err naming a bad value. */
 glint_status fog_validate(const glint_fog *fog, glint_error *err);

@@ -88,7 +88,24 @@ glint_status texture_init(texture *t, const glint_texture *desc, glint_error *er
     if (s)
         return s;
     t->mapping = desc->mapping;
-    return t->kind->init(t, desc, err);
+    t->desc = *desc;
+    t->desc.file = NULL;
+    if (!texture_set_file(t, desc->file))
+        return error_set(err, GLINT_ERR_NOMEM, "out of memory");
+    s = t->kind->init(t, desc, err);
+    if (s)
+        texture_set_file(t, NULL);
+    return s;
+}
+
+bool texture_set_file(texture *t, const char *path)
+{
+    char *copy = path ? strdup(path) : NULL;
+    if (path && !copy)
+        return false;
+    free((char *)t->desc.file);
+    t->desc.file = copy;
+    return true;
 }
 
 void mapping_apply(const glint_mapping *m, const surface *s, double *u, double *v)
@@ -161,5 +178,6 @@ void texture_release(texture *t)
 {
     free(t->name);
     t->name = NULL;
+    texture_set_file(t, NULL);
     texture_image_free(&t->image);
 }

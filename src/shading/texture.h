@@ -23,6 +23,10 @@ typedef struct texture {
     color a, b;                /* checker colours */
     double cell;               /* checker cell size */
     texture_image image;       /* image texture, linear RGB */
+    /* What it was made from, for writing the scene back as a file
+     * (glint_scene_write_yaml); desc.file is owned, and NULL for an image
+     * decoded from memory. */
+    glint_texture desc;
 } texture;
 
 struct texture_kind {
@@ -46,7 +50,8 @@ int texture_kind_count(void);
 const texture_kind *texture_kind_at(int i);
 
 /* Fills t (name aside) from desc after checking it against its kind's table
- * and its mapping; on failure t owns nothing. */
+ * and its mapping, keeping a copy of desc (and of its file name); on
+ * failure t owns nothing. */
 glint_status texture_init(texture *t, const glint_texture *desc, glint_error *err);
 
 /* The keys of a mapping map: its type, then the keys the types read, in
@@ -80,6 +85,10 @@ static inline color texture_eval(const texture *t, const surface *s)
         return checker_eval(t->a, t->b, t->cell, u, v);
     return t->kind->eval(t, u, v);
 }
+
+/* Replaces the file name t->desc remembers with a copy of path (NULL:
+ * none); false when out of memory, with t unchanged. */
+bool texture_set_file(texture *t, const char *path);
 
 /* Frees what t owns. */
 void texture_release(texture *t);

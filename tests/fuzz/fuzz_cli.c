@@ -5,9 +5,10 @@
  * (only for --help, --version or a last -h) or 2 (usage), and when it goes on, every
  * number is -1 or within its flag's range (the ranges glint --help gives),
  * the sampler, the OpenEXR pixel type and the image format known ones,
- * every string one the command line holds, and the scene files those
- * arguments that are not flags nor their values, in order, "-" at most
- * once, several only with --check.
+ * --print-scene only when given and never with --check, every string one
+ * the command line holds, and the scene files those arguments that are not
+ * flags nor their values, in order, "-" at most once, several only with
+ * --check.
  * A broken promise aborts, which libFuzzer counts as a crash. The help,
  * the version and the complaints are printed as glint prints them: run it
  * with -close_fd_mask=3 (tests/fuzz/README.md). */
@@ -110,6 +111,8 @@ static void check_options(const cli_options *o, int argc, char **argv)
     if (!scenes_ok(o, argc, argv) || !known_format(o->format))
         abort();
     if (o->check && !o->scene)
+        abort();
+    if (o->print_scene && (o->check || !has_argument("--print-scene", argc, argv)))
         abort();
     if (o->output && (!is_value(o->output, argc, argv) || o->output[0] == '\0' ||
                       (o->output[0] == '-' && o->output[1] != '\0')))

@@ -1758,13 +1758,13 @@ static const bad_scene BAD[] = {
      "  m: {}\n"
      "objects:\n"
      "  - {type: sphere, material: m, radius: 1, transform: [{translat: [1, 2, 3]}]}\n",
-     "bad.yaml:4:57: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z or scale, got 'translat' (did you mean 'translate'?)", 1},
+     "bad.yaml:4:57: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z, scale or matrix, got 'translat' (did you mean 'translate'?)", 1},
     {"transform_step_two_keys",
      "materials:\n"
      "  m: {}\n"
      "objects:\n"
      "  - {type: sphere, material: m, radius: 1, transform: [{translate: [1, 2, 3], scale: 2}]}\n",
-     "bad.yaml:4:56: each transform step is a map with one key: translate, rotate, rotate_x, rotate_y, rotate_z or scale", 1},
+     "bad.yaml:4:56: each transform step is a map with one key: translate, rotate, rotate_x, rotate_y, rotate_z, scale or matrix", 1},
     {"planar_mapping_one_axis",
      "textures:\n"
      "  t: {type: checker, mapping: {type: planar, u_axis: [1, 0, 0]}}\n",
@@ -1876,7 +1876,7 @@ static const bad_scene BAD[] = {
      "materials: {m: {}}\n"
      "objects:\n"
      "  - {type: sphere, radius: 1, material: m, transform: [{rotateY: 30}]}\n",
-     "bad.yaml:3:57: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z or scale, got 'rotateY' (did you mean 'rotate_y'?)", 1},
+     "bad.yaml:3:57: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z, scale or matrix, got 'rotateY' (did you mean 'rotate_y'?)", 1},
     {"hint_cut_short",
      "camera: {pos: [0, 1, 5]}\n",
      "bad.yaml:1:10: unknown key 'pos' in camera (did you mean 'position'?)", 1},
@@ -1888,7 +1888,7 @@ static const bad_scene BAD[] = {
      "materials: {m: {}}\n"
      "objects:\n"
      "  - {type: sphere, radius: 1, material: m, transform: [{rot: 30}]}\n",
-     "bad.yaml:3:57: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z or scale, got 'rot'", 1},
+     "bad.yaml:3:57: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z, scale or matrix, got 'rot'", 1},
     /* A value in quotes is text; when it would be right without them, the
      * message says so. */
     {"quoted_number",
@@ -2043,7 +2043,7 @@ static void test_every_problem_of_an_object(void **state)
     assert_string_equal(log.all,
                         "bad.yaml:4:31: 'mapping' must be uv, planar, spherical or cylindrical, got 'spherica' (did you mean 'spherical'?)\n"
                         "bad.yaml:4:47: 'size' must be positive, got -1\n"
-                        "bad.yaml:7:19: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z or scale, got 'rotatey' (did you mean 'rotate_y'?)\n"
+                        "bad.yaml:7:19: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z, scale or matrix, got 'rotatey' (did you mean 'rotate_y'?)\n"
                         "bad.yaml:7:41: 'scale' must not be zero\n"
                         "bad.yaml:7:54: rotate needs 'axis'\n"
                         "bad.yaml:7:54: rotate needs 'angle'\n"
@@ -2051,7 +2051,7 @@ static void test_every_problem_of_an_object(void **state)
                         "bad.yaml:6:30: 'radius' must be positive, got -1\n"
                         "bad.yaml:6:42: 'height' must be positive, got -1\n"
                         "bad.yaml:6:54: 'capped' must be true or false, got 'false' in quotes, which is text: write false without quotes\n"
-                        "bad.yaml:10:18: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z or scale, got 'spin'\n"
+                        "bad.yaml:10:18: 'transform step' must be translate, rotate, rotate_x, rotate_y, rotate_z, scale or matrix, got 'spin'\n"
                         "bad.yaml:9:15: unknown material 'nothing'\n"
                         "bad.yaml:12:32: 'radius' must be positive, got 0\n"
                         "bad.yaml:14:76: 'scale' must not be zero\n"

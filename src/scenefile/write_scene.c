@@ -1,0 +1,367 @@
+/* write_scene.c - glint_scene_write_yaml: a scene as a YAML scene file that
+ * loads back to the same scene and so renders to the same bytes.
+ *
+ * Everything goes through the parameter tables and the registries: a
+ * shape, light or texture kind is written by its table, so a new kind
+ * needs nothing here. The settings and the camera are written whole (they
+ * are short, and their defaults are worth seeing); every other map gives
+ * only the keys whose values are not their defaults, bit for bit. Objects
+ * are written placed: a group is a way of writing, not a thing in the
+ * scene, so each shape and mesh carries its own composed transform as one
+ * exact `matrix` step. A mesh is its model file, imported again on
+ * reading, and the materials and textures that import made are left for
+ * it to make. */
+#include <stdlib.h>
+#include <string.h>
+#include "core/error.h"
+#include "geometry/shape_kind.h"
+#include "scene/scene.h"
+#include "scenefile/yaml_write.h"
+#include "shading/fog.h"
+
+/* What the writer decides before writing: the texture names (those the
+ * scene gives, and made-up ones for unnamed textures) and which textures
+ * and materials a mesh's import made (NULL names: not written). */
+typedef struct plan {
+    const glint_scene *scene;
+    char **texture_names;
+    bool *texture_from_mesh, *material_from_mesh;
+    FILE *f;
+} plan;
+
+static void plan_free(plan *p)
+{
+    for (int i = 0; p->texture_names && i < p->scene->texture_count; i++)
+        free(p->texture_names[i]);
+    free(p->texture_names);
+    free(p->texture_from_mesh);
+    free(p->material_from_mesh);
+}
+
+/* Whether mesh m is placed at all: a mesh nobody placed is not written. */
+static bool is_placed(const glint_scene *s, int m)
+{
+    for (int i = 0; i < s->instance_count; i++)
+        if (s->instances[i].mesh == m)
+            return true;
+    return false;
+}
+
+/* Marks the textures and materials mesh imports made; refuses a placed mesh
+ * a scene file cannot make again. */
+static glint_status plan_meshes(plan *p, glint_error *err)
+{
+    const glint_scene *s = p->scene;
+    for (int m = 0; m < s->mesh_count; m++) {
+        const mesh_origin *o = &s->meshes[m].origin;
+        const char *name = s->meshes[m].name ? s->meshes[m].name : "";
+        if (!o->file) {
+            if (is_placed(s, m))
+                return error_set(err, GLINT_ERR_INVALID,
+                                 "mesh %d ('%s') is not from a model file: a scene file can place only model files",
+                                 m, name);
+            continue;
+        }
+        if (o->default_material >= 0)
+            return error_set(err, GLINT_ERR_INVALID,
+                             "mesh '%s' was imported with a default material, which a scene file cannot give",
+                             o->file);
+        for (int i = 0; i < o->material_count; i++)
+            p->material_from_mesh[o->first_material + i] = true;
+        for (int i = 0; i < o->texture_count; i++)
+            p->texture_from_mesh[o->first_texture + i] = true;
+    }
+    return GLINT_OK;
+}
+
+/* Whether a texture has `name`, or one of the first i made-up names is it. */
+static bool name_taken(const plan *p, int i, const char *name)
+{
+    for (int k = 0; k < i; k++)
+        if (p->texture_names[k] && strcmp(p->texture_names[k], name) == 0)
+            return true;
+    return scene_find_texture(p->scene, name) >= 0;
+}
+
+/* A name for unnamed texture i that no other texture has: "texture-N". */
+static char *made_up_name(const plan *p, int i)
+{
+    char buf[64];
+    int n = i + 1;
+    do
+        snprintf(buf, sizeof buf, "texture-%d", n++);
+    while (name_taken(p, i, buf));
+    return strdup(buf);
+}
+
+static glint_status plan_textures(plan *p, glint_error *err)
+{
+    const glint_scene *s = p->scene;
+    for (int i = 0; i < s->texture_count; i++) {
+        const texture *t = &s->textures[i];
+        if (p->texture_from_mesh[i])
+            continue;
+        if (t->kind == &image_texture && !t->desc.file)
+            return error_set(err, GLINT_ERR_INVALID,
+                             "texture '%s' was decoded from bytes in memory: a scene file can name only image files",
+                             t->name ? t->name : "");
+        p->texture_names[i] = t->name ? strdup(t->name) : made_up_name(p, i);
+        if (!p->texture_names[i])
+            return error_set(err, GLINT_ERR_NOMEM, "out of memory");
+    }
+    for (int i = 0; i < s->material_count; i++) {
+        int t = s->materials[i].m.texture;
+        if (!p->material_from_mesh[i] && t >= 0 && !p->texture_names[t])
+            return error_set(err, GLINT_ERR_INVALID, "material %d uses a texture of a model's own", i);
+    }
+    return GLINT_OK;
+}
+
+static glint_status plan_make(plan *p, const glint_scene *s, FILE *f, glint_error *err)
+{
+    *p = (plan){.scene = s, .f = f};
+    size_t textures = (size_t)s->texture_count + 1, materials = (size_t)s->material_count + 1;
+    p->texture_names = calloc(textures, sizeof *p->texture_names);
+    p->texture_from_mesh = calloc(textures, sizeof *p->texture_from_mesh);
+    p->material_from_mesh = calloc(materials, sizeof *p->material_from_mesh);
+    if (!p->texture_names || !p->texture_from_mesh || !p->material_from_mesh)
+        return error_set(err, GLINT_ERR_NOMEM, "out of memory");
+    glint_status st = plan_meshes(p, err);
+    return st ? st : plan_textures(p, err);
+}
+
+/* Whether material i is written in the materials section, by its name. */
+static bool named_material(const plan *p, int i)
+{
+    return p->scene->materials[i].name && !p->material_from_mesh[i];
+}
+
+/* A material's keys (and its texture's name) into m. */
+static void material_keys(const plan *p, ymap *m, const glint_material *mat)
+{
+    yw_params(m, material_params(), mat, false);
+    if (mat->texture >= 0) {
+        ymap_key(m, "texture");
+        yw_text(p->f, p->texture_names[mat->texture]);
+    }
+}
+
+/* An object's material: its name, or the material written in place. */
+static void material_value(const plan *p, int i)
+{
+    if (named_material(p, i)) {
+        yw_text(p->f, p->scene->materials[i].name);
+        return;
+    }
+    ymap m = ymap_begin(p->f, true, 0);
+    material_keys(p, &m, &p->scene->materials[i].m);
+    ymap_end(&m);
+}
+
+static void write_settings(const plan *p)
+{
+    const glint_scene *s = p->scene;
+    fputs("settings:\n  ", p->f);
+    ymap m = ymap_begin(p->f, false, 2);
+    yw_params(&m, settings_params(), &s->settings, true);
+    if (s->output) {
+        ymap_key(&m, "output");
+        yw_text(p->f, s->output);
+    }
+    ymap_end(&m);
+    fputs("camera:\n  ", p->f);
+    m = ymap_begin(p->f, false, 2);
+    yw_params(&m, camera_params(), &s->camera, true);
+    ymap_end(&m);
+}
+
+static void write_fog(const plan *p)
+{
+    const glint_fog *fog = &p->scene->fog;
+    if (fog->kind == GLINT_FOG_NONE)
+        return;
+    fputs("fog: ", p->f);
+    ymap m = ymap_begin(p->f, true, 0);
+    param_table t = fog_params();
+    for (int i = 0; i < t.count; i++)
+        if (fog_reads(fog->kind, &t.params[i])) {
+            ymap_key(&m, t.params[i].key);
+            yw_param(p->f, &t.params[i], fog);
+        }
+    ymap_end(&m);
+    fputc('\n', p->f);
+}
+
+/* A texture's mapping, when it is not the default uv: its type alone, or
+ * with the keys its type reads that are not at their defaults. */
+static void write_mapping(const plan *p, ymap *m, const glint_mapping *given)
+{
+    glint_mapping map = *given;
+    if (map.scale == 0)
+        map.scale = 1; /* what a scale of 0 means (glint_mapping) */
+    param_table t = mapping_params();
+    param_table read = {t.params, mapping_key_count(map.kind)};
+    bool type_only = true;
+    for (int i = 1; i < read.count; i++)
+        type_only = type_only && param_is_default(&read.params[i], &map);
+    if (map.kind == GLINT_MAP_UV && type_only)
+        return;
+    ymap_key(m, "mapping");
+    if (type_only) {
+        yw_param(p->f, &t.params[0], &map);
+        return;
+    }
+    ymap keys = ymap_begin(p->f, true, 0);
+    yw_params(&keys, read, &map, false);
+    ymap_end(&keys);
+}
+
+static void write_textures(const plan *p)
+{
+    const glint_scene *s = p->scene;
+    bool any = false;
+    for (int i = 0; i < s->texture_count; i++) {
+        const texture *t = &s->textures[i];
+        if (!p->texture_names[i])
+            continue;
+        fputs(any ? "  " : "textures:\n  ", p->f);
+        any = true;
+        yw_text(p->f, p->texture_names[i]);
+        fputs(": ", p->f);
+        ymap m = ymap_begin(p->f, true, 0);
+        ymap_key(&m, "type");
+        fputs(t->kind->name, p->f);
+        write_mapping(p, &m, &t->desc.mapping);
+        yw_params(&m, t->kind->params, &t->desc, false);
+        ymap_end(&m);
+        fputc('\n', p->f);
+    }
+}
+
+static void write_materials(const plan *p)
+{
+    const glint_scene *s = p->scene;
+    bool any = false;
+    for (int i = 0; i < s->material_count; i++) {
+        if (!named_material(p, i))
+            continue;
+        fputs(any ? "  " : "materials:\n  ", p->f);
+        any = true;
+        yw_text(p->f, s->materials[i].name);
+        fputs(": ", p->f);
+        ymap m = ymap_begin(p->f, true, 0);
+        material_keys(p, &m, &s->materials[i].m);
+        ymap_end(&m);
+        fputc('\n', p->f);
+    }
+}
+
+static void write_lights(const plan *p)
+{
+    const glint_scene *s = p->scene;
+    for (int i = 0; i < s->light_count; i++) {
+        const light *l = &s->lights[i];
+        /* The colour is stored scaled by the intensity: intensity 1. */
+        light_spec spec = {l->desc, 1};
+        fputs(i ? "  - " : "lights:\n  - ", p->f);
+        ymap m = ymap_begin(p->f, true, 0);
+        ymap_key(&m, "type");
+        fputs(l->kind->name, p->f);
+        yw_params(&m, l->kind->params, &spec, false);
+        ymap_end(&m);
+        fputc('\n', p->f);
+    }
+}
+
+/* An object's transform, the last key of block map m, as one matrix step
+ * with a row a line. */
+static void write_transform(const plan *p, ymap *m, const glint_transform *t)
+{
+    ymap_key_block(m, "transform");
+    fprintf(p->f, "\n%*s- matrix:", m->indent + 2, "");
+    for (int i = 0; i < 3; i++) {
+        fprintf(p->f, "\n%*s- [", m->indent + 6, "");
+        for (int j = 0; j < 4; j++) {
+            fputs(j ? ", " : "", p->f);
+            yw_number(p->f, t->m[i][j]);
+        }
+        fputc(']', p->f);
+    }
+}
+
+/* Starts an item of the objects list: a map on one line, or with a
+ * transform, a key a line. */
+static ymap object_begin(const plan *p, bool *any, bool has_transform)
+{
+    fputs(*any ? "  - " : "objects:\n  - ", p->f);
+    *any = true;
+    return ymap_begin(p->f, !has_transform, 4);
+}
+
+static void object_end(const plan *p, ymap *m)
+{
+    bool flow = m->flow;
+    ymap_end(m);
+    if (flow)
+        fputc('\n', p->f);
+}
+
+static void write_objects(const plan *p)
+{
+    const glint_scene *s = p->scene;
+    bool any = false;
+    for (int i = 0; i < s->shape_count; i++) {
+        const shape *sh = &s->shapes[i];
+        ymap m = object_begin(p, &any, sh->has_transform);
+        ymap_key(&m, "type");
+        fputs(sh->kind->name, p->f);
+        yw_params(&m, sh->kind->params, &sh->desc, false);
+        ymap_key(&m, "material");
+        material_value(p, sh->material);
+        if (sh->has_transform)
+            write_transform(p, &m, &sh->to_world);
+        object_end(p, &m);
+    }
+    for (int i = 0; i < s->instance_count; i++) {
+        const instance *in = &s->instances[i];
+        const mesh_origin *o = &s->meshes[in->mesh].origin;
+        ymap m = object_begin(p, &any, in->has_transform);
+        ymap_key(&m, "type");
+        fputs("mesh", p->f);
+        ymap_key(&m, "file");
+        yw_text(p->f, o->file);
+        glint_import_options options = {.crease_angle = o->crease_angle};
+        yw_params(&m, import_params(), &options, false);
+        if (in->material >= 0) {
+            ymap_key(&m, "material");
+            material_value(p, in->material);
+        }
+        if (in->has_transform)
+            write_transform(p, &m, &in->to_world);
+        object_end(p, &m);
+    }
+}
+
+glint_status glint_scene_write_yaml(const glint_scene *scene, FILE *out, glint_error *err)
+{
+    if (!scene || !out)
+        return error_set(err, GLINT_ERR_INVALID, "writing a scene needs a scene and a file");
+    plan p;
+    glint_status st = plan_make(&p, scene, out, err);
+    if (!st) {
+        fputs("# A glint scene file (docs/scene-format.md). Settings and camera list every key;\n"
+              "# elsewhere a key at its default is left out.\n"
+              "glint: 1\n",
+              out);
+        write_settings(&p);
+        write_fog(&p);
+        write_textures(&p);
+        write_materials(&p);
+        write_lights(&p);
+        write_objects(&p);
+        if (fflush(out) || ferror(out))
+            st = error_set(err, GLINT_ERR_IO, "the scene could not be written");
+    }
+    plan_free(&p);
+    return st;
+}

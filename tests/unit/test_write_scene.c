@@ -1,0 +1,243 @@
+/* test_write_scene.c - glint_scene_write_yaml: a scene written and read back
+ * holds the same values bit for bit (awkward numbers, negative zeros,
+ * composed transforms, colours, names YAML would misread), and a scene a
+ * file cannot say is refused with nothing written. The command line's
+ * round trip through whole renders is tests/cli/print_scene.sh. */
+#define _GNU_SOURCE /* open_memstream */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#include "glint.h"
+#include "scene/scene.h"
+
+/* The scene written by glint_scene_write_yaml, as text (freed by the
+ * caller), or NULL with *status set when it refused. */
+static char *written(const glint_scene *s, glint_status *status, glint_error *err)
+{
+    char *text = NULL;
+    size_t size = 0;
+    FILE *f = open_memstream(&text, &size);
+    assert_non_null(f);
+    *status = glint_scene_write_yaml(s, f, err);
+    fclose(f);
+    if (*status) {
+        assert_int_equal(size, 0); /* nothing written */
+        free(text);
+        return NULL;
+    }
+    return text;
+}
+
+/* s written and loaded back; fails the test if either step fails. */
+static glint_scene *round_trip(const glint_scene *s)
+{
+    glint_error err = {0};
+    glint_status st;
+    char *text = written(s, &st, &err);
+    if (!text)
+        fail_msg("not written: %s", err.message);
+    glint_scene *back = glint_scene_load_memory(text, strlen(text), "written.yaml", NULL, &err);
+    if (!back)
+        fail_msg("not read back: %s\n%s", err.message, text);
+    free(text);
+    return back;
+}
+
+static void assert_same_bits(const void *a, const void *b, size_t size)
+{
+    assert_memory_equal(a, b, size);
+}
+
+static int add_material(glint_scene *s, const char *name, glint_color c)
+{
+    glint_material m = glint_material_default();
+    m.color = c;
+    glint_error err;
+    int i = glint_scene_add_material(s, name, &m, &err);
+    assert_true(i >= 0);
+    return i;
+}
+
+/* Numbers that need all 17 digits, tiny and huge ones and negative zeros
+ * come back as the same bits, and so does a transform composed of turns
+ * and scales that no list of simple steps writes exactly. */
+static void test_numbers_and_transforms(void **state)
+{
+    (void)state;
+    glint_scene *s = glint_scene_new();
+    int m = add_material(s, "m", (glint_color){0.1, 0.2, 0.3});
+    glint_shape sphere = glint_shape_default(GLINT_SHAPE_SPHERE);
+    sphere.center = (glint_vec3){0.1 + 0.2, -0.0, 1e-300};
+    sphere.radius = 1.0 / 3.0;
+    glint_transform t = glint_transform_rotate(glint_transform_identity(), (glint_vec3){1, 2, 3}, 37);
+    t = glint_transform_scale(t, 1.5, -0.25, 2);
+    t = glint_transform_translate(t, -0.0, 1e17, 3.14159);
+    glint_error err;
+    assert_true(glint_scene_add_shape(s, &sphere, m, &t, &err) >= 0);
+    glint_shape box = glint_shape_default(GLINT_SHAPE_BOX);
+    box.min = (glint_vec3){-1e-9, -2, -3};
+    box.max = (glint_vec3){123456789.125, 2, 3};
+    assert_true(glint_scene_add_shape(s, &box, m, NULL, &err) >= 0);
+    glint_camera cam = {{0.7, 1.1, 9.9}, {0, 0.5, 0}, {0, 1, 0}, 33.3};
+    assert_int_equal(glint_scene_set_camera(s, &cam, &err), GLINT_OK);
+
+    glint_scene *back = round_trip(s);
+    assert_int_equal(back->shape_count, 2);
+    assert_same_bits(&back->shapes[0].desc, &s->shapes[0].desc, sizeof(glint_shape));
+    assert_same_bits(&back->shapes[0].to_world, &s->shapes[0].to_world, sizeof(glint_transform));
+    assert_same_bits(&back->shapes[1].desc, &s->shapes[1].desc, sizeof(glint_shape));
+    assert_false(back->shapes[1].has_transform);
+    assert_same_bits(&back->camera, &s->camera, sizeof cam);
+    glint_scene_free(back);
+    glint_scene_free(s);
+}
+
+/* Linear colours come back exactly, whether a display value gives them
+ * ([r, g, b]) or only {linear: ...} does (above 1, or no display value
+ * converts to them). */
+static void test_colors(void **state)
+{
+    (void)state;
+    glint_scene *s = glint_scene_new();
+    srand(20);
+    enum { N = 200 };
+    for (int i = 0; i < N; i++) {
+        char name[16];
+        snprintf(name, sizeof name, "c%d", i);
+        glint_color c = {rand() / (double)RAND_MAX, glint_srgb_to_linear(i / 199.0), i == 0 ? 7.5 : 0.0};
+        add_material(s, name, c);
+    }
+    glint_scene *back = round_trip(s);
+    assert_int_equal(back->material_count, N);
+    for (int i = 0; i < N; i++)
+        assert_same_bits(&back->materials[i].m, &s->materials[i].m, sizeof(glint_material));
+    glint_scene_free(back);
+    glint_scene_free(s);
+}
+
+/* Names with YAML's indicators, words YAML gives meanings and numbers are
+ * quoted and come back as the same text; an unnamed texture gets a name
+ * of its own that no other texture has. */
+static void test_names(void **state)
+{
+    (void)state;
+    static const char *const NAMES[] = {"a: b", "#hash", "true", "123", "quote\"back\\slash", "-x", "", "tab\there"};
+    glint_scene *s = glint_scene_new();
+    glint_error err;
+    for (size_t i = 0; i < sizeof NAMES / sizeof NAMES[0]; i++)
+        if (NAMES[i][0])
+            add_material(s, NAMES[i], (glint_color){0.5, 0.5, 0.5});
+    glint_mapping uv = {.kind = GLINT_MAP_UV};
+    assert_true(glint_scene_add_checker(s, "texture-1", (glint_color){0, 0, 0}, (glint_color){1, 1, 1}, 1, uv,
+                                        &err) >= 0);
+    assert_true(glint_scene_add_checker(s, NULL, (glint_color){1, 0, 0}, (glint_color){0, 1, 0}, 2, uv, &err) >= 0);
+    glint_material m = glint_material_default();
+    m.texture = 1;
+    assert_true(glint_scene_add_material(s, "checked", &m, &err) >= 0);
+
+    glint_scene *back = round_trip(s);
+    for (int i = 0; i < s->material_count; i++)
+        assert_string_equal(back->materials[i].name, s->materials[i].name);
+    int checked = scene_find_material(back, "checked");
+    assert_true(checked >= 0);
+    const texture *t = &back->textures[back->materials[checked].m.texture];
+    assert_string_equal(t->name, "texture-2");
+    assert_same_bits(&t->a, &s->textures[1].a, sizeof t->a);
+    glint_scene_free(back);
+    glint_scene_free(s);
+}
+
+/* A transform step written as a matrix is that matrix exactly, negative
+ * zeros included, whatever group it is in. */
+static void test_matrix_step(void **state)
+{
+    (void)state;
+    static const char SCENE[] = "materials: {m: {}}\n"
+                                "objects:\n"
+                                "  - type: group\n"
+                                "    objects:\n"
+                                "      - {type: sphere, radius: 1, material: m,\n"
+                                "         transform: [{matrix: [[-0, 2, 0, 1], [1, -0, 0, -0], [0, 0, 3, 0.1]]}]}\n";
+    glint_error err;
+    glint_scene *s = glint_scene_load_memory(SCENE, sizeof SCENE - 1, "m.yaml", NULL, &err);
+    if (!s)
+        fail_msg("%s", err.message);
+    glint_transform want = {{{-0.0, 2, 0, 1}, {1, -0.0, 0, -0.0}, {0, 0, 3, 0.1}}};
+    assert_same_bits(&s->shapes[0].to_world, &want, sizeof want);
+    glint_scene_free(s);
+
+    static const char BAD[] = "materials: {m: {}}\n"
+                              "objects: [{type: sphere, radius: 1, material: m, transform: [{matrix: [[1, 0, 0]]}]}]\n";
+    assert_null(glint_scene_load_memory(BAD, sizeof BAD - 1, "bad.yaml", NULL, &err));
+    assert_string_equal(err.message,
+                        "bad.yaml:2:71: 'matrix' must be 3 rows of 4 numbers, [[a, b, c, d], [e, f, g, h], [i, j, k, l]]");
+}
+
+/* What a scene file cannot say is refused, naming it, with nothing
+ * written: a placed mesh built from arrays, an image from memory. */
+static void test_refusals(void **state)
+{
+    (void)state;
+    glint_scene *s = glint_scene_new();
+    int m = add_material(s, "m", (glint_color){1, 1, 1});
+    static const float positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
+    static const uint32_t indices[] = {0, 1, 2};
+    glint_mesh_data d = {.positions = positions, .vertex_count = 3, .indices = indices, .triangle_count = 1,
+                         .material = m};
+    glint_error err;
+    int tri = glint_scene_add_mesh(s, "tri", &d, &err);
+    assert_true(tri >= 0);
+    glint_status st;
+    char *text = written(s, &st, &err); /* not placed: nothing to say */
+    assert_non_null(text);
+    assert_null(strstr(text, "tri"));
+    free(text);
+    assert_true(glint_scene_add_instance(s, tri, -1, NULL, &err) >= 0);
+    assert_null(written(s, &st, &err));
+    assert_int_equal(st, GLINT_ERR_INVALID);
+    assert_string_equal(err.message,
+                        "mesh 0 ('tri') is not from a model file: a scene file can place only model files");
+    glint_scene_free(s);
+
+    /* A PNG's bytes, from a file glint writes. */
+    char path[1024];
+    const char *dir = getenv("GLINT_TEST_TMP");
+    snprintf(path, sizeof path, "%s/write_scene.png", dir ? dir : "/tmp");
+    float pixels[12] = {0};
+    glint_image image = {2, 2, pixels};
+    assert_int_equal(glint_image_write(&image, path, &err), GLINT_OK);
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    unsigned char bytes[4096];
+    size_t size = fread(bytes, 1, sizeof bytes, f);
+    fclose(f);
+    remove(path);
+    s = glint_scene_new();
+    glint_mapping uv = {.kind = GLINT_MAP_UV};
+    assert_true(glint_scene_add_image_memory(s, "pic", bytes, size, uv, &err) >= 0);
+    assert_null(written(s, &st, &err));
+    assert_int_equal(st, GLINT_ERR_INVALID);
+    assert_string_equal(err.message,
+                        "texture 'pic' was decoded from bytes in memory: a scene file can name only image files");
+    glint_scene_free(s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_numbers_and_transforms),
+        cmocka_unit_test(test_colors),
+        cmocka_unit_test(test_names),
+        cmocka_unit_test(test_matrix_step),
+        cmocka_unit_test(test_refusals),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
