@@ -133,7 +133,7 @@ glint: 1
 settings:
   width: 640
   height: 480
-  samples: 1
+  samples: 4
   sampler: regular
   seed: 0
   depth: 5
