@@ -162,8 +162,12 @@ glint_fog glint_scene_get_fog(const glint_scene *scene);
 /* ---------------------------------------------------------------- textures */
 
 /* How a surface point becomes texture coordinates (u, v). Mappings work on
- * p = (object-space point - center), in the object's own coordinates (before
- * its transform), so a texture moves with its object. */
+ * p = (object-space point - origin), in the object's own coordinates (before
+ * its transform), so a texture moves with its object. The origin is center
+ * when center_given is set; otherwise spherical and cylindrical mappings
+ * are centred on the object (a sphere's or disk's centre, a cylinder's or
+ * cone's base centre, a plane's point, the middle of a box's, a polygon's
+ * or a mesh's bounds) and a planar mapping starts from (0, 0, 0). */
 typedef enum glint_mapping_kind {
     GLINT_MAP_UV = 0,     /* the shape's own (u, v) */
     GLINT_MAP_PLANAR,     /* u = p.unit(u_axis) / scale, v = p.unit(v_axis) / scale */
@@ -173,7 +177,9 @@ typedef enum glint_mapping_kind {
 
 typedef struct glint_mapping {
     glint_mapping_kind kind;
-    glint_vec3 center;           /* origin of p */
+    glint_vec3 center;           /* origin of p, when center_given */
+    bool center_given;           /* false: the object's centre or (0, 0, 0), as above; center
+                                    must then be zero */
     glint_vec3 u_axis, v_axis;   /* planar; both zero means x and z */
     double scale;                /* planar, cylindrical: > 0; 0 is taken as the default, 1 */
 } glint_mapping;

@@ -36,6 +36,13 @@ void mesh_release(mesh *m);
 /* The material of triangle tri as placed by inst. */
 int mesh_material(const mesh *m, const instance *inst, unsigned tri);
 
+/* The middle of m's bounds in its own coordinates: where spherical and
+ * cylindrical mappings are centred on it unless they give their own. */
+static inline vec3 mesh_center(const mesh *m)
+{
+    return v3_scale(v3_add(m->lo, m->hi), 0.5);
+}
+
 /* Asks the processor to start loading what mesh_surface will read of
  * triangle tri, so that the loads of several hits overlap. */
 void mesh_prefetch(const mesh *m, unsigned tri);

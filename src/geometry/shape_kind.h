@@ -46,6 +46,11 @@ struct shape_kind {
     /* Object-space bounds; NULL: unbounded (a plane), which the
      * accelerator tests itself rather than through its hierarchy. */
     void (*bounds)(const shape *s, vec3 *lo, vec3 *hi);
+    /* The shape's centre in object space, where spherical and cylindrical
+     * mappings are centred (shape_center); NULL: the description's
+     * `center` (a sphere's or disk's centre, a cylinder's or cone's base
+     * centre, a plane's point). */
+    vec3 (*center)(const shape *s);
 };
 
 extern const shape_kind sphere_kind, plane_kind, polygon_kind, box_kind, cylinder_kind, cone_kind, disk_kind;
@@ -54,6 +59,10 @@ extern const shape_kind sphere_kind, plane_kind, polygon_kind, box_kind, cylinde
  * of those that do when capped (cylinders, cones). */
 bool shape_always_closed(const glint_shape *d);
 bool shape_closed_if_capped(const glint_shape *d);
+
+/* The `center` of kinds whose description has no centre (boxes,
+ * polygons): the middle of their object-space bounds. */
+vec3 shape_bounds_middle(const shape *s);
 
 /* The kind with that public id, or NULL for an id no kind has. */
 const shape_kind *shape_kind_of(glint_shape_kind id);

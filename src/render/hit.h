@@ -54,10 +54,13 @@ static __attribute__((unused)) color hit_texture_color(const glint_scene *scene,
                                                         const glint_material *m, surface *s)
 {
     const texture *t = &scene->textures[m->texture];
+    if (h->shape < 0)
+        return texture_eval(t, s, mesh_center(hit_mesh(scene, h)));
     /* Meshes carry their uv already; shapes compute it only when asked. */
-    if (t->mapping.kind == GLINT_MAP_UV && h->shape >= 0)
-        shape_surface_uv(&scene->shapes[h->shape], s);
-    return texture_eval(t, s);
+    const shape *sh = &scene->shapes[h->shape];
+    if (t->mapping.kind == GLINT_MAP_UV)
+        shape_surface_uv(sh, s);
+    return texture_eval(t, s, shape_center(sh));
 }
 
 /* The colour of material m (hit_material's) at the surface s of hit h

@@ -163,6 +163,43 @@ static void test_planes_are_infinite_and_lose_ties(void **state)
     glint_scene_free(tie);
 }
 
+/* A sphere of radius 1 at c with a spherical checker of 8 x 8 cells (no
+ * center given), seen from 4 units in front of it. */
+static glint_image checked_ball(glint_vec3 c)
+{
+    glint_vec3 eye = {c.x, c.y, c.z + 4};
+    glint_scene *s = new_scene(64, 64, eye, c, (glint_vec3){0, 1, 0}, 35);
+    glint_mapping sph = {.kind = GLINT_MAP_SPHERICAL};
+    int tex = glint_scene_add_checker(s, NULL, (glint_color){1, 0, 0}, (glint_color){0, 0, 1}, 0.125, sph, NULL);
+    assert_true(tex >= 0);
+    glint_material m = glint_material_default();
+    m.texture = tex;
+    m.ambient = 1;
+    m.diffuse = m.specular = 0;
+    add_sphere(s, c.x, c.y, c.z, 1, glint_scene_add_material(s, NULL, &m, NULL));
+    glint_image img = render(s, 1);
+    glint_scene_free(s);
+    return img;
+}
+
+/* A spherical mapping goes around the sphere it is on: a ball away from
+ * the origin, seen from the same place relative to it, shows the same
+ * cells as one at the origin. The few pixels allowed to differ are those
+ * whose point lies on a cell's edge, within rounding. */
+static void test_spherical_mapping_follows_the_sphere(void **state)
+{
+    glint_image home = checked_ball((glint_vec3){0, 0, 0}), away = checked_ball((glint_vec3){-3, 1, 0});
+    int differ = 0, red = 0;
+    for (int i = 0; i < 3 * 64 * 64; i++)
+        differ += fabsf(home.pixels[i] - away.pixels[i]) > 1e-6f;
+    for (int i = 0; i < 64 * 64; i++)
+        red += home.pixels[3 * i] > 0.5f;
+    assert_true(differ <= 64);
+    assert_true(red > 500); /* the ball shows both colours, not one */
+    glint_image_free(&home);
+    glint_image_free(&away);
+}
+
 static int red_glass(glint_scene *s)
 {
     glint_material m = glint_material_default();
@@ -701,6 +738,7 @@ int main(void)
         cmocka_unit_test(test_nan_samples_never_reach_a_pixel),
         cmocka_unit_test(test_sphere_silhouette_area),
         cmocka_unit_test(test_shadow_ratio),
+        cmocka_unit_test(test_spherical_mapping_follows_the_sphere),
         cmocka_unit_test(test_tinted_shadows_multiply),
         cmocka_unit_test(test_mirror_shows_facing_wall),
         cmocka_unit_test(test_refraction_inverts),
