@@ -381,6 +381,14 @@ int glint_scene_import_mesh(glint_scene *scene, const char *path, const glint_im
 int glint_scene_import_mesh_memory(glint_scene *scene, const void *data, size_t size, const char *name,
                                    const glint_import_options *options, glint_error *err);
 
+/* True when mesh `mesh` was imported from a file that gives it no
+ * materials, so every triangle has the importer's stand-in (a grey, or the
+ * import's default_material): a placement may then choose one, as a scene
+ * file's group does. False for a mesh with materials from its file, for
+ * one from glint_scene_add_mesh (its caller chose them), and for an index
+ * that is no mesh. */
+bool glint_scene_mesh_is_bare(const glint_scene *scene, int mesh);
+
 /* The axis-aligned bounds of a mesh in its own coordinates. */
 glint_status glint_scene_mesh_bounds(const glint_scene *scene, int mesh, glint_vec3 *min, glint_vec3 *max,
                                      glint_error *err);

@@ -17,6 +17,8 @@ typedef struct mesh {
     int material;
     int vertex_count, triangle_count;
     vec3 lo, hi;              /* bounds in the mesh's own coordinates */
+    bool bare;                /* imported from a file that gave it no materials: `material`, for
+                                 every triangle, is the importer's stand-in */
 } mesh;
 
 typedef struct instance {

@@ -107,9 +107,10 @@ static int import_model(loader *l, const ynode *file, const char *path, double c
 static const param CREASE_ANGLE = {.key = "crease_angle", .type = PARAM_NUMBER, .def = {80}, .lo = 0, .hi = 180,
                                    .unit = "degrees", .meaning = "where generated normals stay sharp"};
 
-/* A mesh object: its model file's triangles, placed; `override` (>= 0)
- * replaces the file's own materials. */
-static void place_mesh(loader *l, const ynode *n, int override, const glint_transform *to_world)
+/* A mesh object: its model file's triangles, placed. `look` (>= 0), its
+ * own material or its group's, replaces the file's materials when it is
+ * its own (`own`) or the file gives none. */
+static void place_mesh(loader *l, const ynode *n, int look, bool own, const glint_transform *to_world)
 {
     const ynode *file = yr_need(&l->r, n, "file", "mesh");
     const char *path;
@@ -124,6 +125,7 @@ static void place_mesh(loader *l, const ynode *n, int override, const glint_tran
     }
     int mesh_index = import_model(l, file, full, crease);
     free(full);
+    int override = own || glint_scene_mesh_is_bare(l->scene, mesh_index) ? look : -1;
     glint_error err;
     if (mesh_index >= 0 && glint_scene_add_instance(l->scene, mesh_index, override, to_world, &err) < 0)
         diag_error(&l->d, n, &err);
@@ -185,7 +187,7 @@ static void read_object(loader *l, const ynode *n, const context *outer)
         return;
 
     if (type == OBJECT_MESH) {
-        place_mesh(l, n, mat ? ctx.material : -1, &ctx.to_world);
+        place_mesh(l, n, ctx.material, mat != NULL, &ctx.to_world);
         return;
     }
     if (type == OBJECT_GROUP) {
