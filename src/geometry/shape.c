@@ -138,18 +138,9 @@ bool shape_is_left_behind(const shape *s, vec3 n, vec3 d)
     return s->kind->flat || (s->kind->max_crossings <= 2 && v3_dot(n, d) > 0);
 }
 
-bool shape_always_closed(const glint_shape *d) { return true; }
-
 vec3 shape_bounds_middle(const shape *s)
 {
     vec3 lo, hi;
     s->kind->bounds(s, &lo, &hi);
     return v3_scale(v3_add(lo, hi), 0.5);
-}
-
-bool shape_closed_if_capped(const glint_shape *d) { return d->capped; }
-
-bool shape_is_closed(const shape *s)
-{
-    return s->kind->closed && s->kind->closed(&s->desc);
 }

@@ -134,8 +134,5 @@ static inline vec3 shape_center(const shape *s)
     return s->center;
 }
 
-/* True for shapes that enclose a volume (sphere, box, capped cylinder,
- * cone with its base cap): a ray enters and leaves them. */
-bool shape_is_closed(const shape *s);
 
 #endif

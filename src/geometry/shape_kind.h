@@ -27,9 +27,6 @@ struct shape_kind {
     /* Lies in one plane: its normal is the same at every point, and a ray
      * leaving it never meets it again. */
     bool flat;
-    /* Whether a shape of this kind encloses a volume (a ray enters and
-     * leaves it), from its description; NULL: never. */
-    bool (*closed)(const glint_shape *d);
     /* Checks what the table cannot (rules across fields) and fills the
      * fields of s derived from s->desc; NULL: nothing to do. */
     glint_status (*init)(shape *s, glint_error *err);
@@ -54,11 +51,6 @@ struct shape_kind {
 };
 
 extern const shape_kind sphere_kind, plane_kind, polygon_kind, box_kind, cylinder_kind, cone_kind, disk_kind;
-
-/* The `closed` of kinds that always enclose a volume (spheres, boxes), and
- * of those that do when capped (cylinders, cones). */
-bool shape_always_closed(const glint_shape *d);
-bool shape_closed_if_capped(const glint_shape *d);
 
 /* The `center` of kinds whose description has no centre (boxes,
  * polygons): the middle of their object-space bounds. */
