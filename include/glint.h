@@ -163,8 +163,12 @@ glint_fog glint_scene_get_fog(const glint_scene *scene);
 /* ---------------------------------------------------------------- textures */
 
 /* How a surface point becomes texture coordinates (u, v). Mappings work on
- * p = (object-space point - center), in the object's own coordinates (before
- * its transform), so a texture moves with its object. */
+ * p = (object-space point - origin), in the object's own coordinates (before
+ * its transform), so a texture moves with its object. The origin is center
+ * when center_given is set; otherwise spherical and cylindrical mappings
+ * are centred on the object (a sphere's or disk's centre, a cylinder's or
+ * cone's base centre, a plane's point, the middle of a box's, a polygon's
+ * or a mesh's bounds) and a planar mapping starts from (0, 0, 0). */
 typedef enum glint_mapping_kind {
     GLINT_MAP_UV = 0,     /* the shape's own (u, v) */
     GLINT_MAP_PLANAR,     /* u = p.unit(u_axis) / scale, v = p.unit(v_axis) / scale */
@@ -174,7 +178,9 @@ typedef enum glint_mapping_kind {
 
 typedef struct glint_mapping {
     glint_mapping_kind kind;
-    glint_vec3 center;           /* origin of p */
+    glint_vec3 center;           /* origin of p, when center_given */
+    bool center_given;           /* false: the object's centre or (0, 0, 0), as above; center
+                                    must then be zero */
     glint_vec3 u_axis, v_axis;   /* planar; both zero means x and z */
     double scale;                /* planar, cylindrical: > 0; 0 is taken as the default, 1 */
 } glint_mapping;
@@ -375,6 +381,14 @@ int glint_scene_import_mesh(glint_scene *scene, const char *path, const glint_im
  * format. Files the model refers to (MTL, textures) are not read. */
 int glint_scene_import_mesh_memory(glint_scene *scene, const void *data, size_t size, const char *name,
                                    const glint_import_options *options, glint_error *err);
+
+/* True when mesh `mesh` was imported from a file that gives it no
+ * materials, so every triangle has the importer's stand-in (a grey, or the
+ * import's default_material): a placement may then choose one, as a scene
+ * file's group does. False for a mesh with materials from its file, for
+ * one from glint_scene_add_mesh (its caller chose them), and for an index
+ * that is no mesh. */
+bool glint_scene_mesh_is_bare(const glint_scene *scene, int mesh);
 
 /* The axis-aligned bounds of a mesh in its own coordinates. */
 glint_status glint_scene_mesh_bounds(const glint_scene *scene, int mesh, glint_vec3 *min, glint_vec3 *max,

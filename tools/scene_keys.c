@@ -80,8 +80,8 @@ static const char *type_name(const param *p)
 static void default_text(const param *p, char *buf, size_t size)
 {
     const double *d = p->def;
-    if (p->required) {
-        snprintf(buf, size, "required");
+    if (p->required || p->default_text) {
+        snprintf(buf, size, "%s", p->required ? "required" : p->default_text);
         return;
     }
     switch (p->type) {

@@ -55,6 +55,9 @@ typedef struct param {
     bool (*rule)(double v);
     const char *rule_text;
     const char *meaning;      /* one line, for the docs */
+    /* The docs' words for a default that depends on more than the key (a
+     * mapping centred on its shape), or NULL: def is shown. */
+    const char *default_text;
 } param;
 
 /* The range of numbers above 0 (any finite positive number). */

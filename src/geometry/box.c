@@ -92,6 +92,6 @@ static const param BOX_PARAMS[] = {
 
 const shape_kind box_kind = {
     .name = "box", .id = GLINT_SHAPE_BOX, .params = PARAM_TABLE(BOX_PARAMS), .max_crossings = 2,
-    .closed = shape_always_closed, .init = box_init, .intersect = box_intersect, .surface = box_surface,
-    .uv = box_uv, .bounds = box_bounds,
+    .init = box_init, .intersect = box_intersect, .surface = box_surface,
+    .uv = box_uv, .bounds = box_bounds, .center = shape_bounds_middle,
 };

@@ -97,6 +97,6 @@ static const param CONE_PARAMS[] = {
 
 const shape_kind cone_kind = {
     .name = "cone", .id = GLINT_SHAPE_CONE, .params = PARAM_TABLE(CONE_PARAMS), .max_crossings = 2,
-    .closed = shape_closed_if_capped, .intersect = cone_intersect, .surface = cone_surface, .uv = cone_uv,
+    .intersect = cone_intersect, .surface = cone_surface, .uv = cone_uv,
     .bounds = cone_bounds,
 };

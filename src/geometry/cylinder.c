@@ -80,6 +80,6 @@ static const param CYLINDER_PARAMS[] = {
 
 const shape_kind cylinder_kind = {
     .name = "cylinder", .id = GLINT_SHAPE_CYLINDER, .params = PARAM_TABLE(CYLINDER_PARAMS), .max_crossings = 2,
-    .closed = shape_closed_if_capped, .intersect = cylinder_intersect, .surface = cylinder_surface, .uv = cylinder_uv,
+    .intersect = cylinder_intersect, .surface = cylinder_surface, .uv = cylinder_uv,
     .bounds = cylinder_bounds,
 };

@@ -30,6 +30,8 @@ typedef struct mesh {
     int material;
     int vertex_count, triangle_count;
     vec3 lo, hi;              /* bounds in the mesh's own coordinates */
+    bool bare;                /* imported from a file that gave it no materials: `material`, for
+                                 every triangle, is the importer's stand-in */
 } mesh;
 
 typedef struct instance {
@@ -48,6 +50,13 @@ void mesh_release(mesh *m);
 
 /* The material of triangle tri as placed by inst. */
 int mesh_material(const mesh *m, const instance *inst, unsigned tri);
+
+/* The middle of m's bounds in its own coordinates: where spherical and
+ * cylindrical mappings are centred on it unless they give their own. */
+static inline vec3 mesh_center(const mesh *m)
+{
+    return v3_scale(v3_add(m->lo, m->hi), 0.5);
+}
 
 /* Asks the processor to start loading what mesh_surface will read of
  * triangle tri, so that the loads of several hits overlap. */

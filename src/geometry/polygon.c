@@ -130,5 +130,5 @@ static const param POLYGON_PARAMS[] = {
 const shape_kind polygon_kind = {
     .name = "polygon", .id = GLINT_SHAPE_POLYGON, .params = PARAM_TABLE(POLYGON_PARAMS), .max_crossings = 1,
     .flat = true, .init = polygon_init, .intersect = polygon_intersect, .intersect4 = polygon_intersect4,
-    .surface = polygon_surface, .uv = polygon_uv, .bounds = polygon_bounds,
+    .surface = polygon_surface, .uv = polygon_uv, .bounds = polygon_bounds, .center = shape_bounds_middle,
 };

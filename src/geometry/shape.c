@@ -34,6 +34,8 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
     glint_status st = params_check(k->params, &s->desc, k->name, err);
     if (st == GLINT_OK && k->init)
         st = k->init(s, err);
+    if (st == GLINT_OK)
+        s->center = k->center ? k->center(s) : s->desc.center;
     if (st == GLINT_OK && !s->has_transform && k->flat) {
         /* What shape_surface would compute at every hit, computed once:
          * the same bits. */
@@ -136,11 +138,9 @@ bool shape_is_left_behind(const shape *s, vec3 n, vec3 d)
     return s->kind->flat || (s->kind->max_crossings <= 2 && v3_dot(n, d) > 0);
 }
 
-bool shape_always_closed(const glint_shape *d) { return true; }
-
-bool shape_closed_if_capped(const glint_shape *d) { return d->capped; }
-
-bool shape_is_closed(const shape *s)
+vec3 shape_bounds_middle(const shape *s)
 {
-    return s->kind->closed && s->kind->closed(&s->desc);
+    vec3 lo, hi;
+    s->kind->bounds(s, &lo, &hi);
+    return v3_scale(v3_add(lo, hi), 0.5);
 }

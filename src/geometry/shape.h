@@ -52,6 +52,7 @@ typedef struct shape {
     bool quad;                /* shape_intersect4 takes it */
     bool flat;                /* a flat kind (shape_kind.flat) without a transform: */
     vec3 flat_n;              /* its surface normal, the same at every hit */
+    vec3 center;              /* shape_center's */
     int material;
 } shape;
 
@@ -126,8 +127,12 @@ int shape_max_crossings(const shape *s);
  * and s is convex (no line crosses it more than twice). */
 bool shape_is_left_behind(const shape *s, vec3 n, vec3 d);
 
-/* True for shapes that enclose a volume (sphere, box, capped cylinder,
- * cone with its base cap): a ray enters and leaves them. */
-bool shape_is_closed(const shape *s);
+/* The centre of s in object space (its kind's `center`): where spherical
+ * and cylindrical mappings are centred unless they give their own. */
+static inline vec3 shape_center(const shape *s)
+{
+    return s->center;
+}
+
 
 #endif

@@ -27,9 +27,6 @@ struct shape_kind {
     /* Lies in one plane: its normal is the same at every point, and a ray
      * leaving it never meets it again. */
     bool flat;
-    /* Whether a shape of this kind encloses a volume (a ray enters and
-     * leaves it), from its description; NULL: never. */
-    bool (*closed)(const glint_shape *d);
     /* Checks what the table cannot (rules across fields) and fills the
      * fields of s derived from s->desc; NULL: nothing to do. */
     glint_status (*init)(shape *s, glint_error *err);
@@ -46,14 +43,18 @@ struct shape_kind {
     /* Object-space bounds; NULL: unbounded (a plane), which the
      * accelerator tests itself rather than through its hierarchy. */
     void (*bounds)(const shape *s, vec3 *lo, vec3 *hi);
+    /* The shape's centre in object space, where spherical and cylindrical
+     * mappings are centred (shape_center); NULL: the description's
+     * `center` (a sphere's or disk's centre, a cylinder's or cone's base
+     * centre, a plane's point). */
+    vec3 (*center)(const shape *s);
 };
 
 extern const shape_kind sphere_kind, plane_kind, polygon_kind, box_kind, cylinder_kind, cone_kind, disk_kind;
 
-/* The `closed` of kinds that always enclose a volume (spheres, boxes), and
- * of those that do when capped (cylinders, cones). */
-bool shape_always_closed(const glint_shape *d);
-bool shape_closed_if_capped(const glint_shape *d);
+/* The `center` of kinds whose description has no centre (boxes,
+ * polygons): the middle of their object-space bounds. */
+vec3 shape_bounds_middle(const shape *s);
 
 /* The kind with that public id, or NULL for an id no kind has. */
 const shape_kind *shape_kind_of(glint_shape_kind id);

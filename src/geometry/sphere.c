@@ -74,6 +74,6 @@ static const param SPHERE_PARAMS[] = {
 
 const shape_kind sphere_kind = {
     .name = "sphere", .id = GLINT_SHAPE_SPHERE, .params = PARAM_TABLE(SPHERE_PARAMS), .max_crossings = 2,
-    .closed = shape_always_closed, .intersect = sphere_intersect, .intersect4 = sphere_intersect4,
+    .intersect = sphere_intersect, .intersect4 = sphere_intersect4,
     .surface = sphere_surface, .uv = sphere_uv, .bounds = sphere_bounds,
 };

@@ -111,7 +111,7 @@ glint_status model_add_materials(glint_scene *scene, const model_material *mats,
             glint_material m = grey();
             s = add_material(scene, "default", &m, job, &fallback, err);
         }
-        index[i] = fallback;
+        index[i] = *job->stand_in = fallback;
     }
     free(cache.refs);
     free(cache.index);
@@ -125,5 +125,7 @@ int model_add_mesh(glint_scene *scene, const model_import *job, const glint_mesh
     int added = glint_scene_add_mesh(scene, job->stem, d, &inner);
     if (added < 0)
         error_set(err, inner.status, "%s: %s", job->file, inner.message);
+    else
+        scene->meshes[added].bare = !d->materials && d->material == *job->stand_in;
     return added;
 }

@@ -46,13 +46,15 @@ glint_status model_add_texture_file(glint_scene *scene, const char *ref, const m
  * add_texture with `user`), and sets index[i] to material i's. Materials
  * are named "<stem>/<name>", or "<stem>/<name>#N" when that is taken. A
  * material without a name gets job->default_material, or, when that is -1,
- * a grey "<stem>/default" made on first need. */
+ * a grey "<stem>/default" made on first need; *job->stand_in is then set to
+ * it. */
 glint_status model_add_materials(glint_scene *scene, const model_material *mats, size_t count,
                                  model_texture_fn add_texture, void *user, const model_import *job, int *index,
                                  glint_error *err);
 
 /* Adds the mesh d named after the model, with a message naming the model
- * when glint refuses it. Returns its index or -1. */
+ * when glint refuses it, and marks it bare when every triangle has the
+ * stand-in material (glint_scene_mesh_is_bare). Returns its index or -1. */
 int model_add_mesh(glint_scene *scene, const model_import *job, const glint_mesh_data *d, glint_error *err);
 
 #endif

@@ -33,6 +33,8 @@ typedef struct model_import {
                                  (a model from memory) */
     double crease;            /* degrees, in (0, 180]: where generated normals stay sharp */
     int default_material;     /* for triangles without a material in the file; -1: a grey one */
+    int *stand_in;            /* where model_add_materials says which material it gave them (-1:
+                                 none), for model_add_mesh to tell a file without materials */
 } model_import;
 
 /* A reader of one or more formats. Each returns the index of the mesh it

@@ -67,7 +67,8 @@ static int import(glint_scene *scene, int fd, const unsigned char *data, size_t 
                   const glint_import_options *options, glint_error *err)
 {
     const model_reader *reader = NULL;
-    model_import job = {.file = file, .format = model_format_of(file, &reader)};
+    int stand_in = -1;
+    model_import job = {.file = file, .format = model_format_of(file, &reader), .stand_in = &stand_in};
     char *stem = NULL, *dir = NULL;
     glint_status s = read_options(scene, options, &job, err);
     if (!s && !job.format) {

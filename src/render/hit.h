@@ -1,7 +1,7 @@
 /* hit.h - what the renderer knows of a hit: given the accelerator's
  * accel_hit and the ray that found it, the material there, the surface (a
- * mesh hit's distance refined), its colour, whether the thing hit encloses
- * a volume, which shape a ray leaving it need not test, and which shapes
+ * mesh hit's distance refined), its colour, which shape a ray leaving it
+ * need not test, and which shapes
  * and mesh placements block all light. Whether a hit is an analytic shape's
  * or a mesh triangle's is asked here and nowhere else in the renderer, so
  * the integrator is written once for both (and for any kind of thing a
@@ -54,10 +54,13 @@ static __attribute__((unused)) color hit_texture_color(const glint_scene *scene,
                                                         const glint_material *m, surface *s)
 {
     const texture *t = &scene->textures[m->texture];
+    if (h->shape < 0)
+        return texture_eval(t, s, mesh_center(hit_mesh(scene, h)));
     /* Meshes carry their uv already; shapes compute it only when asked. */
-    if (t->mapping.kind == GLINT_MAP_UV && h->shape >= 0)
-        shape_surface_uv(&scene->shapes[h->shape], s);
-    return texture_eval(t, s);
+    const shape *sh = &scene->shapes[h->shape];
+    if (t->mapping.kind == GLINT_MAP_UV)
+        shape_surface_uv(sh, s);
+    return texture_eval(t, s, shape_center(sh));
 }
 
 /* The colour of material m (hit_material's) at the surface s of hit h
@@ -68,14 +71,6 @@ static __attribute__((unused)) color hit_texture_color(const glint_scene *scene,
 static inline color hit_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s)
 {
     return m->texture < 0 ? m->color : hit_texture_color(scene, h, m, s);
-}
-
-/* Whether what h hit encloses a volume, so that a ray crossing it enters
- * and later leaves it: a closed shape, and any mesh (a model is taken to
- * be closed; shadows filter once, on the way in, through its front). */
-static __attribute__((unused)) bool hit_is_closed(const glint_scene *scene, const accel_hit *h)
-{
-    return h->shape < 0 || shape_is_closed(&scene->shapes[h->shape]);
 }
 
 /* The shape a ray leaving hit h along d cannot meet again, which the

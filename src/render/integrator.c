@@ -20,21 +20,25 @@ static vec3 offset_point(vec3 p, vec3 n)
     return v3_madd(p, n, 1e-7 * scale);
 }
 
-/* What one surface crossing passes to a shadow ray. A closed thing (a
- * closed shape, a mesh) filters once, where the ray enters it (through its
- * front). */
+/* What one surface crossing passes to a shadow ray: every crossing
+ * filters, on the way into a thing and on the way out, as a camera ray
+ * through it is filtered at both surfaces (shade_local's branches), so a
+ * glass ball's shadow is as dark as the ball looks against the sky. Only a
+ * textured surface needs its point described. */
 static color shadow_filter(void *user, const ray *r, const accel_hit *hit)
 {
     const glint_scene *scene = ((tracer *)user)->scene;
     const glint_material *m = hit_material(scene, hit);
     if (material_is_opaque(m))
         return rgb(0, 0, 0);
-    accel_hit h = *hit;
-    surface s;
-    hit_surface(scene, r, &h, &s);
-    if (hit_is_closed(scene, &h) && v3_dot(r->d, s.n) > 0)
-        return rgb(1, 1, 1);
-    return rgb_scale(material_filter(m, hit_color(scene, &h, m, &s)), m->transparency + m->refraction);
+    color base = m->color;
+    if (m->texture >= 0) {
+        accel_hit h = *hit;
+        surface s;
+        hit_surface(scene, r, &h, &s);
+        base = hit_texture_color(scene, &h, m, &s);
+    }
+    return rgb_scale(material_filter(m, base), m->transparency + m->refraction);
 }
 
 /* What shading needs of a hit, between finding it and finishing its colour. */

@@ -323,6 +323,11 @@ int glint_scene_add_instance(glint_scene *scene, int mesh_index, int mat, const 
     return scene->instance_count++;
 }
 
+bool glint_scene_mesh_is_bare(const glint_scene *scene, int mesh_index)
+{
+    return scene && mesh_index >= 0 && mesh_index < scene->mesh_count && scene->meshes[mesh_index].bare;
+}
+
 glint_status glint_scene_mesh_bounds(const glint_scene *scene, int mesh_index, glint_vec3 *lo, glint_vec3 *hi,
                                      glint_error *err)
 {

@@ -30,6 +30,7 @@ static bool read_mapping(loader *l, const ynode *n, glint_mapping *m)
     yr_check_keys(&l->r, n, what, keys, count);
     /* Every key but the type, each where the map gives it. */
     bool good = read_params(l, n, (param_table){t.params + 1, t.count - 1}, what, m);
+    m->center_given = yr_get(&l->r, n, "center") != NULL;
     if (good && k == GLINT_MAP_PLANAR && (!yr_get(&l->r, n, "u_axis")) != (!yr_get(&l->r, n, "v_axis"))) {
         diag_at(&l->d, n, "a planar mapping needs both 'u_axis' and 'v_axis', or neither");
         return false;

@@ -142,12 +142,13 @@ static int import_model(loader *l, const ynode *file, const char *path, double c
     return mesh_index;
 }
 
-/* A mesh object: its model file's triangles, placed; `override` (>= 0)
- * replaces the file's own materials. The file is read (and a file that
- * cannot be is reported) even when the object has other problems, but
- * placed only when it has none: when the count of problems is still
+/* A mesh object: its model file's triangles, placed. `look` (>= 0), its
+ * own material or its group's, replaces the file's materials when it is
+ * its own (`own`) or the file gives none. The file is read (and a file
+ * that cannot be is reported) even when the object has other problems,
+ * but placed only when it has none: when the count of problems is still
  * `before` and its material was not a bad one. */
-static void place_mesh(loader *l, const ynode *n, int override, const glint_transform *to_world, int before)
+static void place_mesh(loader *l, const ynode *n, int look, bool own, const glint_transform *to_world, int before)
 {
     const ynode *file = yr_need(&l->r, n, "file", "mesh");
     const char *path;
@@ -164,6 +165,7 @@ static void place_mesh(loader *l, const ynode *n, int override, const glint_tran
     }
     int mesh_index = import_model(l, file, full, options.crease_angle);
     free(full);
+    int override = own || glint_scene_mesh_is_bare(l->scene, mesh_index) ? look : -1;
     glint_error err;
     if (mesh_index >= 0 && l->d.count == before && override != MATERIAL_REPORTED &&
         glint_scene_add_instance(l->scene, mesh_index, override, to_world, &err) < 0)
@@ -229,7 +231,7 @@ static void read_object(loader *l, const ynode *n, const context *outer)
         ctx.material = MATERIAL_REPORTED;
 
     if (type == OBJECT_MESH) {
-        place_mesh(l, n, mat ? ctx.material : -1, &ctx.to_world, before);
+        place_mesh(l, n, ctx.material, mat != NULL, &ctx.to_world, before);
         return;
     }
     if (type == OBJECT_GROUP) {

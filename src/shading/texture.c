@@ -35,6 +35,7 @@ static const param MAPPING_PARAMS[] = {
     {.key = "type", .type = PARAM_CHOICE, MAPPING(kind), .required = true, .words = MAPPINGS, .word_count = 4,
      .meaning = "uv, planar, spherical or cylindrical"},
     {.key = "center", .type = PARAM_VEC3, MAPPING(center),
+     .default_text = "the shape's centre; planar: `[0, 0, 0]`",
      .meaning = "origin of the mapping, in the shape's own coordinates (planar, spherical, cylindrical)"},
     {.key = "scale", .type = PARAM_NUMBER, MAPPING(scale), .def = {1}, PARAM_POSITIVE,
      .meaning = "distance per unit of u and v: 2 makes the texture twice as large (planar, cylindrical)"},
@@ -64,6 +65,9 @@ glint_status mapping_validate(const glint_mapping *given, glint_error *err)
     glint_status s = params_check(mapping_params(), &m, "mapping", err);
     if (s)
         return s;
+    /* A centre set without the flag would be ignored without a word. */
+    if (!m.center_given && v3_length(m.center) != 0)
+        return error_set(err, GLINT_ERR_INVALID, "mapping center is set but center_given is false");
     if (m.kind == GLINT_MAP_PLANAR) {
         bool u0 = v3_length(m.u_axis) == 0, v0 = v3_length(m.v_axis) == 0;
         if (u0 != v0)
@@ -108,10 +112,13 @@ bool texture_set_file(texture *t, const char *path)
     return true;
 }
 
-void mapping_apply(const glint_mapping *m, const surface *s, double *u, double *v)
+void mapping_apply(const glint_mapping *m, const surface *s, vec3 center, double *u, double *v)
 {
     double scale = m->scale > 0 ? m->scale : 1.0;
-    vec3 d = v3_sub(s->p_obj, m->center);
+    /* A planar mapping starts from the origin of the shape's coordinates,
+     * so neighbouring shapes continue one pattern (a floor of tiles). */
+    vec3 origin = m->center_given || m->kind == GLINT_MAP_PLANAR ? m->center : center;
+    vec3 d = v3_sub(s->p_obj, origin);
     switch (m->kind) {
     case GLINT_MAP_UV:
         *u = s->u;

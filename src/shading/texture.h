@@ -64,8 +64,10 @@ int mapping_key_count(glint_mapping_kind kind);
  * taken as 1, the default, for zero-initialised C structs. */
 glint_status mapping_validate(const glint_mapping *m, glint_error *err);
 
-/* Computes the texture coordinates of surface s under mapping m. */
-void mapping_apply(const glint_mapping *m, const surface *s, double *u, double *v);
+/* Computes the texture coordinates of surface s under mapping m. center
+ * is the object-space centre of the thing hit (shape_center's), where
+ * spherical and cylindrical mappings without a center_given are centred. */
+void mapping_apply(const glint_mapping *m, const surface *s, vec3 center, double *u, double *v);
 
 /* The colour of checker cells at (u, v): a where floor(u/cell) + floor(v/cell) is even. */
 color checker_eval(color a, color b, double cell, double u, double v);
@@ -74,13 +76,14 @@ color checker_eval(color a, color b, double cell, double u, double v);
  * v = 0 is the top row. */
 color image_eval(const texture_image *img, double u, double v);
 
-/* The colour of texture t at surface s. The checker, the texture of most
- * floors, is looked up inline: through its record it cost the seed room
- * 0.4% of its instructions. */
-static inline color texture_eval(const texture *t, const surface *s)
+/* The colour of texture t at surface s of a thing whose centre is center
+ * (as for mapping_apply). The checker, the texture of most floors, is
+ * looked up inline: through its record it cost the seed room 0.4% of its
+ * instructions. */
+static inline color texture_eval(const texture *t, const surface *s, vec3 center)
 {
     double u, v;
-    mapping_apply(&t->mapping, s, &u, &v);
+    mapping_apply(&t->mapping, s, center, &u, &v);
     if (t->kind == &checker_texture)
         return checker_eval(t->a, t->b, t->cell, u, v);
     return t->kind->eval(t, u, v);

@@ -293,7 +293,6 @@ static void test_disk(void **state)
     VNEAR(lo, v3(-1, 0, 3));
     VNEAR(hi, v3(3, 4, 3));
     assert_true(s.kind->flat);
-    assert_false(shape_is_closed(&s));
     assert_int_equal(shape_max_crossings(&s), 1);
     /* A full disc, tilted 45 degrees about x: reaches sqrt(0.5) r in y, z. */
     glint_shape tilted = glint_shape_default(GLINT_SHAPE_DISK);
@@ -1267,25 +1266,6 @@ static void test_plane_normal_scale(void **state)
     VNEAR(s.desc.normal, v3(0, 0, -1));
 }
 
-/* Whether a shape made from d encloses a volume. */
-static bool closed(glint_shape d)
-{
-    shape s = MAKE(d, NULL);
-    return shape_is_closed(&s);
-}
-
-static void test_is_closed(void **state)
-{
-    assert_true(closed(test_sphere()));
-    assert_true(closed(test_box()));
-    assert_true(closed(test_cylinder(true)));
-    assert_false(closed(test_cylinder(false)));
-    assert_true(closed(test_cone(true)));
-    assert_false(closed(test_cone(false)));
-    assert_false(closed(test_floor()));
-    assert_false(closed(test_triangle()));
-}
-
 /* A ray leaving a shape outward never meets it again, and a flat shape is
  * never met again at all; so shape_is_left_behind may skip them. Checked
  * from points all over each shape, plain and skewed, in many directions. */
@@ -1399,7 +1379,6 @@ int main(void)
         cmocka_unit_test(test_bounds_rotated_box),
         cmocka_unit_test(test_bounds_transformed_sphere),
         cmocka_unit_test(test_validation),
-        cmocka_unit_test(test_is_closed),
         cmocka_unit_test(test_disk),
         cmocka_unit_test(test_disk_validation),
     };

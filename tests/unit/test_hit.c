@@ -1,6 +1,6 @@
 /* test_hit.c - the renderer's hit module (render/hit.h) on real hits: a
  * sphere, a moved mesh triangle and a plane found by the accelerator, each
- * asked for its material, surface, closedness, the shape a ray leaving it
+ * asked for its material, surface, the shape a ray leaving it
  * may skip, and whether it blocks all light. */
 #include <stdarg.h>
 #include <stddef.h>
@@ -84,7 +84,7 @@ static void assert_vec_near(vec3 a, vec3 b)
     assert_true(v3_length(v3_sub(a, b)) < 1e-12);
 }
 
-static void test_material_surface_and_closedness(void **state)
+static void test_material_and_surface(void **state)
 {
     fixture f = make_scene();
     const glint_scene *s = f.scene;
@@ -99,28 +99,25 @@ static void test_material_surface_and_closedness(void **state)
     }
 
     /* The sphere: red, its normal out of the sphere where the ray meets
-     * it, closed; a ray leaving it outwards never meets it again. */
+     * it; a ray leaving it outwards never meets it again. */
     assert_ptr_equal(hit_material(s, &h[0]), &s->materials[f.red].m);
     assert_vec_near(sf[0].p, v3(0, 0, -4));
     assert_vec_near(sf[0].n, v3(0, 0, 1));
-    assert_true(hit_is_closed(s, &h[0]));
     assert_int_equal(hit_left_behind(s, &h[0], sf[0].n, v3(0, 0, 1)), f.sphere);
     assert_int_equal(hit_left_behind(s, &h[0], sf[0].n, v3(0, 0, -1)), -1);
 
     /* The mesh: green, Embree's float distance refined to the exact one
      * in double precision, the normal from the winding (counter-clockwise
-     * seen from +z), closed as every mesh is; never skipped. */
+     * seen from +z); never skipped. */
     assert_ptr_equal(hit_material(s, &h[1]), &s->materials[f.green].m);
     assert_true(fabs(h[1].t - sqrt(116.0)) < 1e-12);
     assert_vec_near(sf[1].n, v3(0, 0, 1));
     assert_vec_near(sf[1].shading_n, v3(0, 0, 1));
-    assert_true(hit_is_closed(s, &h[1]));
     assert_int_equal(hit_left_behind(s, &h[1], sf[1].n, v3(0, 0, 1)), -1);
 
-    /* The floor: blue, open, flat: any ray leaving it skips it. */
+    /* The floor: blue, flat: any ray leaving it skips it. */
     assert_ptr_equal(hit_material(s, &h[2]), &s->materials[f.blue].m);
     assert_vec_near(sf[2].n, v3(0, 1, 0));
-    assert_false(hit_is_closed(s, &h[2]));
     assert_int_equal(hit_left_behind(s, &h[2], sf[2].n, v3(0, 1, 0)), f.plane);
     assert_int_equal(hit_left_behind(s, &h[2], sf[2].n, v3(0, -1, 0)), f.plane);
 
@@ -157,7 +154,7 @@ static void test_opacity_lists(void **state)
 int main(void)
 {
     const struct CMUnitTest tests[] = {
-        cmocka_unit_test(test_material_surface_and_closedness),
+        cmocka_unit_test(test_material_and_surface),
         cmocka_unit_test(test_opacity_lists),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -464,11 +464,20 @@ static const char *temp_file(const char *name, const char *text)
     return path;
 }
 
+/* Writes a scene file to the test's temporary directory and loads it. */
+static glint_scene *load_temp_scene(const char *name, const char *text)
+{
+    glint_error err;
+    glint_scene *s = glint_scene_load_file(temp_file(name, text), NULL, &err);
+    if (!s)
+        fail_msg("%s", err.message);
+    return s;
+}
+
 static void test_scene_file_places_models(void **state)
 {
     temp_file("mesh-quad.obj", "v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nf 1 4 3 2\n");
-    char scene_path[4096];
-    snprintf(scene_path, sizeof scene_path, "%s", temp_file("mesh-scene.yaml",
+    glint_scene *s = load_temp_scene("mesh-scene.yaml",
         "materials:\n"
         "  gold: {color: [1, 0.8, 0.2]}\n"
         "objects:\n"
@@ -476,11 +485,7 @@ static void test_scene_file_places_models(void **state)
         "  - {type: mesh, file: mesh-quad.obj, material: gold, transform: [{translate: [3, 0, 0]}]}\n"
         "  - type: group\n"
         "    material: gold\n"
-        "    objects: [{type: mesh, file: ./mesh-quad.obj, transform: [{scale: 2}]}]\n"));
-    glint_error err;
-    glint_scene *s = glint_scene_load_file(scene_path, NULL, &err);
-    if (!s)
-        fail_msg("%s", err.message);
+        "    objects: [{type: mesh, file: ./mesh-quad.obj, transform: [{scale: 2}]}]\n");
     /* One file, read once: one mesh of two triangles, three placements. */
     glint_scene_counts c = glint_scene_get_counts(s);
     assert_int_equal(c.meshes, 1);
@@ -489,12 +494,15 @@ static void test_scene_file_places_models(void **state)
     int gold = scene_find_material(s, "gold");
     assert_int_equal(s->instances[0].material, -1);
     assert_int_equal(s->instances[1].material, gold);
-    /* A group's material does not replace the file's own. */
-    assert_int_equal(s->instances[2].material, -1);
+    /* The file gives no materials: the group's is taken. */
+    assert_true(glint_scene_mesh_is_bare(s, 0));
+    assert_int_equal(s->instances[2].material, gold);
     assert_near(s->instances[1].to_world.m[0][3], 3, 0);
     assert_near(s->instances[2].to_world.m[1][1], 2, 0);
     glint_scene_free(s);
 
+    char scene_path[4096];
+    glint_error err;
     snprintf(scene_path, sizeof scene_path, "%s",
              temp_file("mesh-missing.yaml", "objects:\n  - {type: mesh, file: nowhere.obj, crease_angle: 30}\n"));
     assert_null(glint_scene_load_file(scene_path, NULL, &err));
@@ -502,6 +510,43 @@ static void test_scene_file_places_models(void **state)
     snprintf(want, sizeof want, "%s:2:24: cannot read model '%.*s/nowhere.obj': No such file or directory",
              scene_path, (int)(strrchr(scene_path, '/') - scene_path), scene_path);
     assert_string_equal(err.message, want);
+}
+
+/* A mesh's material: its own `material` key; else its file's materials,
+ * when the file has any; else its group's; else the importer's grey. Seen
+ * from above, with materials that show exactly their colour. */
+static void test_mesh_takes_its_groups_material(void **state)
+{
+    temp_file("group-quad.obj", "v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nf 1 4 3 2\n");
+    temp_file("group-painted.mtl", "newmtl blue\nKd 0 0 1\n");
+    temp_file("group-painted.obj", "mtllib group-painted.mtl\nusemtl blue\n"
+                                   "v -1 0 -1\nv 1 0 -1\nv 1 0 1\nv -1 0 1\nf 1 4 3 2\n");
+    glint_scene *s = load_temp_scene("group-scene.yaml",
+        "settings: {width: 40, height: 10, ambient: [1, 1, 1]}\n"
+        "camera: {position: [0, 10, 0], look_at: [0, 0, 0], up: [0, 0, -1], fov: 53.13010235415598}\n"
+        "materials:\n"
+        "  red: {color: [1, 0, 0], ambient: 1, diffuse: 0, specular: 0}\n"
+        "  green: {color: [0, 1, 0], ambient: 1, diffuse: 0, specular: 0}\n"
+        "objects:\n"
+        "  - type: group\n"
+        "    material: red\n"
+        "    objects:\n"
+        "      - {type: mesh, file: group-quad.obj, transform: [{scale: 2}, {translate: [-15, 0, 0]}]}\n"
+        "      - {type: mesh, file: group-quad.obj, material: green, transform: [{scale: 2}, {translate: [-5, 0, 0]}]}\n"
+        "      - {type: mesh, file: group-painted.obj, transform: [{scale: 2}, {translate: [5, 0, 0]}]}\n"
+        "  - {type: mesh, file: group-quad.obj, transform: [{scale: 2}, {translate: [15, 0, 0]}]}\n");
+    assert_false(glint_scene_mesh_is_bare(s, 1)); /* the painted one */
+    glint_image img;
+    assert_int_equal(glint_render(s, NULL, &img, NULL, NULL), GLINT_OK);
+    /* One unit a pixel: the quads, 4 units square, are centred on pixels
+     * (5, 5), (15, 5), (25, 5) and (35, 5). Only ambient light: a file's
+     * material shows 0.2 of its colour, the grey 0.2 of 0.5. */
+    const float want[4][3] = {{1, 0, 0}, {0, 1, 0}, {0, 0, 0.2f}, {0.1f, 0.1f, 0.1f}};
+    for (int i = 0; i < 4; i++)
+        for (int c = 0; c < 3; c++)
+            assert_near(img.pixels[3 * (5 * img.width + 5 + 10 * i) + c], want[i][c], 1e-6);
+    glint_image_free(&img);
+    glint_scene_free(s);
 }
 
 int main(void)
@@ -517,6 +562,7 @@ int main(void)
         cmocka_unit_test(test_smooth_normals_and_per_triangle_materials),
         cmocka_unit_test(test_bad_mesh_data),
         cmocka_unit_test(test_scene_file_places_models),
+        cmocka_unit_test(test_mesh_takes_its_groups_material),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -459,6 +459,7 @@ static void test_obj_parts_and_mtl(void **state)
     assert_int_equal(m->triangle_count, 7);
     assert_int_equal(s->material_count, 3);
     assert_non_null(m->materials);
+    assert_false(glint_scene_mesh_is_bare(s, 0));
     int red = scene_find_material(s, "parts/red"), glass = scene_find_material(s, "parts/glass"),
         mirror = scene_find_material(s, "parts/mirror");
     int count[3] = {0, 0, 0};
@@ -533,6 +534,8 @@ static void test_obj_without_mtl_file(void **state)
     const mesh *m = import_ok(s, "lonely.obj", NULL);
     assert_int_equal(m->triangle_count, 1);
     assert_int_equal(m->material, scene_find_material(s, "lonely/default"));
+    /* No material from the file: a scene file's group may give it one. */
+    assert_true(glint_scene_mesh_is_bare(s, 0));
     glint_scene_free(s);
 }
 
@@ -546,6 +549,8 @@ static void test_obj_default_material_option(void **state)
     const mesh *m = import_ok(s, "plain.obj", &o);
     assert_int_equal(m->material, k);
     assert_int_equal(s->material_count, 1);
+    assert_true(glint_scene_mesh_is_bare(s, 0));
+    assert_false(glint_scene_mesh_is_bare(s, 1)); /* no such mesh */
     glint_scene_free(s);
 }
 
@@ -1572,6 +1577,7 @@ static void test_ply_ascii_and_binary(void **state)
     expect_unit_quad(import_ok(s, "quad.ply", NULL));
     expect_unit_quad(import_ok(s, "quadb.ply", NULL));
     assert_int_equal(s->meshes[1].material, scene_find_material(s, "quadb/default"));
+    assert_true(glint_scene_mesh_is_bare(s, 1)); /* PLY has no materials */
     glint_scene_free(s);
 }
 

@@ -165,38 +165,102 @@ static void test_planes_are_infinite_and_lose_ties(void **state)
     glint_scene_free(tie);
 }
 
-static int red_glass(glint_scene *s)
+/* A sphere of radius 1 at c with a spherical checker of 8 x 8 cells (no
+ * center given), seen from 4 units in front of it. */
+static glint_image checked_ball(glint_vec3 c)
+{
+    glint_vec3 eye = {c.x, c.y, c.z + 4};
+    glint_scene *s = new_scene(64, 64, eye, c, (glint_vec3){0, 1, 0}, 35);
+    glint_mapping sph = {.kind = GLINT_MAP_SPHERICAL};
+    int tex = glint_scene_add_checker(s, NULL, (glint_color){1, 0, 0}, (glint_color){0, 0, 1}, 0.125, sph, NULL);
+    assert_true(tex >= 0);
+    glint_material m = glint_material_default();
+    m.texture = tex;
+    m.ambient = 1;
+    m.diffuse = m.specular = 0;
+    add_sphere(s, c.x, c.y, c.z, 1, glint_scene_add_material(s, NULL, &m, NULL));
+    glint_image img = render(s, 1);
+    glint_scene_free(s);
+    return img;
+}
+
+/* A spherical mapping goes around the sphere it is on: a ball away from
+ * the origin, seen from the same place relative to it, shows the same
+ * cells as one at the origin. The few pixels allowed to differ are those
+ * whose point lies on a cell's edge, within rounding. */
+static void test_spherical_mapping_follows_the_sphere(void **state)
+{
+    glint_image home = checked_ball((glint_vec3){0, 0, 0}), away = checked_ball((glint_vec3){-3, 1, 0});
+    int differ = 0, red = 0;
+    for (int i = 0; i < 3 * 64 * 64; i++)
+        differ += fabsf(home.pixels[i] - away.pixels[i]) > 1e-6f;
+    for (int i = 0; i < 64 * 64; i++)
+        red += home.pixels[3 * i] > 0.5f;
+    assert_true(differ <= 64);
+    assert_true(red > 500); /* the ball shows both colours, not one */
+    glint_image_free(&home);
+    glint_image_free(&away);
+}
+
+/* Coloured glass that shows nothing of its own (no ambient, diffuse or
+ * specular term): light through it is only filtered. With `refract` its
+ * 0.8 is refraction (without Fresnel), else transparency; either way each
+ * surface passes 0.8 * colour = (0.8, 0.4, 0.2) with tint 1. */
+static int amber_glass(glint_scene *s, bool refract)
 {
     glint_material m = glint_material_default();
-    m.color = (glint_color){1, 0, 0};
-    m.specular = 0;
-    m.transparency = 0.8;
+    m.color = (glint_color){1, 0.5, 0.25};
+    m.ambient = m.diffuse = m.specular = 0;
+    if (refract) {
+        m.refraction = 0.8;
+        m.ior = 1.5;
+    } else {
+        m.transparency = 0.8;
+    }
     m.tint = 1;
     int i = glint_scene_add_material(s, NULL, &m, NULL);
     assert_true(i >= 0);
     return i;
 }
 
-static void test_tinted_shadows_multiply(void **state)
+/* Every surface a ray crosses filters it, camera and shadow rays alike:
+ * through a glass ball, in at one side and out at the other, light keeps
+ * f^2 with f = 0.8 * colour, whether the camera looks through the ball's
+ * centre at a white sky (the refracted ray goes straight there) or the
+ * ball stands between a light and the floor. */
+static void test_tinted_shadows_match_what_the_camera_sees(void **state)
 {
-    /* One red transparent sphere passes 0.8 of the light, filtered red; the
-     * sphere is crossed twice but filters once. */
-    glint_scene *one = floor_scene((glint_vec3){0, 0, 0});
-    add_sphere(one, 0, 5, 0, 1, red_glass(one));
-    glint_image a = render(one, 1);
-    assert_near(centre(&a)[0], 0.2 + 0.8, 1e-5);
-    assert_near(centre(&a)[1], 0.2, 1e-6);
-    assert_near(centre(&a)[2], 0.2, 1e-6);
-    /* Two such spheres multiply: 0.64. */
+    const double f[3] = {0.8, 0.4, 0.2};
+    for (int refract = 0; refract < 2; refract++) {
+        /* The floor straight below the ball and the light: ambient 0.2 plus
+         * the light, cos 0 = 1, through the ball. */
+        glint_scene *floor = floor_scene((glint_vec3){0, 0, 0});
+        add_sphere(floor, 0, 5, 0, 1, amber_glass(floor, refract));
+        glint_image a = render(floor, 1);
+        /* The ball seen through its centre against a white background. */
+        glint_scene *sky = new_scene(11, 11, (glint_vec3){0, 0, 10}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 1, 0}, 20);
+        glint_settings st = glint_scene_get_settings(sky);
+        st.background = (glint_color){1, 1, 1};
+        assert_int_equal(glint_scene_set_settings(sky, &st, NULL), GLINT_OK);
+        add_sphere(sky, 0, 0, 0, 1, amber_glass(sky, refract));
+        glint_image b = render(sky, 1);
+        for (int c = 0; c < 3; c++) {
+            assert_near(centre(&a)[c], 0.2 + f[c] * f[c], 1e-5);
+            assert_near(centre(&b)[c], f[c] * f[c], 1e-5);
+        }
+        glint_image_free(&a);
+        glint_image_free(&b);
+        glint_scene_free(floor);
+        glint_scene_free(sky);
+    }
+    /* Two balls in a row multiply: f^4. */
     glint_scene *two = floor_scene((glint_vec3){0, 0, 0});
-    add_sphere(two, 0, 5, 0, 1, red_glass(two));
-    add_sphere(two, 0, 2.5, 0, 1, red_glass(two));
-    glint_image b = render(two, 1);
-    assert_near(centre(&b)[0], 0.2 + 0.64, 1e-5);
-    assert_near(centre(&b)[1], 0.2, 1e-6);
-    glint_image_free(&a);
-    glint_image_free(&b);
-    glint_scene_free(one);
+    add_sphere(two, 0, 5, 0, 1, amber_glass(two, false));
+    add_sphere(two, 0, 2.5, 0, 1, amber_glass(two, false));
+    glint_image c = render(two, 1);
+    for (int k = 0; k < 3; k++)
+        assert_near(centre(&c)[k], 0.2 + pow(f[k], 4), 1e-5);
+    glint_image_free(&c);
     glint_scene_free(two);
 }
 
@@ -703,7 +767,8 @@ int main(void)
         cmocka_unit_test(test_nan_samples_never_reach_a_pixel),
         cmocka_unit_test(test_sphere_silhouette_area),
         cmocka_unit_test(test_shadow_ratio),
-        cmocka_unit_test(test_tinted_shadows_multiply),
+        cmocka_unit_test(test_spherical_mapping_follows_the_sphere),
+        cmocka_unit_test(test_tinted_shadows_match_what_the_camera_sees),
         cmocka_unit_test(test_mirror_shows_facing_wall),
         cmocka_unit_test(test_refraction_inverts),
         cmocka_unit_test(test_transparency_passes_light_straight_through),

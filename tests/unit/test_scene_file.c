@@ -553,6 +553,8 @@ static void test_mapping_as_a_word(void **state)
     assert_int_equal(s->textures[texture_named(s, "b")].mapping.kind, GLINT_MAP_PLANAR);
     assert_int_equal(s->textures[texture_named(s, "c")].mapping.kind, GLINT_MAP_SPHERICAL);
     assert_int_equal(s->textures[texture_named(s, "d")].mapping.kind, GLINT_MAP_CYLINDRICAL);
+    /* Without a center, the mapping is centred on each shape it is on. */
+    assert_false(s->textures[texture_named(s, "c")].mapping.center_given);
     glint_scene_free(s);
 }
 
@@ -573,6 +575,7 @@ static void test_mapping_as_a_map(void **state)
     glint_mapping m = s->textures[texture_named(s, "flat")].mapping;
     assert_int_equal(m.kind, GLINT_MAP_PLANAR);
     assert_vec(m.center, 1, 2, 3, 0);
+    assert_true(m.center_given);
     assert_vec(m.u_axis, 0, 0, 1, 0);
     assert_vec(m.v_axis, 0, 1, 0, 0);
     assert_exact(m.scale, 2.5);
@@ -583,6 +586,7 @@ static void test_mapping_as_a_map(void **state)
     m = s->textures[texture_named(s, "ball")].mapping;
     assert_int_equal(m.kind, GLINT_MAP_SPHERICAL);
     assert_vec(m.center, 5, 5, 5, 0);
+    assert_true(m.center_given);
     assert_int_equal(s->textures[texture_named(s, "own")].mapping.kind, GLINT_MAP_UV);
     glint_scene_free(s);
 }

@@ -14,6 +14,7 @@
 #include "shading/texture.h"
 
 #define EPS 1e-12
+#define ORIGIN v3(0, 0, 0)
 #define assert_near(a, b, eps) assert_true(fabs((double)(a) - (double)(b)) <= (eps))
 
 static void assert_vec_near(vec3 a, vec3 b, double eps)
@@ -187,27 +188,27 @@ static surface at_object_point(vec3 p)
 
 static void test_spherical_mapping(void **state)
 {
-    glint_mapping m = {.kind = GLINT_MAP_SPHERICAL, .center = {3, 2, -80}};
+    glint_mapping m = {.kind = GLINT_MAP_SPHERICAL, .center = {3, 2, -80}, .center_given = true};
     double u, v;
     surface s = at_object_point(v3(3, 6, -80)); /* north pole */
-    mapping_apply(&m, &s, &u, &v);
+    mapping_apply(&m, &s, ORIGIN, &u, &v);
     assert_near(v, 0, 1e-12);
     s = at_object_point(v3(3, -2, -80)); /* south pole */
-    mapping_apply(&m, &s, &u, &v);
+    mapping_apply(&m, &s, ORIGIN, &u, &v);
     assert_near(v, 1, 1e-12);
     s = at_object_point(v3(3, 2, -76)); /* facing +z: centre of the map */
-    mapping_apply(&m, &s, &u, &v);
+    mapping_apply(&m, &s, ORIGIN, &u, &v);
     assert_near(u, 0.5, 1e-12);
     assert_near(v, 0.5, 1e-12);
     s = at_object_point(v3(7, 2, -80)); /* +x: a quarter turn on */
-    mapping_apply(&m, &s, &u, &v);
+    mapping_apply(&m, &s, ORIGIN, &u, &v);
     assert_near(u, 0.75, 1e-12);
     /* Across the seam at -z, u jumps from 1 to 0. */
     s = at_object_point(v3(3 + 1e-9, 2, -84));
-    mapping_apply(&m, &s, &u, &v);
+    mapping_apply(&m, &s, ORIGIN, &u, &v);
     assert_near(u, 1, 1e-9);
     s = at_object_point(v3(3 - 1e-9, 2, -84));
-    mapping_apply(&m, &s, &u, &v);
+    mapping_apply(&m, &s, ORIGIN, &u, &v);
     assert_near(u, 0, 1e-9);
 }
 
@@ -216,28 +217,91 @@ static void test_planar_and_cylindrical_mapping(void **state)
     double u, v;
     glint_mapping planar = {.kind = GLINT_MAP_PLANAR};
     surface s = at_object_point(v3(7, -15, -12));
-    mapping_apply(&planar, &s, &u, &v);
+    mapping_apply(&planar, &s, ORIGIN, &u, &v);
     assert_near(u, 7, EPS);
     assert_near(v, -12, EPS);
-    glint_mapping wall = {.kind = GLINT_MAP_PLANAR, .center = {0, 2, 0}, .u_axis = {0, 0, 2},
+    glint_mapping wall = {.kind = GLINT_MAP_PLANAR, .center = {0, 2, 0}, .center_given = true, .u_axis = {0, 0, 2},
                           .v_axis = {0, -1, 0}, .scale = 2};
     s = at_object_point(v3(1, 4, 6));
-    mapping_apply(&wall, &s, &u, &v);
+    mapping_apply(&wall, &s, ORIGIN, &u, &v);
     assert_near(u, 3, EPS);
     assert_near(v, -1, EPS);
-    glint_mapping cyl = {.kind = GLINT_MAP_CYLINDRICAL, .center = {0, 1, 0}, .scale = 4};
+    glint_mapping cyl = {.kind = GLINT_MAP_CYLINDRICAL, .center = {0, 1, 0}, .center_given = true, .scale = 4};
     s = at_object_point(v3(0, 3, 2));
-    mapping_apply(&cyl, &s, &u, &v);
+    mapping_apply(&cyl, &s, ORIGIN, &u, &v);
     assert_near(u, 0.5, EPS);
     assert_near(v, 0.5, EPS);
     s = at_object_point(v3(-2, 1, 0));
-    mapping_apply(&cyl, &s, &u, &v);
+    mapping_apply(&cyl, &s, ORIGIN, &u, &v);
     assert_near(u, 0.25, EPS);
     assert_near(v, 0, EPS);
     glint_error err;
     glint_mapping bad = {.kind = GLINT_MAP_PLANAR, .u_axis = {1, 0, 0}, .v_axis = {2, 0, 0}};
     assert_int_equal(mapping_validate(&bad, &err), GLINT_ERR_INVALID);
     assert_string_equal(err.message, "planar mapping axes must not be parallel");
+}
+
+/* The (u, v) a mapping gives at object point p of shape d (untransformed). */
+static void uv_on(const glint_shape *d, glint_mapping m, vec3 p, double *u, double *v)
+{
+    shape s;
+    glint_error err;
+    assert_int_equal(shape_init(&s, d, NULL, 0, &err), GLINT_OK);
+    surface at = at_object_point(p);
+    mapping_apply(&m, &at, shape_center(&s), u, v);
+}
+
+/* Spherical and cylindrical mappings without a center go around the shape
+ * they are on: a sphere away from the origin shows its map as one at the
+ * origin does, pole at the top. A planar mapping still starts from the
+ * origin, and a given center still means that point. */
+static void test_mapping_centred_on_the_shape(void **state)
+{
+    glint_mapping sph = {.kind = GLINT_MAP_SPHERICAL};
+    glint_shape home = {.kind = GLINT_SHAPE_SPHERE, .radius = 1};
+    glint_shape away = {.kind = GLINT_SHAPE_SPHERE, .center = {-3, 1, 0}, .radius = 1};
+    double u, v, u0, v0;
+    uv_on(&away, sph, v3(-3, 2, 0), &u, &v); /* the top: the north pole */
+    assert_near(v, 0, EPS);
+    uv_on(&away, sph, v3(-3, 1, 1), &u, &v); /* facing +z: the middle of the map */
+    assert_near(u, 0.5, EPS);
+    assert_near(v, 0.5, EPS);
+    vec3 dirs[] = {v3(0.6, 0.8, 0), v3(-0.48, 0.6, 0.64), v3(0, -0.28, -0.96), v3(0.36, -0.48, 0.8)};
+    for (int i = 0; i < 4; i++) {
+        uv_on(&home, sph, dirs[i], &u0, &v0);
+        uv_on(&away, sph, v3_add(away.center, dirs[i]), &u, &v);
+        assert_near(u, u0, 1e-12);
+        assert_near(v, v0, 1e-12);
+    }
+    /* A cylinder's centre is its base's: v is the height above it. */
+    glint_mapping cyl = {.kind = GLINT_MAP_CYLINDRICAL, .scale = 2};
+    glint_shape can = {.kind = GLINT_SHAPE_CYLINDER, .center = {2, -1, 5}, .radius = 1, .height = 2, .capped = true};
+    uv_on(&can, cyl, v3(2, 0, 6), &u, &v);
+    assert_near(u, 0.5, EPS);
+    assert_near(v, 0.5, EPS);
+    glint_shape cone = {.kind = GLINT_SHAPE_CONE, .center = {2, -1, 5}, .radius = 1, .height = 2};
+    uv_on(&cone, cyl, v3(1.5, 0, 5), &u, &v);
+    assert_near(u, 0.25, EPS);
+    assert_near(v, 0.5, EPS);
+    /* A box's is the middle of its bounds. */
+    glint_shape box = {.kind = GLINT_SHAPE_BOX, .min = {4, 0, 0}, .max = {6, 2, 2}};
+    uv_on(&box, sph, v3(5, 2, 1), &u, &v);
+    assert_near(v, 0, EPS);
+    /* Planar: u = x, v = z from the origin, wherever the shape is. */
+    glint_mapping planar = {.kind = GLINT_MAP_PLANAR};
+    uv_on(&away, planar, v3(-3, 2, 0.5), &u, &v);
+    assert_near(u, -3, EPS);
+    assert_near(v, 0.5, EPS);
+    /* A given center is that point in the shape's coordinates: the top of
+     * the sphere away is seen from the origin, 2 up and 3 across. */
+    glint_mapping given = {.kind = GLINT_MAP_SPHERICAL, .center_given = true};
+    uv_on(&away, given, v3(-3, 2, 0), &u, &v);
+    assert_near(v, 0.5 - asin(2 / sqrt(13.0)) / M_PI, EPS);
+    /* A center without the flag would be ignored: it is refused. */
+    glint_error err;
+    glint_mapping unflagged = {.kind = GLINT_MAP_SPHERICAL, .center = {0, 1, 0}};
+    assert_int_equal(mapping_validate(&unflagged, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "mapping center is set but center_given is false");
 }
 
 static void test_image_lookup(void **state)
@@ -418,6 +482,7 @@ int main(void)
         cmocka_unit_test(test_checker),
         cmocka_unit_test(test_spherical_mapping),
         cmocka_unit_test(test_planar_and_cylindrical_mapping),
+        cmocka_unit_test(test_mapping_centred_on_the_shape),
         cmocka_unit_test(test_image_lookup),
         cmocka_unit_test(test_fog),
         cmocka_unit_test(test_fog_hides),
