@@ -24,6 +24,9 @@ static const char USAGE[] =
     "      --exr-pixel TYPE   pixel type of .exr output: half (16-bit float, the default;\n"
     "                         values of 65520 and more become infinity) or float (32-bit)\n"
     "      --check            validate the scene file, report every problem, render nothing\n"
+    "      --view NAME        where a model file is seen from: auto (the default: the\n"
+    "                         front, or a room open on one side through its opening),\n"
+    "                         front, back, left, right, top, or iso (from +x +y +z)\n"
     "  -w, --width N          image width in pixels, 1..65536\n"
     "  -h, --height N         image height in pixels, 1..65536; at most 16384 x 16384\n"
     "                         pixels in all\n"
@@ -139,10 +142,12 @@ typedef struct word_flag {
 } word_flag;
 
 static const char *const EXR_PIXELS[] = {"half", "float"}; /* glint_exr_pixel's order */
+static const char *const VIEWS[] = {"auto", "front", "back", "left", "right", "top", "iso"}; /* glint_model_view's */
 
 static const word_flag WORD_FLAGS[] = {
     {"--sampler", offsetof(cli_options, sampler), "sampler", NULL, 0},
     {"--exr-pixel", offsetof(cli_options, exr_pixel), NULL, EXR_PIXELS, 2},
+    {"--view", offsetof(cli_options, view), NULL, VIEWS, 7},
 };
 
 /* Sets wf's field to the index of the word v; false, with the words
@@ -194,7 +199,7 @@ static bool is_switch(const char *a)
 int cli_parse_args(int argc, char **argv, cli_options *o)
 {
     *o = (cli_options){.width = -1, .height = -1, .spp = -1, .depth = -1,
-                       .threads = -1, .seed = -1, .sampler = -1, .exr_pixel = -1};
+                       .threads = -1, .seed = -1, .sampler = -1, .exr_pixel = -1, .view = -1};
     for (int i = 1; i < argc; i++) {
         const char *a = argv[i];
         /* GNU's --name=value is --name value: split, into a copy of the name. */
@@ -279,5 +284,9 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
     }
     if (o->check && !o->scene)
         return cli_complain(CLI_EXIT_USAGE, "--check needs a scene file");
+    if (o->view >= 0 && !o->scene)
+        return cli_complain(CLI_EXIT_USAGE, "--view needs a model file");
+    if (o->view >= 0 && !glint_is_model_path(o->scene))
+        return cli_complain(CLI_EXIT_USAGE, "--view is for model files, and '%s' is a scene file", o->scene);
     return -1;
 }

@@ -96,16 +96,23 @@ static void print_problem(void *user, const char *message)
     fprintf(stderr, "%s\n", message);
 }
 
-/* Loads the scene file (or builds a scene around a model file), printing
- * every problem and a last line saying what became of the run; NULL after
- * reporting, with *code the exit code: bad input, or an internal failure
- * when memory ran out. */
-static glint_scene *load_scene(const char *path, const char *outcome, int *code)
+/* Loads the scene file (or builds a scene around a model file, seen as o
+ * asks and framed for the image size it gives), printing every problem and
+ * a last line saying what became of the run; NULL after reporting, with
+ * *code the exit code: bad input, or an internal failure when memory ran
+ * out. */
+static glint_scene *load_scene(const cli_options *o, const char *path, const char *outcome, int *code)
 {
     glint_error err = {0};
     glint_scene *scene;
     if (glint_is_model_path(path)) {
-        scene = glint_scene_for_model(path, &err);
+        /* An image over the pixel limit is framed for the default size:
+         * the flags are refused as usage when the size is set (run). */
+        bool fits = o->width * o->height <= GLINT_MAX_PIXELS;
+        glint_model_view_options view = {.view = o->view >= 0 ? (glint_model_view)o->view : GLINT_VIEW_AUTO,
+                                          .width = o->width > 0 && fits ? (int)o->width : 0,
+                                          .height = o->height > 0 && fits ? (int)o->height : 0};
+        scene = glint_scene_for_model_ex(path, &view, &err);
         if (!scene)
             cli_complain(CLI_EXIT_BAD_INPUT, "%s", err.message);
     } else {
@@ -123,7 +130,7 @@ static glint_scene *load_scene(const char *path, const char *outcome, int *code)
 static int check_only(const cli_options *o)
 {
     int code;
-    glint_scene *scene = load_scene(o->scene, "not valid", &code);
+    glint_scene *scene = load_scene(o, o->scene, "not valid", &code);
     if (!scene)
         return code;
     glint_scene_counts c = glint_scene_get_counts(scene);
@@ -155,7 +162,7 @@ static int run(const cli_options *o)
 {
     glint_error err = {0};
     int code = CLI_EXIT_INTERNAL;
-    glint_scene *scene = o->scene ? load_scene(o->scene, "nothing rendered", &code) : glint_scene_seed_room(&err);
+    glint_scene *scene = o->scene ? load_scene(o, o->scene, "nothing rendered", &code) : glint_scene_seed_room(&err);
     if (!scene)
         return o->scene ? code : cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
     const char *output = o->output ? o->output : glint_scene_get_output(scene) ? glint_scene_get_output(scene)
