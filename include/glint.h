@@ -399,8 +399,9 @@ typedef struct glint_model_view_options {
 } glint_model_view_options;
 
 /* Builds a scene for looking at one model file: the model as it is, a
- * checkered floor under it (y is up), a key and a fill light (and, looking
- * into a room, a light at its opening), 4 samples per pixel, and a camera
+ * checkered floor under it (y is up), a key and a fill light that turn
+ * with the view (and, looking into a room, a light at its opening), 4
+ * samples per pixel, and a camera
  * (35 degrees vertical field of view) placed so that the 8 corners of the
  * model's bounding box, projected, are centred in the image and span 85% of
  * its width or height, whichever limits. docs/meshes.md says how a room's

@@ -99,12 +99,13 @@ static side_kind classify(const axis_hits *h, bool plus, double lo, double hi)
 int model_open_side(const mesh *m)
 {
     double extent = fmax(m->hi.x - m->lo.x, fmax(m->hi.y - m->lo.y, m->hi.z - m->lo.z));
+    /* A flat model is no room (and its grids would have cells of no size). */
+    for (int axis = 0; axis < 3; axis++)
+        if (!(coord(m->hi, axis) - coord(m->lo, axis) > 1e-6 * extent))
+            return -1;
     int walls = 0, openings = 0, opening = -1;
     for (int axis = 0; axis < 3; axis++) {
         double lo = coord(m->lo, axis), hi = coord(m->hi, axis);
-        /* A flat model is no room. */
-        if (!(hi - lo > 1e-6 * extent))
-            return -1;
         int u = (axis + 1) % 3, v = (axis + 2) % 3;
         double corner[2] = {coord(m->lo, u), coord(m->lo, v)};
         double size[2] = {(coord(m->hi, u) - corner[0]) / GRID, (coord(m->hi, v) - corner[1]) / GRID};

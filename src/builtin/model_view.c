@@ -57,21 +57,28 @@ static bool add_floor(glint_scene *s, vec3 lo, double radius, glint_error *err)
     return m >= 0 && glint_scene_add_shape(s, &plane, m, NULL, err) >= 0;
 }
 
-/* The key and fill lights come from above, so the inside of a room, under
- * its ceiling, is lit by a point light just outside its opening, a little
- * up (in the picture) from the opening's centre. */
-static bool add_lights(glint_scene *s, vec3 lo, vec3 hi, int side, vec3 up, glint_error *err)
+/* The key light comes from above, to the right of and in front of the
+ * camera, the fill from its left, whatever the view, so that the side seen
+ * is lit: their directions are given across (right), up and towards the
+ * camera, level (the picture's right, the model's up, and what is left of
+ * the view's direction). Under a room's ceiling neither reaches, so the
+ * inside is lit by a point light just outside the opening, a little up (in
+ * the picture) from its centre. */
+static bool add_lights(glint_scene *s, vec3 lo, vec3 hi, int side, view_dir v, glint_error *err)
 {
-    glint_light key = {.kind = GLINT_LIGHT_DIRECTIONAL, .direction = {-0.5, -1, -0.6}, .color = {0.85, 0.85, 0.8}};
-    glint_light fill = {.kind = GLINT_LIGHT_DIRECTIONAL, .direction = {0.7, -0.4, -0.3}, .color = {0.2, 0.22, 0.25}};
+    vec3 right = v3_normalize(v3_cross(v.up, v.from)), back = v3_cross(right, v.up);
+    vec3 key_from = v3_madd(v3_madd(v3_scale(right, 0.5), v.up, 1), back, 0.6);
+    vec3 fill_from = v3_madd(v3_madd(v3_scale(right, -0.7), v.up, 0.4), back, 0.3);
+    glint_light key = {.kind = GLINT_LIGHT_DIRECTIONAL, .direction = v3_neg(key_from), .color = {0.85, 0.85, 0.8}};
+    glint_light fill = {.kind = GLINT_LIGHT_DIRECTIONAL, .direction = v3_neg(fill_from), .color = {0.2, 0.22, 0.25}};
     if (glint_scene_add_light(s, &key, err) < 0 || glint_scene_add_light(s, &fill, err) < 0)
         return false;
     if (side < 0)
         return true;
-    vec3 out = into_opening(side).from, size = v3_sub(hi, lo);
+    vec3 out = v.from, size = v3_sub(hi, lo);
     vec3 at = v3_scale(v3_add(lo, hi), 0.5);
-    double depth = fabs(v3_dot(size, out)), height = fabs(v3_dot(size, up));
-    at = v3_madd(v3_madd(at, out, 0.55 * depth), up, 0.3 * height);
+    double depth = fabs(v3_dot(size, out)), height = fabs(v3_dot(size, v.up));
+    at = v3_madd(v3_madd(at, out, 0.55 * depth), v.up, 0.3 * height);
     glint_light inside = {.kind = GLINT_LIGHT_POINT, .position = at, .color = {0.8, 0.8, 0.8}};
     return glint_scene_add_light(s, &inside, err) >= 0;
 }
@@ -90,7 +97,7 @@ static bool look(glint_scene *s, const mesh *m, const glint_model_view_options *
     view_dir v = side >= 0 ? into_opening(side) : named_view(o->view);
     glint_camera cam = view_frame_box(m->lo, m->hi, v3_neg(v.from), v.up, VIEW_FOV, (double)st.width / st.height,
                                       VIEW_SHARE);
-    return !glint_scene_set_camera(s, &cam, err) && add_lights(s, m->lo, m->hi, side, v.up, err);
+    return !glint_scene_set_camera(s, &cam, err) && add_lights(s, m->lo, m->hi, side, v, err);
 }
 
 glint_scene *glint_scene_for_model_ex(const char *path, const glint_model_view_options *options, glint_error *err)

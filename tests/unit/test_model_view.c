@@ -317,6 +317,36 @@ static void test_room_lit_inside(void **state)
     glint_scene_free(s);
 }
 
+/* The lights turn with the view: a cube about the y axis seen from the
+ * front, back, left and right looks the same at the picture's centre (with
+ * lights fixed in the world, the back view would see the unlit side). */
+static void test_lights_follow_the_view(void **state)
+{
+    (void)state;
+    static const double LO[3] = {-1, 0, -1}, HI[3] = {1, 2, 1};
+    text t = {.n = 0};
+    int v = 1;
+    add_box(&t, LO, HI, 0, &v);
+    char path[4096];
+    write_file(path, sizeof path, "cube.obj", t.s);
+    float first[3] = {0};
+    for (int view = GLINT_VIEW_FRONT; view <= GLINT_VIEW_RIGHT; view++) {
+        glint_scene *s = model_scene(path, (glint_model_view)view, 41, 31);
+        glint_image img;
+        render_one_sample(s, &img);
+        const float *centre = img.pixels + 3 * (15 * 41 + 20);
+        for (int k = 0; k < 3; k++) {
+            if (view == GLINT_VIEW_FRONT)
+                first[k] = centre[k];
+            else if (fabsf(centre[k] - first[k]) > 1e-5f)
+                fail_msg("view %d: the centre is %g, from the front %g", view, centre[k], first[k]);
+        }
+        assert_true(first[0] > 0.25f); /* lit by the key light (the fill and ambient alone: 0.1) */
+        glint_image_free(&img);
+        glint_scene_free(s);
+    }
+}
+
 /* Opens $GLINT_SHARED_DATA/name into path, or skips when it is absent. */
 static void shared_model(char *path, size_t size, const char *name)
 {
@@ -385,6 +415,7 @@ int main(void)
         cmocka_unit_test(test_room_seen_through_its_opening),
         cmocka_unit_test(test_not_rooms_seen_from_the_front),
         cmocka_unit_test(test_room_lit_inside),
+        cmocka_unit_test(test_lights_follow_the_view),
         cmocka_unit_test(test_teapot_every_view),
         cmocka_unit_test(test_bunny_from_the_front),
         cmocka_unit_test(test_cornell_box_seen_inside),
