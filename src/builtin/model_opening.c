@@ -30,9 +30,10 @@ typedef struct axis_hits {
     double least[CELLS], most[CELLS];
 } axis_hits;
 
-/* Marks triangle (a, b, c), as 3 floats each, in the cells it covers when
- * projected along `axis` onto the grid over [lo, hi] (lo, hi, size: the
- * box's two other coordinates, b first; size its cells'). */
+/* Marks the triangle p (its corners, 3 floats each) in the cells it covers
+ * when projected along `axis` onto that axis's grid: the grid's corner `lo`
+ * and its cells' `size` are in the box's two other coordinates, the one
+ * after `axis` first (y and z for x, z and x for y, x and y for z). */
 static void mark_triangle(axis_hits *h, int axis, const float *p[3], const double lo[2], const double size[2])
 {
     int u = (axis + 1) % 3, v = (axis + 2) % 3;

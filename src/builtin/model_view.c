@@ -78,7 +78,7 @@ static bool add_lights(glint_scene *s, vec3 lo, vec3 hi, int side, view_dir v, g
     vec3 out = v.from, size = v3_sub(hi, lo);
     vec3 at = v3_scale(v3_add(lo, hi), 0.5);
     double depth = fabs(v3_dot(size, out)), height = fabs(v3_dot(size, v.up));
-    at = v3_madd(v3_madd(at, out, 0.55 * depth), v.up, 0.3 * height);
+    at = v3_madd(v3_madd(at, out, (0.5 + 0.05) * depth), v.up, 0.3 * height); /* 5% of the depth outside */
     glint_light inside = {.kind = GLINT_LIGHT_POINT, .position = at, .color = {0.8, 0.8, 0.8}};
     return glint_scene_add_light(s, &inside, err) >= 0;
 }

@@ -341,7 +341,7 @@ static void test_lights_follow_the_view(void **state)
             else if (fabsf(centre[k] - first[k]) > 1e-5f)
                 fail_msg("view %d: the centre is %g, from the front %g", view, centre[k], first[k]);
         }
-        assert_true(first[0] > 0.25f); /* lit by the key light (the fill and ambient alone: 0.1) */
+        assert_true(first[0] > 0.25f); /* lit by the key light (the ambient term alone: 0.1) */
         glint_image_free(&img);
         glint_scene_free(s);
     }
