@@ -394,11 +394,38 @@ bool glint_scene_mesh_is_bare(const glint_scene *scene, int mesh);
 glint_status glint_scene_mesh_bounds(const glint_scene *scene, int mesh, glint_vec3 *min, glint_vec3 *max,
                                      glint_error *err);
 
+/* Where glint_scene_for_model_ex looks at the model from. y is up and the
+ * model faces +z, as glTF and most OBJ files do. */
+typedef enum glint_model_view {
+    GLINT_VIEW_AUTO = 0,  /* into the opening of a room open on one side (a Cornell box),
+                             straight on; any other model from the front */
+    GLINT_VIEW_FRONT,     /* from +z, 20 degrees above */
+    GLINT_VIEW_BACK,      /* from -z, 20 degrees above */
+    GLINT_VIEW_LEFT,      /* from -x, 20 degrees above */
+    GLINT_VIEW_RIGHT,     /* from +x, 20 degrees above */
+    GLINT_VIEW_TOP,       /* from +y looking down, -z up in the picture */
+    GLINT_VIEW_ISO        /* from (+1, +1, +1), three-quarters */
+} glint_model_view;
+
+/* Options for glint_scene_for_model_ex. Zero them for the defaults. */
+typedef struct glint_model_view_options {
+    glint_model_view view;
+    int width, height;        /* the image the camera frames, 1..65536 each; 0: 800 and 600 */
+} glint_model_view_options;
+
 /* Builds a scene for looking at one model file: the model as it is, a
- * checkered floor under it (y is up), a camera that frames its bounding box
- * from the front, above and to the right, a key and a fill light; 800x600,
- * 4 samples per pixel. Returns NULL and fills err when the model cannot be
- * imported. */
+ * checkered floor under it (y is up), a key and a fill light that turn
+ * with the view (and, looking into a room, a light at its opening), 4
+ * samples per pixel, and a camera
+ * (35 degrees vertical field of view) placed so that the 8 corners of the
+ * model's bounding box, projected, are centred in the image and span 85% of
+ * its width or height, whichever limits. docs/meshes.md says how a room's
+ * opening is found. options may be NULL. Returns NULL and fills err when
+ * the model cannot be imported or an option is out of range. */
+glint_scene *glint_scene_for_model_ex(const char *path, const glint_model_view_options *options, glint_error *err);
+
+/* As glint_scene_for_model_ex with every option at its default: 800x600,
+ * GLINT_VIEW_AUTO. */
 glint_scene *glint_scene_for_model(const char *path, glint_error *err);
 
 /* True when path names a model file by its extension (.obj, .ply, .stl,

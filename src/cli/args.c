@@ -33,6 +33,9 @@ static const char USAGE[] =
     "                         every problem, render nothing (exit 0: all valid)\n"
     "      --print-scene      write the scene glint would render, the flags applied, as a\n"
     "                         scene file on stdout, and render nothing\n"
+    "      --view NAME        where a model file is seen from: auto (the default: the\n"
+    "                         front, or a room open on one side through its opening),\n"
+    "                         front, back, left, right, top, or iso (from +x +y +z)\n"
     "  -w, --width N          image width in pixels, 1..65536\n"
     "  -h, --height N         image height in pixels, 1..65536; at most 16384 x 16384\n"
     "                         pixels in all\n"
@@ -149,10 +152,12 @@ typedef struct word_flag {
 } word_flag;
 
 static const char *const EXR_PIXELS[] = {"half", "float"}; /* glint_exr_pixel's order */
+static const char *const VIEWS[] = {"auto", "front", "back", "left", "right", "top", "iso"}; /* glint_model_view's */
 
 static const word_flag WORD_FLAGS[] = {
     {"--sampler", offsetof(cli_options, sampler), "sampler", NULL, 0},
     {"--exr-pixel", offsetof(cli_options, exr_pixel), NULL, EXR_PIXELS, 2},
+    {"--view", offsetof(cli_options, view), NULL, VIEWS, 7},
 };
 
 /* Sets wf's field to the index of the word v; false, with the words
@@ -224,7 +229,8 @@ static bool is_switch(const char *a)
 int cli_parse_args(int argc, char **argv, cli_options *o)
 {
     *o = (cli_options){.width = -1, .height = -1, .spp = -1, .depth = -1,
-                       .threads = -1, .seed = -1, .sampler = -1, .exr_pixel = -1};
+                       .threads = -1, .seed = -1, .sampler = -1, .exr_pixel = -1,
+                       .view = -1};
     /* The scene files move to argv[1] on: no slot is written before it is read. */
     int files = 0;
     for (int i = 1; i < argc; i++) {
@@ -324,5 +330,9 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
                             argv[2]);
     if (o->check && o->print_scene)
         return cli_complain(CLI_EXIT_USAGE, "--check and --print-scene do not go together: choose one");
+    if (o->view >= 0 && !o->scene)
+        return cli_complain(CLI_EXIT_USAGE, "--view needs a model file");
+    if (o->view >= 0 && !glint_is_model_path(o->scene))
+        return cli_complain(CLI_EXIT_USAGE, "--view is for model files, and '%s' is a scene file", o->scene);
     return -1;
 }

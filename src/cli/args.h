@@ -35,6 +35,7 @@ typedef struct cli_options {
     long long width, height, spp, depth, threads, seed; /* -1: the scene's own */
     int sampler;                                        /* -1: the scene's own, else a glint_sampler */
     int exr_pixel;                                      /* -1: not given, else a glint_exr_pixel */
+    int view;                                           /* -1: not given, else a glint_model_view */
     bool quiet;
     bool partial;
     const char *swap_name[CLI_MAX_TEXTURE_SWAPS], *swap_path[CLI_MAX_TEXTURE_SWAPS];

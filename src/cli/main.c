@@ -107,17 +107,24 @@ static const char *scene_name(const char *path)
 }
 
 /* Loads the scene file, or standard input for '-' (or builds a scene
- * around a model file), printing every problem and a last line saying what
- * became of the run; NULL after reporting, with *code the exit code: bad
- * input, or an internal failure when memory ran out. */
-static glint_scene *load_scene(const char *path, const char *outcome, int *code)
+ * around a model file, seen as o asks and framed for the image size it
+ * gives), printing every problem and a last line saying what became of the
+ * run; NULL after reporting, with *code the exit code: bad input, or an
+ * internal failure when memory ran out. */
+static glint_scene *load_scene(const cli_options *o, const char *path, const char *outcome, int *code)
 {
     glint_error err = {0};
     glint_scene *scene;
     const char *name = scene_name(path);
     bool from_stdin = strcmp(path, "-") == 0;
     if (glint_is_model_path(path)) {
-        scene = glint_scene_for_model(path, &err);
+        /* An image over the pixel limit is framed for the default size:
+         * the flags are refused as usage when the size is set (run). */
+        bool fits = o->width * o->height <= GLINT_MAX_PIXELS;
+        glint_model_view_options view = {.view = o->view >= 0 ? (glint_model_view)o->view : GLINT_VIEW_AUTO,
+                                          .width = o->width > 0 && fits ? (int)o->width : 0,
+                                          .height = o->height > 0 && fits ? (int)o->height : 0};
+        scene = glint_scene_for_model_ex(path, &view, &err);
         if (!scene)
             cli_complain(CLI_EXIT_BAD_INPUT, "%s", err.message);
     } else {
@@ -139,10 +146,10 @@ static void print_count(const char *before, long long n, const char *one, const 
 }
 
 /* Checks one scene file: what it holds on stdout, or its problems on stderr. */
-static int check_one(const char *path)
+static int check_one(const cli_options *o, const char *path)
 {
     int code;
-    glint_scene *scene = load_scene(path, "not valid", &code);
+    glint_scene *scene = load_scene(o, path, "not valid", &code);
     if (!scene)
         return code;
     glint_scene_counts c = glint_scene_get_counts(scene);
@@ -171,7 +178,7 @@ static int check_only(const cli_options *o)
 {
     int worst = CLI_EXIT_OK;
     for (int i = 0; i < o->scene_count; i++) {
-        int code = check_one(o->scenes[i]);
+        int code = check_one(o, o->scenes[i]);
         if (code > worst)
             worst = code;
         /* In order with the problems on stderr, when both go to one place. */
@@ -269,7 +276,7 @@ static int run(const cli_options *o)
                             o->format ? o->format->name : "PNG");
     glint_error err = {0};
     int code = CLI_EXIT_INTERNAL;
-    glint_scene *scene = o->scene ? load_scene(o->scene, "nothing rendered", &code) : glint_scene_seed_room(&err);
+    glint_scene *scene = o->scene ? load_scene(o, o->scene, "nothing rendered", &code) : glint_scene_seed_room(&err);
     if (!scene)
         return o->scene ? code : cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
     destination d;

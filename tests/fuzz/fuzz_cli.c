@@ -4,11 +4,11 @@
  * cli_parse_args, whose promises are checked: it returns -1 (go on), 0
  * (only for --help, --version or a last -h) or 2 (usage), and when it goes on, every
  * number is -1 or within its flag's range (the ranges glint --help gives),
- * the sampler, the OpenEXR pixel type and the image format known ones,
- * --print-scene only when given and never with --check, every string one
- * the command line holds, and the scene files those arguments that are not
- * flags nor their values, in order, "-" at most once, several only with
- * --check.
+ * the sampler, the OpenEXR pixel type, the image format and the model
+ * view known ones, a view only with a model file, --print-scene only when
+ * given and never with --check, every string one the command line holds,
+ * and the scene files those arguments that are not flags nor their
+ * values, in order, "-" at most once, several only with --check.
  * A broken promise aborts, which libFuzzer counts as a crash. The help,
  * the version and the complaints are printed as glint prints them: run it
  * with -close_fd_mask=3 (tests/fuzz/README.md). */
@@ -107,6 +107,9 @@ static void check_options(const cli_options *o, int argc, char **argv)
     if (o->sampler != -1 && o->sampler != GLINT_SAMPLER_REGULAR && o->sampler != GLINT_SAMPLER_JITTERED)
         abort();
     if (o->exr_pixel != -1 && o->exr_pixel != GLINT_EXR_HALF && o->exr_pixel != GLINT_EXR_FLOAT)
+        abort();
+    if (o->view != -1 && (o->view < GLINT_VIEW_AUTO || o->view > GLINT_VIEW_ISO || !o->scene ||
+                          !glint_is_model_path(o->scene)))
         abort();
     if (!scenes_ok(o, argc, argv) || !known_format(o->format))
         abort();
