@@ -201,7 +201,11 @@ static void write_mapping(const plan *p, ymap *m, const glint_mapping *given)
         map.scale = 1; /* what a scale of 0 means (glint_mapping) */
     param_table t = mapping_params();
     param_table read = {t.params, mapping_key_count(map.kind)};
-    bool type_only = true;
+    /* A center given as [0, 0, 0] still says something: without it, a
+     * spherical or cylindrical mapping goes around its shape. */
+    const param *center = params_find(read, "center");
+    bool zero_center_given = center && map.center_given && param_is_default(center, &map);
+    bool type_only = !zero_center_given;
     for (int i = 1; i < read.count; i++)
         type_only = type_only && param_is_default(&read.params[i], &map);
     if (map.kind == GLINT_MAP_UV && type_only)
@@ -213,6 +217,10 @@ static void write_mapping(const plan *p, ymap *m, const glint_mapping *given)
     }
     ymap keys = ymap_begin(p->f, true, 0);
     yw_params(&keys, read, &map, false);
+    if (zero_center_given) {
+        ymap_key(&keys, center->key);
+        yw_param(p->f, center, &map);
+    }
     ymap_end(&keys);
 }
 

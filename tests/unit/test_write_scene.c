@@ -183,6 +183,33 @@ static void test_matrix_step(void **state)
 
 /* What a scene file cannot say is refused, naming it, with nothing
  * written: a placed mesh built from arrays, an image from memory. */
+/* A mapping's center comes back as given: [0, 0, 0] written out when it
+ * was given (a spherical mapping then goes around the origin, not around
+ * its shape), and left out when it was not. */
+static void test_mapping_center(void **state)
+{
+    (void)state;
+    glint_scene *s = glint_scene_new();
+    glint_error err;
+    glint_mapping given = {.kind = GLINT_MAP_SPHERICAL, .center_given = true};
+    glint_mapping around_shape = {.kind = GLINT_MAP_SPHERICAL};
+    glint_color a = {1, 1, 1}, b = {0, 0, 0};
+    assert_true(glint_scene_add_checker(s, "given", a, b, 0.25, given, &err) >= 0);
+    assert_true(glint_scene_add_checker(s, "shape", a, b, 0.25, around_shape, &err) >= 0);
+    glint_status st;
+    char *text = written(s, &st, &err);
+    assert_non_null(text);
+    assert_non_null(strstr(text, "  given: {type: checker, mapping: {type: spherical, center: [0, 0, 0]}"));
+    assert_non_null(strstr(text, "  shape: {type: checker, mapping: spherical"));
+    free(text);
+    glint_scene *back = round_trip(s);
+    assert_int_equal(back->texture_count, 2);
+    assert_true(back->textures[0].desc.mapping.center_given);
+    assert_false(back->textures[1].desc.mapping.center_given);
+    glint_scene_free(back);
+    glint_scene_free(s);
+}
+
 static void test_refusals(void **state)
 {
     (void)state;
@@ -237,6 +264,7 @@ int main(void)
         cmocka_unit_test(test_colors),
         cmocka_unit_test(test_names),
         cmocka_unit_test(test_matrix_step),
+        cmocka_unit_test(test_mapping_center),
         cmocka_unit_test(test_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
