@@ -6,22 +6,14 @@
 # applied, with paths relative to the current directory, and with a
 # swapped texture. A small scene prints exactly the expected text.
 # Usage: print_scene.sh PATH/TO/glint
-set -u
-GLINT=$1
 here=$(cd "$(dirname "$0")/../.." && pwd)
-work=$(mktemp -d)
-trap 'rm -rf "$work"' EXIT
-passed=0
-failed=0
-fail() {
-    echo "FAIL: $1"
-    failed=$((failed + 1))
-}
+source "$here/tests/cli/lib/harness.sh"
+fail() { verdict 1 "$1"; }
 
 # same_text WHAT WANT GOT: the file GOT holds exactly the text of WANT.
 same_text() {
     if cmp -s "$2" "$3"; then
-        passed=$((passed + 1))
+        verdict 0 ""
     else
         fail "$1"; diff "$2" "$3" | sed 's/^/  /'
     fi
@@ -42,7 +34,7 @@ round_trip() {
         fail "$name: the printed scene does not render"; sed 's/^/  /' "$work/err"; return
     fi
     if cmp -s "$work/a.ppm" "$work/b.ppm"; then
-        passed=$((passed + 1))
+        verdict 0 ""
     else
         fail "$name: the printed scene renders different bytes"
     fi
@@ -93,13 +85,13 @@ ln -s "$here/assets" "$work/cwd/assets"
 (cd "$work/cwd" && "$GLINT" --print-scene scenes/textures.yaml -w 40 -h 30 >textures.yaml &&
     "$GLINT" textures.yaml -q -o a.ppm && "$GLINT" scenes/textures.yaml -w 40 -h 30 -q -o b.ppm &&
     grep -q '^  moon-globe: {type: image, mapping: spherical, file: scenes/../assets/moon.jpg}$' textures.yaml &&
-    cmp -s a.ppm b.ppm) && passed=$((passed + 1)) || fail "relative paths"
+    cmp -s a.ppm b.ppm) && verdict 0 "" || fail "relative paths"
 
 # --texture swaps the picture in what is printed too.
 "$GLINT" "$here/scenes/seed-room.yaml" -w 40 -h 40 --texture "moon=$here/assets/moon.jpg" -q -o "$work/a.ppm"
 "$GLINT" --print-scene --texture "moon=$here/assets/moon.jpg" >"$work/swap.yaml"
 if grep -q "^  moon: {type: image, file: $here/assets/moon.jpg}\$" "$work/swap.yaml"; then
-    passed=$((passed + 1))
+    verdict 0 ""
 else
     fail "--texture: the swapped file is not printed"
 fi
@@ -174,5 +166,4 @@ EOF
 "$GLINT" --print-scene "$work/small.yaml" >"$work/small.txt" 2>&1
 same_text "small scene: the printed text" "$work/small.want" "$work/small.txt"
 
-echo "$passed passed, $failed failed"
-[ "$failed" -eq 0 ]
+finish
