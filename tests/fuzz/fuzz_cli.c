@@ -38,15 +38,6 @@ static bool is_square(long long n)
     return false;
 }
 
-/* Whether s is one of the argc - 1 arguments (the pointer itself). */
-static bool is_argument(const char *s, int argc, char **argv)
-{
-    for (int i = 1; i < argc; i++)
-        if (s == argv[i])
-            return true;
-    return false;
-}
-
 /* Whether v is a flag's value as the parser takes it: a whole argument, or
  * the part after the first '=' of a long option's argument (--name=value). */
 static bool is_value(const char *v, int argc, char **argv)
