@@ -135,6 +135,8 @@ static glint_scene *load_scene(const cli_options *o, const char *path, const cha
             cli_complain(CLI_EXIT_BAD_INPUT, "%s: %d problem%s%s; %s", name, problems, problems == 1 ? "" : "s",
                          problems >= MAX_PROBLEMS ? " (stopped at the limit)" : "", outcome);
     }
+    for (int i = 0; i < glint_scene_warning_count(scene); i++)
+        fprintf(stderr, "glint: warning: %s\n", glint_scene_warning(scene, i));
     *code = err.status == GLINT_ERR_NOMEM ? CLI_EXIT_INTERNAL : CLI_EXIT_BAD_INPUT;
     return scene;
 }
@@ -289,6 +291,11 @@ static int run(const cli_options *o)
     glint_image_write_options write_options = {.exr_pixel = o->exr_pixel >= 0 ? o->exr_pixel : GLINT_EXR_HALF};
     for (int i = 0; i < o->swaps && !st; i++)
         st = glint_scene_replace_image(scene, o->swap_name[i], o->swap_path[i], &err);
+    /* An output over one of the run's own inputs would destroy it. */
+    if (!st && strcmp(d.path, "-") != 0 && glint_scene_check_output(scene, d.path, &err)) {
+        glint_scene_free(scene);
+        return cli_complain(CLI_EXIT_IO, "%s", err.message);
+    }
     glint_settings settings = glint_scene_get_settings(scene);
     apply_overrides(o, &settings);
     if (st) {
