@@ -291,11 +291,6 @@ static int run(const cli_options *o)
     glint_image_write_options write_options = {.exr_pixel = o->exr_pixel >= 0 ? o->exr_pixel : GLINT_EXR_HALF};
     for (int i = 0; i < o->swaps && !st; i++)
         st = glint_scene_replace_image(scene, o->swap_name[i], o->swap_path[i], &err);
-    /* An output over one of the run's own inputs would destroy it. */
-    if (!st && strcmp(d.path, "-") != 0 && glint_scene_check_output(scene, d.path, &err)) {
-        glint_scene_free(scene);
-        return cli_complain(CLI_EXIT_IO, "%s", err.message);
-    }
     glint_settings settings = glint_scene_get_settings(scene);
     apply_overrides(o, &settings);
     if (st) {
@@ -312,6 +307,12 @@ static int run(const cli_options *o)
 
     if (o->print_scene)
         return print_scene(scene, o->output);
+
+    /* An output over one of the run's own inputs would destroy it. */
+    if (strcmp(d.path, "-") != 0 && glint_scene_check_output(scene, d.path, &err)) {
+        glint_scene_free(scene);
+        return cli_complain(CLI_EXIT_IO, "%s", err.message);
+    }
 
     /* From here on a signal cancels the render (its BVH build included),
      * which then writes nothing, or with --partial its finished tiles. */

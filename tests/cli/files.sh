@@ -77,6 +77,8 @@ printf 'settings: {width: 8, height: 8, samples: 1, output: self.png}\n' >self.p
 cp self.png self.before
 expect 3 "glint: will not write 'self.png': it is one of the files this scene was read from" -- self.png
 check "a scene naming itself as output is untouched" cmp -s self.png self.before
+"$GLINT" self.png --print-scene >printed.yaml
+check "--print-scene of such a scene writes no image, so is not refused" cmp -s self.png self.before
 printf 'include: part.png\n' >with-part.yaml
 printf 'settings: {width: 8, height: 8, samples: 1}\n' >part.png
 expect 3 "glint: will not write './part.png': it is one of the files this scene was read from" -- with-part.yaml -o ./part.png
