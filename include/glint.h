@@ -472,6 +472,21 @@ glint_status glint_scene_set_output(glint_scene *scene, const char *path, glint_
 /* Returns the output path a scene file asked for, or NULL. */
 const char *glint_scene_get_output(const glint_scene *scene);
 
+/* Refuses (GLINT_ERR_INVALID) an image output `path` that names one of
+ * the files the scene was read from: its scene files and includes, image
+ * textures, models and the files they name. Files are compared as the
+ * file system knows them (device and inode), so any name for one of them
+ * is refused; a path that does not exist yet passes. Call it before
+ * rendering, after any glint_scene_replace_image. */
+glint_status glint_scene_check_output(const glint_scene *scene, const char *path, glint_error *err);
+
+/* The warnings gathered while the scene was built, for things it went on
+ * without (a model's MTL file that does not exist): how many (at most 100
+ * are kept), and the index-th (NULL when out of range), owned by the
+ * scene. */
+int glint_scene_warning_count(const glint_scene *scene);
+const char *glint_scene_warning(const glint_scene *scene, int index);
+
 /* Writes the scene as a YAML scene file (docs/scene-format.md) that
  * glint_scene_load_file reads back to the same scene, so that it renders
  * to the same image bytes: what `glint --print-scene` prints. The settings

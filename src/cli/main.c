@@ -135,6 +135,8 @@ static glint_scene *load_scene(const cli_options *o, const char *path, const cha
             cli_complain(CLI_EXIT_BAD_INPUT, "%s: %d problem%s%s; %s", name, problems, problems == 1 ? "" : "s",
                          problems >= MAX_PROBLEMS ? " (stopped at the limit)" : "", outcome);
     }
+    for (int i = 0; i < glint_scene_warning_count(scene); i++)
+        fprintf(stderr, "glint: warning: %s\n", glint_scene_warning(scene, i));
     *code = err.status == GLINT_ERR_NOMEM ? CLI_EXIT_INTERNAL : CLI_EXIT_BAD_INPUT;
     return scene;
 }
@@ -305,6 +307,12 @@ static int run(const cli_options *o)
 
     if (o->print_scene)
         return print_scene(scene, o->output);
+
+    /* An output over one of the run's own inputs would destroy it. */
+    if (strcmp(d.path, "-") != 0 && glint_scene_check_output(scene, d.path, &err)) {
+        glint_scene_free(scene);
+        return cli_complain(CLI_EXIT_IO, "%s", err.message);
+    }
 
     /* From here on a signal cancels the render (its BVH build included),
      * which then writes nothing, or with --partial its finished tiles. */

@@ -1,13 +1,16 @@
 /* image_write.c - writing a rendered image in the format its path names
  * (image_formats.c), for every format the same safe way: the format's
  * writer fills a new temporary file beside the target, which is synced and
- * renamed over it, so a failure at any step leaves neither a partial image
- * nor a damaged earlier one, and is reported with the errno text of the
- * step that failed. Writing to a descriptor already open (standard output)
+ * renamed over it (over the file a symbolic link leads to, not the link),
+ * with the mode, owner and group of the file it replaces, so a failure at
+ * any step leaves neither a partial image nor a damaged earlier one, and
+ * is reported with the errno text of the step that failed. Writing to a descriptor already open (standard output)
  * goes through the same writers and checks, straight into it. */
 #include <errno.h>
 #include <fcntl.h>
+#include <limits.h>
 #include <stdatomic.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -49,20 +52,75 @@ glint_status image_write_bytes(int fd, const unsigned char *bytes, size_t size, 
     return GLINT_OK;
 }
 
-/* Creates a new temporary file beside path, named path.tmp-PID-N. Opening
- * with mode 0666 lets the umask decide the final mode, as for any new file,
+/* The file that writing `path` replaces: path itself, or where the
+ * symbolic links it names lead (a link's target is replaced, never the
+ * link), even to a file that does not exist yet. Malloc'd; NULL with errno
+ * set on failure (ELOOP past 40 links, as the system counts). */
+static char *final_target(const char *path)
+{
+    char *at = strdup(path);
+    for (int hops = 0; at && hops <= 40; hops++) {
+        struct stat st;
+        if (lstat(at, &st) != 0 || !S_ISLNK(st.st_mode))
+            return at;
+        char link[PATH_MAX];
+        ssize_t n = readlink(at, link, sizeof link - 1);
+        if (n < 0) {
+            free(at);
+            return NULL;
+        }
+        link[n] = '\0';
+        const char *slash = strrchr(at, '/');
+        size_t dir = link[0] == '/' || !slash ? 0 : (size_t)(slash - at) + 1;
+        char *next = malloc(dir + (size_t)n + 1);
+        if (next) {
+            memcpy(next, at, dir);
+            memcpy(next + dir, link, (size_t)n + 1);
+        }
+        free(at);
+        at = next;
+    }
+    if (at) {
+        free(at);
+        errno = ELOOP;
+    } else {
+        errno = ENOMEM;
+    }
+    return NULL;
+}
+
+/* The longest file name the directory of `path` takes. */
+static size_t name_max(const char *path)
+{
+    const char *slash = strrchr(path, '/');
+    char *dir = slash ? strndup(path, slash == path ? 1 : (size_t)(slash - path)) : strdup(".");
+    long n = dir ? pathconf(dir, _PC_NAME_MAX) : -1;
+    free(dir);
+    return n > 0 ? (size_t)n : NAME_MAX;
+}
+
+/* Creates a new temporary file beside path, named path.tmp-PID-N, or
+ * .glint-PID-N.tmp in its directory when that name would be too long (a
+ * legal name of 250 characters has no room for the suffix). Opening with
+ * mode 0666 lets the umask decide the mode of a new file, as for any,
  * without touching the process-wide umask. */
 static int create_temporary(const char *path, char **tmp_out)
 {
     static atomic_uint counter;
-    size_t size = strlen(path) + 64;
+    const char *slash = strrchr(path, '/');
+    size_t dir = slash ? (size_t)(slash - path) + 1 : 0, size = strlen(path) + 64;
+    bool short_name = strlen(path + dir) + sizeof ".tmp-4294967295-4294967295" > name_max(path);
     char *tmp = malloc(size);
     if (!tmp) {
         errno = ENOMEM;
         return -1;
     }
     for (int attempt = 0; attempt < 100; attempt++) {
-        snprintf(tmp, size, "%s.tmp-%ld-%u", path, (long)getpid(), atomic_fetch_add(&counter, 1));
+        unsigned n = atomic_fetch_add(&counter, 1);
+        if (short_name)
+            snprintf(tmp, size, "%.*s.glint-%ld-%u.tmp", (int)dir, path, (long)getpid(), n);
+        else
+            snprintf(tmp, size, "%s.tmp-%ld-%u", path, (long)getpid(), n);
         int fd = open(tmp, O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
         if (fd >= 0 || errno != EEXIST) {
             if (fd >= 0)
@@ -77,29 +135,53 @@ static int create_temporary(const char *path, char **tmp_out)
     return -1;
 }
 
+/* Gives the new file fd what the file it replaces had: its owner and group
+ * where the process may set them (each tried, failures kept quiet: a user
+ * cannot give a file away), then its mode, last because a change of owner
+ * clears the set-user-ID bits. A 0600 image stays private. */
+static int keep_mode_of(int fd, const char *target)
+{
+    struct stat old, now;
+    if (stat(target, &old) != 0 || !S_ISREG(old.st_mode) || fstat(fd, &now) != 0)
+        return 0;
+    if ((old.st_uid != now.st_uid || old.st_gid != now.st_gid) && fchown(fd, old.st_uid, old.st_gid) != 0 &&
+        old.st_gid != now.st_gid && fchown(fd, (uid_t)-1, old.st_gid) != 0) {
+        /* Neither the owner nor the group could be kept: the mode alone
+         * must not hand the group's rights to another group. */
+        old.st_mode &= ~(mode_t)(S_IRWXG | S_ISGID);
+    }
+    return fchmod(fd, old.st_mode & 07777);
+}
+
 /* The temporary file sits in the target's directory so that rename() is an
  * atomic replacement on one file system; it is synced first so that after a
  * crash the name points at either the old image or the whole new one. */
 static glint_status write_replacing(const image_writer *writer, const glint_image *image,
                                     const glint_image_write_options *options, const char *path, glint_error *err)
 {
-    char *tmp = NULL;
-    int fd = create_temporary(path, &tmp);
-    if (fd < 0)
+    char *tmp = NULL, *target = final_target(path);
+    if (!target)
         return image_write_io_error(path, errno, err);
-    glint_status st = writer->write(fd, image, options, path, err);
-    int e = 0;
-    if (st == GLINT_OK && fsync(fd) != 0)
+    int fd = create_temporary(target, &tmp);
+    if (fd < 0) {
+        int e = errno;
+        free(target);
+        return image_write_io_error(path, e, err);
+    }
+    int e = keep_mode_of(fd, target) != 0 ? errno : 0;
+    glint_status st = e ? GLINT_OK : writer->write(fd, image, options, path, err);
+    if (st == GLINT_OK && e == 0 && fsync(fd) != 0)
         e = errno;
     if (close(fd) != 0 && e == 0)
         e = errno;
-    if (st == GLINT_OK && e == 0 && rename(tmp, path) != 0)
+    if (st == GLINT_OK && e == 0 && rename(tmp, target) != 0)
         e = errno;
     if (st == GLINT_OK && e != 0)
         st = image_write_io_error(path, e, err);
     if (st != GLINT_OK)
         unlink(tmp);
     free(tmp);
+    free(target);
     return st;
 }
 
@@ -162,20 +244,26 @@ glint_status glint_image_check_path(const char *path, glint_error *err)
     struct stat st;
     if (stat(path, &st) == 0 && S_ISDIR(st.st_mode))
         return image_write_io_error(path, EISDIR, err);
+    char *target = final_target(path);
+    if (!target)
+        return image_write_io_error(path, errno, err);
 
     /* The directory keeps its trailing slash, which makes access() fail with
      * ENOTDIR when it names a file rather than pass it as writable. */
-    const char *slash = strrchr(path, '/');
-    size_t len = slash ? (size_t)(slash - path) + 1 : 0;
+    const char *slash = strrchr(target, '/');
+    size_t len = slash ? (size_t)(slash - target) + 1 : 0;
     char *dir = malloc(len + 2);
-    if (!dir)
+    if (!dir) {
+        free(target);
         return image_write_no_memory(path, err);
+    }
     if (len > 0) {
-        memcpy(dir, path, len);
+        memcpy(dir, target, len);
         dir[len] = '\0';
     } else {
         strcpy(dir, ".");
     }
+    free(target);
     int e = access(dir, W_OK | X_OK) != 0 ? errno : 0;
     free(dir);
     return e != 0 ? image_write_io_error(path, e, err) : GLINT_OK;

@@ -7,13 +7,13 @@
  * error value, never a crash, an exit or a line on stderr, and the size in a
  * header is checked before any pixel memory is allocated. */
 #include <errno.h>
-#include <fcntl.h>
 #include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
 #include "core/error.h"
+#include "core/open_file.h"
 #include "core/word_list.h"
 #include "image/image_reader.h"
 
@@ -96,13 +96,11 @@ static glint_status read_file(const char *path, unsigned char **data, size_t *si
                               glint_error *err)
 {
     struct stat st;
-    int fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK); /* a FIFO must not block */
+    int errnum, fd = open_file_read(path, &st, &errnum);
+    if (fd < 0 && (errnum == 0 || errnum == EISDIR))
+        return error_set(err, GLINT_ERR_IO, "cannot read texture '%s': %s", path, open_file_reason(errnum));
     if (fd < 0)
-        return error_set(err, GLINT_ERR_IO, "cannot open texture '%s': %s", path, strerror(errno));
-    if (fstat(fd, &st) != 0)
-        return read_error(fd, NULL, path, strerror(errno), err);
-    if (!S_ISREG(st.st_mode))
-        return read_error(fd, NULL, path, "not a regular file", err);
+        return error_set(err, GLINT_ERR_IO, "cannot open texture '%s': %s", path, strerror(errnum));
     if ((unsigned long long)st.st_size > TEXTURE_IMAGE_MAX_FILE) {
         close(fd);
         return error_set(err, GLINT_ERR_INVALID, "texture '%s' is too large: %llu bytes (limit %llu)", path,

@@ -1,15 +1,20 @@
 /* assimp_io.c - the file system Assimp reads a model through: the model's
  * own bytes from memory, so that it is read once and checked before
  * Assimp parses it, and the files it names (glTF buffers) from disk only
- * when the model came from disk. Only regular files are opened, never for
- * writing. */
+ * when the model came from disk. Only regular files in the model's folder
+ * or below are opened, never for writing. */
+#include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
 #include <sys/types.h>
+#include "core/error.h"
+#include "core/open_file.h"
 #include "model/assimp_io.h"
+#include "model/model_file.h"
+#include "scene/scene.h"
 
 /* An open file: a window on the model's bytes, or a stdio stream. */
 typedef struct open_file {
@@ -85,23 +90,37 @@ static void file_flush(struct aiFile *f)
 {
 }
 
-/* Opens a regular file from disk, or NULL. */
-static FILE *open_regular(const char *path, size_t *size)
+/* Opens a file the model names, or NULL, filling src's refusal unless
+ * the file does not exist (Assimp then says which it missed). */
+static FILE *open_named(assimp_source *src, const char *path, size_t *size)
 {
-    FILE *fp = fopen(path, "rb");
-    struct stat st;
-    if (fp && fstat(fileno(fp), &st) == 0 && S_ISREG(st.st_mode)) {
-        *size = (size_t)st.st_size;
-        return fp;
+    if (model_file_check_inside(src->dir, path, src->file, "buffer", path, &src->refusal)) {
+        src->refused = true;
+        return NULL;
     }
-    if (fp)
+    struct stat st;
+    int errnum;
+    FILE *fp = open_file_stream(path, &st, &errnum);
+    if (!fp) {
+        if (errnum != ENOENT) {
+            error_set(&src->refusal, GLINT_ERR_IO, "%s: cannot read buffer '%s': %s", src->file, path,
+                      open_file_reason(errnum));
+            src->refused = true;
+        }
+        return NULL;
+    }
+    if (scene_note_file(src->scene, &st, &src->refusal)) {
+        src->refused = true;
         fclose(fp);
-    return NULL;
+        return NULL;
+    }
+    *size = (size_t)st.st_size;
+    return fp;
 }
 
 static struct aiFile *io_open(struct aiFileIO *io, const char *name, const char *mode)
 {
-    const assimp_source *src = (const assimp_source *)(void *)io->UserData;
+    assimp_source *src = (assimp_source *)(void *)io->UserData;
     if (!name || !mode || strpbrk(mode, "wa+"))
         return NULL;
     open_file *o = calloc(1, sizeof *o);
@@ -110,7 +129,7 @@ static struct aiFile *io_open(struct aiFileIO *io, const char *name, const char 
     if (strcmp(name, src->name) == 0) {
         o->data = src->data;
         o->size = src->size;
-    } else if (!src->disk || !(o->fp = open_regular(name, &o->size))) {
+    } else if (!src->dir || !(o->fp = open_named(src, name, &o->size))) {
         free(o);
         return NULL;
     }

@@ -6,14 +6,22 @@
 #include <stdbool.h>
 #include <stddef.h>
 #include <assimp/cfileio.h>
+#include "glint.h"
 
 /* What Assimp may read: the model itself, served from memory under `name`,
- * and, when `disk` is set, any regular file it names (glTF buffers). */
+ * and, when `dir` is set, the regular files it names (glTF buffers) in
+ * that folder or below, each noted in `scene` as one it was read from.
+ * A file refused for any other reason than not existing fills `refusal`
+ * (`refused` then set), which says more than Assimp's message would. */
 typedef struct assimp_source {
     const char *name;
     const unsigned char *data;
     size_t size;
-    bool disk;
+    const char *dir;
+    const char *file;         /* the model as named in messages */
+    glint_scene *scene;
+    bool refused;
+    glint_error refusal;
 } assimp_source;
 
 /* Fills an Assimp file system that reads through src, which must outlive

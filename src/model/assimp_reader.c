@@ -116,12 +116,15 @@ static const struct aiScene *assimp_read(assimp_source *src, const char *file, d
     const char *assertion = failed_assertion;
     pthread_mutex_unlock(&assimp_lock);
     aiReleasePropertyStore(props);
-    if (ai && !assertion && !(ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) && ai->mNumMeshes > 0)
+    if (ai && !assertion && !src->refused && !(ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) && ai->mNumMeshes > 0)
         return ai;
     bool empty = ai != NULL;
     if (ai)
         aiReleaseImport(ai);
-    if (s)
+    /* A file refused says why before anything Assimp made of its absence. */
+    if (src->refused)
+        *err = src->refusal;
+    if (s || src->refused)
         return NULL;
     if (assertion)
         error_set(err, GLINT_ERR_INVALID, "%s: Assimp failed its own check '%s'", file, assertion);
@@ -178,7 +181,8 @@ static int import_memory(glint_scene *scene, const unsigned char *data, size_t s
      * by a name made of its format's extension. */
     char hint[32];
     snprintf(hint, sizeof hint, "$glint-memory$.%s", job->format->extension);
-    assimp_source src = {.name = job->dir ? job->file : hint, .data = data, .size = size, .disk = job->dir != NULL};
+    assimp_source src = {.name = job->dir ? job->file : hint, .data = data, .size = size, .dir = job->dir,
+                         .file = job->file, .scene = scene};
     const struct aiScene *ai = assimp_read(&src, job->file, job->crease, err);
     int mesh = -1;
     if (ai) {

@@ -36,6 +36,11 @@ glint_status model_add_texture_file(glint_scene *scene, const char *ref, const m
     char *path = model_file_path(job->dir, ref);
     if (!path)
         return error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", job->file);
+    glint_status s = model_file_check_inside(job->dir, path, job->file, "texture", ref, err);
+    if (s) {
+        free(path);
+        return s;
+    }
     glint_mapping uv = {.kind = GLINT_MAP_UV};
     glint_error inner;
     *out = glint_scene_add_image_file(scene, NULL, path, uv, &inner);

@@ -1,8 +1,14 @@
 /* model_file.c - opening and reading a model file and the files it names:
  * only regular files, never for writing, and none larger than half the
- * machine's memory (a model is read whole, or its model built beside it). */
+ * machine's memory (a model is read whole, or its model built beside it).
+ * A model may come from anyone, so the files it names must lie in its
+ * folder or below: a buffer URI "../../../etc/passwd" would otherwise be
+ * read and shown as vertices. */
+/* realpath() is X/Open. */
+#define _XOPEN_SOURCE 700
 #include <errno.h>
-#include <fcntl.h>
+#include <limits.h>
+#include <stdbool.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -10,6 +16,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 #include "core/error.h"
+#include "core/open_file.h"
 #include "model/model_file.h"
 
 /* The machine's memory in bytes, or 0 when the system does not say. */
@@ -22,19 +29,18 @@ static uint64_t memory_bytes(void)
 glint_status model_file_open(const char *path, int *fd, size_t *size, glint_error *err)
 {
     *size = 0;
-    *fd = open(path, O_RDONLY | O_CLOEXEC | O_NONBLOCK); /* a FIFO must not block */
-    if (*fd < 0)
-        return error_set(err, GLINT_ERR_IO, "%s: cannot open: %s", path, strerror(errno));
     struct stat st;
+    int errnum;
+    *fd = open_file_read(path, &st, &errnum);
+    if (*fd < 0) {
+        error_set(err, GLINT_ERR_IO, errnum && errnum != EISDIR ? "%s: cannot open: %s" : "%s: cannot read: %s", path,
+                  open_file_reason(errnum));
+        errno = errnum;
+        return GLINT_ERR_IO;
+    }
     glint_status s = GLINT_OK;
     uint64_t memory = memory_bytes();
-    if (fstat(*fd, &st) != 0)
-        s = error_set(err, GLINT_ERR_IO, "%s: cannot read: %s", path, strerror(errno));
-    else if (S_ISDIR(st.st_mode))
-        s = error_set(err, GLINT_ERR_IO, "%s: cannot read: %s", path, strerror(EISDIR));
-    else if (!S_ISREG(st.st_mode))
-        s = error_set(err, GLINT_ERR_IO, "%s: cannot read: not a regular file", path);
-    else if ((uintmax_t)st.st_size >= SIZE_MAX)
+    if ((uintmax_t)st.st_size >= SIZE_MAX)
         s = error_set(err, GLINT_ERR_NOMEM, "%s: too large to read", path);
     /* The file is read whole and its model built beside it: one larger
      * than half the memory is refused before reading, rather than found
@@ -103,4 +109,28 @@ char *model_file_path(const char *dir, const char *ref)
         if (*c == '\\')
             *c = '/';
     return path;
+}
+
+/* True when `path` (resolved) is `dir` (resolved) or lies below it. */
+static bool below(const char *dir, const char *path)
+{
+    size_t n = strlen(dir);
+    if (n == 1) /* "/" */
+        return true;
+    return strncmp(path, dir, n) == 0 && (path[n] == '/' || path[n] == '\0');
+}
+
+glint_status model_file_check_inside(const char *dir, const char *path, const char *file, const char *what,
+                                     const char *ref, glint_error *err)
+{
+    char real_dir[PATH_MAX], real_path[PATH_MAX];
+    /* A file that does not resolve is left to the open, which says why. */
+    if (!realpath(path, real_path))
+        return GLINT_OK;
+    if (!realpath(dir[0] ? dir : ".", real_dir))
+        return error_set(err, GLINT_ERR_IO, "%s: cannot resolve its folder: %s", file, strerror(errno));
+    if (below(real_dir, real_path))
+        return GLINT_OK;
+    return error_set(err, GLINT_ERR_INVALID, "%s: %s '%s' lies outside the model's folder (a model may name only files in it or below it)",
+                     file, what, ref);
 }

@@ -6,6 +6,7 @@
  * the files it names. */
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
 #include "core/error.h"
 #include "model/model_file.h"
@@ -112,6 +113,9 @@ int glint_scene_import_mesh(glint_scene *scene, const char *path, const glint_im
     if (model_file_open(path, &fd, &size, err))
         return -1;
     int mesh_index = import(scene, fd, NULL, size, path, options, err);
+    struct stat st;
+    if (mesh_index >= 0 && fstat(fd, &st) == 0 && scene_note_file(scene, &st, err))
+        mesh_index = -1;
     close(fd);
     return mesh_index;
 }

@@ -2,6 +2,7 @@
  * own readers, the OBJ text (obj_read.c, streamed from a file), its
  * vertices (obj_mesh.c), the MTL files it names (mtl_read.c) and the
  * materials and textures its faces use, then one mesh (model_build.c). */
+#include <errno.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
@@ -12,30 +13,36 @@
 #include "model/mtl_read.h"
 #include "model/obj_mesh.h"
 #include "model/obj_read.h"
+#include "scene/scene.h"
 
 static glint_status out_of_memory(const model_import *job, glint_error *err)
 {
     return error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", job->file);
 }
 
-/* Reads the MTL file `name` into lib. One that cannot be read is left out,
- * as other readers do: its materials are then undefined. One that does not
- * follow the format is an error. */
-static glint_status read_library(mtl_library *lib, const model_import *job, const char *name, glint_error *err)
+/* Reads the MTL file `name` into lib. One that does not exist is left
+ * out with a warning, as other readers do: its materials are then
+ * undefined, and grey. One that exists but cannot be read (a folder, a
+ * FIFO, no permission, no descriptors left) is an error, as is one outside
+ * the model's folder or one that does not follow the format. */
+static glint_status read_library(glint_scene *scene, mtl_library *lib, const model_import *job, const char *name,
+                                 glint_error *err)
 {
     char *path = model_file_path(job->dir, name);
     if (!path)
         return out_of_memory(job, err);
-    unsigned char *data;
+    unsigned char *data = NULL;
     size_t size;
-    glint_error ignored;
-    glint_status s = model_file_read(path, &data, &size, &ignored);
-    if (s == GLINT_ERR_NOMEM)
-        s = out_of_memory(job, err);
-    else if (s)
-        s = GLINT_OK;
-    else
+    glint_error inner;
+    glint_status s = model_file_check_inside(job->dir, path, job->file, "MTL file", name, err);
+    if (!s && (s = model_file_read(path, &data, &size, &inner))) {
+        if (s == GLINT_ERR_IO && errno == ENOENT)
+            s = scene_warn(scene, err, "%s: MTL file '%s' does not exist: its materials are grey", job->file, name);
+        else
+            s = error_set(err, s, "%s: MTL file: %s", job->file, inner.message);
+    } else if (!s && !(s = scene_note_path(scene, path, err))) {
         s = mtl_read(lib, (const char *)data, size, path, err);
+    }
     free(data);
     free(path);
     return s;
@@ -53,11 +60,11 @@ static bool is_file(const model_import *job, const char *name)
 
 /* Reads the MTL files of an mtllib line: the whole line when it names a
  * file (its name may have blanks), and otherwise each of its words. */
-static glint_status read_libraries_of(mtl_library *lib, const model_import *job, const char *line,
-                                      glint_error *err)
+static glint_status read_libraries_of(glint_scene *scene, mtl_library *lib, const model_import *job,
+                                      const char *line, glint_error *err)
 {
     if (!strpbrk(line, " \t") || is_file(job, line))
-        return read_library(lib, job, line, err);
+        return read_library(scene, lib, job, line, err);
     char *word = malloc(strlen(line) + 1);
     if (!word)
         return out_of_memory(job, err);
@@ -66,7 +73,7 @@ static glint_status read_libraries_of(mtl_library *lib, const model_import *job,
         size_t n = strcspn(p, " \t");
         memcpy(word, p, n);
         word[n] = '\0';
-        s = read_library(lib, job, word, err);
+        s = read_library(scene, lib, job, word, err);
         p += n;
     }
     free(word);
@@ -148,25 +155,25 @@ static int build(glint_scene *scene, obj_model *m, const model_import *job, glin
     if (!s)
         s = obj_mesh_vertices(m, job->crease, job->file, &v, err);
     for (size_t i = 0; !s && job->dir && i < m->library_count; i++)
-        s = read_libraries_of(&lib, job, m->text + m->libraries[i], err);
+        s = read_libraries_of(scene, &lib, job, m->text + m->libraries[i], err);
     if (!s)
         s = add_materials(scene, m, &lib, job, run_material, err);
     mtl_free(&lib);
     if (!s)
         s = triangle_materials(m, run_material, job, &materials, err);
-    int mesh = -1;
+    int mesh_index = -1;
     if (!s) {
         glint_mesh_data d = {
             .positions = v.positions, .normals = v.normals, .uvs = v.uvs, .vertex_count = (int)v.count,
             .indices = m->triangles, .triangle_count = (int)m->triangle_count, .materials = materials,
             .material = run_material[0],
         };
-        mesh = model_add_mesh(scene, job, &d, err);
+        mesh_index = model_add_mesh(scene, job, &d, err);
     }
     obj_vertices_free(&v);
     free(run_material);
     free(materials);
-    return mesh;
+    return mesh_index;
 }
 
 /* Builds the model that reading gave with status s, when it has
@@ -175,9 +182,9 @@ static int build_read(glint_scene *scene, obj_model *m, glint_status s, const mo
 {
     if (!s && m->triangle_count == 0)
         s = error_set(err, GLINT_ERR_INVALID, "%s: no triangles", job->file);
-    int mesh = s ? -1 : build(scene, m, job, err);
+    int mesh_index = s ? -1 : build(scene, m, job, err);
     obj_model_free(m);
-    return mesh;
+    return mesh_index;
 }
 
 static int import_file(glint_scene *scene, int fd, const model_import *job, glint_error *err)

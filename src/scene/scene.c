@@ -44,6 +44,7 @@ void glint_scene_free(glint_scene *s)
     free(s->meshes);
     free(s->instances);
     free(s->output);
+    scene_files_free(s);
     free(s);
 }
 
@@ -151,6 +152,10 @@ int glint_scene_add_texture(glint_scene *scene, const char *name, const glint_te
     texture t;
     if (!name_free(scene, name, err) || texture_init(&t, desc, err))
         return -1;
+    if (desc->file && scene_note_path(scene, desc->file, err)) {
+        texture_release(&t);
+        return -1;
+    }
     return append_texture(scene, &t, name, err);
 }
 
@@ -217,6 +222,8 @@ glint_status glint_scene_replace_image(glint_scene *scene, const char *name, con
         return error_set(err, GLINT_ERR_INVALID, "no image texture named '%s'", name ? name : "");
     texture_image img;
     glint_status s = texture_image_load_file(&img, path, err);
+    if (!s && (s = scene_note_path(scene, path, err)))
+        texture_image_free(&img);
     if (s)
         return s;
     if (!texture_set_file(&scene->textures[i], path)) {

@@ -9,6 +9,14 @@
 #include "shading/material.h"
 #include "shading/texture.h"
 
+#include <sys/stat.h>
+
+/* A file a scene was read from, as the file system knows it. */
+typedef struct scene_file_id {
+    dev_t dev;
+    ino_t ino;
+} scene_file_id;
+
 struct glint_scene {
     glint_settings settings;
     glint_camera camera;
@@ -32,7 +40,26 @@ struct glint_scene {
     int instance_count;
     size_t instance_cap;
     char *output;             /* image path a scene file asked for, or NULL */
+    scene_file_id *inputs;    /* every file read to build it (scene_files.c) */
+    size_t input_count, input_cap;
+    char **warnings;          /* what it went on without, for the user */
+    int warning_count;
+    size_t warning_cap;
 };
+
+/* Remembers the file of status st (or at path, when it exists) as one the
+ * scene was read from, which glint_scene_check_output then refuses as an
+ * output; fills err when out of memory. */
+glint_status scene_note_file(glint_scene *scene, const struct stat *st, glint_error *err);
+glint_status scene_note_path(glint_scene *scene, const char *path, glint_error *err);
+
+/* Adds a warning (printf format) for glint_scene_warning; past 100 they
+ * are dropped. Fills err when out of memory. */
+glint_status scene_warn(glint_scene *scene, glint_error *err, const char *format, ...)
+    __attribute__((format(printf, 3, 4)));
+
+/* Frees what scene_files.c keeps (by glint_scene_free). */
+void scene_files_free(glint_scene *scene);
 
 /* Index of the texture or material with that name, or -1. */
 int scene_find_texture(const glint_scene *scene, const char *name);

@@ -13,6 +13,8 @@
 #include <sys/stat.h>
 #include "core/array.h"
 #include "core/error.h"
+#include "core/open_file.h"
+#include "scene/scene.h"
 #include "scenefile/loader.h"
 #include "scenefile/scene_reader.h"
 
@@ -195,27 +197,21 @@ static char *read_all(FILE *f, const char *name, size_t *size, glint_error *err)
     return NULL;
 }
 
-/* Reads a whole file (bounded); NULL with a message in err on failure. */
-static char *slurp(const char *path, size_t *size, glint_error *err)
+/* Reads a whole file (bounded), with *st its status; NULL with a message in
+ * err on failure. */
+static char *slurp(const char *path, size_t *size, struct stat *st, glint_error *err)
 {
-    /* stat first: opening a FIFO named by a hostile include would block. */
-    struct stat st;
-    if (stat(path, &st) == 0 && !S_ISREG(st.st_mode)) {
-        error_set(err, GLINT_ERR_IO, "cannot read scene '%s': not a regular file", path);
-        return NULL;
-    }
-    FILE *f = fopen(path, "rb");
+    int errnum;
+    FILE *f = open_file_stream(path, st, &errnum);
     if (!f) {
-        error_set(err, GLINT_ERR_IO, "cannot read scene '%s': %s", path, strerror(errno));
+        error_set(err, GLINT_ERR_IO, "cannot read scene '%s': %s", path, open_file_reason(errnum));
         return NULL;
     }
     char *data = NULL;
     /* The size first, so that a file too large is refused unread. */
-    if (fstat(fileno(f), &st) != 0 || !S_ISREG(st.st_mode))
-        error_set(err, GLINT_ERR_IO, "cannot read scene '%s': not a regular file", path);
-    else if (st.st_size > MAX_SCENE_FILE_BYTES)
+    if (st->st_size > MAX_SCENE_FILE_BYTES)
         error_set(err, GLINT_ERR_INVALID, "scene '%s' is too large: %lld bytes (limit %ld)", path,
-                  (long long)st.st_size, MAX_SCENE_FILE_BYTES);
+                  (long long)st->st_size, MAX_SCENE_FILE_BYTES);
     else
         data = read_all(f, path, size, err);
     fclose(f);
@@ -260,7 +256,12 @@ static void read_file(loader *l, const char *path, const ynode *from)
     }
     glint_error err;
     size_t size = 0;
-    char *data = slurp(path, &size, &err);
+    struct stat st;
+    char *data = slurp(path, &size, &st, &err);
+    if (data && scene_note_file(l->scene, &st, &err)) {
+        free(data);
+        data = NULL;
+    }
     if (!data) {
         if (from)
             diag_error(&l->d, from, &err);

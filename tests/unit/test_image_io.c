@@ -896,7 +896,7 @@ static void test_load_directory(void **state)
     char want[2 * PATH_SIZE];
     glint_error err = {0};
     texture_image tex;
-    snprintf(want, sizeof want, "cannot read texture '%s': not a regular file", tmp_dir);
+    snprintf(want, sizeof want, "cannot read texture '%s': Is a directory", tmp_dir);
     expect_error(texture_image_load_file(&tex, tmp_dir, &err), &err, GLINT_ERR_IO, want);
 }
 
