@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# Interrupting a render: SIGINT or SIGTERM stops glint within a second with
-# exit code 4, writes nothing and leaves the file already at the output path
-# as it was, whether it comes while a model loads, while its BVH builds or
-# while the image renders, however deep its trees of rays or slow its rays;
-# with --partial it writes the finished tiles as a valid PNG of the whole
-# size, and still exits 4; the same to standard output.
+# Interrupting a render: SIGINT, SIGTERM, SIGHUP or SIGQUIT stops glint
+# within a second with exit code 4, writes nothing and leaves the file
+# already at the output path as it was, whether it comes while a model
+# loads, while its BVH builds or while the image renders, however deep its
+# trees of rays or slow its rays; with --partial it writes the finished
+# tiles as a valid PNG of the whole size, and still exits 4; the same to
+# standard output.
 # Usage: interrupt.sh PATH/TO/glint
 source "$(dirname "$0")/lib/harness.sh"
 fail() {
@@ -40,8 +41,9 @@ interrupt() {
     signal_after "$sig" 1.5 -w 2000 -h 2000 --spp 64 --threads 2 -o out.png "$@"
 }
 
-# Nothing written: exit 4, the message, the old file intact, no other file.
-for sig in INT TERM; do
+# Nothing written: exit 4, the message, the old file intact, no other file;
+# the same for a closed terminal (SIGHUP) and Ctrl-\ (SIGQUIT, no core).
+for sig in INT TERM HUP QUIT; do
     before=$failed
     interrupt "$sig"
     [ "$status" -eq 4 ] || fail "SIG$sig: exit $status, expected 4"
@@ -82,21 +84,25 @@ rm -f big.obj
 
 # --partial: the finished tiles in a PNG of the whole size, which glint
 # itself decodes (as a texture). (Its time to stop includes writing the
-# 2000 x 2000 image, so it is not held to the second.)
-before=$failed
-interrupt INT --partial
-[ "$status" -eq 4 ] || fail "--partial: exit $status, expected 4"
-if [[ ! "$err" =~ ^glint:\ interrupted:\ ([0-9]+)\ of\ 3969\ tiles\ finished,\ written\ to\ out\.png\ \(the\ rest\ black\)$ ]]; then
-    fail "--partial: stderr '$err'"
-elif [ "${BASH_REMATCH[1]}" -lt 1 ] || [ "${BASH_REMATCH[1]}" -ge 3969 ]; then
-    fail "--partial: ${BASH_REMATCH[1]} tiles finished"
-fi
-# PNG signature, then IHDR: width and height 2000 (0x7d0).
-head=$(od -A n -t x1 -N 24 out.png | tr -d ' \n')
-[ "$head" = "89504e470d0a1a0a0000000d49484452000007d0000007d0" ] || fail "--partial: not a 2000x2000 PNG: $head"
-"$GLINT" --texture moon=out.png -w 4 -h 4 --spp 1 -q -o check.ppm || fail "--partial: glint cannot read the image back"
-[ "$(ls -A | sort | tr '\n' ' ')" = "check.ppm err.txt out.png " ] || fail "--partial: left $(ls -A)"
-[ "$failed" -eq "$before" ] && passed=$((passed + 1))
+# 2000 x 2000 image, so it is not held to the second.) SIGHUP, as when the
+# terminal closes, keeps them as SIGINT does.
+for sig in INT HUP; do
+    before=$failed
+    interrupt "$sig" --partial
+    [ "$status" -eq 4 ] || fail "SIG$sig --partial: exit $status, expected 4"
+    if [[ ! "$err" =~ ^glint:\ interrupted:\ ([0-9]+)\ of\ 3969\ tiles\ finished,\ written\ to\ out\.png\ \(the\ rest\ black\)$ ]]; then
+        fail "SIG$sig --partial: stderr '$err'"
+    elif [ "${BASH_REMATCH[1]}" -lt 1 ] || [ "${BASH_REMATCH[1]}" -ge 3969 ]; then
+        fail "SIG$sig --partial: ${BASH_REMATCH[1]} tiles finished"
+    fi
+    # PNG signature, then IHDR: width and height 2000 (0x7d0).
+    head=$(od -A n -t x1 -N 24 out.png | tr -d ' \n')
+    [ "$head" = "89504e470d0a1a0a0000000d49484452000007d0000007d0" ] || fail "SIG$sig --partial: not a 2000x2000 PNG: $head"
+    "$GLINT" --texture moon=out.png -w 4 -h 4 --spp 1 -q -o check.ppm || fail "SIG$sig --partial: glint cannot read the image back"
+    [ "$(ls -A | sort | tr '\n' ' ')" = "check.ppm err.txt out.png " ] || fail "SIG$sig --partial: left $(ls -A)"
+    [ "$failed" -eq "$before" ] && passed=$((passed + 1))
+    rm -f check.ppm
+done
 
 # To standard output (-o -) the same: nothing without --partial, and with
 # it the finished tiles as a whole image (a 2000 x 2000 PPM: its header and
