@@ -548,7 +548,7 @@ typedef struct glint_render_options {
     glint_progress_fn progress;
     void *progress_user;
     const volatile int *cancel; /* when non-NULL and set non-zero, the render stops: each
-                                   thread reads it before each row of 4 x 2 pixel blocks */
+                                   thread reads it at every packet of 8 rays it traces */
     int keep_partial;         /* non-zero: a cancelled render still fills *out, with its
                                  finished tiles and every other pixel black */
 } glint_render_options;

@@ -62,8 +62,8 @@ static const char USAGE[] =
 static const char USAGE_END[] =
     "\n"
     "Exit codes: 0 success, 1 bad input (scene file, texture), 2 bad usage, 3 the output\n"
-    "cannot be written, 4 interrupted (SIGINT or SIGTERM), 5 internal failure (out of\n"
-    "memory, Embree). An interrupted render stops within a moment and writes nothing\n"
+    "(or a report: this help, --check) cannot be written, 4 interrupted (SIGINT,\n"
+    "SIGTERM, SIGHUP, SIGQUIT), 5 internal failure (out of memory, Embree). An interrupted render stops within a moment and writes nothing\n"
     "unless --partial. The image is written under a temporary name and renamed into\n"
     "place, so a failed or interrupted run never leaves a half-written file or destroys\n"
     "an existing one; standard output gets the whole image in one pass.\n";

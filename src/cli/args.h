@@ -12,8 +12,8 @@ enum cli_exit_code {
     CLI_EXIT_OK = 0,
     CLI_EXIT_BAD_INPUT = 1,   /* a scene or texture that cannot be used */
     CLI_EXIT_USAGE = 2,       /* flags that do not parse */
-    CLI_EXIT_IO = 3,          /* the output cannot be written */
-    CLI_EXIT_INTERRUPTED = 4, /* SIGINT or SIGTERM */
+    CLI_EXIT_IO = 3,          /* the output, or a report on stdout or stderr, cannot be written */
+    CLI_EXIT_INTERRUPTED = 4, /* SIGINT, SIGTERM, SIGHUP or SIGQUIT */
     CLI_EXIT_INTERNAL = 5     /* out of memory, Embree failure */
 };
 

@@ -2,6 +2,7 @@
  * (a file, standard input) or the built-in seed room through the public
  * API, shows progress and writes the image to a file or standard output;
  * or checks scene files. */
+#include <errno.h>
 #include <signal.h>
 #include <stdio.h>
 #include <string.h>
@@ -32,17 +33,49 @@ static void on_signal(int sig)
     }
 }
 
-/* SIGINT and SIGTERM go to on_signal from here on. A reader of standard
- * output that goes away makes the write fail with EPIPE, reported and exit
- * code 3, rather than kill glint without a word. */
+/* SIGINT, SIGTERM, SIGHUP (the terminal closed) and SIGQUIT (Ctrl-\) go to
+ * on_signal from here on: each ends a render the same way, rather than
+ * kill glint without a word (and, for SIGQUIT, a core dump). */
 static void catch_signals(void)
 {
     struct sigaction sa;
     memset(&sa, 0, sizeof sa);
     sa.sa_handler = on_signal;
-    sigaction(SIGINT, &sa, NULL);
-    sigaction(SIGTERM, &sa, NULL);
-    signal(SIGPIPE, SIG_IGN);
+    static const int stops[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+    for (size_t i = 0; i < sizeof stops / sizeof stops[0]; i++)
+        sigaction(stops[i], &sa, NULL);
+}
+
+/* Why the first flush of a report to stdout failed, or 0: a stream that
+ * failed once may flush its next buffer without error, and errno is gone. */
+static int report_errno;
+
+/* Writes out what a report has put on stdout so far, remembering why if
+ * it cannot (reported gives the exit code). */
+static void flush_report(void)
+{
+    errno = 0;
+    if (fflush(stdout) != 0 && !report_errno)
+        report_errno = errno ? errno : EIO;
+}
+
+/* The exit code of a run that reports on stdout, with its problems on
+ * stderr (the help, the version, --check, --print-scene): `code`, or 3 when
+ * either could not be written in whole (a full disk, a reader gone), as a
+ * lost report is no success. The reason is said on stderr, while that can
+ * still be written, unless the run had already failed as badly: a higher
+ * code wins, as in --check's worst of its files. */
+static int reported(int code)
+{
+    flush_report();
+    bool out_lost = report_errno != 0 || ferror(stdout);
+    bool err_lost = fflush(stderr) != 0 || ferror(stderr);
+    if (!out_lost && !err_lost)
+        return code;
+    /* A write that failed inside printf left its reason behind. */
+    if (out_lost && code < CLI_EXIT_IO)
+        cli_complain(CLI_EXIT_IO, "cannot write '<stdout>': %s", strerror(report_errno ? report_errno : EIO));
+    return code > CLI_EXIT_IO ? code : CLI_EXIT_IO;
 }
 
 static int exit_code_of(glint_status s)
@@ -184,7 +217,7 @@ static int check_only(const cli_options *o)
         if (code > worst)
             worst = code;
         /* In order with the problems on stderr, when both go to one place. */
-        fflush(stdout);
+        flush_report();
     }
     return worst;
 }
@@ -362,10 +395,17 @@ static int run(const cli_options *o)
 
 int main(int argc, char **argv)
 {
+    /* A reader of stdout or stderr that goes away makes a write fail with
+     * EPIPE, reported with exit code 3, rather than kill glint (141) after
+     * its work; the help and the flags' errors included. */
+    signal(SIGPIPE, SIG_IGN);
     cli_options o;
     int code = cli_parse_args(argc, argv, &o);
     if (code >= 0)
-        return code;
+        return reported(code);
     catch_signals();
-    return o.check ? check_only(&o) : run(&o);
+    if (o.check)
+        return reported(check_only(&o));
+    code = run(&o);
+    return o.print_scene ? reported(code) : code;
 }

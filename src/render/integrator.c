@@ -96,7 +96,7 @@ static color ambient(const glint_scene *scene, const shade_point *sp)
 
 /* The rays a hit sends on, in the order their light is added: straight
  * through, refracted, mirrored. Each brings back its colour times `filter`
- * times `scale`. */
+ * times `scale`, and `weight` is what its colour counts for in the sample. */
 enum { BRANCH_PASS, BRANCH_REFRACT, BRANCH_MIRROR, BRANCHES };
 
 typedef struct branches {
@@ -104,14 +104,20 @@ typedef struct branches {
     int skip[BRANCHES];       /* the shape each cannot meet again, or -1 */
     color filter[BRANCHES];
     double scale[BRANCHES];
+    color weight[BRANCHES];
     unsigned on;              /* bit k: branch k is open */
 } branches;
 
 /* Opens branch k of b: a ray leaving sp along unit direction d, starting on
- * the side of the surface that d points to. */
+ * the side of the surface that d points to; unless, for a ray whose own
+ * weight is `weight`, it would weigh less than TRACER_MIN_WEIGHT. */
 static void branch(const glint_scene *scene, const shade_point *sp, branches *b, int k, vec3 d, color filter,
-                   double scale)
+                   double scale, color weight)
 {
+    color w = rgb_scale(rgb_mul(weight, filter), scale);
+    if (!(rgb_max(w) >= TRACER_MIN_WEIGHT))
+        return;
+    b->weight[k] = w;
     vec3 n = sp->n;
     b->r[k] = (ray){offset_point(sp->s.p, v3_dot(d, n) > 0 ? n : v3_neg(n)), d};
     b->skip[k] = hit_left_behind(scene, &sp->hit, sp->s.n, d);
@@ -120,11 +126,11 @@ static void branch(const glint_scene *scene, const shade_point *sp, branches *b,
     b->on |= 1u << k;
 }
 
-/* What ray r keeps at sp of its direct light, the rest being passed on;
- * below max_depth, fills *b with the rays that carry transparency,
- * refraction and reflection. */
+/* What ray r, of weight `weight`, keeps at sp of its direct light, the rest
+ * being passed on; below max_depth, fills *b with the rays that carry
+ * transparency, refraction and reflection. */
 static color shade_local(const glint_scene *scene, const ray *r, const shade_point *sp, color direct, int depth,
-                         branches *b)
+                         color weight, branches *b)
 {
     const glint_material *m = sp->m;
     vec3 n = sp->n, ns = sp->ns;
@@ -140,7 +146,7 @@ static color shade_local(const glint_scene *scene, const ray *r, const shade_poi
     vec3 bend = v3_dot(r->d, ns) < 0 ? ns : n;
     color filter = material_filter(m, sp->base);
     if (m->transparency > 0)
-        branch(scene, sp, b, BRANCH_PASS, r->d, filter, m->transparency);
+        branch(scene, sp, b, BRANCH_PASS, r->d, filter, m->transparency, weight);
     if (m->refraction > 0) {
         bool front = v3_dot(r->d, sp->s.n) < 0;
         double eta = front ? 1.0 / m->ior : m->ior;
@@ -151,12 +157,23 @@ static color shade_local(const glint_scene *scene, const ray *r, const shade_poi
         else if (m->fresnel)
             share = 1 - optics_fresnel(-v3_dot(r->d, bend), eta);
         if (share > 0)
-            branch(scene, sp, b, BRANCH_REFRACT, dir, filter, m->refraction * share);
+            branch(scene, sp, b, BRANCH_REFRACT, dir, filter, m->refraction * share, weight);
         mirror += m->refraction * (1 - share);
     }
     if (mirror > 0)
-        branch(scene, sp, b, BRANCH_MIRROR, optics_reflect(r->d, bend), rgb(1, 1, 1), mirror);
+        branch(scene, sp, b, BRANCH_MIRROR, optics_reflect(r->d, bend), rgb(1, 1, 1), mirror, weight);
     return kept;
+}
+
+/* Whether the render has been asked to stop: read at every packet, and
+ * for every light's shadow packet, since one packet's tree of branches or
+ * one shadow packet through millions of surfaces can take seconds. Once
+ * seen, it stays seen for the rest of this tracer's tile. */
+static bool stopping(tracer *t)
+{
+    if (t->cancel && *t->cancel)
+        t->stopped = true;
+    return t->stopped;
 }
 
 /* What a ray that hits nothing brings back. */
@@ -172,7 +189,7 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
                           const shade_point sp[ACCEL_PACKET], int depth, color direct[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
-    for (int l = 0; l < scene->light_count; l++) {
+    for (int l = 0; l < scene->light_count && !stopping(t); l++) {
         light_sample ls[ACCEL_PACKET];
         /* A lane without a segment keeps its own ray. Copied only once some
          * lane has one: a spotlight lights few packets. */
@@ -205,13 +222,19 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
     }
 }
 
-/* The colours of up to ACCEL_PACKET rays at recursion depth `depth`. The
- * rays each hit sends on are traced as packets too, one per kind of
- * branch, over the lanes that send one. */
+/* The colours of up to ACCEL_PACKET rays at recursion depth `depth`, of
+ * weights `weight` in their samples. The rays each hit sends on are traced
+ * as packets too, one per kind of branch, over the lanes that send one and
+ * have budget left (tracer_trace8). */
 static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET],
-                   int depth, color out[ACCEL_PACKET])
+                   int depth, const color weight[ACCEL_PACKET], color out[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
+    if (stopping(t)) {
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            out[i] = rgb(0, 0, 0);
+        return;
+    }
     accel_hit hits[ACCEL_PACKET];
     bool found[ACCEL_PACKET];
     shade_point sp[ACCEL_PACKET];
@@ -249,7 +272,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (found[i]) {
             ray ri = ray8_get(r, i);
-            local[i] = shade_local(scene, &ri, &sp[i], local[i], depth, &b[i]);
+            local[i] = shade_local(scene, &ri, &sp[i], local[i], depth, weight[i], &b[i]);
             sent |= b[i].on;
         }
     }
@@ -258,15 +281,24 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
             continue;
         ray8 next;
         int next_skip[ACCEL_PACKET];
-        bool on[ACCEL_PACKET];
-        for (int i = 0; i < ACCEL_PACKET; i++)
-            on[i] = found[i] && (b[i].on >> k & 1);
+        bool on[ACCEL_PACKET], any = false;
+        color next_weight[ACCEL_PACKET];
+        /* Each lane's budget is spent as its own branches are met, depth
+         * first, so what it cuts does not depend on the other lanes. */
+        for (int i = 0; i < ACCEL_PACKET; i++) {
+            on[i] = found[i] && (b[i].on >> k & 1) && t->budget[i] > 0;
+            t->budget[i] -= on[i];
+            any |= on[i];
+        }
+        if (!any)
+            continue;
         for (int i = 0; i < ACCEL_PACKET; i++) {
             ray8_set(&next, i, on[i] ? b[i].r[k] : ray8_get(r, i));
             next_skip[i] = on[i] ? b[i].skip[k] : -1;
+            next_weight[i] = on[i] ? b[i].weight[k] : weight[i];
         }
         color c[ACCEL_PACKET];
-        trace8(t, &next, next_skip, on, depth + 1, c);
+        trace8(t, &next, next_skip, on, depth + 1, next_weight, c);
         for (int i = 0; i < ACCEL_PACKET; i++)
             if (on[i])
                 local[i] = rgb_add(local[i], rgb_scale(rgb_mul(b[i].filter[k], c[i]), b[i].scale[k]));
@@ -296,5 +328,10 @@ void tracer_trace8(tracer *t, const ray8 *r, const bool active[ACCEL_PACKET],
                    color out[ACCEL_PACKET])
 {
     static const int none[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
-    trace8(t, r, none, active, 0, out);
+    color whole[ACCEL_PACKET];
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        whole[i] = rgb(1, 1, 1);
+        t->budget[i] = TRACER_MAX_BRANCH_RAYS;
+    }
+    trace8(t, r, none, active, 0, whole, out);
 }

@@ -6,12 +6,33 @@
 #include "accel/accel.h"
 #include "scene/scene.h"
 
+/* A branch (a reflected, refracted or see-through ray) whose weight, the
+ * product of the filters and shares along its path from the camera, is
+ * below this in every channel is not traced. Where what it would see is no
+ * brighter than 1, it could move its sample by less than this, under half
+ * of the finest 8-bit sRGB step (the one above black: 1 / (255 x 12.92),
+ * about 1/3295). Brighter highlights seen through many surfaces can still
+ * move a pixel by one step; see docs/robustness.md. */
+#define TRACER_MIN_WEIGHT (1.0 / 8192)
+
+/* The reflected, refracted and see-through rays one camera sample may
+ * trace, its camera ray not counted: a bound on the work of a pixel that
+ * the weight cut-off alone does not give where shares add up to more than
+ * one (reflectivity 1 with transparency 0.5). The rays of a sample are
+ * traced depth first, straight through before refracted before mirrored,
+ * and a branch met once the budget is spent is left black, so which rays
+ * are cut depends only on the sample. */
+#define TRACER_MAX_BRANCH_RAYS 4096
+
 /* One thread's tracing state. */
 typedef struct tracer {
     const glint_scene *scene;
     const accel *acc;
     uint64_t rays;            /* every ray this tracer has cast */
     double reach;             /* how far along a ray hits are looked for: tracer_reach */
+    const volatile int *cancel; /* when non-NULL and set, tracing stops at the next packet */
+    bool stopped;             /* the flag was seen set: every colour since is meaningless */
+    int budget[ACCEL_PACKET]; /* each lane's branch rays left in its sample */
 } tracer;
 
 /* How far along a ray a tracer of the scene needs to look for hits: past
@@ -24,7 +45,10 @@ double tracer_reach(const glint_scene *scene);
  * lanes of *r (recursion depth 0): out[i] for each active[i]. The rays, their shadow
  * rays and the reflected, refracted and transmitted rays they lead to are
  * all traced as packets; coherent rays (a block of neighbouring pixels)
- * gain most. */
+ * gain most. Branches lighter than TRACER_MIN_WEIGHT are not traced, and
+ * each lane traces at most TRACER_MAX_BRANCH_RAYS of them. Once *t->cancel
+ * is set, every packet still to trace returns at once with meaningless
+ * colours (the caller drops them): a stop never waits for a deep tree. */
 void tracer_trace8(tracer *t, const ray8 *r, const bool active[ACCEL_PACKET],
                    color out[ACCEL_PACKET]);
 

@@ -157,8 +157,10 @@ static void tile_bounds(const job *j, int tile, int *x0, int *y0, int *x1, int *
 
 /* Renders a tile; false if the render was cancelled before it was whole.
  * Tiles are whole blocks: tile_size is a multiple of BLOCK_W and BLOCK_H.
- * The cancel flag is read before each row of blocks, so that a render
- * stops within one row's time even at thousands of samples a pixel.
+ * The tracer reads the cancel flag at every packet of rays, and a tile it
+ * saw the flag in is not whole: what it traced since is black. Here the
+ * flag is read before each block as well, so that the rest of a tile costs
+ * nothing once it is set, even at thousands of samples a pixel.
  *
  * A NaN colour never reaches a pixel (film.h's rule): a tile that shows one
  * renders its blocks that show one again, leaving it out. */
@@ -167,11 +169,14 @@ static bool render_tile(tracer *t, job *j, int tile, uint64_t *nan_samples)
     int x0, y0, x1, y1;
     tile_bounds(j, tile, &x0, &y0, &x1, &y1);
     for (int y = y0; y < y1; y += BLOCK_H) {
-        if (cancelled(j))
-            return false;
-        for (int x = x0; x < x1; x += BLOCK_W)
+        for (int x = x0; x < x1; x += BLOCK_W) {
+            if (cancelled(j))
+                return false;
             render_block(t, j, x, y);
+        }
     }
+    if (t->stopped)
+        return false;
     if (!film_has_nan(&j->film, x0, y0, x1, y1))
         return true;
     for (int y = y0; y < y1; y += BLOCK_H) {
@@ -188,7 +193,7 @@ static void *worker_run(void *arg)
 {
     worker *w = arg;
     job *j = w->job;
-    tracer t = {j->scene, j->acc, 0, tracer_reach(j->scene)};
+    tracer t = {.scene = j->scene, .acc = j->acc, .reach = tracer_reach(j->scene), .cancel = j->opts->cancel};
     int tile;
     while ((tile = atomic_fetch_add(&j->next_tile, 1)) < j->tiles_total) {
         if (cancelled(j) || !render_tile(&t, j, tile, &w->nan_samples))

@@ -31,7 +31,7 @@ static const param SETTINGS_PARAMS[] = {
     {.key = "seed", .type = PARAM_UINT32, SETTING(seed), .lo = 0, .hi = 4294967295.0,
      .meaning = "changes the jittered pattern only"},
     {.key = "depth", .type = PARAM_INTEGER, SETTING(max_depth), .def = {5}, .lo = 0, .hi = 64,
-     .meaning = "recursion limit for reflected, refracted and see-through rays (0: none)"},
+     .meaning = "recursion limit for reflected, refracted and see-through rays (0: none); fainter than 1/8192, or past 4096 a sample, they are not traced"},
     {.key = "background", .type = PARAM_COLOR, SETTING(background), .lo = 0, .hi = DBL_MAX,
      .meaning = "what rays that hit nothing show"},
     {.key = "ambient", .type = PARAM_COLOR, SETTING(ambient_light), .def = {1, 1, 1}, .lo = 0, .hi = DBL_MAX,
