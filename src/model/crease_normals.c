@@ -6,7 +6,7 @@
 #include "core/error.h"
 #include "core/vec.h"
 #include "model/crease_normals.h"
-#include "model/id_table.h"
+#include "core/id_table.h"
 
 /* The bits of a coordinate, with -0 taken as 0. */
 static uint32_t coordinate_bits(float x)
