@@ -8,7 +8,7 @@
 #include <stddef.h>
 #include <stdint.h>
 #include "glint.h"
-#include "model/id_table.h"
+#include "core/id_table.h"
 
 /* Marks a material without a map_Kd image. */
 #define MTL_NO_TEXT SIZE_MAX

@@ -4,7 +4,7 @@
 #include "core/array.h"
 #include "core/error.h"
 #include "model/crease_normals.h"
-#include "model/id_table.h"
+#include "core/id_table.h"
 #include "model/model_build.h"
 #include "model/obj_mesh.h"
 

@@ -12,7 +12,7 @@
 #include <stdint.h>
 #include "core/error.h"
 #include "glint.h"
-#include "model/id_table.h"
+#include "core/id_table.h"
 #include "model/model_build.h"
 #include "model/obj_read.h"
 #include "model/text_scan.h"

@@ -4,9 +4,10 @@
 #include "core/array.h"
 #include "model/triangulate.h"
 
-/* Point-in-triangle tests allowed for one polygon: enough to clip any of
- * up to about a thousand corners in full, and then a few hundred a corner,
- * which bounds the time a large, noisy or hostile polygon may take. */
+/* Steps allowed for one polygon, each a corner tried or a point-in-triangle
+ * test: enough to clip any of up to about a thousand corners in full, and
+ * then a few hundred a corner, which bounds the time a large, noisy or
+ * hostile polygon may take. */
 #define TESTS_FLOOR (1u << 20)
 #define TESTS_PER_CORNER 256
 
@@ -133,7 +134,9 @@ static uint32_t clip(triangulate_work *w, size_t n, uint32_t **out)
         classify(w, &head, i);
     size_t left = n, misses = 0, tests = 0, budget = TESTS_FLOOR + TESTS_PER_CORNER * n;
     uint32_t i = 1;
-    while (left > 3 && misses < left && tests < budget) {
+    /* Every corner tried is charged, an ear or not: a ring whose ears lie
+     * far apart is walked round again and again. */
+    while (left > 3 && misses < left && tests++ < budget) {
         uint32_t p = link_of(w, i)[PREV], q = link_of(w, i)[NEXT];
         if (is_ear(w, head, p, i, q, &tests)) {
             emit(out, p, i, q);

@@ -23,8 +23,9 @@ typedef struct triangulate_work {
  * polygon becomes a fan from corner 0. A concave one is cut by ear
  * clipping in the plane of its Newell normal; where the polygon is
  * degenerate (no normal), crosses itself (no ear left) or is so large and
- * concave that clipping would cost more than a million tests and 256 a
- * corner, the rest becomes a fan. False when out of memory. */
+ * concave that clipping would take more than a million steps and 256 a
+ * corner (each corner tried and each point tested is a step), the rest
+ * becomes a fan. False when out of memory. */
 bool triangulate_polygon(triangulate_work *w, const float *positions, const uint32_t *corners, size_t n,
                          uint32_t *out);
 

@@ -37,6 +37,8 @@ void glint_scene_free(glint_scene *s)
         free(s->materials[i].name);
     free(s->textures);
     free(s->materials);
+    id_table_free(&s->texture_names);
+    id_table_free(&s->material_names);
     free(s->shapes);
     free(s->lights);
     for (int i = 0; i < s->mesh_count; i++)
@@ -106,20 +108,40 @@ glint_status glint_scene_set_fog(glint_scene *scene, const glint_fog *fog, glint
     return s;
 }
 
+/* The hash tables' view of the names they hold: keys are the scene's
+ * arrays of textures or materials, ids their indices. */
+static uint32_t texture_name_hash(const void *keys, uint32_t id)
+{
+    return id_hash_text(((const texture *)keys)[id].name);
+}
+
+static bool texture_name_equal(const void *keys, uint32_t id, const void *name)
+{
+    return strcmp(((const texture *)keys)[id].name, name) == 0;
+}
+
+static uint32_t material_name_hash(const void *keys, uint32_t id)
+{
+    return id_hash_text(((const material *)keys)[id].name);
+}
+
+static bool material_name_equal(const void *keys, uint32_t id, const void *name)
+{
+    return strcmp(((const material *)keys)[id].name, name) == 0;
+}
+
 int scene_find_texture(const glint_scene *scene, const char *name)
 {
-    for (int i = 0; name && i < scene->texture_count; i++)
-        if (scene->textures[i].name && strcmp(scene->textures[i].name, name) == 0)
-            return i;
-    return -1;
+    uint32_t id;
+    return name && id_table_find(&scene->texture_names, id_hash_text(name), name, texture_name_equal,
+                                 scene->textures, &id) ? (int)id : -1;
 }
 
 int scene_find_material(const glint_scene *scene, const char *name)
 {
-    for (int i = 0; name && i < scene->material_count; i++)
-        if (scene->materials[i].name && strcmp(scene->materials[i].name, name) == 0)
-            return i;
-    return -1;
+    uint32_t id;
+    return name && id_table_find(&scene->material_names, id_hash_text(name), name, material_name_equal,
+                                 scene->materials, &id) ? (int)id : -1;
 }
 
 /* Appends texture t, built and checked, under `name` (or none); on failure
@@ -130,11 +152,18 @@ static int append_texture(glint_scene *scene, texture *t, const char *name, glin
         grow((void **)&scene->textures, &scene->texture_cap, scene->texture_count, sizeof *t, "textures", err);
     if (!s)
         s = copy_name(&t->name, name, err);
+    if (!s && name &&
+        !id_table_reserve(&scene->texture_names, scene->texture_names.count + 1, texture_name_hash, scene->textures))
+        s = error_set(err, GLINT_ERR_NOMEM, "out of memory adding textures");
     if (s) {
         texture_release(t);
         return -1;
     }
     scene->textures[scene->texture_count] = *t;
+    /* Room was reserved above: entering cannot fail. */
+    if (name)
+        id_table_add(&scene->texture_names, id_hash_text(name), (uint32_t)scene->texture_count, texture_name_hash,
+                     scene->textures);
     return scene->texture_count++;
 }
 
@@ -245,10 +274,19 @@ int glint_scene_add_material(glint_scene *scene, const char *name, const glint_m
         grow((void **)&scene->materials, &scene->material_cap, scene->material_count, sizeof(material),
              "materials", err))
         return -1;
+    if (name && !id_table_reserve(&scene->material_names, scene->material_names.count + 1, material_name_hash,
+                                  scene->materials)) {
+        error_set(err, GLINT_ERR_NOMEM, "out of memory adding materials");
+        return -1;
+    }
     material *slot = &scene->materials[scene->material_count];
     if (copy_name(&slot->name, name, err))
         return -1;
     slot->m = *m;
+    /* Room was reserved above: entering cannot fail. */
+    if (name)
+        id_table_add(&scene->material_names, id_hash_text(name), (uint32_t)scene->material_count,
+                     material_name_hash, scene->materials);
     return scene->material_count++;
 }
 

@@ -34,6 +34,7 @@ typedef struct loader {
     int import_count;
     size_t import_cap;
     long bytes;                                  /* bytes read so far, all files */
+    long alias_nodes;                            /* nodes the aliases of all files add */
     char **paths;                                /* files named by keys, resolved: freed at the end */
     size_t path_count, path_cap;
 } loader;
@@ -59,11 +60,10 @@ typedef struct context {
     int depth;
 } context;
 
-/* Whether the walk goes on: neither the problem limit nor the visit limit
- * is reached. */
+/* Whether the walk goes on: the problem limit is not reached. */
 static inline bool ok(const loader *l)
 {
-    return !diag_full(&l->d) && !l->r.exhausted;
+    return !diag_full(&l->d);
 }
 
 /* ------------------------------------------------------ read_values.c */

@@ -24,7 +24,7 @@ static bool read_matrix(loader *l, const ynode *v, glint_transform *m)
             const ynode *row = v->items[i];
             good = row->kind == YNODE_SEQUENCE && row->count == 4;
             for (int j = 0; j < 4 && good; j++)
-                good = yr_visit(&l->r, row->items[j]) && yr_number(&l->r, row->items[j], "matrix", &m->m[i][j]);
+                good = yr_number(&l->r, row->items[j], "matrix", &m->m[i][j]);
         }
         if (good)
             return true;
@@ -105,11 +105,8 @@ static bool read_transform(loader *l, const ynode *n, glint_transform *t)
     if (!yr_is_list(&l->r, n, "'transform'"))
         return false;
     bool good = true;
-    for (int i = 0; i < n->count && ok(l); i++) {
-        if (!yr_visit(&l->r, n->items[i]))
-            return false;
+    for (int i = 0; i < n->count && ok(l); i++)
         good = read_step(l, n->items[i], t) && good;
-    }
     return good;
 }
 
@@ -259,7 +256,6 @@ void read_objects(loader *l, const ynode *list, const context *ctx)
     if (!yr_is_list(&l->r, list, "'objects'"))
         return;
     for (int i = 0; i < list->count && ok(l); i++)
-        if (yr_visit(&l->r, list->items[i]))
-            read_object(l, list->items[i], ctx);
+        read_object(l, list->items[i], ctx);
 }
 

@@ -57,8 +57,6 @@ static void read_named(loader *l, const ynode *section, const char *what,
         return;
     for (int i = 0; i + 1 < section->count && ok(l); i += 2) {
         const ynode *k = section->items[i];
-        if (!yr_visit(&l->r, k))
-            return;
         if (k->kind != YNODE_SCALAR || k->value[0] == '\0') {
             diag_at(&l->d, k, "a name in %s must be a word, got %s", what, ynode_describe(k));
             continue;
@@ -94,8 +92,7 @@ static void read_root(loader *l, const ynode *root)
         read_named(l, n, "'materials'", read_material);
     if ((n = yr_get(&l->r, root, "lights")) && yr_is_list(&l->r, n, "'lights'"))
         for (int i = 0; i < n->count && ok(l); i++)
-            if (yr_visit(&l->r, n->items[i]))
-                read_light(l, n->items[i]);
+            read_light(l, n->items[i]);
     context top = {glint_transform_identity(), -1, 0};
     if ((n = yr_get(&l->r, root, "objects")))
         read_objects(l, n, &top);
@@ -140,12 +137,13 @@ static void read_bytes(loader *l, const char *data, size_t size, const char *nam
     }
     glint_error err;
     ydoc *doc = &l->docs[l->doc_count];
-    glint_status s = ydoc_parse(doc, data, size, name, &err);
+    glint_status s = ydoc_parse(doc, data, size, name, YAML_MAX_ALIAS_NODES - l->alias_nodes, &err);
     if (s) {
         diag_raw(&l->d, s, err.message);
         return;
     }
     l->doc_count++;
+    l->alias_nodes += doc->alias_nodes;
     if (doc->unknown_count) {
         /* The includes first: an anchor in one of them is named in the message. */
         const ynode *include = doc->root ? yr_get(&l->r, doc->root, "include") : NULL;

@@ -10,19 +10,6 @@
  * only name finished nodes), but depth is bounded anyway. */
 #define MAX_MERGE_DEPTH 16
 
-bool yr_visit(reader *r, const ynode *n)
-{
-    if (r->exhausted)
-        return false;
-    if (++r->visits <= YAML_MAX_VISITS)
-        return true;
-    r->exhausted = true;
-    diag_at(r->d, n, "scene too large after alias expansion (limit %ld nodes)", YAML_MAX_VISITS);
-    /* What the cut-short walk would say next (missing keys, ...) is not true. */
-    r->d->closed = true;
-    return false;
-}
-
 static bool is_merge_key(const ynode *k)
 {
     return k->kind == YNODE_SCALAR && !k->quoted && strcmp(k->value, "<<") == 0;
@@ -34,8 +21,6 @@ static const ynode *get_depth(reader *r, const ynode *map, const char *key, int 
         return NULL;
     for (int i = 0; i + 1 < map->count; i += 2) {
         const ynode *k = map->items[i];
-        if (!yr_visit(r, k))
-            return NULL;
         if (k->kind == YNODE_SCALAR && !is_merge_key(k) && strcmp(k->value, key) == 0)
             return map->items[i + 1];
     }
@@ -68,8 +53,6 @@ static void check_keys_depth(reader *r, const ynode *map, const char *what, cons
 {
     for (int i = 0; i + 1 < map->count && !diag_full(r->d); i += 2) {
         const ynode *k = map->items[i], *v = map->items[i + 1];
-        if (!yr_visit(r, k))
-            return;
         if (is_merge_key(k)) {
             const ynode *bad = v->kind == YNODE_MAPPING || v->kind == YNODE_SEQUENCE ? NULL : v;
             for (int j = 0; !bad && v->kind == YNODE_SEQUENCE && j < v->count; j++)
@@ -234,7 +217,7 @@ static bool triple(reader *r, const ynode *n, double v[3])
     if (n->kind != YNODE_SEQUENCE || n->count != 3)
         return false;
     for (int i = 0; i < 3; i++)
-        if (!yr_visit(r, n->items[i]) || !parse_number(n->items[i], &v[i], &why))
+        if (!parse_number(n->items[i], &v[i], &why))
             return false;
     return true;
 }

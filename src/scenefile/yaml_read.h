@@ -1,7 +1,7 @@
 /* yaml_read.h - typed reading of YAML nodes for the scene loader: each
- * getter checks the value's type and reports a problem at its place. Every
- * node a getter touches counts towards a visit limit, which bounds the walk
- * over aliased nodes however the file nests them. */
+ * getter checks the value's type and reports a problem at its place. A walk
+ * over the tree needs no count of its own: the parser bounds what aliases
+ * add (yaml_tree.h). */
 #ifndef GLINT_SCENEFILE_YAML_READ_H
 #define GLINT_SCENEFILE_YAML_READ_H
 
@@ -9,17 +9,9 @@
 #include "core/vec.h"
 #include "scenefile/diag.h"
 
-/* Visits allowed while walking one scene, includes and aliases counted. */
-#define YAML_MAX_VISITS 1000000L
-
 typedef struct reader {
     diag *d;
-    long visits;
-    bool exhausted;           /* the visit limit was reached and reported */
 } reader;
-
-/* Counts a visit to n; false (and one report) once the limit is passed. */
-bool yr_visit(reader *r, const ynode *n);
 
 /* The value of key in mapping map, looking through merge keys (<<), or NULL. */
 const ynode *yr_get(reader *r, const ynode *map, const char *key);

@@ -1,22 +1,36 @@
-/* yaml_tree.c - libyaml's events folded into a tree of positioned nodes. */
+/* yaml_tree.c - libyaml's events folded into a tree of positioned nodes,
+ * kept in one arena: a scene of a million objects is some twelve million
+ * nodes, so each costs only its own bytes. */
+#include <limits.h>
 #include <stdlib.h>
 #include <string.h>
 #include <yaml.h>
 #include "core/array.h"
 #include "core/error.h"
+#include "core/id_table.h"
 #include "scenefile/yaml_hints.h"
 #include "scenefile/yaml_tree.h"
 
 /* Deeper nesting than this is refused: nothing in a scene needs it, and the
  * walkers recurse. */
 #define YAML_MAX_DEPTH 64
-#define YAML_MAX_NODES 2000000
+/* Nodes of one file: a million spheres written one a line take 12
+ * million. About 60 bytes each, so a 64 MiB file of one-digit numbers
+ * stops here at about 1 GB. */
+#define YAML_MAX_NODES (1L << 24)
 #define YAML_MAX_ANCHORS 100000
 
 typedef struct builder {
     ydoc *doc;
     ynode *stack[YAML_MAX_DEPTH];
+    size_t base[YAML_MAX_DEPTH];   /* where each open node's items start in pending */
     int depth;
+    ynode **pending;           /* the items of the open nodes, innermost last */
+    size_t pending_count, pending_cap;
+    long alias_room;           /* nodes the aliases may still add */
+    id_table anchor_ids;       /* the first anchor of each name, by name */
+    uint32_t *latest;          /* for each first anchor: the last of its name */
+    size_t latest_cap;
     int documents;
     glint_error *err;
     const char *data;          /* the text, for the hints of yaml_hints.h */
@@ -36,12 +50,15 @@ static glint_status out_of_memory(builder *b)
     return error_set(b->err, GLINT_ERR_NOMEM, "%s: out of memory reading the scene", b->doc->name);
 }
 
-static bool push_item(ynode *parent, ynode *child)
+/* A copy of len bytes of text in the document's arena, NUL-terminated. */
+static char *arena_text(ydoc *d, const void *text, size_t len)
 {
-    if (!array_reserve((void **)&parent->items, &parent->cap, (size_t)parent->count + 1, sizeof *parent->items))
-        return false;
-    parent->items[parent->count++] = child;
-    return true;
+    char *copy = len < SIZE_MAX ? arena_alloc(&d->mem, len + 1) : NULL;
+    if (copy) {
+        memcpy(copy, text, len);
+        copy[len] = '\0';
+    }
+    return copy;
 }
 
 static ynode *new_node(builder *b, ynode_kind kind, yaml_mark_t mark)
@@ -49,16 +66,12 @@ static ynode *new_node(builder *b, ynode_kind kind, yaml_mark_t mark)
     ydoc *d = b->doc;
     if (d->node_count >= YAML_MAX_NODES)
         return NULL;
-    if (!array_reserve((void **)&d->nodes, &d->node_cap, (size_t)d->node_count + 1, sizeof *d->nodes))
-        return NULL;
-    ynode *n = calloc(1, sizeof *n);
+    ynode *n = arena_alloc(&d->mem, sizeof *n);
     if (!n)
         return NULL;
-    n->kind = kind;
-    n->file = d->name;
-    n->line = (int)mark.line + 1;
-    n->column = (int)mark.column + 1;
-    d->nodes[d->node_count++] = n;
+    *n = (ynode){.kind = kind, .file = d->name, .line = (int)mark.line + 1, .column = (int)mark.column + 1,
+                 .expanded = 1};
+    d->node_count++;
     return n;
 }
 
@@ -83,29 +96,81 @@ static glint_status add_anchor(builder *b, yanchor **list, int *count, size_t *c
     return GLINT_OK;
 }
 
+/* The anchor table's view of doc->anchors. */
+static uint32_t anchor_hash(const void *keys, uint32_t id)
+{
+    return id_hash_text(((const yanchor *)keys)[id].name);
+}
+
+static bool anchor_equal(const void *keys, uint32_t id, const void *name)
+{
+    return strcmp(((const yanchor *)keys)[id].name, name) == 0;
+}
+
+/* Lists anchor `name` of n, and indexes it by name: a hostile file of
+ * 100,000 anchors and a million aliases is looked up in linear time. */
 static glint_status remember_anchor(builder *b, const yaml_char_t *name, ynode *n)
 {
     ydoc *d = b->doc;
-    return name ? add_anchor(b, &d->anchors, &d->anchor_count, &d->anchor_cap, (const char *)name, n) : GLINT_OK;
+    if (!name)
+        return GLINT_OK;
+    glint_status s = add_anchor(b, &d->anchors, &d->anchor_count, &d->anchor_cap, (const char *)name, n);
+    if (s)
+        return s;
+    uint32_t id = (uint32_t)d->anchor_count - 1, first;
+    if (!id_table_intern(&b->anchor_ids, anchor_hash(d->anchors, id), name, id, anchor_hash, anchor_equal,
+                         d->anchors, &first) ||
+        !array_reserve((void **)&b->latest, &b->latest_cap, (size_t)id + 1, sizeof *b->latest))
+        return out_of_memory(b);
+    /* A later anchor of the same name hides the earlier one, as in YAML. */
+    b->latest[first] = id;
+    return GLINT_OK;
 }
 
 static ynode *find_anchor(const builder *b, const char *name)
 {
-    /* A later anchor of the same name hides the earlier one, as in YAML. */
-    for (int i = b->doc->anchor_count - 1; i >= 0; i--)
-        if (strcmp(b->doc->anchors[i].name, name) == 0)
-            return b->doc->anchors[i].node;
-    return NULL;
+    uint32_t first;
+    if (!id_table_find(&b->anchor_ids, id_hash_text(name), name, anchor_equal, b->doc->anchors, &first))
+        return NULL;
+    return b->doc->anchors[b->latest[first]].node;
 }
 
 /* Hangs n under the open container, or makes it the root. */
 static glint_status attach(builder *b, ynode *n, yaml_mark_t mark)
 {
+    (void)mark;
     if (b->depth == 0) {
         b->doc->root = n;
         return GLINT_OK;
     }
-    return push_item(b->stack[b->depth - 1], n) ? GLINT_OK : out_of_memory(b);
+    if (!array_reserve((void **)&b->pending, &b->pending_cap, b->pending_count + 1, sizeof *b->pending))
+        return out_of_memory(b);
+    b->pending[b->pending_count++] = n;
+    return GLINT_OK;
+}
+
+/* Closes the innermost open node: its items, gathered in pending, move to
+ * a list of their own, and its size with aliases copied out is summed. */
+static glint_status on_end(builder *b)
+{
+    ynode *n = b->stack[--b->depth];
+    size_t base = b->base[b->depth], count = b->pending_count - base;
+    if (count) {
+        n->items = arena_alloc(&b->doc->mem, count * sizeof *n->items);
+        if (!n->items)
+            return out_of_memory(b);
+        memcpy(n->items, b->pending + base, count * sizeof *n->items);
+    }
+    n->count = (int)count;
+    b->pending_count = base;
+    long expanded = 1;
+    for (size_t i = 0; i < count && expanded < INT_MAX; i++)
+        expanded += n->items[i]->expanded;
+    n->expanded = expanded < INT_MAX ? (int)expanded : INT_MAX;
+    n->complete = true;
+    if (b->depth == b->flow_level)
+        b->flow_level = -1;
+    return GLINT_OK;
 }
 
 /* An empty value followed by "#0000ff" on its line: the colour became a
@@ -117,7 +182,7 @@ static bool note_hidden_colour(builder *b, ynode *n, yaml_mark_t mark)
     if (at < 0)
         return false;
     n->column += (int)at;
-    n->note = strdup(msg);
+    n->note = arena_text(b->doc, msg, strlen(msg));
     return !n->note;
 }
 
@@ -149,11 +214,9 @@ static glint_status on_scalar(builder *b, const yaml_event_t *ev)
     ynode *n = new_node(b, YNODE_SCALAR, ev->start_mark);
     if (!n)
         return no_node(b, ev->start_mark);
-    n->value = malloc(ev->data.scalar.length + 1);
+    n->value = arena_text(b->doc, ev->data.scalar.value, ev->data.scalar.length);
     if (!n->value)
         return out_of_memory(b);
-    memcpy(n->value, ev->data.scalar.value, ev->data.scalar.length);
-    n->value[ev->data.scalar.length] = '\0';
     if (strlen(n->value) != ev->data.scalar.length)
         return fail_at(b, ev->start_mark, "a NUL character inside a value");
     n->quoted = ev->data.scalar.style != YAML_PLAIN_SCALAR_STYLE;
@@ -179,8 +242,10 @@ static glint_status on_start(builder *b, const yaml_event_t *ev, ynode_kind kind
     glint_status s = remember_anchor(b, anchor_name, n);
     if (!s)
         s = attach(b, n, ev->start_mark);
-    if (!s)
-        b->stack[b->depth++] = n;
+    if (!s) {
+        b->stack[b->depth] = n;
+        b->base[b->depth++] = b->pending_count;
+    }
     return s;
 }
 
@@ -194,7 +259,7 @@ static glint_status on_alias(builder *b, const yaml_event_t *ev)
         ynode *n = new_node(b, YNODE_SCALAR, ev->start_mark);
         if (!n)
             return no_node(b, ev->start_mark);
-        if (!(n->value = strdup("")))
+        if (!(n->value = arena_text(b->doc, "", 0)))
             return out_of_memory(b);
         n->complete = true;
         ydoc *d = b->doc;
@@ -203,6 +268,12 @@ static glint_status on_alias(builder *b, const yaml_event_t *ev)
     }
     if (!target->complete) {
         snprintf(msg, sizeof msg, "alias '*%.200s' is inside the node it names", name);
+        return fail_at(b, ev->start_mark, msg);
+    }
+    /* The alias stands for a copy of its node: count what that copy adds. */
+    b->doc->alias_nodes += target->expanded;
+    if (b->doc->alias_nodes > b->alias_room) {
+        snprintf(msg, sizeof msg, "scene too large after alias expansion (limit %ld nodes)", YAML_MAX_ALIAS_NODES);
         return fail_at(b, ev->start_mark, msg);
     }
     return attach(b, target, ev->start_mark);
@@ -227,10 +298,7 @@ static glint_status on_event(builder *b, const yaml_event_t *ev, bool *done)
                         ev->data.mapping_start.style == YAML_FLOW_MAPPING_STYLE);
     case YAML_SEQUENCE_END_EVENT:
     case YAML_MAPPING_END_EVENT:
-        b->stack[--b->depth]->complete = true;
-        if (b->depth == b->flow_level)
-            b->flow_level = -1;
-        return GLINT_OK;
+        return on_end(b);
     case YAML_STREAM_END_EVENT:
         *done = true;
         return GLINT_OK;
@@ -239,10 +307,11 @@ static glint_status on_event(builder *b, const yaml_event_t *ev, bool *done)
     }
 }
 
-glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *name, glint_error *err)
+glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *name, long alias_room,
+                        glint_error *err)
 {
     memset(doc, 0, sizeof *doc);
-    builder b = {.doc = doc, .err = err, .data = data, .size = size, .flow_level = -1};
+    builder b = {.doc = doc, .err = err, .data = data, .size = size, .flow_level = -1, .alias_room = alias_room};
     doc->name = strdup(name);
     if (!doc->name)
         return error_set(err, GLINT_ERR_NOMEM, "out of memory reading '%s'", name);
@@ -265,6 +334,9 @@ glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *na
         yaml_event_delete(&ev);
     }
     yaml_parser_delete(&parser);
+    free(b.pending);
+    free(b.latest);
+    id_table_free(&b.anchor_ids);
     if (s)
         ydoc_free(doc);
     return s;
@@ -272,13 +344,7 @@ glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *na
 
 void ydoc_free(ydoc *doc)
 {
-    for (int i = 0; i < doc->node_count; i++) {
-        free(doc->nodes[i]->value);
-        free(doc->nodes[i]->note);
-        free(doc->nodes[i]->items);
-        free(doc->nodes[i]);
-    }
-    free(doc->nodes);
+    arena_free(&doc->mem);
     for (int i = 0; i < doc->anchor_count; i++)
         free(doc->anchors[i].name);
     free(doc->anchors);

@@ -1,28 +1,31 @@
 /* yaml_tree.h - a YAML document as a tree of nodes that remember where they
  * were written. Aliases share the node of their anchor (never copies), so
- * a hostile file cannot grow memory by aliasing; whoever walks the tree
- * bounds the walk. */
+ * a hostile file cannot grow memory by aliasing, and what they would add if
+ * copied out is counted and bounded while parsing, so that any walk over
+ * the tree is bounded by the file's size and that limit. */
 #ifndef GLINT_SCENEFILE_YAML_TREE_H
 #define GLINT_SCENEFILE_YAML_TREE_H
 
 #include <stdbool.h>
 #include <stddef.h>
+#include "core/arena.h"
 #include "glint.h"
 
 typedef enum ynode_kind { YNODE_SCALAR, YNODE_SEQUENCE, YNODE_MAPPING } ynode_kind;
 
 typedef struct ynode {
-    ynode_kind kind;
     const char *file;          /* the document's name, for messages */
-    int line, column;          /* 1-based position of the node's start */
     char *value;               /* scalar text, NUL-terminated */
-    bool quoted;               /* scalar written in quotes or as a block */
     struct ynode **items;      /* sequence: items; mapping: key, value, key, value... */
-    int count;                 /* entries in items */
-    size_t cap;
-    bool complete;             /* the node's end has been read */
     char *note;                /* or NULL: what any problem at this node really is
                                   ("'#' starts a comment..."), said instead */
+    int line, column;          /* 1-based position of the node's start */
+    int count;                 /* entries in items */
+    int expanded;              /* nodes in the subtree with every alias in it
+                                  copied out, this one counted; at most INT_MAX */
+    unsigned char kind;        /* a ynode_kind */
+    bool quoted;               /* scalar written in quotes or as a block */
+    bool complete;             /* the node's end has been read */
 } ynode;
 
 /* An anchor (&name) and the node it names; or an alias (*name) that named
@@ -35,9 +38,10 @@ typedef struct yanchor {
 typedef struct ydoc {
     char *name;
     ynode *root;               /* NULL for an empty document */
-    ynode **nodes;             /* every node, for freeing */
-    int node_count;
-    size_t node_cap;
+    arena mem;                 /* every node, value and list of items */
+    long node_count;
+    long alias_nodes;          /* nodes the aliases add: the sum of the
+                                  `expanded` of every node an alias names */
     yanchor *anchors;          /* every anchor, in the order of the file */
     int anchor_count;
     size_t anchor_cap;
@@ -46,14 +50,23 @@ typedef struct ydoc {
     size_t unknown_cap;
 } ydoc;
 
+/* The nodes a scene's aliases may add, all its files together: an alias is
+ * a copy of the node it names, and nested aliases multiply ("a billion
+ * laughs"). The file's own nodes do not count. */
+#define YAML_MAX_ALIAS_NODES 1000000L
+
 /* Parses `size` bytes of YAML named `name` into doc. On a syntax error
  * returns GLINT_ERR_INVALID with err holding "name:line:column: message",
  * in plain words for a tab in the indentation and for a colour that a '#'
  * made a comment of. An empty value that such a comment hid gets a note.
  * An alias to no anchor before it is not an error here but listed in
  * doc->unknown, so that the caller can say where the anchor is (another
- * file, later in this one): a document with such aliases is not a scene. */
-glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *name, glint_error *err);
+ * file, later in this one): a document with such aliases is not a scene.
+ * An alias that takes the nodes the aliases add (doc->alias_nodes) past
+ * alias_room is an error at the alias: "scene too large after alias
+ * expansion (limit 1000000 nodes)". */
+glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *name, long alias_room,
+                        glint_error *err);
 
 /* Frees every node of the document. */
 void ydoc_free(ydoc *doc);

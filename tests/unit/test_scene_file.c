@@ -2279,8 +2279,9 @@ static long peak_kib(void)
 }
 
 /* A billion-laughs file: ten aliases of ten aliases ... nine levels deep
- * names 10^9 objects or lights. The walk must stop at its visit limit with
- * one problem, quickly and in little memory. */
+ * names 10^9 objects or lights. The parser must stop at the first alias
+ * that takes what aliases add past the limit, with one problem, quickly
+ * and in little memory. */
 static void check_alias_bomb(const char *yaml, const char *first)
 {
     report_log log = {0};
@@ -2305,7 +2306,9 @@ static void test_alias_bomb_of_objects(void **state)
             snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "%s*l%d", k ? ", " : "", i - 1);
         snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "]}\n");
     }
-    check_alias_bomb(yaml, "bad.yaml:3:24: scene too large after alias expansion (limit 1000000 nodes)");
+    /* Level k adds ten copies of 5 + 10 * (level k-1) nodes (l0: 7), 839,470
+     * nodes by l5: the first alias of l6 passes the limit. */
+    check_alias_bomb(yaml, "bad.yaml:9:33: scene too large after alias expansion (limit 1000000 nodes)");
 }
 
 /* Lights are a flat list, so the bomb goes through merge keys instead. */
@@ -2318,7 +2321,31 @@ static void test_alias_bomb_of_lights(void **state)
             snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "%s*l%d", k ? ", " : "", i - 1);
         snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "]}\n");
     }
-    check_alias_bomb(yaml, "bad.yaml:2:10: scene too large after alias expansion (limit 1000000 nodes)");
+    check_alias_bomb(yaml, "bad.yaml:8:15: scene too large after alias expansion (limit 1000000 nodes)");
+}
+
+/* The limit counts what aliases add, exactly: one alias of a list of a
+ * million nodes (the list and 999,999 items) is within it, of one node more
+ * is not. The file's own nodes do not count: the list itself is allowed. */
+static void test_alias_limit_counts_what_aliases_add(void **state)
+{
+    for (int more = 0; more <= 1; more++) {
+        long items = 999999 + more;
+        char *yaml = malloc((size_t)items * 2 + 64);
+        assert_non_null(yaml);
+        char *p = yaml + sprintf(yaml, "a: &big [");
+        for (long i = 0; i < items; i++) {
+            memcpy(p, i ? ",1" : "1", i ? 2 : 1);
+            p += i ? 2 : 1;
+        }
+        sprintf(p, "]\nb: *big\n");
+        report_log log = {0};
+        glint_error err = {0};
+        load_bad(yaml, 0, &log, &err);
+        assert_string_equal(log.first, more ? "bad.yaml:2:4: scene too large after alias expansion (limit 1000000 nodes)"
+                                            : "bad.yaml:1:1: unknown key 'a' in the scene");
+        free(yaml);
+    }
 }
 
 /* ------------------------------------- one report each, in the right words */
@@ -2416,6 +2443,7 @@ int main(void)
         cmocka_unit_test(test_groups_nested_too_deep),
         cmocka_unit_test(test_alias_bomb_of_objects),
         cmocka_unit_test(test_alias_bomb_of_lights),
+        cmocka_unit_test(test_alias_limit_counts_what_aliases_add),
         cmocka_unit_test(test_failed_texture_is_reported_once),
         cmocka_unit_test(test_merge_list_of_non_maps),
         cmocka_unit_test(test_merge_too_deep_says_so),

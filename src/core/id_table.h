@@ -1,12 +1,13 @@
 /* id_table.h - a set of ids whose keys live in the caller's own arrays:
  * open addressing with linear probing over a power-of-two table of 32-bit
  * slots, so that readers can join equal keys (face corners, names,
- * positions) with no allocation per key. The caller stores key i at index i
+ * positions) and the scene can find a texture or material by name, each in
+ * constant time, with no allocation per key. The caller stores key i at index i
  * and hands the table functions that hash a stored key and compare one
  * with a key being looked up. Hashes have 32 bits, and the table at most
  * 2^31 slots (1.6 billion ids). */
-#ifndef GLINT_MODEL_ID_TABLE_H
-#define GLINT_MODEL_ID_TABLE_H
+#ifndef GLINT_CORE_ID_TABLE_H
+#define GLINT_CORE_ID_TABLE_H
 
 #include <stdbool.h>
 #include <stddef.h>

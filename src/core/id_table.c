@@ -1,7 +1,7 @@
 /* id_table.c - open addressing over ids whose keys the caller keeps. */
 #include <stdlib.h>
 #include "core/array.h"
-#include "model/id_table.h"
+#include "core/id_table.h"
 
 uint32_t id_hash_text(const char *s)
 {

@@ -1,0 +1,124 @@
+/* test_id_table.c - the hash table of core/id_table.h: ids found again
+ * through growth and collisions, keys told apart, and the scene's names
+ * found through it (a texture or material defined twice refused, NULL
+ * names never entered). */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <stdio.h>
+#include <string.h>
+#include "core/id_table.h"
+#include "scene/scene.h"
+
+#define NAMES 20000
+
+static char names[NAMES][16];
+
+static uint32_t name_hash(const void *keys, uint32_t id)
+{
+    return id_hash_text(((const char(*)[16])keys)[id]);
+}
+
+static bool name_equal(const void *keys, uint32_t id, const void *key)
+{
+    return strcmp(((const char(*)[16])keys)[id], key) == 0;
+}
+
+/* A hash that sends every key to one slot: every probe runs into others. */
+static uint32_t same_hash(const void *keys, uint32_t id)
+{
+    (void)keys;
+    (void)id;
+    return 7;
+}
+
+static void test_ids_are_found_through_growth(void **state)
+{
+    (void)state;
+    id_table t = {0};
+    uint32_t id;
+    assert_false(id_table_find(&t, id_hash_text("n0"), "n0", name_equal, names, &id));
+    for (uint32_t i = 0; i < NAMES; i++) {
+        snprintf(names[i], sizeof names[i], "n%u", i);
+        assert_true(id_table_intern(&t, id_hash_text(names[i]), names[i], i, name_hash, name_equal, names, &id));
+        assert_int_equal(id, i);
+    }
+    assert_int_equal(t.count, NAMES);
+    /* At most 3/4 full, a power of two. */
+    assert_true(t.count <= (t.mask + 1) / 4 * 3);
+    assert_int_equal((t.mask + 1) & t.mask, 0);
+    for (uint32_t i = 0; i < NAMES; i++) {
+        assert_true(id_table_find(&t, id_hash_text(names[i]), names[i], name_equal, names, &id));
+        assert_int_equal(id, i);
+    }
+    /* An equal key interns to the id it already has, and adds nothing. */
+    assert_true(id_table_intern(&t, id_hash_text("n123"), "n123", NAMES, name_hash, name_equal, names, &id));
+    assert_int_equal(id, 123);
+    assert_int_equal(t.count, NAMES);
+    assert_false(id_table_find(&t, id_hash_text("n20000"), "n20000", name_equal, names, &id));
+    assert_false(id_table_find(&t, id_hash_text(""), "", name_equal, names, &id));
+    id_table_free(&t);
+    assert_null(t.slots);
+    assert_int_equal(t.count, 0);
+}
+
+static void test_colliding_keys_are_told_apart(void **state)
+{
+    (void)state;
+    id_table t = {0};
+    uint32_t id;
+    for (uint32_t i = 0; i < 100; i++) {
+        snprintf(names[i], sizeof names[i], "c%u", i);
+        assert_true(id_table_add(&t, 7, i, same_hash, names));
+    }
+    for (uint32_t i = 0; i < 100; i++) {
+        assert_true(id_table_find(&t, 7, names[i], name_equal, names, &id));
+        assert_int_equal(id, i);
+    }
+    assert_false(id_table_find(&t, 7, "c100", name_equal, names, &id));
+    id_table_free(&t);
+}
+
+static void test_scene_names_are_hashed(void **state)
+{
+    (void)state;
+    glint_scene *s = glint_scene_new();
+    assert_non_null(s);
+    glint_material m = glint_material_default();
+    glint_error err;
+    for (int i = 0; i < NAMES; i++) {
+        snprintf(names[i], sizeof names[i], "m%d", i);
+        /* Unnamed materials between the named ones are never entered. */
+        assert_int_equal(glint_scene_add_material(s, names[i], &m, &err), 2 * i);
+        assert_int_equal(glint_scene_add_material(s, NULL, &m, &err), 2 * i + 1);
+    }
+    for (int i = 0; i < NAMES; i++)
+        assert_int_equal(scene_find_material(s, names[i]), 2 * i);
+    assert_int_equal(scene_find_material(s, NULL), -1);
+    assert_int_equal(scene_find_material(s, "m20000"), -1);
+    assert_int_equal(glint_scene_add_material(s, "m77", &m, &err), -1);
+    assert_string_equal(err.message, "material 'm77' is defined twice");
+
+    glint_color a = {1, 1, 1}, b = {0, 0, 0};
+    glint_mapping uv = glint_texture_default(GLINT_TEXTURE_CHECKER).mapping;
+    for (int i = 0; i < 1000; i++)
+        assert_int_equal(glint_scene_add_checker(s, names[i], a, b, 1, uv, &err), i);
+    assert_int_equal(glint_scene_add_checker(s, NULL, a, b, 1, uv, &err), 1000);
+    assert_int_equal(scene_find_texture(s, "m999"), 999);
+    assert_int_equal(scene_find_texture(s, "m1000"), -1);
+    assert_int_equal(glint_scene_add_checker(s, "m5", a, b, 1, uv, &err), -1);
+    assert_string_equal(err.message, "texture 'm5' is defined twice");
+    glint_scene_free(s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_ids_are_found_through_growth),
+        cmocka_unit_test(test_colliding_keys_are_told_apart),
+        cmocka_unit_test(test_scene_names_are_hashed),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
