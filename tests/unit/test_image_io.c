@@ -1028,6 +1028,34 @@ static void test_textures_share_decoded_file(void **state)
     glint_scene_free(scene);
 }
 
+/* A file whose pixels would take the scene's decoded images past 4 GiB is
+ * refused, the scene's count unchanged; one that fits exactly is taken. */
+static void test_textures_within_budget(void **state)
+{
+    static const unsigned char grey[4] = {0, 64, 128, 255};
+    char path[PATH_SIZE], other[PATH_SIZE], want[PATH_SIZE + 200];
+    glint_error err = {0};
+    tmp_path(path, "budget.png");
+    tmp_path(other, "budget-2.png");
+    write_png8(path, 2, 2, PNG_FORMAT_GRAY, grey, NULL, 0);
+    write_png8(other, 2, 2, PNG_FORMAT_GRAY, grey, NULL, 0);
+    glint_scene *scene = glint_scene_new();
+    glint_mapping uv = {.kind = GLINT_MAP_UV};
+    scene->image_bytes = SCENE_MAX_IMAGE_BYTES - 11; /* as if other images had taken the rest */
+    snprintf(want, sizeof want,
+             "texture '%s' is too much: its 12 bytes of pixels would take the scene's textures past the limit of "
+             "4294967296 bytes (4 GiB)",
+             path);
+    assert_int_equal(glint_scene_add_image_file(scene, "a", path, uv, &err), -1);
+    assert_int_equal(err.status, GLINT_ERR_INVALID);
+    assert_string_equal(err.message, want);
+    assert_int_equal(scene->image_bytes, SCENE_MAX_IMAGE_BYTES - 11);
+    scene->image_bytes = SCENE_MAX_IMAGE_BYTES - 12;
+    assert_true(glint_scene_add_image_file(scene, "b", other, uv, &err) >= 0);
+    assert_true(scene->image_bytes == SCENE_MAX_IMAGE_BYTES);
+    glint_scene_free(scene);
+}
+
 static void test_load_grey_png(void **state)
 {
     static const unsigned char grey[4] = {0, 64, 128, 255};
@@ -1288,6 +1316,7 @@ int main(void)
         cmocka_unit_test(test_load_png_chunk_past_end),
         cmocka_unit_test(test_load_grey_png),
         cmocka_unit_test(test_textures_share_decoded_file),
+        cmocka_unit_test(test_textures_within_budget),
         cmocka_unit_test(test_load_palette_and_alpha_png),
         cmocka_unit_test(test_load_16bit_png),
         cmocka_unit_test(test_load_jpeg_memory),
