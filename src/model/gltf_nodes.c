@@ -9,7 +9,9 @@
  * paths never end) is refused too. The scan is lenient: JSON it cannot
  * follow is left to Assimp's parser, which refuses it; what valid JSON
  * holds it reads as that parser does (the first of two equal keys, escapes
- * decoded). glTF 1's nodes, named rather than numbered, are not counted. */
+ * decoded). glTF 1 names its nodes (an object of them, children and roots
+ * given by name) where glTF 2 numbers them (an array): names are decoded
+ * and turned into numbers once the file is read. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -23,7 +25,15 @@ typedef struct reader {
     const unsigned char *t;
     size_t size, i;
     bool nomem;               /* memory ran out (the scan stops as for broken JSON) */
+    char *names;              /* glTF 1's names, decoded, each ended by a NUL: no more than the text */
+    size_t names_used;
 } reader;
+
+/* A glTF 1 reference, by name: NAMED | the name's offset in reader.names,
+ * until resolve_names makes it a node's number. */
+#define NAMED (1ULL << 63)
+/* A reference to no node (a number or name out of range). */
+#define NO_NODE (NAMED - 1)
 
 /* The hierarchy as the file gives it: node n's children are
  * child[first[n]] to child[first[n + 1] - 1]. */
@@ -33,6 +43,8 @@ typedef struct graph {
     size_t children, child_cap;
     uint64_t *roots;          /* every scene's root nodes, all scenes together */
     size_t root_count, root_cap;
+    uint64_t *node_names;     /* glTF 1: node n's name (an offset in reader.names) */
+    size_t node_name_cap;
 } graph;
 
 static void skip_space(reader *r)
@@ -68,6 +80,28 @@ static bool read_string(reader *r, char *key, size_t size)
     }
     key[n] = '\0';
     return c == -1;
+}
+
+/* Decodes the string at the reader into r->names, its offset there in
+ * *at: the decoded characters are never more than the text's. */
+static bool read_name(reader *r, uint64_t *at)
+{
+    if (!r->names && !(r->names = malloc(r->size + 1))) {
+        r->nomem = true;
+        return false;
+    }
+    skip_space(r);
+    size_t start = r->i;
+    char none[2];
+    if (!read_string(r, none, sizeof none))
+        return false;
+    *at = r->names_used;
+    size_t k = start + 1;
+    int c;
+    while ((c = json_next_char(r->t, r->size, &k)) >= 0)
+        r->names[r->names_used++] = (char)c;
+    r->names[r->names_used++] = '\0';
+    return true;
 }
 
 /* Skips one value of any kind; nesting is counted, never recursed into. */
@@ -125,9 +159,10 @@ static int next_member(reader *r, bool *first, char *key, size_t size)
     return read_string(r, key, size) && take(r, ':') ? 1 : -1;
 }
 
-/* Reads an array of node indices, appending each to *list. A value that
- * is not an unsigned integer is skipped, as Assimp skips it; one too large
- * for any node is kept, and found out of range by the count. */
+/* Reads an array of node indices, appending each to *list: numbers, or
+ * names (NAMED). A value that is neither an unsigned integer nor a string
+ * is skipped, as Assimp skips it; one too large for any node is kept, and
+ * found out of range by the count. */
 static bool read_indices(reader *r, uint64_t **list, size_t *count, size_t *cap)
 {
     if (!take(r, '['))
@@ -138,11 +173,17 @@ static bool read_indices(reader *r, uint64_t **list, size_t *count, size_t *cap)
         skip_space(r);
         size_t start = r->i;
         uint64_t v = 0;
+        if (r->i < r->size && r->t[r->i] == '"') {
+            if (!read_name(r, &v))
+                return false;
+            v |= NAMED;
+            r->i = start;
+        }
         bool negative = r->i < r->size && r->t[r->i] == '-';
         r->i += negative;
         while (r->i < r->size && r->t[r->i] >= '0' && r->t[r->i] <= '9')
-            v = v > UINT64_MAX / 10 - 1 ? UINT64_MAX : v * 10 + (r->t[r->i++] - '0');
-        bool integer = r->i > start + negative && (r->i >= r->size || !strchr(".eE", r->t[r->i]));
+            v = v > NO_NODE / 10 - 1 ? NO_NODE : v * 10 + (r->t[r->i++] - '0');
+        bool integer = v & NAMED || (r->i > start + negative && (r->i >= r->size || !strchr(".eE", r->t[r->i])));
         r->i = start;
         if (!skip_value(r))
             return false;
@@ -157,22 +198,29 @@ static bool read_indices(reader *r, uint64_t **list, size_t *count, size_t *cap)
     return n == 0;
 }
 
-/* Reads each object of an array (the value of "nodes" or "scenes"), the
- * value of its member `key` through read_indices into *list; with nodes
- * set, also where each node's children start. */
+/* Reads each object of an array, or (glTF 1) of an object by name, the
+ * value of "nodes" or "scenes": the value of its member `key` through
+ * read_indices into *list; with nodes set, also where each node's children
+ * start, and its name. */
 static bool read_objects(reader *r, const char *key, graph *g, bool nodes, uint64_t **list, size_t *count,
                          size_t *cap)
 {
-    if (!take(r, '['))
+    bool named = take(r, '{');
+    if (!named && !take(r, '['))
         return skip_value(r);
     bool first = true;
     int n;
-    while ((n = next_item(r, &first, ']')) > 0) {
+    while ((n = next_item(r, &first, named ? '}' : ']')) > 0) {
+        uint64_t name = 0;
+        if (named && !(read_name(r, &name) && take(r, ':')))
+            return false;
         if (nodes) {
-            if (!array_reserve((void **)&g->first, &g->first_cap, g->nodes + 2, sizeof *g->first)) {
+            if (!array_reserve((void **)&g->first, &g->first_cap, g->nodes + 2, sizeof *g->first) ||
+                !array_reserve((void **)&g->node_names, &g->node_name_cap, g->nodes + 1, sizeof *g->node_names)) {
                 r->nomem = true;
                 return false;
             }
+            g->node_names[g->nodes] = named ? name | NAMED : 0;
             g->first[g->nodes++] = *count;
         }
         if (!take(r, '{')) {
@@ -181,10 +229,10 @@ static bool read_objects(reader *r, const char *key, graph *g, bool nodes, uint6
             continue;
         }
         bool first_member = true, seen = false;
-        char name[16];
+        char member[16];
         int m;
-        while ((m = next_member(r, &first_member, name, sizeof name)) > 0) {
-            bool wanted = !seen && strcmp(name, key) == 0;
+        while ((m = next_member(r, &first_member, member, sizeof member)) > 0) {
+            bool wanted = !seen && strcmp(member, key) == 0;
             seen |= wanted;
             if (!(wanted ? read_indices(r, list, count, cap) : skip_value(r)))
                 return false;
@@ -221,6 +269,57 @@ static bool read_graph(reader *r, graph *g)
             return false;
     }
     return n == 0;
+}
+
+/* A node's name and number, for finding names by bsearch. */
+typedef struct named_node {
+    const char *name;
+    size_t node;
+} named_node;
+
+static int by_name(const void *a, const void *b)
+{
+    return strcmp(((const named_node *)a)->name, ((const named_node *)b)->name);
+}
+
+/* Turns each reference by name in list into the number of the node of that
+ * name (the first, as Assimp's table keeps the first), or NO_NODE. */
+static void resolve(const reader *r, const named_node *sorted, size_t nodes, uint64_t *list, size_t count)
+{
+    for (size_t k = 0; k < count; k++) {
+        if (!(list[k] & NAMED))
+            continue;
+        named_node key = {r->names + (list[k] & ~NAMED), 0};
+        const named_node *found = bsearch(&key, sorted, nodes, sizeof *sorted, by_name);
+        list[k] = found ? found->node : NO_NODE;
+    }
+}
+
+/* glTF 1: every reference by name becomes a number. False when memory runs
+ * out. */
+static bool resolve_names(const reader *r, graph *g)
+{
+    if (!r->names)
+        return true;
+    named_node *sorted = array_alloc(g->nodes, sizeof *sorted);
+    if (!sorted)
+        return false;
+    size_t named = 0;
+    for (size_t n = 0; n < g->nodes; n++)
+        if (g->node_names[n] & NAMED)
+            sorted[named++] = (named_node){r->names + (g->node_names[n] & ~NAMED), n};
+    /* Equal names keep the first node: a stable order by number breaks ties. */
+    qsort(sorted, named, sizeof *sorted, by_name);
+    size_t kept = 0;
+    for (size_t k = 0; k < named; k++)
+        if (kept == 0 || strcmp(sorted[kept - 1].name, sorted[k].name) != 0)
+            sorted[kept++] = sorted[k];
+        else if (sorted[k].node < sorted[kept - 1].node)
+            sorted[kept - 1] = sorted[k];
+    resolve(r, sorted, kept, g->child, g->children);
+    resolve(r, sorted, kept, g->roots, g->root_count);
+    free(sorted);
+    return true;
 }
 
 static uint64_t add_capped(uint64_t a, uint64_t b)
@@ -287,6 +386,8 @@ glint_status gltf_check_nodes(const unsigned char *text, size_t size, const char
         if (r.nomem)
             s = error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", file);
         g.nodes = 0; /* left to Assimp's parser */
+    } else if (!resolve_names(&r, &g)) {
+        s = error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", file);
     }
     uint64_t *paths = g.nodes ? array_alloc(g.nodes, sizeof *paths) : NULL;
     if (!s && g.nodes && !paths)
@@ -315,5 +416,7 @@ glint_status gltf_check_nodes(const unsigned char *text, size_t size, const char
     free(g.first);
     free(g.child);
     free(g.roots);
+    free(g.node_names);
+    free(r.names);
     return s;
 }
