@@ -14,12 +14,23 @@
  * header (ply_check.c). */
 glint_status ply_check(const unsigned char *data, size_t size, const char *file, glint_error *err);
 
-/* A glTF file starts with a JSON object, and each image media type in it
- * has its '/' (gltf_check.c). */
+/* A glTF file starts with a JSON object, each image media type in it
+ * has its '/', and its node hierarchy passes gltf_check_nodes
+ * (gltf_check.c). */
 glint_status gltf_check(const unsigned char *data, size_t size, const char *file, glint_error *err);
 
 /* A GLB file starts with its magic, its chunks fit in it, and each image
- * media type in its JSON has its '/' (gltf_check.c). */
+ * media type in its JSON has its '/', and its node hierarchy passes
+ * gltf_check_nodes (gltf_check.c). */
 glint_status glb_check(const unsigned char *data, size_t size, const char *file, glint_error *err);
+
+/* The most nodes a glTF's hierarchy may expand to, each node counted once
+ * for every path to it from a root (docs/robustness.md): Assimp makes a
+ * node of about 1 KB for each. */
+#define GLTF_MAX_NODES 1000000
+
+/* Refuses glTF JSON text (size bytes) whose node hierarchy has a cycle or
+ * expands to more than GLTF_MAX_NODES nodes (gltf_nodes.c). */
+glint_status gltf_check_nodes(const unsigned char *text, size_t size, const char *file, glint_error *err);
 
 #endif

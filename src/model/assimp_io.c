@@ -2,7 +2,9 @@
  * own bytes from memory, so that it is read once and checked before
  * Assimp parses it, and the files it names (glTF buffers) from disk only
  * when the model came from disk. Only regular files in the model's folder
- * or below are opened, never for writing. */
+ * or below are opened, never for writing, and only while the model and
+ * its buffers fit in half of the machine's memory (Assimp reads a buffer
+ * whole: a 3 GB one would be read before anything could refuse it). */
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
@@ -109,6 +111,18 @@ static FILE *open_named(assimp_source *src, const char *path, size_t *size)
         }
         return NULL;
     }
+    uint64_t limit = model_file_memory_limit();
+    if (limit > 0 && ((uint64_t)st.st_size > limit || src->read > limit - (uint64_t)st.st_size)) {
+        error_set(&src->refusal, GLINT_ERR_INVALID,
+                  "%s: buffer '%s' is too large to import: %llu bytes, which with the model%s come to more than "
+                  "half of this machine's memory (%llu bytes)",
+                  src->file, path, (unsigned long long)st.st_size,
+                  src->read > src->size ? " and the buffers before it" : "", (unsigned long long)limit * 2);
+        src->refused = true;
+        fclose(fp);
+        return NULL;
+    }
+    src->read += (uint64_t)st.st_size;
     if (scene_note_file(src->scene, &st, &src->refusal)) {
         src->refused = true;
         fclose(fp);

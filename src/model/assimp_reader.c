@@ -102,12 +102,14 @@ static const struct aiScene *assimp_read(assimp_source *src, const char *file, d
     glint_status s = GLINT_OK;
     pthread_mutex_lock(&assimp_lock);
     failed_assertion = NULL;
+    src->read = src->size;
     const struct aiScene *ai = aiImportFileExWithProperties(src->name, aiProcess_ValidateDataStructure, &io, props);
     if (ai) {
         if (!failed_assertion)
             s = check_read(ai, file, err);
         aiReleaseImport(ai);
         ai = NULL;
+        src->read = src->size;
         if (!failed_assertion && !s)
             ai = aiImportFileExWithProperties(src->name, flags, &io, props);
     }

@@ -8,7 +8,8 @@
  * whose data URI is "data:imagepng;base64,...", makes it read from address
  * 1 (fuzzing found it): every mimeType and every data URI's media type must
  * have its '/'. That scan decodes JSON strings as a JSON parser does,
- * escapes included, so "mime\u0054ype" is still seen as the key mimeType. */
+ * escapes included, so "mime\u0054ype" is still seen as the key mimeType.
+ * The node hierarchy is counted before Assimp expands it (gltf_nodes.c). */
 #include <ctype.h>
 #include <limits.h>
 #include <stdint.h>
@@ -16,6 +17,7 @@
 #include <string.h>
 #include "core/error.h"
 #include "model/assimp_check.h"
+#include "model/json_char.h"
 
 /* What one decoded JSON string holds, as far as the check needs it. */
 typedef struct json_string {
@@ -27,50 +29,6 @@ typedef struct json_string {
     bool media_slash;         /* a '/' in that media type */
 } json_string;
 
-static int hex_digit(unsigned char c)
-{
-    if (c >= '0' && c <= '9')
-        return c - '0';
-    c = (unsigned char)(c | 0x20);
-    return c >= 'a' && c <= 'f' ? c - 'a' + 10 : -1;
-}
-
-/* The next decoded character of the string at text[*i] (after its opening
- * quote): an ASCII character, or 0x80 for anything else; -1 at its closing
- * quote, -2 at the end of the text or a broken escape. */
-static int next_char(const unsigned char *text, size_t size, size_t *i)
-{
-    if (*i >= size)
-        return -2;
-    unsigned char c = text[(*i)++];
-    if (c == '"')
-        return -1;
-    if (c != '\\')
-        return c < 0x80 ? c : 0x80;
-    if (*i >= size)
-        return -2;
-    c = text[(*i)++];
-    switch (c) {
-    case 'b': return '\b';
-    case 'f': return '\f';
-    case 'n': return '\n';
-    case 'r': return '\r';
-    case 't': return '\t';
-    case 'u': {
-        int v = 0;
-        for (int k = 0; k < 4; k++) {
-            int d = *i < size ? hex_digit(text[(*i)++]) : -1;
-            if (d < 0)
-                return -2;
-            v = v * 16 + d;
-        }
-        return v < 0x80 ? v : 0x80;
-    }
-    default:
-        return c; /* \" \\ \/ and, leniently, anything else */
-    }
-}
-
 /* Decodes the string whose opening quote is at text[*i]; *i ends past its
  * closing quote. False when the text ends first. */
 static bool read_string(const unsigned char *text, size_t size, size_t *i, json_string *s)
@@ -78,7 +36,7 @@ static bool read_string(const unsigned char *text, size_t size, size_t *i, json_
     memset(s, 0, sizeof *s);
     s->start = (*i)++;
     int c;
-    while ((c = next_char(text, size, i)) >= 0) {
+    while ((c = json_next_char(text, size, i)) >= 0) {
         if (s->length < sizeof s->head - 1)
             s->head[s->length] = c >= 0x20 && c < 0x7F ? (char)c : '?';
         s->length++;
@@ -168,7 +126,8 @@ glint_status gltf_check(const unsigned char *data, size_t size, const char *file
         return error_set(err, GLINT_ERR_INVALID, "%s: not a glTF file (it does not start with a JSON object)", file);
     char where[PATH_MAX + 2];
     snprintf(where, sizeof where, "%s:", file);
-    return check_media_types(data, size, where, err);
+    glint_status s = check_media_types(data, size, where, err);
+    return s ? s : gltf_check_nodes(data, size, file, err);
 }
 
 /* The little-endian 32-bit number at p: a GLB's lengths. */
@@ -197,5 +156,6 @@ glint_status glb_check(const unsigned char *data, size_t size, const char *file,
     /* Chunk 0 is the JSON; positions in messages are within it. */
     char where[PATH_MAX + 32];
     snprintf(where, sizeof where, "%s: JSON chunk ", file);
-    return check_media_types(data + 20, le32(data + 12), where, err);
+    glint_status s = check_media_types(data + 20, le32(data + 12), where, err);
+    return s ? s : gltf_check_nodes(data + 20, le32(data + 12), file, err);
 }

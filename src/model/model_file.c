@@ -19,11 +19,10 @@
 #include "core/open_file.h"
 #include "model/model_file.h"
 
-/* The machine's memory in bytes, or 0 when the system does not say. */
-static uint64_t memory_bytes(void)
+uint64_t model_file_memory_limit(void)
 {
     long pages = sysconf(_SC_PHYS_PAGES), page = sysconf(_SC_PAGESIZE);
-    return pages > 0 && page > 0 ? (uint64_t)pages * (uint64_t)page : 0;
+    return pages > 0 && page > 0 ? (uint64_t)pages * (uint64_t)page / 2 : 0;
 }
 
 glint_status model_file_open(const char *path, int *fd, size_t *size, glint_error *err)
@@ -39,16 +38,16 @@ glint_status model_file_open(const char *path, int *fd, size_t *size, glint_erro
         return GLINT_ERR_IO;
     }
     glint_status s = GLINT_OK;
-    uint64_t memory = memory_bytes();
+    uint64_t limit = model_file_memory_limit();
     if ((uintmax_t)st.st_size >= SIZE_MAX)
         s = error_set(err, GLINT_ERR_NOMEM, "%s: too large to read", path);
     /* The file is read whole and its model built beside it: one larger
      * than half the memory is refused before reading, rather than found
      * out by the system (or its out-of-memory killer) halfway through. */
-    else if (memory > 0 && (uint64_t)st.st_size > memory / 2)
+    else if (limit > 0 && (uint64_t)st.st_size > limit)
         s = error_set(err, GLINT_ERR_INVALID,
                       "%s: too large to import: %llu bytes, more than half of this machine's memory (%llu bytes)", path,
-                      (unsigned long long)st.st_size, (unsigned long long)memory);
+                      (unsigned long long)st.st_size, (unsigned long long)limit * 2);
     if (s) {
         close(*fd);
         *fd = -1;

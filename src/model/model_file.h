@@ -4,7 +4,13 @@
 #define GLINT_MODEL_MODEL_FILE_H
 
 #include <stddef.h>
+#include <stdint.h>
 #include "glint.h"
+
+/* Half of the machine's memory in bytes, or 0 when the system does not
+ * say: the most a model, with the buffers it names, may take to be read
+ * whole (its model is built beside it). */
+uint64_t model_file_memory_limit(void);
 
 /* Opens `path` for reading into *fd: a regular file (opening a FIFO does
  * not block, and it is refused) of at most half the machine's memory;

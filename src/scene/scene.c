@@ -36,6 +36,7 @@ void glint_scene_free(glint_scene *s)
     for (int i = 0; i < s->material_count; i++)
         free(s->materials[i].name);
     free(s->textures);
+    scene_free_images(s);
     free(s->materials);
     id_table_free(&s->texture_names);
     id_table_free(&s->material_names);
@@ -179,7 +180,7 @@ static bool name_free(const glint_scene *scene, const char *name, glint_error *e
 int glint_scene_add_texture(glint_scene *scene, const char *name, const glint_texture *desc, glint_error *err)
 {
     texture t;
-    if (!name_free(scene, name, err) || texture_init(&t, desc, err))
+    if (!name_free(scene, name, err) || texture_init(&t, desc, scene_load_image, scene, err))
         return -1;
     if (desc->file && scene_note_path(scene, desc->file, err)) {
         texture_release(&t);

@@ -45,6 +45,9 @@ struct glint_scene {
     char *output;             /* image path a scene file asked for, or NULL */
     scene_file_id *inputs;    /* every file read to build it (scene_files.c) */
     size_t input_count, input_cap;
+    struct scene_image *images; /* each image file decoded, once (scene_images.c) */
+    size_t image_count, image_cap;
+    unsigned long long image_bytes; /* their pixels' bytes, within SCENE_MAX_IMAGE_BYTES */
     char **warnings;          /* what it went on without, for the user */
     int warning_count;
     size_t warning_cap;
@@ -55,6 +58,20 @@ struct glint_scene {
  * output; fills err when out of memory. */
 glint_status scene_note_file(glint_scene *scene, const struct stat *st, glint_error *err);
 glint_status scene_note_path(glint_scene *scene, const char *path, glint_error *err);
+
+/* The most bytes of decoded image pixels a scene holds, 4 GiB: five
+ * images of the largest size (TEXTURE_IMAGE_MAX_PIXELS, 768 MiB each). */
+#define SCENE_MAX_IMAGE_BYTES (4ULL << 30)
+
+/* An image_load_fn (shading/texture.h) for `scene`: the file at path is
+ * decoded the first time a texture names it, then shared with every
+ * texture of that file (told by device and inode, so a link or another
+ * spelling is the same file); the scene frees it. Refuses a file whose
+ * pixels would take the scene's past SCENE_MAX_IMAGE_BYTES. */
+glint_status scene_load_image(void *scene, const char *path, texture_image *out, glint_error *err);
+
+/* Frees the images scene_load_image decoded. */
+void scene_free_images(glint_scene *scene);
 
 /* Adds a warning (printf format) for glint_scene_warning; past 100 they
  * are dropped. Fills err when out of memory. */

@@ -2,7 +2,8 @@
 #include <stddef.h>
 #include "shading/texture.h"
 
-static glint_status checker_init(texture *t, const glint_texture *d, glint_error *err)
+static glint_status checker_init(texture *t, const glint_texture *d, image_load_fn load, void *user,
+                                 glint_error *err)
 {
     t->a = d->colors[0];
     t->b = d->colors[1];

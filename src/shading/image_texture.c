@@ -2,9 +2,9 @@
 #include <stddef.h>
 #include "shading/texture.h"
 
-static glint_status image_init(texture *t, const glint_texture *d, glint_error *err)
+static glint_status image_init(texture *t, const glint_texture *d, image_load_fn load, void *user, glint_error *err)
 {
-    return texture_image_load_file(&t->image, d->file, err);
+    return load(user, d->file, &t->image, err);
 }
 
 static color image_at(const texture *t, double u, double v)

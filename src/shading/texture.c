@@ -78,7 +78,7 @@ glint_status mapping_validate(const glint_mapping *given, glint_error *err)
     return GLINT_OK;
 }
 
-glint_status texture_init(texture *t, const glint_texture *desc, glint_error *err)
+glint_status texture_init(texture *t, const glint_texture *desc, image_load_fn load, void *user, glint_error *err)
 {
     memset(t, 0, sizeof *t);
     t->kind = texture_kind_of(desc->kind);
@@ -96,7 +96,7 @@ glint_status texture_init(texture *t, const glint_texture *desc, glint_error *er
     t->desc.file = NULL;
     if (!texture_set_file(t, desc->file))
         return error_set(err, GLINT_ERR_NOMEM, "out of memory");
-    s = t->kind->init(t, desc, err);
+    s = t->kind->init(t, desc, load, user, err);
     if (s)
         texture_set_file(t, NULL);
     return s;

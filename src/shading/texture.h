@@ -16,6 +16,11 @@
 
 typedef struct texture_kind texture_kind;
 
+/* Decodes the image file at path into *out for an image texture: the
+ * scene's own (scene_images.c) shares one decoding between the textures of
+ * one file. `user` is the caller's. */
+typedef glint_status (*image_load_fn)(void *user, const char *path, texture_image *out, glint_error *err);
+
 typedef struct texture {
     char *name;                /* may be NULL */
     const texture_kind *kind;
@@ -35,7 +40,7 @@ struct texture_kind {
     param_table params;        /* offsets into glint_texture; the mapping is every kind's */
     /* Fills t's own fields from desc, which has passed the table's checks
      * (an image is decoded here); on failure t owns nothing. */
-    glint_status (*init)(texture *t, const glint_texture *desc, glint_error *err);
+    glint_status (*init)(texture *t, const glint_texture *desc, image_load_fn load, void *user, glint_error *err);
     /* The colour at texture coordinates (u, v). */
     color (*eval)(const texture *t, double u, double v);
 };
@@ -50,9 +55,9 @@ int texture_kind_count(void);
 const texture_kind *texture_kind_at(int i);
 
 /* Fills t (name aside) from desc after checking it against its kind's table
- * and its mapping, keeping a copy of desc (and of its file name); on
+ * and its mapping, an image decoded through load(user, ...), keeping a copy of desc (and of its file name); on
  * failure t owns nothing. */
-glint_status texture_init(texture *t, const glint_texture *desc, glint_error *err);
+glint_status texture_init(texture *t, const glint_texture *desc, image_load_fn load, void *user, glint_error *err);
 
 /* The keys of a mapping map: its type, then the keys the types read, in
  * an order where type k reads the first mapping_key_count(k). */

@@ -7,7 +7,8 @@
 # cannot be read an error; an output naming one of the run's own inputs is
 # refused before rendering, the input untouched; a replaced image keeps its
 # mode; a link as the output has its target replaced; a legal 250-character
-# name is written.
+# name is written; glTF buffers larger than half the memory, alone or
+# together, are refused before they are read.
 # Usage: files.sh PATH/TO/glint
 . "$(dirname "$0")/lib/harness.sh"
 small=(-w 8 -h 8 --spp 1 --quiet)
@@ -59,6 +60,23 @@ gltf own.bin model/own.gltf
 expect 0 "" -- model/own.gltf "${small[@]}" -o a.png
 check "a buffer in the model's folder is read" [ -s a.png ]
 rm -f a.png
+
+# Assimp reads a buffer whole: one larger than half the machine's memory
+# (a sparse file, as large as the memory) is refused before a byte of it is
+# read, and so is one that fits alone but not with the buffer before it.
+memory=$(($(getconf _PHYS_PAGES) * $(getconf PAGESIZE)))
+truncate -s "$memory" model/huge.bin
+gltf huge.bin model/huge.gltf
+expect 1 "glint: model/huge.gltf: buffer 'model/huge.bin' is too large to import: $memory bytes, which with the model come to more than half of this machine's memory ($memory bytes)" -- model/huge.gltf "${small[@]}" -o a.png
+truncate -s $((memory / 3)) model/third-1.bin model/third-2.bin
+printf '{"asset":{"version":"2.0"},"scene":0,"scenes":[{"nodes":[0]}],"nodes":[{"mesh":0}],
+"meshes":[{"primitives":[{"attributes":{"POSITION":0}},{"attributes":{"POSITION":1}}]}],
+"buffers":[{"uri":"third-1.bin","byteLength":36},{"uri":"third-2.bin","byteLength":36}],
+"bufferViews":[{"buffer":0,"byteLength":36},{"buffer":1,"byteLength":36}],
+"accessors":[{"bufferView":0,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]},
+{"bufferView":1,"componentType":5126,"count":3,"type":"VEC3","min":[0,0,0],"max":[1,1,0]}]}\n' >model/thirds.gltf
+expect 1 "glint: model/thirds.gltf: buffer 'model/third-2.bin' is too large to import: $((memory / 3)) bytes, which with the model and the buffers before it come to more than half of this machine's memory ($memory bytes)" -- model/thirds.gltf "${small[@]}" -o a.png
+rm -f model/huge.bin model/third-1.bin model/third-2.bin
 
 # Only a missing MTL file may be skipped, with a warning; the image is made.
 printf "mtllib none.mtl\n$triangle" >no-mtl.obj

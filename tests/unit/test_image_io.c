@@ -27,6 +27,7 @@
 #include "image/png_encode.h"
 #include "image/srgb.h"
 #include "image/texture_image.h"
+#include "scene/scene.h"
 
 #define PATH_SIZE 1024
 
@@ -998,6 +999,63 @@ static void test_load_png_chunk_past_end(void **state)
     texture_image_free(&tex);
 }
 
+/* Textures naming one file, by its name or through a link, share one
+ * decoding, which outlives the texture that made it; another file is
+ * decoded on its own. */
+static void test_textures_share_decoded_file(void **state)
+{
+    static const unsigned char grey[4] = {0, 64, 128, 255};
+    char path[PATH_SIZE], link_path[PATH_SIZE], other[PATH_SIZE];
+    glint_error err = {0};
+    tmp_path(path, "shared.png");
+    tmp_path(link_path, "shared-link.png");
+    tmp_path(other, "other.png");
+    write_png8(path, 2, 2, PNG_FORMAT_GRAY, grey, NULL, 0);
+    write_png8(other, 2, 2, PNG_FORMAT_GRAY, grey, NULL, 0);
+    unlink(link_path);
+    assert_int_equal(symlink(path, link_path), 0);
+    glint_scene *scene = glint_scene_new();
+    glint_mapping uv = {.kind = GLINT_MAP_UV};
+    int a = glint_scene_add_image_file(scene, "a", path, uv, &err);
+    int b = glint_scene_add_image_file(scene, "b", link_path, uv, &err);
+    int c = glint_scene_add_image_file(scene, "c", other, uv, &err);
+    assert_true(a >= 0 && b >= 0 && c >= 0);
+    assert_ptr_equal(scene->textures[a].image.srgb, scene->textures[b].image.srgb);
+    assert_ptr_not_equal(scene->textures[a].image.srgb, scene->textures[c].image.srgb);
+    assert_int_equal(scene->image_count, 2);
+    assert_int_equal(scene->image_bytes, 2 * 3 * 4);
+    assert_true(texture_image_at(&scene->textures[b].image, 3) == (float)glint_srgb_to_linear(64 / 255.0));
+    glint_scene_free(scene);
+}
+
+/* A file whose pixels would take the scene's decoded images past 4 GiB is
+ * refused, the scene's count unchanged; one that fits exactly is taken. */
+static void test_textures_within_budget(void **state)
+{
+    static const unsigned char grey[4] = {0, 64, 128, 255};
+    char path[PATH_SIZE], other[PATH_SIZE], want[PATH_SIZE + 200];
+    glint_error err = {0};
+    tmp_path(path, "budget.png");
+    tmp_path(other, "budget-2.png");
+    write_png8(path, 2, 2, PNG_FORMAT_GRAY, grey, NULL, 0);
+    write_png8(other, 2, 2, PNG_FORMAT_GRAY, grey, NULL, 0);
+    glint_scene *scene = glint_scene_new();
+    glint_mapping uv = {.kind = GLINT_MAP_UV};
+    scene->image_bytes = SCENE_MAX_IMAGE_BYTES - 11; /* as if other images had taken the rest */
+    snprintf(want, sizeof want,
+             "texture '%s' is too much: its 12 bytes of pixels would take the scene's textures past the limit of "
+             "4294967296 bytes (4 GiB)",
+             path);
+    assert_int_equal(glint_scene_add_image_file(scene, "a", path, uv, &err), -1);
+    assert_int_equal(err.status, GLINT_ERR_INVALID);
+    assert_string_equal(err.message, want);
+    assert_int_equal(scene->image_bytes, SCENE_MAX_IMAGE_BYTES - 11);
+    scene->image_bytes = SCENE_MAX_IMAGE_BYTES - 12;
+    assert_true(glint_scene_add_image_file(scene, "b", other, uv, &err) >= 0);
+    assert_true(scene->image_bytes == SCENE_MAX_IMAGE_BYTES);
+    glint_scene_free(scene);
+}
+
 static void test_load_grey_png(void **state)
 {
     static const unsigned char grey[4] = {0, 64, 128, 255};
@@ -1257,6 +1315,8 @@ int main(void)
         cmocka_unit_test(test_load_oversized_png),
         cmocka_unit_test(test_load_png_chunk_past_end),
         cmocka_unit_test(test_load_grey_png),
+        cmocka_unit_test(test_textures_share_decoded_file),
+        cmocka_unit_test(test_textures_within_budget),
         cmocka_unit_test(test_load_palette_and_alpha_png),
         cmocka_unit_test(test_load_16bit_png),
         cmocka_unit_test(test_load_jpeg_memory),

@@ -1,0 +1,65 @@
+/* scene_images.c - the image files a scene's textures decode, each once.
+ * Four textures naming one 16384 x 16384 PNG would otherwise decode it
+ * four times, 3 GB; they share one decoding, and all decodings of a scene
+ * together stay within SCENE_MAX_IMAGE_BYTES. */
+#include <stdlib.h>
+#include <sys/stat.h>
+#include "core/array.h"
+#include "core/error.h"
+#include "scene/scene.h"
+
+/* One decoded file, known by device and inode. */
+typedef struct scene_image {
+    dev_t dev;
+    ino_t ino;
+    texture_image image;
+} scene_image;
+
+glint_status scene_load_image(void *user, const char *path, texture_image *out, glint_error *err)
+{
+    glint_scene *scene = user;
+    struct stat st;
+    /* A file that cannot be found is decoded as it is, for the decoder's
+     * message; it is never kept. */
+    bool known = stat(path, &st) == 0;
+    for (size_t i = 0; known && i < scene->image_count; i++) {
+        const scene_image *si = &scene->images[i];
+        if (si->dev == st.st_dev && si->ino == st.st_ino) {
+            *out = texture_image_borrow(si->image.width, si->image.height, si->image.srgb);
+            return GLINT_OK;
+        }
+    }
+    if (known && !array_reserve((void **)&scene->images, &scene->image_cap, scene->image_count + 1,
+                                sizeof *scene->images))
+        return error_set(err, GLINT_ERR_NOMEM, "out of memory decoding texture '%s'", path);
+    texture_image img;
+    glint_status s = texture_image_load_file(&img, path, err);
+    if (s)
+        return s;
+    unsigned long long bytes = 3ULL * (unsigned long long)img.width * (unsigned long long)img.height;
+    if (bytes > SCENE_MAX_IMAGE_BYTES - scene->image_bytes) {
+        texture_image_free(&img);
+        return error_set(err, GLINT_ERR_INVALID,
+                         "texture '%s' is too much: its %llu bytes of pixels would take the scene's textures past "
+                         "the limit of %llu bytes (4 GiB)",
+                         path, bytes, SCENE_MAX_IMAGE_BYTES);
+    }
+    scene->image_bytes += bytes;
+    if (!known) {
+        *out = img;
+        return GLINT_OK;
+    }
+    scene->images[scene->image_count++] = (scene_image){st.st_dev, st.st_ino, img};
+    *out = texture_image_borrow(img.width, img.height, img.srgb);
+    return GLINT_OK;
+}
+
+void scene_free_images(glint_scene *scene)
+{
+    for (size_t i = 0; i < scene->image_count; i++)
+        texture_image_free(&scene->images[i].image);
+    free(scene->images);
+    scene->images = NULL;
+    scene->image_count = scene->image_cap = 0;
+    scene->image_bytes = 0;
+}
