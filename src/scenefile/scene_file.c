@@ -196,13 +196,15 @@ static char *read_all(FILE *f, const char *name, size_t *size, glint_error *err)
 }
 
 /* Reads a whole file (bounded), with *st its status; NULL with a message in
- * err on failure. */
-static char *slurp(const char *path, size_t *size, struct stat *st, glint_error *err)
+ * err on failure: "cannot include" for an include, which is what the user
+ * wrote at the include's place. */
+static char *slurp(const char *path, bool include, size_t *size, struct stat *st, glint_error *err)
 {
     int errnum;
     FILE *f = open_file_stream(path, st, &errnum);
     if (!f) {
-        error_set(err, GLINT_ERR_IO, "cannot read scene '%s': %s", path, open_file_reason(errnum));
+        error_set(err, GLINT_ERR_IO, "cannot %s '%s': %s", include ? "include" : "read scene", path,
+                  open_file_reason(errnum));
         return NULL;
     }
     char *data = NULL;
@@ -255,7 +257,7 @@ static void read_file(loader *l, const char *path, const ynode *from)
     glint_error err;
     size_t size = 0;
     struct stat st;
-    char *data = slurp(path, &size, &st, &err);
+    char *data = slurp(path, from != NULL, &size, &st, &err);
     if (data && scene_note_file(l->scene, &st, &err)) {
         free(data);
         data = NULL;
