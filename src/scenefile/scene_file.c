@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include "core/array.h"
 #include "core/error.h"
+#include "core/message_fit.h"
 #include "core/open_file.h"
 #include "scene/scene.h"
 #include "scenefile/loader.h"
@@ -157,7 +158,7 @@ static void read_bytes(loader *l, const char *data, size_t size, const char *nam
     if (empty && root) {
         /* Rendering black for an empty scene hides a wrong path or an
          * editor's lost save. An empty include is fine: a placeholder. */
-        char msg[600];
+        char msg[MESSAGE_ROOM];
         snprintf(msg, sizeof msg, "%s: the file holds no scene", name);
         diag_raw(&l->d, GLINT_ERR_INVALID, msg);
         return;
@@ -225,7 +226,7 @@ static void read_file(loader *l, const char *path, const ynode *from)
         if (from)
             diag_at(&l->d, from, "cannot include '%s': %s", path, strerror(errno));
         else {
-            char msg[600];
+            char msg[MESSAGE_ROOM];
             snprintf(msg, sizeof msg, "cannot read scene '%s': %s", path, strerror(errno));
             diag_raw(&l->d, GLINT_ERR_IO, msg);
         }
@@ -296,7 +297,7 @@ static void finish(loader *l, const char *name)
         if (s[i] && where[i])
             diag_error(&l->d, where[i], &err);
         else if (s[i]) {
-            char msg[600];
+            char msg[MESSAGE_ROOM];
             snprintf(msg, sizeof msg, "%s: %s", name, err.message);
             diag_raw(&l->d, s[i], msg);
         }
