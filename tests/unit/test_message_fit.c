@@ -1,6 +1,6 @@
 /* test_message_fit.c - messages too long for a glint_error keep their
  * reason: the longest path loses its middle (core/message_fit.h), in
- * error_set and in the scene loader's reports, never the end. */
+ * error_set, in the scene loader's reports and in warnings, never the end. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -10,6 +10,7 @@
 #include <string.h>
 #include "core/error.h"
 #include "core/message_fit.h"
+#include "scene/scene.h"
 
 /* A path of `parts` folders of 60 letters each, then name. */
 static void long_path(char *out, size_t size, int parts, const char *name)
@@ -122,6 +123,24 @@ static void test_scene_problem_keeps_the_reason(void **state)
     assert_non_null(strstr(err.message, "..."));
 }
 
+/* A warning (a missing MTL file) is fitted the same way. */
+static void test_warning_keeps_the_reason(void **state)
+{
+    (void)state;
+    char path[1024];
+    long_path(path, sizeof path, 12, "model.mtl");
+    glint_scene *scene = glint_scene_new();
+    assert_non_null(scene);
+    glint_error err;
+    assert_int_equal(scene_warn(scene, &err, "m.obj: MTL file '%s' does not exist: its materials are grey", path),
+                     GLINT_OK);
+    const char *warning = glint_scene_warning(scene, 0), *end = "/model.mtl' does not exist: its materials are grey";
+    assert_int_equal(strlen(warning), sizeof err.message - 1);
+    assert_memory_equal(warning, "m.obj: MTL file '/000", 21);
+    assert_string_equal(warning + strlen(warning) - strlen(end), end);
+    glint_scene_free(scene);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -132,6 +151,7 @@ int main(void)
         cmocka_unit_test(test_cut_keeps_utf8_whole),
         cmocka_unit_test(test_error_set_keeps_the_reason),
         cmocka_unit_test(test_scene_problem_keeps_the_reason),
+        cmocka_unit_test(test_warning_keeps_the_reason),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
