@@ -193,9 +193,10 @@ static bool note_hidden_colour(builder *b, ynode *n, yaml_mark_t mark)
 static void reader_message(const builder *b, const yaml_parser_t *p, yaml_mark_t *mark, char *msg, size_t size)
 {
     const unsigned char *data = (const unsigned char *)b->data;
+    const char *problem = p->problem ? p->problem : "";
     size_t at = p->problem_offset;
-    bool utf8 = strstr(p->problem, "UTF-8") || strstr(p->problem, "Unicode");
-    if (strstr(p->problem, "trailing"))
+    bool utf8 = strstr(problem, "UTF-8") || strstr(problem, "Unicode");
+    if (strstr(problem, "trailing"))
         for (int back = 0; back < 3 && at > 0 && data[at] < 0xC0; back++)
             at--;
     *mark = (yaml_mark_t){.index = at};
