@@ -138,8 +138,12 @@ static const struct aiScene *assimp_read(assimp_source *src, const char *file, d
     else if (strncmp(msg, "No suitable reader found", 24) == 0)
         error_set(err, GLINT_ERR_INVALID,
                   "%s: no model reader accepts it (a damaged file, or another format under this name)", file);
+    /* Assimp is C++: running out of memory reaches its C API as the
+     * exception's name, which means nothing to a user. */
+    else if (strstr(msg, "bad_alloc"))
+        error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", file);
     else
-        error_set(err, strstr(msg, "bad_alloc") ? GLINT_ERR_NOMEM : GLINT_ERR_INVALID, "%s: %s", file, msg);
+        error_set(err, GLINT_ERR_INVALID, "%s: %s", file, msg);
     return NULL;
 }
 

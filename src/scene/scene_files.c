@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include "core/array.h"
 #include "core/error.h"
+#include "core/message_fit.h"
 #include "scene/scene.h"
 
 #define MAX_WARNINGS 100
@@ -50,11 +51,12 @@ glint_status scene_warn(glint_scene *scene, glint_error *err, const char *format
 {
     if (scene->warning_count >= MAX_WARNINGS)
         return GLINT_OK;
-    char text[sizeof err->message];
+    char text[MESSAGE_ROOM];
     va_list ap;
     va_start(ap, format);
     vsnprintf(text, sizeof text, format, ap);
     va_end(ap);
+    message_fit(text, sizeof err->message);
     char *copy = strdup(text);
     if (!copy || !array_reserve((void **)&scene->warnings, &scene->warning_cap, (size_t)scene->warning_count + 1,
                                 sizeof *scene->warnings)) {

@@ -111,6 +111,16 @@ glint_status camera_validate(const glint_camera *c, glint_error *err)
     if (st)
         return st;
     vec3 view = v3_sub(c->look_at, c->position);
+    /* Past about 1e154 the squares in a length overflow, so normalising
+     * gives zero and the up test below would blame up. */
+    if (!isfinite(v3_length(view)))
+        return error_set(err, GLINT_ERR_INVALID,
+                         "camera position [%g, %g, %g] and look_at [%g, %g, %g] are too far apart: the view "
+                         "direction overflows",
+                         c->position.x, c->position.y, c->position.z, c->look_at.x, c->look_at.y, c->look_at.z);
+    if (!isfinite(v3_length(c->up)))
+        return error_set(err, GLINT_ERR_INVALID, "camera up [%g, %g, %g] is too long: its length overflows",
+                         c->up.x, c->up.y, c->up.z);
     if (v3_length(view) == 0)
         return error_set(err, GLINT_ERR_INVALID, "camera position and look_at must differ");
     if (v3_length(v3_cross(v3_normalize(view), v3_normalize(c->up))) < 1e-9)

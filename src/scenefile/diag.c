@@ -2,14 +2,19 @@
 #include <stdarg.h>
 #include <stdio.h>
 #include <string.h>
+#include "core/message_fit.h"
 #include "scenefile/diag.h"
 
-void diag_raw(diag *d, glint_status status, const char *message)
+void diag_raw(diag *d, glint_status status, const char *text)
 {
     if (d->closed)
         return;
+    /* Every report fits a glint_error, as the first is kept in one. */
+    char message[MESSAGE_ROOM];
+    snprintf(message, sizeof message, "%s", text);
+    message_fit(message, sizeof d->first->message);
     if (d->count == 0 && d->first) {
-        snprintf(d->first->message, sizeof d->first->message, "%s", message);
+        memcpy(d->first->message, message, strlen(message) + 1);
         d->first->status = status;
         d->first_status = status;
     }
@@ -22,19 +27,19 @@ void diag_raw(diag *d, glint_status status, const char *message)
  * comment hid) says what the problem really is, instead of body. */
 static void report_at(diag *d, const ynode *n, glint_status status, const char *body)
 {
-    char line[512];
+    char line[MESSAGE_ROOM];
     if (n && n->note)
         body = n->note;
     if (n)
-        snprintf(line, sizeof line, "%s:%d:%d: %.400s", n->file, n->line, n->column, body);
+        snprintf(line, sizeof line, "%s:%d:%d: %s", n->file, n->line, n->column, body);
     else
-        snprintf(line, sizeof line, "%.500s", body);
+        snprintf(line, sizeof line, "%s", body);
     diag_raw(d, status, line);
 }
 
 void diag_at(diag *d, const ynode *n, const char *fmt, ...)
 {
-    char body[400];
+    char body[MESSAGE_ROOM / 2]; /* a path of PATH_MAX and words; the file's name comes before it */
     va_list ap;
     va_start(ap, fmt);
     vsnprintf(body, sizeof body, fmt, ap);

@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include "core/array.h"
 #include "core/error.h"
+#include "core/message_fit.h"
 #include "core/open_file.h"
 #include "scene/scene.h"
 #include "scenefile/loader.h"
@@ -157,7 +158,7 @@ static void read_bytes(loader *l, const char *data, size_t size, const char *nam
     if (empty && root) {
         /* Rendering black for an empty scene hides a wrong path or an
          * editor's lost save. An empty include is fine: a placeholder. */
-        char msg[600];
+        char msg[MESSAGE_ROOM];
         snprintf(msg, sizeof msg, "%s: the file holds no scene", name);
         diag_raw(&l->d, GLINT_ERR_INVALID, msg);
         return;
@@ -196,13 +197,15 @@ static char *read_all(FILE *f, const char *name, size_t *size, glint_error *err)
 }
 
 /* Reads a whole file (bounded), with *st its status; NULL with a message in
- * err on failure. */
-static char *slurp(const char *path, size_t *size, struct stat *st, glint_error *err)
+ * err on failure: "cannot include" for an include, which is what the user
+ * wrote at the include's place. */
+static char *slurp(const char *path, bool include, size_t *size, struct stat *st, glint_error *err)
 {
     int errnum;
     FILE *f = open_file_stream(path, st, &errnum);
     if (!f) {
-        error_set(err, GLINT_ERR_IO, "cannot read scene '%s': %s", path, open_file_reason(errnum));
+        error_set(err, GLINT_ERR_IO, "cannot %s '%s': %s", include ? "include" : "read scene", path,
+                  open_file_reason(errnum));
         return NULL;
     }
     char *data = NULL;
@@ -223,7 +226,7 @@ static void read_file(loader *l, const char *path, const ynode *from)
         if (from)
             diag_at(&l->d, from, "cannot include '%s': %s", path, strerror(errno));
         else {
-            char msg[600];
+            char msg[MESSAGE_ROOM];
             snprintf(msg, sizeof msg, "cannot read scene '%s': %s", path, strerror(errno));
             diag_raw(&l->d, GLINT_ERR_IO, msg);
         }
@@ -255,7 +258,7 @@ static void read_file(loader *l, const char *path, const ynode *from)
     glint_error err;
     size_t size = 0;
     struct stat st;
-    char *data = slurp(path, &size, &st, &err);
+    char *data = slurp(path, from != NULL, &size, &st, &err);
     if (data && scene_note_file(l->scene, &st, &err)) {
         free(data);
         data = NULL;
@@ -294,7 +297,7 @@ static void finish(loader *l, const char *name)
         if (s[i] && where[i])
             diag_error(&l->d, where[i], &err);
         else if (s[i]) {
-            char msg[600];
+            char msg[MESSAGE_ROOM];
             snprintf(msg, sizeof msg, "%s: %s", name, err.message);
             diag_raw(&l->d, s[i], msg);
         }

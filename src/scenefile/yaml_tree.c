@@ -186,12 +186,39 @@ static bool note_hidden_colour(builder *b, ynode *n, yaml_mark_t mark)
     return !n->note;
 }
 
+/* The message and place of a byte libyaml's reader refuses (NUL, control
+ * characters, text not in UTF-8): the reader sets only the byte offset,
+ * its mark stays at 1:1. A bad byte after a UTF-8 lead byte is placed at
+ * the lead, the character the user wrote. */
+static void reader_message(const builder *b, const yaml_parser_t *p, yaml_mark_t *mark, char *msg, size_t size)
+{
+    const unsigned char *data = (const unsigned char *)b->data;
+    const char *problem = p->problem ? p->problem : "";
+    size_t at = p->problem_offset;
+    bool utf8 = strstr(problem, "UTF-8") || strstr(problem, "Unicode");
+    if (strstr(problem, "trailing"))
+        for (int back = 0; back < 3 && at > 0 && data[at] < 0xC0; back++)
+            at--;
+    *mark = (yaml_mark_t){.index = at};
+    yaml_advance(b->data, 0, at, &mark->line, &mark->column);
+    if (utf8)
+        snprintf(msg, size, "the file is not UTF-8 text (byte 0x%02x): save it as UTF-8", data[at]);
+    else if (data[at] == 0)
+        snprintf(msg, size, "a NUL byte: scene files are text");
+    else
+        snprintf(msg, size, "control character 0x%02x: scene files are text", data[at]);
+}
+
 /* libyaml's message for a syntax error, in plain words where it would
  * puzzle; sets *mark to where the mistake is. */
 static void syntax_message(const builder *b, const yaml_parser_t *p, yaml_mark_t *mark, char *msg, size_t size)
 {
     const char *problem = p->problem ? p->problem : "unknown";
     *mark = p->problem_mark;
+    if (p->error == YAML_READER_ERROR && p->problem_offset < b->size) {
+        reader_message(b, p, mark, msg, size);
+        return;
+    }
     if (strstr(problem, "cannot start any token") && yaml_tab_indent(b->data, b->size, mark->index)) {
         snprintf(msg, size, "YAML forbids tabs for indentation: indent with spaces");
         return;
@@ -324,6 +351,10 @@ glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *na
     while (!s && !done) {
         yaml_event_t ev;
         if (!yaml_parser_parse(&parser, &ev)) {
+            if (parser.error == YAML_MEMORY_ERROR) {
+                s = out_of_memory(&b);
+                break;
+            }
             char msg[400];
             yaml_mark_t mark;
             syntax_message(&b, &parser, &mark, msg, sizeof msg);

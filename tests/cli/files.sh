@@ -39,7 +39,7 @@ mkfifo fifo
 gltf fifo fifo-buffer.gltf
 expect 1 "glint: fifo-buffer.gltf: cannot read buffer 'fifo': not a regular file" -- fifo-buffer.gltf "${small[@]}" -o a.png
 printf 'include: fifo\n' >fifo-include.yaml
-expect 1 "fifo-include.yaml:1:10: cannot read scene 'fifo': not a regular file" -- fifo-include.yaml "${small[@]}" -o a.png
+expect 1 "fifo-include.yaml:1:10: cannot include 'fifo': not a regular file" -- fifo-include.yaml "${small[@]}" -o a.png
 expect 1 "glint: cannot read texture 'fifo': not a regular file" -- "${small[@]}" --texture moon=fifo -o a.png
 ln -s fifo fifo.obj
 expect 1 "glint: fifo.obj: cannot read: not a regular file" -- fifo.obj "${small[@]}" -o a.png

@@ -74,5 +74,38 @@ for threads in 1 2; do
 done
 # The sweep must reach limits where the renders finish, or it tested nothing.
 [ "$finished" -gt 0 ] || { echo "FAIL: no render finished under any limit"; failed=$((failed + 1)); }
+
+# Running out of memory while parsing is "out of memory" and exit 5 too,
+# never a parser's own words: libyaml's failing allocations once read
+# "1:1: syntax error: unknown" (exit 1), Assimp's "std::bad_alloc". A
+# scene of one 40 MB value (libyaml buffers it whole) is checked and a
+# 180,000-triangle PLY model (read by Assimp) rendered under rising
+# limits; each run passes or fails so, and some must fail with the
+# parser's message, or the sweep missed the parse.
+{ printf 'settings:\n  output: '; head -c 40000000 /dev/zero | tr '\0' a; printf '.png\n'; } >long.yaml
+awk 'NR == 1 { print "ply\nformat ascii 1.0\nelement vertex 90601\nproperty float x\nproperty float y\n" \
+              "property float z\nelement face 180000\nproperty list uchar int vertex_indices\nend_header" }
+     /^v / { print $2, $3, $4 } /^f / { print 3, $2 - 1, $3 - 1, $4 - 1 }' grid.obj >grid.ply
+# parse_sweep EXACT ARGS...: glint ARGS under limits from $start up; EXACT
+# is the first line of a failure in the parse, which must occur.
+parse_sweep() {
+    local exact=$1 limit status first seen=0
+    shift
+    for ((limit = start; limit <= start + 300000; limit += 10000)); do
+        (ulimit -v "$limit" && exec "$GLINT" "$@") >/dev/null 2>err.txt
+        status=$?
+        first=$(head -n 1 err.txt)
+        [ "$first" = "$exact" ] && seen=1
+        if [ "$status" -eq 0 ] || { [ "$status" -eq 5 ] && [[ "$first" == *"out of memory"* ]]; }; then
+            passed=$((passed + 1))
+        else
+            echo "FAIL: ulimit -v $limit: glint ${*:1:2}: exit $status: $(head -c 300 err.txt | tr '\n' '|')"
+            failed=$((failed + 1))
+        fi
+    done
+    [ "$seen" -eq 1 ] || { echo "FAIL: glint $1: no run failed with '$exact'"; failed=$((failed + 1)); }
+}
+parse_sweep "long.yaml: out of memory reading the scene" --check long.yaml
+parse_sweep "glint: grid.ply: out of memory" grid.ply -w 8 -h 8 --spp 1 -q -o out.png
 echo "$passed passed, $failed failed (limits from $start KiB)"
 [ "$failed" -eq 0 ]

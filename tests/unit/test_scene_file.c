@@ -1517,6 +1517,17 @@ static const bad_scene BAD[] = {
      "  position: [1, 2, 3]\n"
      "  look_at: [1, 2, 3]\n",
      "bad.yaml:2:3: camera position and look_at must differ", 1},
+    {"camera_too_far",
+     "camera:\n"
+     "  position: [5e300, 0, 0]\n"
+     "  look_at: [0, 0, 0]\n",
+     "bad.yaml:2:3: camera position [5e+300, 0, 0] and look_at [0, 0, 0] are too far apart: the view direction "
+     "overflows",
+     1},
+    {"camera_up_too_long",
+     "camera:\n"
+     "  up: [0, 1e200, 0]\n",
+     "bad.yaml:2:3: camera up [0, 1e+200, 0] is too long: its length overflows", 1},
     {"ior_0",
      "materials:\n"
      "  glass: {refraction: 1, ior: 0}\n",

@@ -1,0 +1,20 @@
+/* message_fit.h - a message too long for its buffer keeps its reason: the
+ * longest word in it (a path, mostly) loses its middle instead of the
+ * message losing its end. */
+#ifndef GLINT_CORE_MESSAGE_FIT_H
+#define GLINT_CORE_MESSAGE_FIT_H
+
+#include <stddef.h>
+
+/* Room to format a message in before fitting it: two paths of PATH_MAX and
+ * the words around them. */
+#define MESSAGE_ROOM 10240
+
+/* Shortens the NUL-terminated text in place to fewer than `size` bytes:
+ * while it is too long, the middle of its longest word (a run without
+ * spaces or quotes) becomes "...", keeping the word's first third and last
+ * two thirds (a file's name and its line:column). Only when no word is
+ * longer than 27 bytes is the end cut. Never splits a UTF-8 character. */
+void message_fit(char *text, size_t size);
+
+#endif
