@@ -13,9 +13,8 @@ glint_status error_set(glint_error *err, glint_status status, const char *fmt, .
         char text[MESSAGE_ROOM];
         va_list ap;
         va_start(ap, fmt);
-        vsnprintf(text, sizeof text, fmt, ap);
+        message_vformat(text, sizeof err->message, fmt, ap);
         va_end(ap);
-        message_fit(text, sizeof err->message);
         memcpy(err->message, text, strlen(text) + 1);
     }
     return status;

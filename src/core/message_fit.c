@@ -1,6 +1,7 @@
 /* message_fit.c - shortening a message's longest word in the middle, so
  * that a long path never pushes the reason out of a glint_error. */
 #include <stdbool.h>
+#include <stdio.h>
 #include <string.h>
 #include "core/message_fit.h"
 
@@ -55,4 +56,10 @@ void message_fit(char *text, size_t size)
             len--;
         text[len] = '\0';
     }
+}
+
+void message_vformat(char *text, size_t size, const char *fmt, va_list ap)
+{
+    vsnprintf(text, MESSAGE_ROOM, fmt, ap);
+    message_fit(text, size);
 }

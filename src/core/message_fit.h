@@ -4,6 +4,7 @@
 #ifndef GLINT_CORE_MESSAGE_FIT_H
 #define GLINT_CORE_MESSAGE_FIT_H
 
+#include <stdarg.h>
 #include <stddef.h>
 
 /* Room to format a message in before fitting it: two paths of PATH_MAX and
@@ -16,5 +17,9 @@
  * two thirds (a file's name and its line:column). Only when no word is
  * longer than 27 bytes is the end cut. Never splits a UTF-8 character. */
 void message_fit(char *text, size_t size);
+
+/* Formats fmt with ap into text, MESSAGE_ROOM bytes, then fits it to
+ * fewer than `size` bytes (message_fit). */
+void message_vformat(char *text, size_t size, const char *fmt, va_list ap);
 
 #endif

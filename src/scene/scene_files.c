@@ -54,9 +54,8 @@ glint_status scene_warn(glint_scene *scene, glint_error *err, const char *format
     char text[MESSAGE_ROOM];
     va_list ap;
     va_start(ap, format);
-    vsnprintf(text, sizeof text, format, ap);
+    message_vformat(text, sizeof err->message, format, ap);
     va_end(ap);
-    message_fit(text, sizeof err->message);
     char *copy = strdup(text);
     if (!copy || !array_reserve((void **)&scene->warnings, &scene->warning_cap, (size_t)scene->warning_count + 1,
                                 sizeof *scene->warnings)) {
