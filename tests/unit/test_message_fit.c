@@ -67,7 +67,7 @@ static void test_two_paths_both_shortened(void **state)
 static void test_no_long_word_cuts_the_end_whole_characters(void **state)
 {
     (void)state;
-    char text[600] = "";
+    char text[700] = ""; /* 100 words of 6 bytes, and the NUL */
     for (int i = 0; i < 100; i++)
         strcat(text, "\xc3\xa9t\xc3\xa9 "); /* "été ", 6 bytes */
     message_fit(text, 20);
