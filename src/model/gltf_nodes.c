@@ -181,8 +181,9 @@ static bool read_indices(reader *r, uint64_t **list, size_t *count, size_t *cap)
         }
         bool negative = r->i < r->size && r->t[r->i] == '-';
         r->i += negative;
-        while (r->i < r->size && r->t[r->i] >= '0' && r->t[r->i] <= '9')
-            v = v > NO_NODE / 10 - 1 ? NO_NODE : v * 10 + (r->t[r->i++] - '0');
+        /* Every digit is passed over, a number too large for a node included. */
+        for (; r->i < r->size && r->t[r->i] >= '0' && r->t[r->i] <= '9'; r->i++)
+            v = v > NO_NODE / 10 - 1 ? NO_NODE : v * 10 + (uint64_t)(r->t[r->i] - '0');
         bool integer = v & NAMED || (r->i > start + negative && (r->i >= r->size || !strchr(".eE", r->t[r->i])));
         r->i = start;
         if (!skip_value(r))
