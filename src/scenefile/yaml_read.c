@@ -4,6 +4,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <strings.h>
+#include "core/short_decimal.h"
 #include "scenefile/yaml_read.h"
 
 /* Merge keys may merge maps that merge maps; a cycle is impossible (aliases
@@ -121,6 +122,8 @@ bool yr_is_list(reader *r, const ynode *n, const char *what)
 static bool parse_text(const char *text, double *out, const char **why)
 {
     *why = "a number";
+    if (short_decimal(text, out))
+        return true;
     if (text[0] == '\0')
         return false;
     char *end;
