@@ -9,6 +9,7 @@
 #include "core/error.h"
 #include "core/id_table.h"
 #include "scenefile/yaml_hints.h"
+#include "scenefile/yaml_quick.h"
 #include "scenefile/yaml_tree.h"
 
 /* Deeper nesting than this is refused: nothing in a scene needs it, and the
@@ -334,6 +335,50 @@ static glint_status on_event(builder *b, const yaml_event_t *ev, bool *done)
     }
 }
 
+/* libyaml's events, each to the builder, up to the stream's end or the
+ * first problem. */
+static glint_status parse_with_libyaml(builder *b, const char *data, size_t size)
+{
+    yaml_parser_t parser;
+    if (!yaml_parser_initialize(&parser))
+        return out_of_memory(b);
+    yaml_parser_set_input_string(&parser, (const unsigned char *)data, size);
+    glint_status s = GLINT_OK;
+    bool done = false;
+    while (!s && !done) {
+        yaml_event_t ev;
+        if (!yaml_parser_parse(&parser, &ev)) {
+            if (parser.error == YAML_MEMORY_ERROR) {
+                s = out_of_memory(b);
+                break;
+            }
+            char msg[400];
+            yaml_mark_t mark;
+            syntax_message(b, &parser, &mark, msg, sizeof msg);
+            s = fail_at(b, mark, msg);
+            break;
+        }
+        s = on_event(b, &ev, &done);
+        yaml_event_delete(&ev);
+    }
+    yaml_parser_delete(&parser);
+    return s;
+}
+
+/* yaml_quick_parse's sink: the builder. */
+static int take_quick_event(void *user, const yaml_event_t *ev)
+{
+    bool done = false;
+    return (int)on_event(user, ev, &done);
+}
+
+static bool quick_reader = true;
+
+void ydoc_use_quick_reader(bool on)
+{
+    quick_reader = on;
+}
+
 glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *name, long alias_room,
                         glint_error *err)
 {
@@ -342,35 +387,36 @@ glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *na
     doc->name = strdup(name);
     if (!doc->name)
         return error_set(err, GLINT_ERR_NOMEM, "out of memory reading '%s'", name);
-    yaml_parser_t parser;
-    if (!yaml_parser_initialize(&parser))
-        return out_of_memory(&b);
-    yaml_parser_set_input_string(&parser, (const unsigned char *)data, size);
-    glint_status s = GLINT_OK;
-    bool done = false;
-    while (!s && !done) {
-        yaml_event_t ev;
-        if (!yaml_parser_parse(&parser, &ev)) {
-            if (parser.error == YAML_MEMORY_ERROR) {
-                s = out_of_memory(&b);
-                break;
-            }
-            char msg[400];
-            yaml_mark_t mark;
-            syntax_message(&b, &parser, &mark, msg, sizeof msg);
-            s = fail_at(&b, mark, msg);
-            break;
-        }
-        s = on_event(&b, &ev, &done);
-        yaml_event_delete(&ev);
-    }
-    yaml_parser_delete(&parser);
+    /* The quick reader's dry run says whether the text is all its own, so
+     * that the builder never sees half a file from it; given the same text
+     * its second run cannot then refuse it, and only the builder's status
+     * can come back. */
+    glint_status s = quick_reader && yaml_quick_parse(data, size, NULL, NULL) == 0
+                         ? (glint_status)yaml_quick_parse(data, size, take_quick_event, &b)
+                         : parse_with_libyaml(&b, data, size);
     free(b.pending);
     free(b.latest);
     id_table_free(&b.anchor_ids);
     if (s)
         ydoc_free(doc);
     return s;
+}
+
+static bool same_text(const char *a, const char *b)
+{
+    return a == b || (a && b && strcmp(a, b) == 0);
+}
+
+bool ynode_same(const ynode *a, const ynode *b)
+{
+    if (!a || !b)
+        return a == b;
+    bool same = a->kind == b->kind && a->quoted == b->quoted && a->line == b->line && a->column == b->column &&
+                a->count == b->count && a->expanded == b->expanded && same_text(a->value, b->value) &&
+                same_text(a->note, b->note);
+    for (int i = 0; same && i < a->count; i++)
+        same = ynode_same(a->items[i], b->items[i]);
+    return same;
 }
 
 void ydoc_free(ydoc *doc)

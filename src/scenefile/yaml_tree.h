@@ -68,6 +68,15 @@ typedef struct ydoc {
 glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *name, long alias_room,
                         glint_error *err);
 
+/* Whether ydoc_parse reads the text it can with yaml_quick.h's reader
+ * (the default) or all of it with libyaml: tests and the fuzzer compare
+ * the two. */
+void ydoc_use_quick_reader(bool on);
+
+/* Whether the trees at a and b (either may be NULL) are the same node for
+ * node: kinds, values, quoting, notes, lines and columns. */
+bool ynode_same(const ynode *a, const ynode *b);
+
 /* Frees every node of the document. */
 void ydoc_free(ydoc *doc);
 

@@ -3,8 +3,10 @@
  * sanitizers catch any crash, leak, overflow or hang in libyaml's use, the
  * tree builder, the alias/merge-key walker, includes and every section's
  * reader; a refused scene without an error message also counts as a crash.
- * The same bytes read as a stream (glint_scene_load_stream, `glint -`) must
- * load or be refused alike, with the same first message.
+ * The quick YAML reader and libyaml must read the bytes alike (the same
+ * tree, or the same first message). The same bytes read as a stream
+ * (glint_scene_load_stream, `glint -`) must load or be refused alike,
+ * with the same first message.
  * Problems are only counted (NULL report): the library must stay silent.
  * Relative includes and texture files resolve against the working
  * directory, since the input is named "fuzz.yaml" (tests/fuzz/README.md). */
@@ -15,11 +17,32 @@
 #include <stdlib.h>
 #include <string.h>
 #include "glint.h"
+#include "scenefile/yaml_tree.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 
+/* The quick YAML reader must read whatever it takes exactly as libyaml
+ * does: the same status and first message, or the same tree. */
+static void same_with_both_readers(const uint8_t *data, size_t size)
+{
+    ydoc quick, full;
+    glint_error quick_err, full_err;
+    quick_err.message[0] = full_err.message[0] = '\0';
+    glint_status a = ydoc_parse(&quick, (const char *)data, size, "fuzz.yaml", YAML_MAX_ALIAS_NODES, &quick_err);
+    ydoc_use_quick_reader(false);
+    glint_status b = ydoc_parse(&full, (const char *)data, size, "fuzz.yaml", YAML_MAX_ALIAS_NODES, &full_err);
+    ydoc_use_quick_reader(true);
+    if (a != b || strcmp(quick_err.message, full_err.message) != 0 || (!a && !ynode_same(quick.root, full.root)))
+        abort();
+    if (!a) {
+        ydoc_free(&quick);
+        ydoc_free(&full);
+    }
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
+    same_with_both_readers(data, size);
     glint_load_options options = {.report = NULL, .report_user = NULL, .max_errors = 0};
     glint_error err, stream_err;
     err.message[0] = stream_err.message[0] = '\0';
