@@ -24,23 +24,10 @@ tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
 # A million spheres on a 1000 x 1000 grid, one a line (about 60 MB: within
-# the 64 MiB a scene may have), seen from in front, with one light.
-awk 'BEGIN {
-    print "camera: {position: [500, 500, 1400], look_at: [500, 500, 0], fov: 45}"
-    print "lights: [{type: point, position: [500, 1500, 1000]}]"
-    print "materials:\n  m: {color: [0.8, 0.3, 0.2]}\nobjects:"
-    for (i = 0; i < 1000000; i++)
-        printf "- {type: sphere, material: m, center: [%d,%d,0], radius: .4}\n", i % 1000, int(i / 1000)
-}' >"$tmp/spheres.yaml"
-awk 'BEGIN {
-    print "textures:"
-    for (i = 0; i < 100000; i++)
-        printf "  t%d: {type: checker, size: %d}\n", i, i + 1
-    print "materials:"
-    for (i = 0; i < 100000; i++)
-        printf "  m%d: {texture: t%d}\n", i, 99999 - i
-    print "objects: [{type: sphere, material: m0, radius: 1}]"
-}' >"$tmp/names.yaml"
+# the 64 MiB a scene may have), seen from in front, with one light; and
+# 100,000 textures and materials.
+"$REPO/tools/huge_scene.sh" spheres 1000000 >"$tmp/spheres.yaml"
+"$REPO/tools/huge_scene.sh" names 100000 >"$tmp/names.yaml"
 
 # measure NAME TARGET_S TARGET_MIB ARGS...: runs glint ARGS RUNS times and
 # prints the median wall time, the peak memory and whether both are within

@@ -8,6 +8,7 @@
 # whose triangulation and normals once took minutes. Speed targets are in
 # bench/huge.sh, not here.
 # Usage: huge_scenes.sh PATH/TO/glint
+TOOLS=$(cd "$(dirname "$0")/../../tools" && pwd)
 source "$(dirname "$0")/lib/harness.sh"
 
 # expect_ok FILE REPORT: glint --check FILE exits 0 within the guard and
@@ -28,11 +29,8 @@ grid() {
     awk -v n="$1" -v w="$2" -v f="$3\n" 'BEGIN { for (i = 0; i < n; i++) printf f, i % w, int(i / w) }'
 }
 
-{
-    printf 'materials: {m: {color: [1, 0, 0]}}\nobjects:\n'
-    grid 250000 500 '- {type: sphere, material: m, center: [%d, %d, -9], radius: 0.4}'
-} >spheres.yaml
-expect_ok spheres.yaml "spheres.yaml: ok: 0 textures, 1 material, 250000 shapes, 0 lights"
+"$TOOLS/huge_scene.sh" spheres 250000 >spheres.yaml
+expect_ok spheres.yaml "spheres.yaml: ok: 0 textures, 1 material, 250000 shapes, 1 light"
 
 {
     printf 'materials: {m: {}}\nobjects: [{type: sphere, material: m, radius: 1}]\nlights:\n'
@@ -47,15 +45,7 @@ printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n' >tri.obj
 } >placements.yaml
 expect_ok placements.yaml "placements.yaml: ok: 0 textures, 2 materials, 0 shapes, 0 lights, 1 mesh (1 triangle) placed 60000 times"
 
-awk 'BEGIN {
-    print "textures:"
-    for (i = 0; i < 100000; i++)
-        printf "  t%d: {type: checker, size: %d}\n", i, i + 1
-    print "materials:"
-    for (i = 0; i < 100000; i++)
-        printf "  m%d: {texture: t%d}\n", i, 99999 - i
-    print "objects: [{type: sphere, material: m99999, radius: 1}]"
-}' >names.yaml
+"$TOOLS/huge_scene.sh" names 100000 >names.yaml
 expect_ok names.yaml "names.yaml: ok: 100000 textures, 100000 materials, 1 shape, 0 lights"
 
 # One face of 100,000 corners on a circle, and one whose corners go in
