@@ -2,6 +2,7 @@
 #ifndef GLINT_SCENE_SCENE_H
 #define GLINT_SCENE_SCENE_H
 
+#include "core/file_set.h"
 #include "core/id_table.h"
 #include "core/params.h"
 #include "geometry/mesh.h"
@@ -11,12 +12,6 @@
 #include "shading/texture.h"
 
 #include <sys/stat.h>
-
-/* A file a scene was read from, as the file system knows it. */
-typedef struct scene_file_id {
-    dev_t dev;
-    ino_t ino;
-} scene_file_id;
 
 struct glint_scene {
     glint_settings settings;
@@ -43,10 +38,10 @@ struct glint_scene {
     int instance_count;
     size_t instance_cap;
     char *output;             /* image path a scene file asked for, or NULL */
-    scene_file_id *inputs;    /* every file read to build it (scene_files.c) */
-    size_t input_count, input_cap;
-    struct scene_image *images; /* each image file decoded, once (scene_images.c) */
-    size_t image_count, image_cap;
+    file_set inputs;          /* every file read to build it (scene_files.c) */
+    file_set image_files;     /* each image file decoded, once (scene_images.c), */
+    texture_image *images;    /* and its pixels, at the same index */
+    size_t image_cap;
     unsigned long long image_bytes; /* their pixels' bytes, within SCENE_MAX_IMAGE_BYTES */
     char **warnings;          /* what it went on without, for the user */
     int warning_count;

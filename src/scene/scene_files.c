@@ -20,12 +20,8 @@
 
 glint_status scene_note_file(glint_scene *scene, const struct stat *st, glint_error *err)
 {
-    for (size_t i = 0; i < scene->input_count; i++)
-        if (scene->inputs[i].dev == st->st_dev && scene->inputs[i].ino == st->st_ino)
-            return GLINT_OK;
-    if (!array_reserve((void **)&scene->inputs, &scene->input_cap, scene->input_count + 1, sizeof *scene->inputs))
+    if (file_set_add(&scene->inputs, st->st_dev, st->st_ino) < 0)
         return error_set(err, GLINT_ERR_NOMEM, "out of memory");
-    scene->inputs[scene->input_count++] = (scene_file_id){st->st_dev, st->st_ino};
     return GLINT_OK;
 }
 
@@ -40,10 +36,9 @@ glint_status glint_scene_check_output(const glint_scene *scene, const char *path
     struct stat st;
     if (!scene || !path || stat(path, &st) != 0)
         return GLINT_OK;
-    for (size_t i = 0; i < scene->input_count; i++)
-        if (scene->inputs[i].dev == st.st_dev && scene->inputs[i].ino == st.st_ino)
-            return error_set(err, GLINT_ERR_INVALID,
-                             "will not write '%s': it is one of the files this scene was read from", path);
+    if (file_set_find(&scene->inputs, st.st_dev, st.st_ino) >= 0)
+        return error_set(err, GLINT_ERR_INVALID,
+                         "will not write '%s': it is one of the files this scene was read from", path);
     return GLINT_OK;
 }
 
@@ -81,5 +76,5 @@ void scene_files_free(glint_scene *scene)
     for (int i = 0; i < scene->warning_count; i++)
         free(scene->warnings[i]);
     free(scene->warnings);
-    free(scene->inputs);
+    file_set_free(&scene->inputs);
 }

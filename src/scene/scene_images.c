@@ -8,13 +8,6 @@
 #include "core/error.h"
 #include "scene/scene.h"
 
-/* One decoded file, known by device and inode. */
-typedef struct scene_image {
-    dev_t dev;
-    ino_t ino;
-    texture_image image;
-} scene_image;
-
 glint_status scene_load_image(void *user, const char *path, texture_image *out, glint_error *err)
 {
     glint_scene *scene = user;
@@ -22,14 +15,13 @@ glint_status scene_load_image(void *user, const char *path, texture_image *out, 
     /* A file that cannot be found is decoded as it is, for the decoder's
      * message; it is never kept. */
     bool known = stat(path, &st) == 0;
-    for (size_t i = 0; known && i < scene->image_count; i++) {
-        const scene_image *si = &scene->images[i];
-        if (si->dev == st.st_dev && si->ino == st.st_ino) {
-            *out = texture_image_borrow(si->image.width, si->image.height, si->image.srgb);
-            return GLINT_OK;
-        }
+    long found = known ? file_set_find(&scene->image_files, st.st_dev, st.st_ino) : -1;
+    if (found >= 0) {
+        const texture_image *shared = &scene->images[found];
+        *out = texture_image_borrow(shared->width, shared->height, shared->srgb);
+        return GLINT_OK;
     }
-    if (known && !array_reserve((void **)&scene->images, &scene->image_cap, scene->image_count + 1,
+    if (known && !array_reserve((void **)&scene->images, &scene->image_cap, scene->image_files.count + 1,
                                 sizeof *scene->images))
         return error_set(err, GLINT_ERR_NOMEM, "out of memory decoding texture '%s'", path);
     texture_image img;
@@ -44,22 +36,29 @@ glint_status scene_load_image(void *user, const char *path, texture_image *out, 
                          "the limit of %llu bytes (4 GiB)",
                          path, bytes, SCENE_MAX_IMAGE_BYTES);
     }
-    scene->image_bytes += bytes;
     if (!known) {
+        scene->image_bytes += bytes;
         *out = img;
         return GLINT_OK;
     }
-    scene->images[scene->image_count++] = (scene_image){st.st_dev, st.st_ino, img};
+    long index = file_set_add(&scene->image_files, st.st_dev, st.st_ino);
+    if (index < 0) {
+        texture_image_free(&img);
+        return error_set(err, GLINT_ERR_NOMEM, "out of memory decoding texture '%s'", path);
+    }
+    scene->image_bytes += bytes;
+    scene->images[index] = img;
     *out = texture_image_borrow(img.width, img.height, img.srgb);
     return GLINT_OK;
 }
 
 void scene_free_images(glint_scene *scene)
 {
-    for (size_t i = 0; i < scene->image_count; i++)
-        texture_image_free(&scene->images[i].image);
+    for (size_t i = 0; i < scene->image_files.count; i++)
+        texture_image_free(&scene->images[i]);
     free(scene->images);
     scene->images = NULL;
-    scene->image_count = scene->image_cap = 0;
+    scene->image_cap = 0;
+    file_set_free(&scene->image_files);
     scene->image_bytes = 0;
 }

@@ -1,7 +1,7 @@
 /* test_id_table.c - the hash table of core/id_table.h: ids found again
  * through growth and collisions, keys told apart, and the scene's names
  * found through it (a texture or material defined twice refused, NULL
- * names never entered). */
+ * names never entered); and the file set of core/file_set.h over it. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -9,6 +9,7 @@
 #include <cmocka.h>
 #include <stdio.h>
 #include <string.h>
+#include "core/file_set.h"
 #include "core/id_table.h"
 #include "scene/scene.h"
 
@@ -113,9 +114,30 @@ static void test_scene_names_are_hashed(void **state)
     glint_scene_free(s);
 }
 
+/* A file set finds each of 100,000 files by device and inode, with its
+ * index in the order entered; a file entered again keeps its index; files
+ * differing only in device or in the high half of the inode are apart. */
+static void test_file_set(void **state)
+{
+    (void)state;
+    file_set set = {0};
+    for (long i = 0; i < 100000; i++)
+        assert_int_equal(file_set_add(&set, (dev_t)(i % 7), (ino_t)i * 1000003), i);
+    assert_int_equal(file_set_add(&set, 3, (ino_t)3 * 1000003), 3);
+    assert_int_equal(set.count, 100000);
+    for (long i = 0; i < 100000; i++)
+        assert_int_equal(file_set_find(&set, (dev_t)(i % 7), (ino_t)i * 1000003), i);
+    assert_int_equal(file_set_find(&set, 1, 0), -1);
+    assert_int_equal(file_set_find(&set, 0, (ino_t)1 << 40), -1);
+    assert_int_equal(file_set_add(&set, 0, (ino_t)1 << 40), 100000);
+    file_set_free(&set);
+    assert_int_equal(file_set_find(&set, 0, 0), -1);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_file_set),
         cmocka_unit_test(test_ids_are_found_through_growth),
         cmocka_unit_test(test_colliding_keys_are_told_apart),
         cmocka_unit_test(test_scene_names_are_hashed),

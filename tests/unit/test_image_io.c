@@ -1022,7 +1022,7 @@ static void test_textures_share_decoded_file(void **state)
     assert_true(a >= 0 && b >= 0 && c >= 0);
     assert_ptr_equal(scene->textures[a].image.srgb, scene->textures[b].image.srgb);
     assert_ptr_not_equal(scene->textures[a].image.srgb, scene->textures[c].image.srgb);
-    assert_int_equal(scene->image_count, 2);
+    assert_int_equal(scene->image_files.count, 2);
     assert_int_equal(scene->image_bytes, 2 * 3 * 4);
     assert_true(texture_image_at(&scene->textures[b].image, 3) == (float)glint_srgb_to_linear(64 / 255.0));
     glint_scene_free(scene);
