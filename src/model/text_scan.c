@@ -7,6 +7,7 @@
 #include <string.h>
 #include "core/array.h"
 #include "core/error.h"
+#include "core/message_fit.h"
 #include "model/text_scan.h"
 
 /* Significant digits kept when a number goes to strtod: more than any
@@ -374,10 +375,11 @@ void scan_quote(const char *s, size_t len, char *out, size_t size)
 
 glint_status scan_error(const scan_line *l, scan_pos at, glint_error *err, const char *fmt, ...)
 {
-    char body[400];
+    /* Whole here: error_set fits the message with its place, keeping the reason. */
+    char body[MESSAGE_ROOM];
     va_list ap;
     va_start(ap, fmt);
-    vsnprintf(body, sizeof body, fmt, ap);
+    message_vformat(body, sizeof body, fmt, ap);
     va_end(ap);
     return error_set(err, GLINT_ERR_INVALID, "%s:%ld:%ld: %s", l->file, at.line, at.column, body);
 }
