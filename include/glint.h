@@ -208,7 +208,11 @@ typedef struct glint_texture {
 glint_texture glint_texture_default(glint_texture_kind kind);
 
 /* Adds a texture. Returns its index (>= 0) or -1 and fills err. `name` may
- * be NULL; a name already taken is refused. */
+ * be NULL; a name already taken is refused. An image's file is checked now
+ * (it can be read, and is a PNG or JPEG) and decoded when a material first
+ * uses the texture (glint_scene_add_material, which then reports a corrupt
+ * file), each file once a scene: a texture no material uses costs no
+ * pixels. */
 int glint_scene_add_texture(glint_scene *scene, const char *name, const glint_texture *texture, glint_error *err);
 
 /* Adds a checkerboard of colours a and b with square cells of `cell` texture
@@ -218,8 +222,9 @@ int glint_scene_add_texture(glint_scene *scene, const char *name, const glint_te
 int glint_scene_add_checker(glint_scene *scene, const char *name, glint_color a, glint_color b,
                             double cell, glint_mapping mapping, glint_error *err);
 
-/* Adds an image texture decoded from a PNG or JPEG file (sRGB, converted to
- * linear): a glint_scene_add_texture of an image. u runs left to right, v
+/* Adds an image texture from a PNG or JPEG file (sRGB, converted to linear),
+ * decoded when a material first uses it: a glint_scene_add_texture of an
+ * image. u runs left to right, v
  * top to bottom, repeating in u and clamped in v. Returns the texture's
  * index or -1 and fills err. */
 int glint_scene_add_image_file(glint_scene *scene, const char *name, const char *path,
@@ -265,7 +270,9 @@ typedef struct glint_material {
  * shininess 50, nothing else; ior 1.5, tint 1, no texture. */
 glint_material glint_material_default(void);
 
-/* Adds a material; returns its index or -1 and fills err. */
+/* Adds a material; returns its index or -1 and fills err. Its texture's
+ * image, if not decoded yet, is decoded here: a corrupt file, or pixels
+ * past the scene's 4 GiB, is an error of this call. */
 int glint_scene_add_material(glint_scene *scene, const char *name, const glint_material *m,
                              glint_error *err);
 

@@ -65,6 +65,23 @@ glint_status image_read_alloc(texture_image *img, unsigned long width, unsigned 
     return GLINT_OK;
 }
 
+/* Sets *reader to the reader whose signature the size bytes at data begin
+ * with; GLINT_ERR_INVALID naming `what` when there is none. */
+static glint_status find_reader(const void *data, size_t size, const char *what, const image_reader **reader,
+                                glint_error *err)
+{
+    for (int i = 0; i < READER_COUNT; i++)
+        if (size >= readers[i]->signature_size &&
+            memcmp(data, readers[i]->signature, readers[i]->signature_size) == 0) {
+            *reader = readers[i];
+            return GLINT_OK;
+        }
+    char names[64] = "";
+    for (int i = 0; i < READER_COUNT; i++)
+        word_list_append(names, sizeof names, readers[i]->name, i, READER_COUNT);
+    return error_set(err, GLINT_ERR_INVALID, "texture '%s' is not a %s file", what, names);
+}
+
 glint_status texture_image_load_memory(texture_image *out, const void *data, size_t size,
                                        const char *what, glint_error *err)
 {
@@ -72,14 +89,9 @@ glint_status texture_image_load_memory(texture_image *out, const void *data, siz
     *out = (texture_image){0};
     if (!what)
         what = "(memory)";
-    for (int i = 0; i < READER_COUNT; i++)
-        if (size >= readers[i]->signature_size &&
-            memcmp(data, readers[i]->signature, readers[i]->signature_size) == 0)
-            return readers[i]->decode(out, data, size, what, err);
-    char names[64] = "";
-    for (int i = 0; i < READER_COUNT; i++)
-        word_list_append(names, sizeof names, readers[i]->name, i, READER_COUNT);
-    return error_set(err, GLINT_ERR_INVALID, "texture '%s' is not a %s file", what, names);
+    const image_reader *reader;
+    glint_status st = find_reader(data, size, what, &reader, err);
+    return st ? st : reader->decode(out, data, size, what, err);
 }
 
 static glint_status read_error(int fd, void *buf, const char *path, const char *reason,
@@ -90,22 +102,34 @@ static glint_status read_error(int fd, void *buf, const char *path, const char *
     return error_set(err, GLINT_ERR_IO, "cannot read texture '%s': %s", path, reason);
 }
 
+/* Opens the texture file at path for reading into *fd, with *st its
+ * status: a regular file within TEXTURE_IMAGE_MAX_FILE. */
+static glint_status open_texture(const char *path, int *fd, struct stat *st, glint_error *err)
+{
+    int errnum;
+    *fd = open_file_read(path, st, &errnum);
+    if (*fd < 0 && (errnum == 0 || errnum == EISDIR))
+        return error_set(err, GLINT_ERR_IO, "cannot read texture '%s': %s", path, open_file_reason(errnum));
+    if (*fd < 0)
+        return error_set(err, GLINT_ERR_IO, "cannot open texture '%s': %s", path, strerror(errnum));
+    if ((unsigned long long)st->st_size > TEXTURE_IMAGE_MAX_FILE) {
+        close(*fd);
+        return error_set(err, GLINT_ERR_INVALID, "texture '%s' is too large: %llu bytes (limit %llu)", path,
+                         (unsigned long long)st->st_size, (unsigned long long)TEXTURE_IMAGE_MAX_FILE);
+    }
+    return GLINT_OK;
+}
+
 /* Reads a whole regular file: its size bounds the read, which a pipe or a
  * device such as /dev/zero would not. */
 static glint_status read_file(const char *path, unsigned char **data, size_t *size,
                               glint_error *err)
 {
     struct stat st;
-    int errnum, fd = open_file_read(path, &st, &errnum);
-    if (fd < 0 && (errnum == 0 || errnum == EISDIR))
-        return error_set(err, GLINT_ERR_IO, "cannot read texture '%s': %s", path, open_file_reason(errnum));
-    if (fd < 0)
-        return error_set(err, GLINT_ERR_IO, "cannot open texture '%s': %s", path, strerror(errnum));
-    if ((unsigned long long)st.st_size > TEXTURE_IMAGE_MAX_FILE) {
-        close(fd);
-        return error_set(err, GLINT_ERR_INVALID, "texture '%s' is too large: %llu bytes (limit %llu)", path,
-                         (unsigned long long)st.st_size, (unsigned long long)TEXTURE_IMAGE_MAX_FILE);
-    }
+    int fd;
+    glint_status status = open_texture(path, &fd, &st, err);
+    if (status)
+        return status;
     size_t want = (size_t)st.st_size, got = 0;
     unsigned char *buf = malloc(want ? want : 1);
     if (!buf) {
@@ -139,6 +163,26 @@ glint_status texture_image_load_file(texture_image *out, const char *path, glint
     st = texture_image_load_memory(out, data, size, path, err);
     free(data);
     return st;
+}
+
+glint_status texture_image_check_file(const char *path, glint_error *err)
+{
+    struct stat st;
+    int fd;
+    glint_status status = open_texture(path, &fd, &st, err);
+    if (status)
+        return status;
+    unsigned char head[16];
+    ssize_t n;
+    do
+        n = read(fd, head, sizeof head);
+    while (n < 0 && errno == EINTR);
+    int errnum = errno;
+    close(fd);
+    if (n < 0)
+        return error_set(err, GLINT_ERR_IO, "cannot read texture '%s': %s", path, strerror(errnum));
+    const image_reader *reader;
+    return find_reader(head, (size_t)n, path, &reader, err);
 }
 
 texture_image texture_image_borrow(int width, int height, const unsigned char *srgb)

@@ -40,6 +40,12 @@ static inline float texture_image_at(const texture_image *img, size_t i)
  * is not a PNG or JPEG, is corrupt or is too large, GLINT_ERR_NOMEM. */
 glint_status texture_image_load_file(texture_image *out, const char *path, glint_error *err);
 
+/* The checks texture_image_load_file makes before decoding: that path is a
+ * regular file it can read, within the size limit, beginning as a PNG or a
+ * JPEG does; the same messages. Nothing is decoded: a scene decodes a
+ * texture's file only once a material uses it. */
+glint_status texture_image_check_file(const char *path, glint_error *err);
+
 /* As texture_image_load_file, from size bytes at data; `what` names the
  * source in messages. */
 glint_status texture_image_load_memory(texture_image *out, const void *data, size_t size,

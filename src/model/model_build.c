@@ -45,7 +45,9 @@ glint_status model_add_texture_file(glint_scene *scene, const char *ref, const m
     glint_error inner;
     *out = glint_scene_add_image_file(scene, NULL, path, uv, &inner);
     free(path);
-    if (*out < 0)
+    /* A model's textures are all used: decoded now, so that a bad one is
+     * named with its model. */
+    if (*out < 0 || scene_use_texture(scene, *out, &inner))
         return error_set(err, inner.status, "%s: texture '%s': %s", job->file, ref, inner.message);
     return GLINT_OK;
 }

@@ -180,7 +180,7 @@ static bool name_free(const glint_scene *scene, const char *name, glint_error *e
 int glint_scene_add_texture(glint_scene *scene, const char *name, const glint_texture *desc, glint_error *err)
 {
     texture t;
-    if (!name_free(scene, name, err) || texture_init(&t, desc, scene_load_image, scene, err))
+    if (!name_free(scene, name, err) || texture_init(&t, desc, scene_check_image, scene, err))
         return -1;
     if (desc->file && scene_note_path(scene, desc->file, err)) {
         texture_release(&t);
@@ -272,6 +272,7 @@ int glint_scene_add_material(glint_scene *scene, const char *name, const glint_m
         return -1;
     }
     if (material_validate(m, scene->texture_count, err) ||
+        (m->texture >= 0 && scene_use_texture(scene, m->texture, err)) ||
         grow((void **)&scene->materials, &scene->material_cap, scene->material_count, sizeof(material),
              "materials", err))
         return -1;

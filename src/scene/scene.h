@@ -65,6 +65,17 @@ glint_status scene_note_path(glint_scene *scene, const char *path, glint_error *
  * pixels would take the scene's past SCENE_MAX_IMAGE_BYTES. */
 glint_status scene_load_image(void *scene, const char *path, texture_image *out, glint_error *err);
 
+/* The image_load_fn with which a scene adds a texture: the file is only
+ * checked (texture_image_check_file) and *out left empty, to be decoded by
+ * scene_use_texture when a material first uses it, so that a texture no
+ * material uses costs no pixels. */
+glint_status scene_check_image(void *scene, const char *path, texture_image *out, glint_error *err);
+
+/* Decodes the image of texture `index` (through scene_load_image) if it is
+ * an image texture not decoded yet; the decoder's message in err when that
+ * fails, and the texture stays undecoded. Any other texture is ready. */
+glint_status scene_use_texture(glint_scene *scene, int index, glint_error *err);
+
 /* Frees the images scene_load_image decoded. */
 void scene_free_images(glint_scene *scene);
 

@@ -1,7 +1,8 @@
-/* scene_images.c - the image files a scene's textures decode, each once.
- * Four textures naming one 16384 x 16384 PNG would otherwise decode it
- * four times, 3 GB; they share one decoding, and all decodings of a scene
- * together stay within SCENE_MAX_IMAGE_BYTES. */
+/* scene_images.c - the image files a scene's textures decode, each once,
+ * and only when a material uses the texture. Four textures naming one
+ * 16384 x 16384 PNG would otherwise decode it four times, 3 GB; they share
+ * one decoding, and all decodings of a scene together stay within
+ * SCENE_MAX_IMAGE_BYTES. */
 #include <stdlib.h>
 #include <sys/stat.h>
 #include "core/array.h"
@@ -50,6 +51,21 @@ glint_status scene_load_image(void *user, const char *path, texture_image *out, 
     scene->images[index] = img;
     *out = texture_image_borrow(img.width, img.height, img.srgb);
     return GLINT_OK;
+}
+
+glint_status scene_check_image(void *scene, const char *path, texture_image *out, glint_error *err)
+{
+    (void)scene;
+    *out = (texture_image){0};
+    return texture_image_check_file(path, err);
+}
+
+glint_status scene_use_texture(glint_scene *scene, int index, glint_error *err)
+{
+    texture *t = &scene->textures[index];
+    if (t->kind != &image_texture || t->image.srgb)
+        return GLINT_OK;
+    return scene_load_image(scene, t->desc.file, &t->image, err);
 }
 
 void scene_free_images(glint_scene *scene)

@@ -125,10 +125,14 @@ static bool read_material_keys(loader *l, const ynode *n, const char *what, glin
     read_params(l, n, material_params(), what, m);
     const ynode *tex = yr_get(&l->r, n, "texture");
     const char *name;
+    glint_error err;
     if (tex && yr_text(&l->r, tex, "texture", &name)) {
         m->texture = scene_find_texture(l->scene, name);
         if (m->texture < 0)
             unknown_name(l, tex, true, name);
+        /* Its image is decoded at its first use, and a bad one reported there. */
+        else if (scene_use_texture(l->scene, m->texture, &err))
+            diag_error(&l->d, tex, &err);
     }
     return l->d.count == before;
 }

@@ -999,9 +999,18 @@ static void test_load_png_chunk_past_end(void **state)
     texture_image_free(&tex);
 }
 
-/* Textures naming one file, by its name or through a link, share one
- * decoding, which outlives the texture that made it; another file is
- * decoded on its own. */
+/* A material using a texture decodes its file (one no material uses is
+ * never decoded); textures naming one file, by its name or through a link,
+ * share one decoding, which outlives the texture that made it; another
+ * file is decoded on its own. */
+static int use_texture(glint_scene *scene, int index)
+{
+    glint_material m = glint_material_default();
+    m.texture = index;
+    glint_error err;
+    return glint_scene_add_material(scene, NULL, &m, &err);
+}
+
 static void test_textures_share_decoded_file(void **state)
 {
     static const unsigned char grey[4] = {0, 64, 128, 255};
@@ -1020,6 +1029,8 @@ static void test_textures_share_decoded_file(void **state)
     int b = glint_scene_add_image_file(scene, "b", link_path, uv, &err);
     int c = glint_scene_add_image_file(scene, "c", other, uv, &err);
     assert_true(a >= 0 && b >= 0 && c >= 0);
+    assert_int_equal(scene->image_files.count, 0);
+    assert_true(use_texture(scene, a) >= 0 && use_texture(scene, b) >= 0 && use_texture(scene, c) >= 0);
     assert_ptr_equal(scene->textures[a].image.srgb, scene->textures[b].image.srgb);
     assert_ptr_not_equal(scene->textures[a].image.srgb, scene->textures[c].image.srgb);
     assert_int_equal(scene->image_files.count, 2);
@@ -1029,7 +1040,8 @@ static void test_textures_share_decoded_file(void **state)
 }
 
 /* A file whose pixels would take the scene's decoded images past 4 GiB is
- * refused, the scene's count unchanged; one that fits exactly is taken. */
+ * refused when a material first uses it, the scene's count unchanged; one
+ * that fits exactly is taken. */
 static void test_textures_within_budget(void **state)
 {
     static const unsigned char grey[4] = {0, 64, 128, 255};
@@ -1046,12 +1058,17 @@ static void test_textures_within_budget(void **state)
              "texture '%s' is too much: its 12 bytes of pixels would take the scene's textures past the limit of "
              "4294967296 bytes (4 GiB)",
              path);
-    assert_int_equal(glint_scene_add_image_file(scene, "a", path, uv, &err), -1);
+    int a = glint_scene_add_image_file(scene, "a", path, uv, &err);
+    glint_material m = glint_material_default();
+    m.texture = a;
+    assert_true(a >= 0);
+    assert_int_equal(glint_scene_add_material(scene, "uses a", &m, &err), -1);
     assert_int_equal(err.status, GLINT_ERR_INVALID);
     assert_string_equal(err.message, want);
     assert_int_equal(scene->image_bytes, SCENE_MAX_IMAGE_BYTES - 11);
+    assert_int_equal(glint_scene_get_counts(scene).materials, 0);
     scene->image_bytes = SCENE_MAX_IMAGE_BYTES - 12;
-    assert_true(glint_scene_add_image_file(scene, "b", other, uv, &err) >= 0);
+    assert_true(use_texture(scene, glint_scene_add_image_file(scene, "b", other, uv, &err)) >= 0);
     assert_true(scene->image_bytes == SCENE_MAX_IMAGE_BYTES);
     glint_scene_free(scene);
 }

@@ -602,18 +602,25 @@ static void check_tiny_texels(const texture *t)
         assert_exact(texture_image_at(&t->image, i), (float)glint_srgb_to_linear(want[i] / 255.0));
 }
 
-/* An image texture named relative to the scene file, in a folder beside it. */
+/* An image texture named relative to the scene file, in a folder beside
+ * it, decoded once a material uses it; one no material uses is checked but
+ * never decoded. */
 static void test_image_texture_from_a_file(void **state)
 {
     static const unsigned char rgb[12] = {255, 0, 0, 0, 128, 255, 10, 20, 30, 255, 255, 255};
     write_png("img/maps/tiny.png", 2, 2, rgb);
+    write_tmp("img/maps/unused.png", "\x89PNG\r\n\x1a\n but nothing a PNG has after its signature");
     write_tmp("img/scene.yaml", "textures:\n"
                                 "  tiny:\n"
                                 "    type: image\n"
                                 "    file: maps/tiny.png\n"
                                 "    mapping: {type: planar, center: [0, 1, 0], scale: 3}\n"
-                                "  plain: {type: image, file: maps/tiny.png}\n");
+                                "  plain: {type: image, file: maps/tiny.png}\n"
+                                "  unused: {type: image, file: maps/unused.png}\n"
+                                "materials: {a: {texture: tiny}, b: {texture: plain}}\n");
     glint_scene *s = load_good_file("img/scene.yaml");
+    assert_null(s->textures[texture_named(s, "unused")].image.srgb);
+    assert_int_equal(s->image_files.count, 1);
     const texture *t = &s->textures[texture_named(s, "tiny")];
     check_tiny_texels(t);
     assert_int_equal(t->mapping.kind, GLINT_MAP_PLANAR);
@@ -627,7 +634,8 @@ static void test_image_texture_from_a_file(void **state)
     /* From memory, paths resolve against the folder of the name given. */
     char name[PATH_SIZE];
     tmp_path(name, "img/memory.yaml");
-    s = load_good_named("textures:\n  tiny: {type: image, file: maps/tiny.png}\n", name);
+    s = load_good_named("textures:\n  tiny: {type: image, file: maps/tiny.png}\nmaterials: {m: {texture: tiny}}\n",
+                        name);
     check_tiny_texels(&s->textures[0]);
     glint_scene_free(s);
 }
@@ -1478,8 +1486,10 @@ static const bad_scene BAD[] = {
      "bad.yaml:2:28: 'size' must be positive, got 0", 1},
     {"image_zero_size",
      "textures:\n"
-     "  t: {type: image, file: @TMP@/zero.png}\n",
-     "bad.yaml:2:26: texture '@TMP@/zero.png' is corrupt: Invalid IHDR data", 1},
+     "  t: {type: image, file: @TMP@/zero.png}\n"
+     "materials:\n"
+     "  m: {texture: t}\n",
+     "bad.yaml:4:16: texture '@TMP@/zero.png' is corrupt: Invalid IHDR data", 1},
     {"image_empty_file",
      "textures:\n"
      "  t: {type: image, file: @TMP@/empty.png}\n",
