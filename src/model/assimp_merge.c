@@ -13,6 +13,7 @@ void assimp_merged_free(assimp_merged *m)
     free(m->positions);
     free(m->normals);
     free(m->uvs);
+    free(m->unnormalled);
     free(m->indices);
     free(m->materials);
 }
@@ -30,7 +31,7 @@ static long long triangle_faces(const struct aiMesh *m)
 /* Counts what the merged mesh will hold and allocates it. */
 static glint_status merge_alloc(const struct aiScene *ai, const char *file, assimp_merged *out, glint_error *err)
 {
-    bool normals = false, uvs = false;
+    bool normals = false, all_normals = true, uvs = false;
     for (unsigned i = 0; i < ai->mNumMeshes; i++) {
         const struct aiMesh *m = ai->mMeshes[i];
         long long tris = m ? triangle_faces(m) : 0;
@@ -42,6 +43,7 @@ static glint_status merge_alloc(const struct aiScene *ai, const char *file, assi
         out->vertices += m->mNumVertices;
         out->triangles += tris;
         normals |= m->mNormals != NULL;
+        all_normals &= m->mNormals != NULL;
         uvs |= m->mTextureCoords[0] != NULL;
         if (out->vertices > MODEL_MAX_COUNT || out->triangles > MODEL_MAX_COUNT)
             return error_set(err, GLINT_ERR_INVALID, "%s: too many %s (more than %lld)", file,
@@ -53,9 +55,11 @@ static glint_status merge_alloc(const struct aiScene *ai, const char *file, assi
     out->positions = malloc(nv * 3 * sizeof(float));
     out->normals = normals ? calloc(nv * 3, sizeof(float)) : NULL;
     out->uvs = uvs ? calloc(nv * 2, sizeof(float)) : NULL;
+    out->unnormalled = all_normals ? NULL : malloc(nv * sizeof(bool));
     out->indices = malloc(nt * 3 * sizeof(uint32_t));
     out->materials = malloc(nt * sizeof(int));
-    if (!out->positions || (normals && !out->normals) || (uvs && !out->uvs) || !out->indices || !out->materials)
+    if (!out->positions || (normals && !out->normals) || (uvs && !out->uvs) || !out->indices || !out->materials ||
+        (!all_normals && !out->unnormalled))
         return error_set(err, GLINT_ERR_NOMEM, "%s: out of memory for %lld vertices and %lld triangles", file,
                          out->vertices, out->triangles);
     return GLINT_OK;
@@ -86,6 +90,8 @@ static glint_status copy_vertices(const struct aiMesh *m, long long v0, const ch
             out->normals[3 * o + 1] = finite_or_zero(m->mNormals[v].y);
             out->normals[3 * o + 2] = finite_or_zero(m->mNormals[v].z);
         }
+        if (out->unnormalled)
+            out->unnormalled[o] = !m->mNormals;
         if (out->uvs && m->mTextureCoords[0]) {
             out->uvs[2 * o] = finite_or_zero(m->mTextureCoords[0][v].x);
             out->uvs[2 * o + 1] = finite_or_zero(1.0f - m->mTextureCoords[0][v].y);

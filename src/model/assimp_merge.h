@@ -11,6 +11,7 @@
 /* Assimp's meshes merged into arrays for glint_mesh_data. */
 typedef struct assimp_merged {
     float *positions, *normals, *uvs;
+    bool *unnormalled;        /* per vertex: its part gave no normals; NULL when every part did */
     uint32_t *indices;
     int *materials;           /* Assimp's material index per triangle, for the caller to make glint's */
     long long vertices, triangles;
@@ -24,6 +25,14 @@ typedef struct assimp_merged {
  * still needs assimp_merged_free. */
 glint_status assimp_merge(const struct aiScene *ai, const char *file, assimp_merged *out, bool *used,
                           glint_error *err);
+
+/* Gives the vertices of parts without normals theirs, as an OBJ's are
+ * made (crease_normals.h through obj_mesh.h: angle-weighted over the faces
+ * within `crease` degrees, vertices joined by value), in time linear in
+ * the mesh however many vertices share a point (Assimp's own smoothing is
+ * quadratic there: minutes for 300,000 coincident vertices). Replaces the
+ * arrays of *m; on failure fills err and *m still needs assimp_merged_free. */
+glint_status assimp_make_normals(assimp_merged *m, double crease, const char *file, glint_error *err);
 
 /* Frees the merged arrays. */
 void assimp_merged_free(assimp_merged *m);

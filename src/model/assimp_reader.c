@@ -87,13 +87,13 @@ static glint_status check_read(const struct aiScene *ai, const char *file, glint
  * check_read, then, when that passes, with it. (Applying the post-processing
  * to the first reading, aiApplyPostProcessing, frees the scene twice when a
  * step fails in Assimp 5.2.5.) On failure fills err. */
-static const struct aiScene *assimp_read(assimp_source *src, const char *file, double crease, glint_error *err)
+static const struct aiScene *assimp_read(assimp_source *src, const char *file, glint_error *err)
 {
+    /* Normals are glint's own (assimp_make_normals): Assimp's smoothing
+     * is quadratic in the vertices that share a point. */
     const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
-                           aiProcess_GenSmoothNormals | aiProcess_SortByPType | aiProcess_ValidateDataStructure |
-                           aiProcess_FindInvalidData;
+                           aiProcess_SortByPType | aiProcess_ValidateDataStructure | aiProcess_FindInvalidData;
     struct aiPropertyStore *props = aiCreatePropertyStore();
-    aiSetImportPropertyFloat(props, AI_CONFIG_PP_GSN_MAX_SMOOTHING_ANGLE, (float)crease);
     aiSetImportPropertyInteger(props, AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
     aiSetImportPropertyInteger(props, AI_CONFIG_IMPORT_NO_SKELETON_MESHES, 1);
     struct aiFileIO io;
@@ -157,6 +157,8 @@ static int build(glint_scene *scene, const struct aiScene *ai, const model_impor
     glint_status s = used && index ? GLINT_OK : error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", job->file);
     if (!s)
         s = assimp_merge(ai, job->file, &mg, used, err);
+    if (!s && mg.unnormalled)
+        s = assimp_make_normals(&mg, job->crease, job->file, err);
     if (!s)
         s = assimp_add_materials(scene, ai, used, index, job, err);
     int mesh = -1;
@@ -189,7 +191,7 @@ static int import_memory(glint_scene *scene, const unsigned char *data, size_t s
     snprintf(hint, sizeof hint, "$glint-memory$.%s", job->format->extension);
     assimp_source src = {.name = job->dir ? job->file : hint, .data = data, .size = size, .dir = job->dir,
                          .file = job->file, .scene = scene};
-    const struct aiScene *ai = assimp_read(&src, job->file, job->crease, err);
+    const struct aiScene *ai = assimp_read(&src, job->file, err);
     int mesh = -1;
     if (ai) {
         mesh = build(scene, ai, job, err);

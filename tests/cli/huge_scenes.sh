@@ -5,8 +5,9 @@
 # 60,000 placements of a model, which the alias limit once refused for
 # their own nodes; 100,000 textures and materials, whose names were once
 # looked up one by one; and faces of 100,000 corners, convex and zigzag,
-# whose triangulation and normals once took minutes. Speed targets are in
-# bench/huge.sh, not here.
+# whose triangulation and normals once took minutes; and 300,000 vertices
+# of a PLY at one point, which Assimp's smoothing took minutes over. Speed
+# targets are in bench/huge.sh, not here.
 # Usage: huge_scenes.sh PATH/TO/glint
 TOOLS=$(cd "$(dirname "$0")/../../tools" && pwd)
 source "$(dirname "$0")/lib/harness.sh"
@@ -64,5 +65,18 @@ for shape in convex zigzag; do
     }' >$shape.obj
     expect_ok $shape.obj "$shape.obj: ok: 1 texture, 2 materials, 1 shape, 2 lights, 1 mesh (99998 triangles) placed once"
 done
+
+# 300,000 vertices at one point (a PLY of 100,000 coincident triangles,
+# without normals), whose smoothing by Assimp took minutes.
+awk 'BEGIN {
+    n = 100000
+    printf "ply\nformat ascii 1.0\nelement vertex %d\nproperty float x\nproperty float y\nproperty float z\n", 3 * n
+    printf "element face %d\nproperty list uchar int vertex_indices\nend_header\n", n
+    for (i = 0; i < n; i++)
+        print "0 0 0\n1 0 0\n0 1 0"
+    for (i = 0; i < n; i++)
+        printf "3 %d %d %d\n", 3 * i, 3 * i + 1, 3 * i + 2
+}' >coincident.ply
+expect_ok coincident.ply "coincident.ply: ok: 1 texture, 2 materials, 1 shape, 2 lights, 1 mesh (100000 triangles) placed once"
 
 finish
