@@ -568,63 +568,49 @@ static void count_normals(const mesh *m, int *axis, int *diagonal)
     }
 }
 
-static void test_obj_generated_normals_crease(void **state)
+/* The cube in `file`, imported at the default crease angle of 80 degrees,
+ * keeps its 90-degree edges sharp (24 vertices, each normal along an axis,
+ * pointing out of its face); at 180 every normal is smoothed (8 vertices,
+ * each normal diagonal). */
+static void expect_cube_normals(const char *file)
 {
-    write_text("cube.obj", cube_obj);
     glint_scene *s = new_scene();
-    /* default 80 degrees: the cube's 90-degree edges stay sharp */
-    const mesh *m = import_ok(s, "cube.obj", NULL);
+    const mesh *m = import_ok(s, file, NULL);
     int axis, diagonal;
     assert_int_equal(m->triangle_count, 12);
     assert_non_null(m->normals);
     assert_int_equal(m->vertex_count, 24);
     count_normals(m, &axis, &diagonal);
     assert_int_equal(axis, 24);
-    /* each normal points out of the face its vertex belongs to */
     for (int t = 0; t < m->triangle_count; t++)
         for (int k = 0; k < 3; k++) {
             uint32_t v = m->indices[3 * t + k];
             const float *p = m->positions + 3 * v, *n = m->normals + 3 * v;
             assert_true(p[0] * n[0] + p[1] * n[1] + p[2] * n[2] > 0.99);
         }
-    /* 180 degrees smooths everything: one normal per corner, diagonal */
     glint_import_options smooth = {.crease_angle = 180, .default_material = -1};
-    m = import_ok(s, "cube.obj", &smooth);
+    m = import_ok(s, file, &smooth);
     assert_int_equal(m->vertex_count, 8);
     count_normals(m, &axis, &diagonal);
     assert_int_equal(diagonal, 8);
     glint_scene_free(s);
 }
 
+static void test_obj_generated_normals_crease(void **state)
+{
+    write_text("cube.obj", cube_obj);
+    expect_cube_normals("cube.obj");
+}
+
 /* A model Assimp reads without normals gets them as an OBJ does (glint's
- * own, angle-weighted within the crease angle): the cube as a PLY has 24
- * vertices with face normals at the default 80 degrees, 8 with diagonal
- * ones at 180. */
+ * own, angle-weighted within the crease angle). */
 static void test_assimp_generated_normals_crease(void **state)
 {
     write_text("cube.ply", "ply\nformat ascii 1.0\nelement vertex 8\nproperty float x\nproperty float y\n"
                            "property float z\nelement face 6\nproperty list uchar int vertex_indices\nend_header\n"
                            "-1 -1 -1\n1 -1 -1\n1 1 -1\n-1 1 -1\n-1 -1 1\n1 -1 1\n1 1 1\n-1 1 1\n"
                            "4 0 3 2 1\n4 4 5 6 7\n4 0 1 5 4\n4 3 7 6 2\n4 0 4 7 3\n4 1 2 6 5\n");
-    glint_scene *s = new_scene();
-    const mesh *m = import_ok(s, "cube.ply", NULL);
-    int axis, diagonal;
-    assert_int_equal(m->triangle_count, 12);
-    assert_int_equal(m->vertex_count, 24);
-    count_normals(m, &axis, &diagonal);
-    assert_int_equal(axis, 24);
-    for (int t = 0; t < m->triangle_count; t++)
-        for (int k = 0; k < 3; k++) {
-            uint32_t v = m->indices[3 * t + k];
-            const float *p = m->positions + 3 * v, *n = m->normals + 3 * v;
-            assert_true(p[0] * n[0] + p[1] * n[1] + p[2] * n[2] > 0.99);
-        }
-    glint_import_options smooth = {.crease_angle = 180, .default_material = -1};
-    m = import_ok(s, "cube.ply", &smooth);
-    assert_int_equal(m->vertex_count, 8);
-    count_normals(m, &axis, &diagonal);
-    assert_int_equal(diagonal, 8);
-    glint_scene_free(s);
+    expect_cube_normals("cube.ply");
 }
 
 static void test_obj_gentle_fold(void **state)
