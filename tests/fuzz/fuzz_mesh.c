@@ -5,12 +5,16 @@
  * in our readers, checks and merging or in Assimp's readers behind them. A
  * refused model without an error message naming it also counts as a crash.
  * From memory no other file is read, so runs do not depend on the
- * directory; MTL text, which only files name, goes to glint's MTL reader
+ * directory; glTF text after an 'F' is written to a file of its own folder
+ * instead and imported from there, beside a buffer file, so that buffer
+ * URIs are followed (or refused) as from a user's disk; MTL text, which only files name, goes to glint's MTL reader
  * directly when the first byte is 'M', and every material it reads is
  * mapped to glint's. OBJ text is also read by glint's OBJ reader with
  * three threads parsing ahead in pieces of a few bytes, which must give
  * the model and the message of reading it in one pass. */
+#define _XOPEN_SOURCE 700 /* mkdtemp */
 #include <stddef.h>
+#include <stdio.h>
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -70,6 +74,48 @@ static void fuzz_obj_split(const uint8_t *data, size_t size)
         abort();
 }
 
+/* Writes glTF text to model.gltf in a folder of its own (made once, with
+ * buffer.bin beside it: three triangles' floats) and imports it from
+ * there, so that buffer URIs reach files: inside the folder, outside it,
+ * devices, FIFOs' kin. */
+static char disk_dir[64], disk_model[96], disk_buffer[96];
+
+static void remove_disk_folder(void)
+{
+    remove(disk_model);
+    remove(disk_buffer);
+    remove(disk_dir);
+}
+
+static void fuzz_gltf_on_disk(const uint8_t *data, size_t size)
+{
+    char *dir = disk_dir, *path = disk_model;
+    if (!dir[0]) {
+        strcpy(dir, "/tmp/glint-fuzz-mesh-XXXXXX");
+        if (!mkdtemp(dir))
+            abort();
+        char *buffer = disk_buffer;
+        snprintf(buffer, sizeof disk_buffer, "%s/buffer.bin", dir);
+        atexit(remove_disk_folder);
+        float floats[27];
+        for (int i = 0; i < 27; i++)
+            floats[i] = (float)(i % 5);
+        FILE *f = fopen(buffer, "wb");
+        if (!f || fwrite(floats, sizeof floats, 1, f) != 1 || fclose(f) != 0)
+            abort();
+        snprintf(path, sizeof disk_model, "%s/model.gltf", dir);
+    }
+    FILE *f = fopen(path, "wb");
+    if (!f || (size && fwrite(data, size, 1, f) != 1) || fclose(f) != 0)
+        abort();
+    glint_scene *scene = glint_scene_new();
+    glint_error err;
+    err.message[0] = '\0';
+    if (scene && glint_scene_import_mesh(scene, path, NULL, &err) < 0 && strncmp(err.message, path, strlen(path)) != 0)
+        abort();
+    glint_scene_free(scene);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     static const char *const names[] = {"model.obj", "model.ply", "model.stl", "model.glb", "model.gltf"};
@@ -77,6 +123,10 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         return 0;
     if (data[0] == 'M') {
         fuzz_mtl(data + 1, size - 1);
+        return 0;
+    }
+    if (data[0] == 'F') {
+        fuzz_gltf_on_disk(data + 1, size - 1);
         return 0;
     }
     const char *name = names[data[0] % (sizeof names / sizeof names[0])];
