@@ -4,7 +4,10 @@
  * tree builder, the alias/merge-key walker, includes and every section's
  * reader; a refused scene without an error message also counts as a crash.
  * The same bytes read as a stream (glint_scene_load_stream, `glint -`) must
- * load or be refused alike, with the same first message.
+ * load or be refused alike, with the same first message; and read from
+ * whole trees rather than with the objects read while parsed (the
+ * default, scenefile/scene_file.h), they must be refused with the same
+ * first message or load to the same scene, written back byte for byte.
  * Problems are only counted (NULL report): the library must stay silent.
  * Relative includes and texture files resolve against the working
  * directory, since the input is named "fuzz.yaml" (tests/fuzz/README.md). */
@@ -15,8 +18,27 @@
 #include <stdlib.h>
 #include <string.h>
 #include "glint.h"
+#include "scenefile/scene_file.h"
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
+
+/* What two ways of loading must agree on: the scene written as a file
+ * (or why it could not be), or the first message of its refusal. */
+static char *outcome(const glint_scene *scene, const glint_error *err)
+{
+    char *text = NULL;
+    size_t length = 0;
+    FILE *f = open_memstream(&text, &length);
+    if (!f)
+        abort();
+    glint_error write_err;
+    if (!scene)
+        fprintf(f, "refused: %s", err->message);
+    else if (glint_scene_write_yaml(scene, f, &write_err))
+        fprintf(f, "\nnot written: %s", write_err.message);
+    fclose(f);
+    return text;
+}
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
@@ -39,6 +61,17 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
         glint_scene_free(streamed);
         fclose(in);
     }
+    glint_error whole_err;
+    whole_err.message[0] = '\0';
+    scene_file_set_mode(SCENE_FILE_WHOLE);
+    glint_scene *whole = glint_scene_load_memory((const char *)data, size, "fuzz.yaml", &options, &whole_err);
+    scene_file_set_mode(SCENE_FILE_STREAMED);
+    char *a = outcome(scene, &err), *b = outcome(whole, &whole_err);
+    if (strcmp(a, b) != 0)
+        abort();
+    free(a);
+    free(b);
+    glint_scene_free(whole);
     glint_scene_free(scene);
     return 0;
 }
