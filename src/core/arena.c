@@ -1,4 +1,5 @@
-/* arena.c - chunks of 1 MiB cut into pieces front to back. */
+/* arena.c - chunks of 1 MiB cut into pieces front to back; a rollback
+ * frees the chunks made since its mark and cuts its chunk back. */
 #include <stdint.h>
 #include <stdlib.h>
 #include "core/arena.h"
@@ -39,6 +40,32 @@ void *arena_alloc(arena *a, size_t size)
         a->chunks = fresh;
     }
     return fresh->data;
+}
+
+arena_point arena_mark(const arena *a)
+{
+    struct arena_chunk *c = a->chunks;
+    return (arena_point){c, c ? c->next : NULL, c ? c->used : 0};
+}
+
+void arena_rollback(arena *a, arena_point mark)
+{
+    /* Chunks made since the mark are all in front of its chunk, except the
+     * large pieces cut while it was the newest: those went right behind
+     * it, in front of the chunk that was behind it then. */
+    while (a->chunks != mark.chunk) {
+        struct arena_chunk *c = a->chunks;
+        a->chunks = c->next;
+        free(c);
+    }
+    if (!mark.chunk)
+        return;
+    mark.chunk->used = mark.used;
+    while (mark.chunk->next != mark.behind) {
+        struct arena_chunk *c = mark.chunk->next;
+        mark.chunk->next = c->next;
+        free(c);
+    }
 }
 
 void arena_free(arena *a)

@@ -1,5 +1,6 @@
 /* loader.h - the scene-file loader's state and the readers its files share:
- * scene_file.c reads files, includes and the root; read_values.c typed
+ * scene_file.c reads files, includes and the root, each file's objects
+ * while the file is parsed when it can; read_values.c typed
  * values and parameter tables; read_sections.c settings, camera and fog;
  * read_looks.c textures, materials and lights; read_objects.c objects,
  * groups, transforms and models. The reference for every key is
@@ -37,6 +38,8 @@ typedef struct loader {
     long alias_nodes;                            /* nodes the aliases of all files add */
     char **paths;                                /* files named by keys, resolved: freed at the end */
     size_t path_count, path_cap;
+    bool streaming;                              /* objects read while parsed: an attempt, silent,
+                                                    given up at any problem (scene_file.c) */
 } loader;
 
 /* A model file already imported, so that every object placing it shares
@@ -119,5 +122,8 @@ void read_light(loader *l, const ynode *n);
 
 /* Adds each object of the list, inside context ctx. */
 void read_objects(loader *l, const ynode *list, const context *ctx);
+
+/* Adds one object (a shape, a group or a mesh), inside context outer. */
+void read_object(loader *l, const ynode *n, const context *outer);
 
 #endif

@@ -192,7 +192,7 @@ static int object_type(loader *l, const ynode *n, const shape_kind **kind)
     return OBJECT_SHAPE;
 }
 
-static void read_object(loader *l, const ynode *n, const context *outer)
+void read_object(loader *l, const ynode *n, const context *outer)
 {
     static const char *const common[] = {"type", "material", "transform"};
     const shape_kind *kind = NULL;

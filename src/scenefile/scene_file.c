@@ -2,7 +2,15 @@
  * followed once, cycles refused), walks its root through the section
  * readers of loader.h, which build the scene through the public API and
  * report every problem at its place. The reference for every key is
- * docs/scene-format.md. */
+ * docs/scene-format.md.
+ *
+ * A file's objects are read while it is parsed, each object's nodes given
+ * back once read (ystream), so that the tree of a million objects never
+ * exists whole. That reading is an attempt, silent: when anything goes
+ * otherwise than reading the whole tree would (any problem, a section
+ * after the objects), the load starts again with whole trees, which makes
+ * the reports. A load that succeeds streamed makes the same calls, in the
+ * same order, as one with whole trees. */
 /* realpath() is X/Open. */
 #define _XOPEN_SOURCE 700
 #include <errno.h>
@@ -17,10 +25,18 @@
 #include "core/open_file.h"
 #include "scene/scene.h"
 #include "scenefile/loader.h"
+#include "scenefile/scene_file.h"
 #include "scenefile/scene_reader.h"
 
 #define MAX_FILES 1000            /* files read for one scene, includes counted */
 #define MAX_SCENE_FILE_BYTES (64L << 20)
+
+static scene_file_mode mode = SCENE_FILE_STREAMED;
+
+void scene_file_set_mode(scene_file_mode m)
+{
+    mode = m;
+}
 
 static void read_file(loader *l, const char *path, const ynode *from);
 
@@ -66,18 +82,19 @@ static void read_named(loader *l, const ynode *section, const char *what,
     }
 }
 
-static void read_root(loader *l, const ynode *root)
+/* The keys of root mapping `root` and every section but the objects, in
+ * their order; false when the format's version is not one this glint
+ * reads, and nothing more is read. */
+static bool read_head(loader *l, const ynode *root)
 {
     static const char *const keys[] = {"glint", "include", "settings", "camera", "fog",
                                        "textures", "materials", "lights", "objects"};
-    if (!yr_is_map(&l->r, root, "a scene file"))
-        return;
     yr_check_keys(&l->r, root, "the scene", keys, COUNT(keys));
     const ynode *n;
     double version;
     if ((n = yr_get(&l->r, root, "glint")) && yr_number(&l->r, n, "glint", &version) && version != 1) {
         diag_at(&l->d, n, "format version %g is not supported (this glint reads version 1)", version);
-        return;
+        return false;
     }
     if ((n = yr_get(&l->r, root, "include")))
         read_includes(l, n);
@@ -94,9 +111,47 @@ static void read_root(loader *l, const ynode *root)
     if ((n = yr_get(&l->r, root, "lights")) && yr_is_list(&l->r, n, "'lights'"))
         for (int i = 0; i < n->count && ok(l); i++)
             read_light(l, n->items[i]);
-    context top = {glint_transform_identity(), -1, 0};
-    if ((n = yr_get(&l->r, root, "objects")))
+    return true;
+}
+
+/* What the objects of a file's root are inside: nothing. */
+static context top_context(void)
+{
+    return (context){glint_transform_identity(), -1, 0};
+}
+
+static void read_root(loader *l, const ynode *root)
+{
+    if (!yr_is_map(&l->r, root, "a scene file") || !read_head(l, root))
+        return;
+    const ynode *n = yr_get(&l->r, root, "objects");
+    context top = top_context();
+    if (n)
         read_objects(l, n, &top);
+}
+
+/* A file whose objects are read while it is parsed: the ystream hooks'
+ * user. Each stops the parse at the first problem, which gives up the
+ * attempt. */
+typedef struct streamed_file {
+    loader *l;
+    bool begun;               /* the root before the objects has been read */
+} streamed_file;
+
+static bool stream_begin(void *user, const ynode *root)
+{
+    streamed_file *f = user;
+    f->begun = true;
+    read_head(f->l, root);
+    return f->l->d.count == 0;
+}
+
+static bool stream_item(void *user, const ynode *item)
+{
+    loader *l = ((streamed_file *)user)->l;
+    context top = top_context();
+    read_object(l, item, &top);
+    return l->d.count == 0;
 }
 
 /* Reports each alias of document docs[index] that names no anchor before
@@ -128,33 +183,48 @@ static void report_unknown_aliases(loader *l, int index)
     }
 }
 
-/* Parses bytes named `name` and walks them; the tree stays alive in l.
- * root: whether they are the scene's own, not an include's. */
+/* Room in l for one more document; false after a report. */
+static bool room_for_doc(loader *l)
+{
+    if (array_reserve((void **)&l->docs, &l->doc_cap, (size_t)l->doc_count + 1, sizeof *l->docs))
+        return true;
+    diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
+    return false;
+}
+
+/* Parses bytes named `name` and walks them (their objects while they are
+ * parsed, when streaming); the tree stays alive in l. root: whether they
+ * are the scene's own, not an include's. */
 static void read_bytes(loader *l, const char *data, size_t size, const char *name, bool root)
 {
-    if (!array_reserve((void **)&l->docs, &l->doc_cap, (size_t)l->doc_count + 1, sizeof *l->docs)) {
-        diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
+    if (!room_for_doc(l))
         return;
-    }
+    /* Parsed outside l->docs: includes read while it is parsed (streaming)
+     * add theirs, which may move the array. */
     glint_error err;
-    ydoc *doc = &l->docs[l->doc_count];
-    glint_status s = ydoc_parse(doc, data, size, name, YAML_MAX_ALIAS_NODES - l->alias_nodes, &err);
+    ydoc doc;
+    streamed_file file = {l, false};
+    const ystream hooks = {"objects", stream_begin, stream_item, &file};
+    glint_status s = ydoc_parse(&doc, data, size, name, &l->alias_nodes, l->streaming ? &hooks : NULL, &err);
     if (s) {
         diag_raw(&l->d, s, err.message);
         return;
     }
-    l->doc_count++;
-    l->alias_nodes += doc->alias_nodes;
-    if (doc->unknown_count) {
+    if (!room_for_doc(l)) {
+        ydoc_free(&doc);
+        return;
+    }
+    l->docs[l->doc_count++] = doc;
+    if (doc.unknown_count) {
         /* The includes first: an anchor in one of them is named in the message. */
-        const ynode *include = doc->root ? yr_get(&l->r, doc->root, "include") : NULL;
+        const ynode *include = doc.root ? yr_get(&l->r, doc.root, "include") : NULL;
         int index = l->doc_count - 1;
         if (include)
             read_includes(l, include);
         report_unknown_aliases(l, index);
         return;
     }
-    bool empty = !doc->root || strcmp(ynode_describe(doc->root), "nothing") == 0;
+    bool empty = !doc.root || strcmp(ynode_describe(doc.root), "nothing") == 0;
     if (empty && root) {
         /* Rendering black for an empty scene hides a wrong path or an
          * editor's lost save. An empty include is fine: a placeholder. */
@@ -163,8 +233,8 @@ static void read_bytes(loader *l, const char *data, size_t size, const char *nam
         diag_raw(&l->d, GLINT_ERR_INVALID, msg);
         return;
     }
-    if (!empty)
-        read_root(l, doc->root);
+    if (!empty && !file.begun)
+        read_root(l, doc.root);
 }
 
 /* Reads all of the stream f, named `name`, to its end, at most
@@ -306,8 +376,12 @@ static void finish(loader *l, const char *name)
         diag_raw(&l->d, GLINT_ERR_NOMEM, err.message);
 }
 
-static glint_scene *load(const glint_load_options *o, glint_error *err, const char *name,
-                         void (*body)(loader *, const void *, size_t, const char *), const void *data, size_t size)
+/* Reads a scene through `body`, streaming or not; the scene, or NULL after
+ * reporting. A streamed load reports to no one and stops at its first
+ * problem: it is only an attempt. */
+static glint_scene *load_once(const glint_load_options *o, glint_error *err, const char *name,
+                              void (*body)(loader *, const void *, size_t, const char *), const void *data,
+                              size_t size, bool streaming)
 {
     loader l;
     memset(&l, 0, sizeof l);
@@ -316,8 +390,12 @@ static glint_scene *load(const glint_load_options *o, glint_error *err, const ch
         error_set(err, GLINT_ERR_NOMEM, "out of memory");
         return NULL;
     }
-    l.d = (diag){.report = o ? o->report : NULL, .user = o ? o->report_user : NULL,
-                 .max = o && o->max_errors > 0 ? o->max_errors : 20, .first = err};
+    if (streaming)
+        l.d = (diag){.max = 1, .first = err};
+    else
+        l.d = (diag){.report = o ? o->report : NULL, .user = o ? o->report_user : NULL,
+                     .max = o && o->max_errors > 0 ? o->max_errors : 20, .first = err};
+    l.streaming = streaming;
     l.r.d = &l.d;
     l.settings = glint_scene_get_settings(l.scene);
     l.camera = glint_scene_get_camera(l.scene);
@@ -341,6 +419,19 @@ static glint_scene *load(const glint_load_options *o, glint_error *err, const ch
     return l.scene;
 }
 
+/* Reads a scene streamed and, when that attempt gives up, again with whole
+ * trees (scene_file_mode): the bytes of `data` are read twice then, and
+ * a file's again. */
+static glint_scene *load(const glint_load_options *o, glint_error *err, const char *name,
+                         void (*body)(loader *, const void *, size_t, const char *), const void *data, size_t size)
+{
+    glint_error attempt;
+    if (mode == SCENE_FILE_STREAMED_ONLY)
+        return load_once(o, err, name, body, data, size, true);
+    glint_scene *scene = mode == SCENE_FILE_STREAMED ? load_once(o, &attempt, name, body, data, size, true) : NULL;
+    return scene ? scene : load_once(o, err, name, body, data, size, false);
+}
+
 static void body_file(loader *l, const void *data, size_t size, const char *name)
 {
     read_file(l, name, NULL);
@@ -351,20 +442,19 @@ static void body_memory(loader *l, const void *data, size_t size, const char *na
     read_bytes(l, data, size, name, true);
 }
 
-/* The stream is read whole first: the tree's nodes point into the bytes,
- * and the limit is a file's. */
-static void body_stream(loader *l, const void *stream, size_t unused, const char *name)
+/* A stream's bytes, read whole before loading (yaml_load_stream): they
+ * count towards the limit of all files, as a file's do. */
+static void body_stream(loader *l, const void *data, size_t size, const char *name)
 {
-    glint_error err;
-    size_t size = 0;
-    char *data = read_all((FILE *)stream, name, &size, &err);
-    if (!data) {
-        diag_raw(&l->d, err.status, err.message);
-        return;
-    }
     l->bytes = (long)size;
     read_bytes(l, data, size, name, true);
-    free(data);
+}
+
+/* A stream that could not be read: err says why. */
+static void body_unread(loader *l, const void *err, size_t unused, const char *name)
+{
+    const glint_error *e = err;
+    diag_raw(&l->d, e->status, e->message);
 }
 
 static glint_scene *yaml_load_file(const char *path, const glint_load_options *options, glint_error *err)
@@ -378,10 +468,19 @@ static glint_scene *yaml_load_memory(const char *data, size_t size, const char *
     return load(options, err, name ? name : "<memory>", body_memory, data, size);
 }
 
+/* The stream is read whole first: the tree's nodes point into the bytes,
+ * the limit is a file's, and a load given up streamed reads them again. */
 static glint_scene *yaml_load_stream(FILE *in, const char *name, const glint_load_options *options,
                                      glint_error *err)
 {
-    return load(options, err, name ? name : "<stream>", body_stream, in, 0);
+    name = name ? name : "<stream>";
+    glint_error unread;
+    size_t size = 0;
+    char *data = read_all(in, name, &size, &unread);
+    glint_scene *scene = data ? load(options, err, name, body_stream, data, size)
+                              : load(options, err, name, body_unread, &unread, 0);
+    free(data);
+    return scene;
 }
 
 static const char *const YAML_EXTENSIONS[] = {".yaml", ".yml", NULL};

@@ -1,6 +1,7 @@
 /* yaml_tree.c - libyaml's events folded into a tree of positioned nodes,
  * kept in one arena: a scene of a million objects is some twelve million
- * nodes, so each costs only its own bytes. */
+ * nodes, so each costs only its own bytes; and with a ystream, the root's
+ * list handed over item by item, each item's nodes given back once read. */
 #include <limits.h>
 #include <stdlib.h>
 #include <string.h>
@@ -15,9 +16,11 @@
 /* Deeper nesting than this is refused: nothing in a scene needs it, and the
  * walkers recurse. */
 #define YAML_MAX_DEPTH 64
-/* Nodes of one file: a million spheres written one a line take 12
- * million. About 60 bytes each, so a 64 MiB file of one-digit numbers
- * stops here at about 1 GB. */
+/* Nodes of one file held at once: a million spheres written one a line
+ * take 12 million, or, their list streamed (ystream), those before the
+ * list and one sphere's. About 60 bytes each, so a 64 MiB file of
+ * one-digit numbers stops here at about 1 GB; a streamed list's items
+ * given back no longer count, so what stops is only what is held. */
 #define YAML_MAX_NODES (1L << 24)
 #define YAML_MAX_ANCHORS 100000
 
@@ -28,7 +31,8 @@ typedef struct builder {
     int depth;
     ynode **pending;           /* the items of the open nodes, innermost last */
     size_t pending_count, pending_cap;
-    long alias_room;           /* nodes the aliases may still add */
+    long *alias_nodes;         /* nodes the aliases of the scene add */
+    long alias_start;          /* and how many before this document */
     id_table anchor_ids;       /* the first anchor of each name, by name */
     uint32_t *latest;          /* for each first anchor: the last of its name */
     size_t latest_cap;
@@ -38,7 +42,16 @@ typedef struct builder {
     size_t size;
     int flow_level;            /* depth of the outermost open {...} or [...], or -1 */
     yaml_mark_t flow_start;    /* and where it starts */
+    const ystream *stream;     /* or NULL */
+    enum { LIST_AHEAD, LIST_OPEN, LIST_READ } list;  /* the streamed list */
+    arena_point item_start;    /* where its next item's nodes will start */
+    long item_nodes;           /* and the counts before that item */
+    int item_anchors, item_unknown;
 } builder;
+
+/* The nodes of a streamed list's items (ystream) sit at depth 2: in the
+ * list, in the root mapping. */
+#define ITEM_DEPTH 2
 
 static glint_status fail_at(builder *b, yaml_mark_t mark, const char *what)
 {
@@ -136,6 +149,68 @@ static ynode *find_anchor(const builder *b, const char *name)
     return b->doc->anchors[b->latest[first]].node;
 }
 
+/* Stops a streamed parse at node n: a hook asked, or the file goes on
+ * where the hooks cannot follow. */
+static glint_status stopped(builder *b, const ynode *n, const char *why)
+{
+    return error_set(b->err, GLINT_ERR_CANCELLED, "%s:%d:%d: %s", b->doc->name, n->line, n->column, why);
+}
+
+/* Where the streamed list's next item starts: the arena and the counts. */
+static void mark_item_start(builder *b)
+{
+    ydoc *d = b->doc;
+    b->item_start = arena_mark(&d->mem);
+    b->item_nodes = d->node_count;
+    b->item_anchors = d->anchor_count;
+    b->item_unknown = d->unknown_count;
+}
+
+/* Whether the sequence about to start, with anchor `anchor`, is the list
+ * to stream: the value of the root mapping's key, the first such. */
+static bool starts_list(const builder *b, const yaml_char_t *anchor)
+{
+    if (!b->stream || b->list != LIST_AHEAD || anchor || b->depth != 1 || b->stack[0]->kind != YNODE_MAPPING ||
+        (b->pending_count - b->base[0]) % 2 == 0)
+        return false;
+    const ynode *key = b->pending[b->pending_count - 1];
+    return key->kind == YNODE_SCALAR && strcmp(key->value, b->stream->key) == 0;
+}
+
+/* The streamed list has just opened: its begin hook sees the root so far,
+ * whose items are still gathering in pending. */
+static glint_status open_list(builder *b)
+{
+    ynode *root = b->stack[0], *list = b->stack[1];
+    root->items = b->pending + b->base[0];
+    root->count = (int)(b->base[1] - b->base[0]);
+    bool go_on = b->stream->begin(b->stream->user, root);
+    root->items = NULL;
+    root->count = 0;
+    b->list = LIST_OPEN;
+    mark_item_start(b);
+    return go_on ? GLINT_OK : stopped(b, list, "the reader stopped at the list");
+}
+
+/* An item of the streamed list, the last of pending, is complete: the item
+ * hook reads it, then it leaves the list, and its nodes are given back
+ * unless something outside it points into them (ystream). */
+static glint_status item_read(builder *b)
+{
+    ydoc *d = b->doc;
+    ynode *item = b->pending[--b->pending_count];
+    bool go_on = b->stream->item(b->stream->user, item);
+    if (!go_on)
+        return stopped(b, item, "the reader stopped at this item");
+    if (d->anchor_count == b->item_anchors && d->unknown_count == b->item_unknown) {
+        arena_rollback(&d->mem, b->item_start);
+        d->node_count = b->item_nodes;
+    } else {
+        mark_item_start(b);
+    }
+    return GLINT_OK;
+}
+
 /* Hangs n under the open container, or makes it the root. */
 static glint_status attach(builder *b, ynode *n, yaml_mark_t mark)
 {
@@ -144,9 +219,14 @@ static glint_status attach(builder *b, ynode *n, yaml_mark_t mark)
         b->doc->root = n;
         return GLINT_OK;
     }
+    if (b->list == LIST_READ && b->depth == 1)
+        return stopped(b, n, "a key of the root after the streamed list");
     if (!array_reserve((void **)&b->pending, &b->pending_cap, b->pending_count + 1, sizeof *b->pending))
         return out_of_memory(b);
     b->pending[b->pending_count++] = n;
+    /* A scalar or an alias is complete at once; a map or list at its end. */
+    if (b->list == LIST_OPEN && b->depth == ITEM_DEPTH && n->complete)
+        return item_read(b);
     return GLINT_OK;
 }
 
@@ -171,6 +251,10 @@ static glint_status on_end(builder *b)
     n->complete = true;
     if (b->depth == b->flow_level)
         b->flow_level = -1;
+    if (b->list == LIST_OPEN && b->depth == ITEM_DEPTH)
+        return item_read(b);
+    if (b->list == LIST_OPEN && b->depth == ITEM_DEPTH - 1)
+        b->list = LIST_READ;
     return GLINT_OK;
 }
 
@@ -264,6 +348,7 @@ static glint_status on_start(builder *b, const yaml_event_t *ev, ynode_kind kind
         b->flow_level = b->depth;
         b->flow_start = ev->start_mark;
     }
+    bool list = kind == YNODE_SEQUENCE && starts_list(b, anchor_name);
     ynode *n = new_node(b, kind, ev->start_mark);
     if (!n)
         return no_node(b, ev->start_mark);
@@ -274,7 +359,7 @@ static glint_status on_start(builder *b, const yaml_event_t *ev, ynode_kind kind
         b->stack[b->depth] = n;
         b->base[b->depth++] = b->pending_count;
     }
-    return s;
+    return !s && list ? open_list(b) : s;
 }
 
 static glint_status on_alias(builder *b, const yaml_event_t *ev)
@@ -299,8 +384,8 @@ static glint_status on_alias(builder *b, const yaml_event_t *ev)
         return fail_at(b, ev->start_mark, msg);
     }
     /* The alias stands for a copy of its node: count what that copy adds. */
-    b->doc->alias_nodes += target->expanded;
-    if (b->doc->alias_nodes > b->alias_room) {
+    *b->alias_nodes += target->expanded;
+    if (*b->alias_nodes > YAML_MAX_ALIAS_NODES) {
         snprintf(msg, sizeof msg, "scene too large after alias expansion (limit %ld nodes)", YAML_MAX_ALIAS_NODES);
         return fail_at(b, ev->start_mark, msg);
     }
@@ -379,11 +464,12 @@ void ydoc_use_quick_reader(bool on)
     quick_reader = on;
 }
 
-glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *name, long alias_room,
-                        glint_error *err)
+glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *name, long *alias_nodes,
+                        const ystream *stream, glint_error *err)
 {
     memset(doc, 0, sizeof *doc);
-    builder b = {.doc = doc, .err = err, .data = data, .size = size, .flow_level = -1, .alias_room = alias_room};
+    builder b = {.doc = doc, .err = err, .data = data, .size = size, .flow_level = -1, .alias_nodes = alias_nodes,
+                 .alias_start = *alias_nodes, .stream = stream};
     doc->name = strdup(name);
     if (!doc->name)
         return error_set(err, GLINT_ERR_NOMEM, "out of memory reading '%s'", name);
@@ -397,8 +483,10 @@ glint_status ydoc_parse(ydoc *doc, const char *data, size_t size, const char *na
     free(b.pending);
     free(b.latest);
     id_table_free(&b.anchor_ids);
-    if (s)
+    if (s) {
+        *alias_nodes = b.alias_start;
         ydoc_free(doc);
+    }
     return s;
 }
 

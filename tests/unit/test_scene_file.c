@@ -23,6 +23,7 @@
 #include "glint.h"
 #include "tmp_tree.h"
 #include "scene/scene.h"
+#include "scenefile/scene_file.h"
 
 #define PATH_SIZE 1024
 #define COUNT(a) (sizeof(a) / sizeof((a)[0]))
@@ -2416,6 +2417,221 @@ static void test_merge_too_deep_says_so(void **state)
         fail_msg("expected a message about depth, got %d:\n%s", log.count, log.all);
 }
 
+/* ------------------------------------------- objects read while parsed */
+
+/* What a load gave in one of the loader's modes (scenefile/scene_file.h):
+ * the scene written back as a file, or what was reported. */
+typedef struct outcome {
+    char *written;            /* NULL when the scene was refused */
+    report_log log;
+    glint_error err;
+} outcome;
+
+/* Loads yaml, or the file tmp_dir/file when yaml is NULL, in mode m. */
+static outcome load_in_mode(scene_file_mode m, const char *yaml, const char *file)
+{
+    outcome out = {0};
+    glint_load_options o = {.report = log_report, .report_user = &out.log};
+    char path[PATH_SIZE];
+    scene_file_set_mode(m);
+    glint_scene *s;
+    if (yaml) {
+        s = glint_scene_load_memory(yaml, strlen(yaml), "streamed.yaml", &o, &out.err);
+    } else {
+        tmp_path(path, file);
+        s = glint_scene_load_file(path, &o, &out.err);
+    }
+    scene_file_set_mode(SCENE_FILE_STREAMED);
+    if (s) {
+        size_t size;
+        FILE *f = open_memstream(&out.written, &size);
+        assert_non_null(f);
+        glint_error err;
+        assert_int_equal(glint_scene_write_yaml(s, f, &err), GLINT_OK);
+        assert_int_equal(fclose(f), 0);
+        glint_scene_free(s);
+    }
+    return out;
+}
+
+/* Loads yaml (or tmp_dir/file) with its objects read while it is parsed,
+ * the default, and from its whole tree: the same scene, written back byte
+ * for byte, or the same reports, all of them. Then the streamed attempt
+ * alone: it loads the same scene when `streams`, and otherwise gives up,
+ * silently. Returns the whole tree's reports. */
+static report_log check_streaming(const char *yaml, const char *file, bool streams)
+{
+    outcome whole = load_in_mode(SCENE_FILE_WHOLE, yaml, file);
+    outcome dflt = load_in_mode(SCENE_FILE_STREAMED, yaml, file);
+    outcome only = load_in_mode(SCENE_FILE_STREAMED_ONLY, yaml, file);
+    assert_int_equal(!dflt.written, !whole.written);
+    if (whole.written)
+        assert_string_equal(dflt.written, whole.written);
+    else
+        assert_string_equal(dflt.err.message, whole.err.message);
+    assert_string_equal(dflt.log.all, whole.log.all);
+    if (streams && !only.written)
+        fail_msg("the streamed attempt gave up: %s", only.err.message);
+    if (!streams && only.written)
+        fail_msg("the streamed attempt did not give up");
+    if (streams)
+        assert_string_equal(only.written, whole.written);
+    assert_int_equal(only.log.count, 0);
+    free(whole.written);
+    free(dflt.written);
+    free(only.written);
+    return whole.log;
+}
+
+/* Every section, then the objects: read one by one as they are parsed,
+ * to the very scene the whole tree gives. */
+static void test_objects_streamed_after_every_section(void **state)
+{
+    const char *yaml = "glint: 1\n"
+                       "settings: {width: 32, height: 24, background: [0.1, 0.2, 0.3]}\n"
+                       "camera: {position: [0, 1, 9], look_at: [0, 0, 0]}\n"
+                       "fog: {type: linear, start: 1, end: 30}\n"
+                       "textures:\n  checks: {type: checker, size: 2}\n"
+                       "materials:\n  m: {color: [1, 0, 0]}\n  t: {texture: checks, specular: 0.25}\n"
+                       "lights:\n  - {type: point, position: [1, 5, 1]}\n"
+                       "objects:\n"
+                       "  - {type: sphere, material: m, center: [0, 1, 0], radius: 0.5}\n"
+                       "  - type: box\n"
+                       "    material: t\n"
+                       "    min: [-1, -1, -1]\n"
+                       "    max: [1, 0, 1]\n"
+                       "    transform: [{rotate_y: 30}, {translate: [0, 0, -2]}]\n"
+                       "  - {type: group, material: t, transform: [{scale: 2}], objects: [\n"
+                       "      {type: sphere, radius: 0.25},\n"
+                       "      {type: group, objects: [{type: cylinder, material: m, radius: 1, height: 2}]}]}\n"
+                       "  - {type: plane, normal: [0, 1, 0], material: {color: \"#336699\"}}\n";
+    check_streaming(yaml, NULL, true);
+}
+
+/* A section after the objects, which the whole tree reads before them:
+ * the streamed attempt gives up (its objects named a material not yet
+ * read, or a key followed them) and the scene loads as it always did. */
+static void test_section_after_objects_loads_the_same(void **state)
+{
+    check_streaming("objects:\n  - {type: sphere, material: m, radius: 1}\n  - {type: sphere, material: m, radius: 2}\n"
+                    "materials:\n  m: {color: [0, 1, 0]}\n",
+                    NULL, false);
+    check_streaming("materials: {m: {}}\nobjects:\n  - {type: sphere, material: m, radius: 1}\nlights:\n"
+                    "  - {type: point, position: [0, 4, 0]}\n",
+                    NULL, false);
+    report_log log = check_streaming("materials: {m: {}}\nobjects: [{type: sphere, material: m, radius: 1}]\n"
+                                     "objects: [{type: sphere, material: m, radius: 2}]\n",
+                                     NULL, false);
+    assert_string_equal(log.first, "streamed.yaml:3:1: duplicate key 'objects' in the scene");
+}
+
+/* A problem in the third object, a syntax error further on: the whole
+ * tree reports only the syntax error, and so does the default; with two
+ * problems in objects and no syntax error, both, in order. */
+static void test_problems_in_streamed_objects(void **state)
+{
+    const char *head = "materials: {m: {}}\n"
+                       "objects:\n"
+                       "  - {type: sphere, material: m, radius: 1}\n"
+                       "  - {type: sphere, material: m, radius: 1}\n"
+                       "  - {type: sphere, material: nosuch, radius: 1}\n"
+                       "  - {type: sphere, material: m, radius: 1}\n";
+    char yaml[1024];
+    snprintf(yaml, sizeof yaml, "%s  - {type: sphere, radius: [}\n  - {type: sphere, material: m, radius: 1}\n", head);
+    report_log log = check_streaming(yaml, NULL, false);
+    assert_int_equal(log.count, 1);
+    assert_non_null(strstr(log.first, "streamed.yaml:7:"));
+    assert_non_null(strstr(log.first, "syntax error"));
+    snprintf(yaml, sizeof yaml, "%s  - {type: sphere, material: m, radius: -1}\n", head);
+    log = check_streaming(yaml, NULL, false);
+    assert_int_equal(log.count, 2);
+    assert_string_equal(log.all, "streamed.yaml:5:30: unknown material 'nosuch'\n"
+                                 "streamed.yaml:7:41: 'radius' must be positive, got -1\n");
+}
+
+/* Anchors in objects, aliased by later objects, among objects whose nodes
+ * are given back: an object that defines an anchor is kept, whole or
+ * only a part of it named; a name anchored again names the later node. */
+static void test_anchors_in_streamed_objects(void **state)
+{
+    char *yaml = malloc(200000);
+    assert_non_null(yaml);
+    char *p = yaml + sprintf(yaml, "materials: {m: {}}\n"
+                                   "objects:\n"
+                                   "  - &ball {type: sphere, material: m, radius: 2}\n"
+                                   "  - {type: sphere, material: m, radius: 1, center: &spot [1, 2, 3]}\n");
+    for (int i = 0; i < 2000; i++)
+        p += sprintf(p, "  - {type: box, material: m, min: [%d, 0, 0], max: [%d, 1, 1]}\n", i, i + 1);
+    sprintf(p, "  - *ball\n"
+               "  - {type: sphere, material: m, radius: 1, transform: [{translate: *spot}]}\n"
+               "  - {type: group, objects: [*ball, {<<: *ball, radius: 3}]}\n"
+               "  - &ball {type: sphere, material: m, radius: 4}\n"
+               "  - *ball\n");
+    check_streaming(yaml, NULL, true);
+    free(yaml);
+}
+
+/* An include read while the including file is parsed defines the
+ * materials of both files' objects; its own objects are streamed too. */
+static void test_include_streamed(void **state)
+{
+    write_tmp("streamed/main.yaml", "include: parts/looks.yaml\n"
+                                    "materials: {blue: {color: [0, 0, 1]}}\n"
+                                    "objects:\n"
+                                    "  - {type: sphere, material: red, radius: 1}\n"
+                                    "  - {type: sphere, material: blue, radius: 1, center: [2, 0, 0]}\n");
+    write_tmp("streamed/parts/looks.yaml", "materials:\n  red: {color: [1, 0, 0]}\n"
+                                           "objects:\n  - {type: box, material: red, min: [0, 0, 0], max: [1, 1, 1]}\n");
+    check_streaming(NULL, "streamed/main.yaml", true);
+}
+
+/* Writes a file whose objects are `count` aliases of one sphere of a
+ * 1000-step transform: 6009 nodes each that the aliases add. */
+static void write_aliased_spheres(const char *name, const char *head, int count)
+{
+    size_t room = 64000;
+    char *text = malloc(room), *p = text;
+    assert_non_null(text);
+    p += sprintf(p, "%sobjects:\n  - &s {type: sphere, material: m, radius: 1, transform: [", head);
+    for (int i = 0; i < 1000; i++)
+        p += sprintf(p, "%s{translate: [0, 0, 0]}", i ? ", " : "");
+    p += sprintf(p, "]}\n");
+    for (int i = 0; i < count; i++)
+        p += sprintf(p, "  - *s\n");
+    assert_true((size_t)(p - text) < room);
+    write_tmp(name, text);
+    free(text);
+}
+
+/* The alias limit is the scene's: an include read while the including
+ * file is parsed counts against it with what that file's aliases add
+ * before and after. Each file alone is within the limit, both are not. */
+static void test_alias_limit_while_streaming(void **state)
+{
+    write_aliased_spheres("alias-limit/main.yaml", "include: more.yaml\n", 90);
+    write_aliased_spheres("alias-limit/more.yaml", "materials: {m: {}}\n", 90);
+    report_log log = check_streaming(NULL, "alias-limit/main.yaml", false);
+    assert_non_null(strstr(log.first, "more.yaml:80:5: scene too large after alias expansion"));
+    write_aliased_spheres("alias-limit/main.yaml", "include: more.yaml\n", 60);
+    check_streaming(NULL, "alias-limit/main.yaml", true);
+}
+
+/* Standard input is read once: a load that the streamed attempt gives up
+ * reads its bytes again. */
+static void test_stream_read_again(void **state)
+{
+    static char text[] = "objects: [{type: sphere, material: m, radius: 1}]\nmaterials: {m: {}}\n";
+    FILE *in = fmemopen(text, strlen(text), "r");
+    assert_non_null(in);
+    glint_error err = {0};
+    glint_scene *s = glint_scene_load_stream(in, "<stdin>", NULL, &err);
+    if (!s)
+        fail_msg("refused: %s", err.message);
+    assert_int_equal(glint_scene_get_counts(s).shapes, 1);
+    glint_scene_free(s);
+    fclose(in);
+}
+
 /* ------------------------------------------------------------------ main */
 
 int main(void)
@@ -2468,6 +2684,13 @@ int main(void)
         cmocka_unit_test(test_failed_texture_is_reported_once),
         cmocka_unit_test(test_merge_list_of_non_maps),
         cmocka_unit_test(test_merge_too_deep_says_so),
+        cmocka_unit_test(test_objects_streamed_after_every_section),
+        cmocka_unit_test(test_section_after_objects_loads_the_same),
+        cmocka_unit_test(test_problems_in_streamed_objects),
+        cmocka_unit_test(test_anchors_in_streamed_objects),
+        cmocka_unit_test(test_include_streamed),
+        cmocka_unit_test(test_alias_limit_while_streaming),
+        cmocka_unit_test(test_stream_read_again),
     };
     /* One test per row of the table, named after it. */
     static struct CMUnitTest tests[COUNT(fixed) + COUNT(BAD)];

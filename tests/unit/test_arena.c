@@ -1,0 +1,109 @@
+/* test_arena.c - the bump allocator of core/arena.h: pieces aligned and
+ * apart, and a rollback giving back what was cut since its mark, small
+ * pieces, new chunks and large pieces alike, so that the same memory
+ * serves again. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <malloc.h>
+#include <string.h>
+#include "core/arena.h"
+
+#define CHUNK ((size_t)1 << 20)
+
+/* Pieces of every small size: aligned for a double, none overlapping. */
+static void test_pieces_are_aligned_and_apart(void **state)
+{
+    arena a = {0};
+    unsigned char *last = NULL;
+    for (size_t size = 1; size < 200; size++) {
+        unsigned char *p = arena_alloc(&a, size);
+        assert_non_null(p);
+        assert_int_equal((uintptr_t)p % 8, 0);
+        memset(p, (int)size, size);
+        if (last)
+            assert_int_equal(last[0], (unsigned char)(size - 1));
+        last = p;
+    }
+    arena_free(&a);
+    assert_null(a.chunks);
+}
+
+/* What is cut after a mark comes back at the same address after the
+ * rollback, and what was cut before it is left alone. */
+static void test_rollback_reuses_the_memory(void **state)
+{
+    arena a = {0};
+    char *before = arena_alloc(&a, 16);
+    strcpy(before, "kept");
+    arena_point mark = arena_mark(&a);
+    void *first = arena_alloc(&a, 100);
+    for (int round = 0; round < 1000; round++) {
+        arena_rollback(&a, mark);
+        assert_ptr_equal(arena_alloc(&a, 100), first);
+    }
+    assert_string_equal(before, "kept");
+    arena_free(&a);
+}
+
+/* Bytes malloc has handed out and not had back (0 under AddressSanitizer,
+ * whose malloc keeps no such count). */
+static size_t in_use(void)
+{
+    struct mallinfo2 m = mallinfo2();
+    return m.uordblks + m.hblkhd;
+}
+
+/* Rolling back past new chunks and large pieces (which go behind the
+ * newest chunk, in front of those cut before the mark) frees them all,
+ * and the room left in the mark's chunk is cut next. */
+static void test_rollback_frees_chunks_and_large_pieces(void **state)
+{
+    arena a = {0};
+    char *small = arena_alloc(&a, 1000), *big = arena_alloc(&a, CHUNK / 2);
+    assert_non_null(small);
+    assert_non_null(big);
+    strcpy(small, "small");
+    strcpy(big, "big");
+    arena_point mark = arena_mark(&a);
+    size_t held = in_use();
+    void *next = arena_alloc(&a, 64);
+    for (int round = 0; round < 3; round++) {
+        arena_rollback(&a, mark);
+        assert_non_null(arena_alloc(&a, CHUNK / 2));
+        for (int i = 0; i < 40; i++)
+            assert_non_null(arena_alloc(&a, CHUNK / 16));
+        assert_non_null(arena_alloc(&a, CHUNK / 3));
+        assert_true(in_use() >= held + 3 * CHUNK || held == 0);
+        arena_rollback(&a, mark);
+        assert_int_equal(in_use(), held);
+        assert_ptr_equal(arena_alloc(&a, 64), next);
+    }
+    assert_string_equal(small, "small");
+    assert_string_equal(big, "big");
+    arena_free(&a);
+}
+
+/* A mark on an empty arena: the rollback empties it. */
+static void test_rollback_to_empty(void **state)
+{
+    arena a = {0};
+    arena_point mark = arena_mark(&a);
+    assert_non_null(arena_alloc(&a, 10));
+    assert_non_null(arena_alloc(&a, CHUNK));
+    arena_rollback(&a, mark);
+    assert_null(a.chunks);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_pieces_are_aligned_and_apart),
+        cmocka_unit_test(test_rollback_reuses_the_memory),
+        cmocka_unit_test(test_rollback_frees_chunks_and_large_pieces),
+        cmocka_unit_test(test_rollback_to_empty),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
