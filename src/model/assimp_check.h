@@ -29,8 +29,15 @@ glint_status glb_check(const unsigned char *data, size_t size, const char *file,
  * node of about 1 KB for each. */
 #define GLTF_MAX_NODES 1000000
 
+/* The bytes a vertex or an index of a glTF mesh takes, about, once Assimp
+ * has copied it for a placement and glint has merged it. */
+#define GLTF_PLACED_BYTES 64
+
 /* Refuses glTF JSON text (size bytes) whose node hierarchy has a cycle or
- * expands to more than GLTF_MAX_NODES nodes (gltf_nodes.c). */
+ * expands to more than GLTF_MAX_NODES nodes, or (glTF 2) whose nodes place
+ * their meshes' vertices and indices (their accessors' counts, once per
+ * placement) more times than half of the machine's memory holds at
+ * GLTF_PLACED_BYTES each (gltf_nodes.c). */
 glint_status gltf_check_nodes(const unsigned char *text, size_t size, const char *file, glint_error *err);
 
 #endif

@@ -11,7 +11,10 @@
  * holds it reads as that parser does (the first of two equal keys, escapes
  * decoded). glTF 1 names its nodes (an object of them, children and roots
  * given by name) where glTF 2 numbers them (an array): names are decoded
- * and turned into numbers once the file is read. */
+ * and turned into numbers once the file is read. The same walk, each node
+ * weighted by the vertices and indices of the mesh it places (glTF 2:
+ * its accessors' counts), bounds what Assimp copies for every placement
+ * of a mesh (PreTransformVertices) before it copies it. */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
@@ -19,6 +22,7 @@
 #include "core/error.h"
 #include "model/assimp_check.h"
 #include "model/json_char.h"
+#include "model/model_file.h"
 
 /* Where the scan is in the JSON text. */
 typedef struct reader {
@@ -45,6 +49,15 @@ typedef struct graph {
     size_t root_count, root_cap;
     uint64_t *node_names;     /* glTF 1: node n's name (an offset in reader.names) */
     size_t node_name_cap;
+    uint64_t *node_mesh;      /* glTF 2: node n's mesh, or NO_NODE */
+    size_t node_mesh_cap;
+    /* glTF 2: mesh m's accessors (its primitives' POSITION and indices)
+     * are accessor[mesh_first[m]] to accessor[mesh_first[m + 1] - 1]. */
+    size_t meshes, *mesh_first, mesh_first_cap;
+    uint64_t *accessor;
+    size_t accessor_refs, accessor_ref_cap;
+    uint64_t *accessor_count; /* glTF 2: each accessor's count, or NO_NODE */
+    size_t accessors, accessor_count_cap;
 } graph;
 
 static void skip_space(reader *r)
@@ -199,6 +212,136 @@ static bool read_indices(reader *r, uint64_t **list, size_t *count, size_t *cap)
     return n == 0;
 }
 
+/* Reads one value into *v: its number when it is an unsigned integer
+ * (capped at NO_NODE), NO_NODE when it is anything else. False at broken
+ * JSON. */
+static bool read_number(reader *r, uint64_t *v)
+{
+    skip_space(r);
+    size_t start = r->i;
+    uint64_t n = 0;
+    for (; r->i < r->size && r->t[r->i] >= '0' && r->t[r->i] <= '9'; r->i++)
+        n = n > NO_NODE / 10 - 1 ? NO_NODE : n * 10 + (uint64_t)(r->t[r->i] - '0');
+    bool integer = r->i > start && (r->i >= r->size || !strchr(".eE", r->t[r->i]));
+    r->i = start;
+    *v = integer ? n : NO_NODE;
+    return skip_value(r);
+}
+
+/* Appends v to *list; false (r->nomem) when memory runs out. */
+static bool append(reader *r, uint64_t **list, size_t *count, size_t *cap, uint64_t v)
+{
+    if (!array_reserve((void **)list, cap, *count + 1, sizeof **list)) {
+        r->nomem = true;
+        return false;
+    }
+    (*list)[(*count)++] = v;
+    return true;
+}
+
+/* Calls on(r, g, key) for each member of the object at the reader, the
+ * reader at its value, which on must read; the first of two equal keys
+ * is the one JSON parsers keep, so each key is handed over once. A value
+ * that is not an object is skipped. */
+typedef bool (*member_fn)(reader *r, graph *g, const char *key);
+
+static bool each_member(reader *r, graph *g, member_fn on, const char *const *keys, int key_count)
+{
+    if (!take(r, '{'))
+        return skip_value(r);
+    bool first = true;
+    unsigned seen = 0;
+    char member[16];
+    int m;
+    while ((m = next_member(r, &first, member, sizeof member)) > 0) {
+        int k = 0;
+        while (k < key_count && strcmp(member, keys[k]) != 0)
+            k++;
+        bool wanted = k < key_count && !(seen >> k & 1);
+        seen |= wanted ? 1u << k : 0;
+        if (!(wanted ? on(r, g, member) : skip_value(r)))
+            return false;
+    }
+    return m == 0;
+}
+
+/* Calls on(r, g) for each item of the array at the reader, which on must
+ * read; a value that is not an array is skipped. */
+static bool each_item(reader *r, graph *g, bool (*on)(reader *r, graph *g))
+{
+    if (!take(r, '['))
+        return skip_value(r);
+    bool first = true;
+    int n;
+    while ((n = next_item(r, &first, ']')) > 0)
+        if (!on(r, g))
+            return false;
+    return n == 0;
+}
+
+/* A primitive's attribute POSITION, or its indices: an accessor of the
+ * current mesh. */
+static bool on_accessor_ref(reader *r, graph *g, const char *key)
+{
+    (void)key;
+    uint64_t v;
+    return read_number(r, &v) && append(r, &g->accessor, &g->accessor_refs, &g->accessor_ref_cap, v);
+}
+
+static bool on_attributes(reader *r, graph *g, const char *key)
+{
+    static const char *const keys[] = {"POSITION"};
+    (void)key;
+    return each_member(r, g, on_accessor_ref, keys, 1);
+}
+
+static bool on_primitive_member(reader *r, graph *g, const char *key)
+{
+    return strcmp(key, "attributes") == 0 ? on_attributes(r, g, key) : on_accessor_ref(r, g, key);
+}
+
+static bool on_primitive(reader *r, graph *g)
+{
+    static const char *const keys[] = {"attributes", "indices"};
+    return each_member(r, g, on_primitive_member, keys, 2);
+}
+
+static bool on_primitives(reader *r, graph *g, const char *key)
+{
+    (void)key;
+    return each_item(r, g, on_primitive);
+}
+
+static bool on_mesh(reader *r, graph *g)
+{
+    static const char *const keys[] = {"primitives"};
+    if (!array_reserve((void **)&g->mesh_first, &g->mesh_first_cap, g->meshes + 2, sizeof *g->mesh_first)) {
+        r->nomem = true;
+        return false;
+    }
+    g->mesh_first[g->meshes++] = g->accessor_refs;
+    bool ok = each_member(r, g, on_primitives, keys, 1);
+    g->mesh_first[g->meshes] = g->accessor_refs;
+    return ok;
+}
+
+static bool on_accessor_count(reader *r, graph *g, const char *key)
+{
+    (void)key;
+    uint64_t v;
+    return read_number(r, &v) && append(r, &g->accessor_count, &g->accessors, &g->accessor_count_cap, v);
+}
+
+static bool on_accessor(reader *r, graph *g)
+{
+    static const char *const keys[] = {"count"};
+    size_t before = g->accessors;
+    if (!each_member(r, g, on_accessor_count, keys, 1))
+        return false;
+    /* An accessor without a count counts for nothing: Assimp refuses it. */
+    return g->accessors > before || append(r, &g->accessor_count, &g->accessors, &g->accessor_count_cap, 0);
+}
+
 /* Reads each object of an array, or (glTF 1) of an object by name, the
  * value of "nodes" or "scenes": the value of its member `key` through
  * read_indices into *list; with nodes set, also where each node's children
@@ -217,10 +360,12 @@ static bool read_objects(reader *r, const char *key, graph *g, bool nodes, uint6
             return false;
         if (nodes) {
             if (!array_reserve((void **)&g->first, &g->first_cap, g->nodes + 2, sizeof *g->first) ||
-                !array_reserve((void **)&g->node_names, &g->node_name_cap, g->nodes + 1, sizeof *g->node_names)) {
+                !array_reserve((void **)&g->node_names, &g->node_name_cap, g->nodes + 1, sizeof *g->node_names) ||
+                !array_reserve((void **)&g->node_mesh, &g->node_mesh_cap, g->nodes + 1, sizeof *g->node_mesh)) {
                 r->nomem = true;
                 return false;
             }
+            g->node_mesh[g->nodes] = NO_NODE;
             g->node_names[g->nodes] = named ? name | NAMED : 0;
             g->first[g->nodes++] = *count;
         }
@@ -232,10 +377,15 @@ static bool read_objects(reader *r, const char *key, graph *g, bool nodes, uint6
         bool first_member = true, seen = false;
         char member[16];
         int m;
+        bool mesh_seen = false;
         while ((m = next_member(r, &first_member, member, sizeof member)) > 0) {
             bool wanted = !seen && strcmp(member, key) == 0;
+            bool mesh = nodes && !named && !mesh_seen && strcmp(member, "mesh") == 0;
             seen |= wanted;
-            if (!(wanted ? read_indices(r, list, count, cap) : skip_value(r)))
+            mesh_seen |= mesh;
+            if (!(wanted ? read_indices(r, list, count, cap)
+                  : mesh ? read_number(r, &g->node_mesh[g->nodes - 1])
+                         : skip_value(r)))
                 return false;
         }
         if (m < 0)
@@ -252,7 +402,7 @@ static bool read_graph(reader *r, graph *g)
 {
     if (!take(r, '{'))
         return false;
-    bool first = true, nodes_seen = false, scenes_seen = false;
+    bool first = true, nodes_seen = false, scenes_seen = false, meshes_seen = false, accessors_seen = false;
     char key[16];
     int n;
     while ((n = next_member(r, &first, key, sizeof key)) > 0) {
@@ -263,6 +413,12 @@ static bool read_graph(reader *r, graph *g)
         } else if (!scenes_seen && strcmp(key, "scenes") == 0) {
             scenes_seen = true;
             ok = read_objects(r, "nodes", g, false, &g->roots, &g->root_count, &g->root_cap);
+        } else if (!meshes_seen && strcmp(key, "meshes") == 0) {
+            meshes_seen = true;
+            ok = each_item(r, g, on_mesh);
+        } else if (!accessors_seen && strcmp(key, "accessors") == 0) {
+            accessors_seen = true;
+            ok = each_item(r, g, on_accessor);
         } else {
             ok = skip_value(r);
         }
@@ -323,9 +479,10 @@ static bool resolve_names(const reader *r, graph *g)
     return true;
 }
 
-static uint64_t add_capped(uint64_t a, uint64_t b)
+/* a + b, or cap when that is more (a and b at most cap each). */
+static uint64_t add_capped(uint64_t a, uint64_t b, uint64_t cap)
 {
-    return a + b > GLTF_MAX_NODES ? GLTF_MAX_NODES + 1 : a + b;
+    return a + b > cap ? cap : a + b;
 }
 
 /* A node on the walk's stack: the next of its children to visit, and the
@@ -335,11 +492,12 @@ typedef struct frame {
     uint64_t sum;
 } frame;
 
-/* Counts the expansion of every node into paths[] (the node itself, and
- * each child's expansion once per time it is named), capped at
- * GLTF_MAX_NODES + 1, walking the graph depth first with a stack of its
- * own. Sets *cycle to a node on a cycle, or to SIZE_MAX. */
-static glint_status count_paths(const graph *g, uint64_t *paths, size_t *cycle, glint_error *err, const char *file)
+/* Counts the expansion of every node into paths[]: its own weight (own[n],
+ * or 1 when own is NULL) and each child's expansion once per time it is
+ * named, capped at `cap`, walking the graph depth first with a stack of
+ * its own. Sets *cycle to a node on a cycle, or to SIZE_MAX. */
+static glint_status count_paths(const graph *g, const uint64_t *own, uint64_t cap, uint64_t *paths, size_t *cycle,
+                                glint_error *err, const char *file)
 {
     unsigned char *state = calloc(g->nodes, 1); /* 0 not reached, 1 on the stack, 2 counted */
     frame *stack = array_alloc(g->nodes, sizeof *stack);
@@ -349,7 +507,7 @@ static glint_status count_paths(const graph *g, uint64_t *paths, size_t *cycle, 
         if (state[start])
             continue;
         size_t depth = 0;
-        stack[depth++] = (frame){start, g->first[start], 1};
+        stack[depth++] = (frame){start, g->first[start], own ? own[start] : 1};
         state[start] = 1;
         while (depth > 0 && *cycle == SIZE_MAX) {
             frame *f = &stack[depth - 1];
@@ -357,7 +515,7 @@ static glint_status count_paths(const graph *g, uint64_t *paths, size_t *cycle, 
                 paths[f->node] = f->sum;
                 state[f->node] = 2;
                 if (--depth > 0)
-                    stack[depth - 1].sum = add_capped(stack[depth - 1].sum, f->sum);
+                    stack[depth - 1].sum = add_capped(stack[depth - 1].sum, f->sum, cap);
                 continue;
             }
             uint64_t c = g->child[f->next++];
@@ -366,16 +524,46 @@ static glint_status count_paths(const graph *g, uint64_t *paths, size_t *cycle, 
             if (state[c] == 1)
                 *cycle = (size_t)c;
             else if (state[c] == 2)
-                f->sum = add_capped(f->sum, paths[c]);
+                f->sum = add_capped(f->sum, paths[c], cap);
             else {
                 state[c] = 1;
-                stack[depth++] = (frame){(size_t)c, g->first[c], 1};
+                stack[depth++] = (frame){(size_t)c, g->first[c], own ? own[c] : 1};
             }
         }
     }
     free(state);
     free(stack);
     return s;
+}
+
+/* The largest expansion of any node, and of all scenes' roots together,
+ * each capped at cap. */
+static uint64_t largest_expansion(const graph *g, const uint64_t *paths, uint64_t cap)
+{
+    uint64_t largest = 0, roots = 0;
+    for (size_t n = 0; n < g->nodes; n++)
+        largest = paths[n] > largest ? paths[n] : largest;
+    for (size_t k = 0; k < g->root_count; k++)
+        if (g->roots[k] < g->nodes)
+            roots = add_capped(roots, paths[g->roots[k]], cap);
+    return roots > largest ? roots : largest;
+}
+
+/* Each node's own weight for placing: the counts of its mesh's accessors
+ * (vertices and indices), capped at cap; NULL when out of memory. */
+static uint64_t *placed_weights(const graph *g, uint64_t cap)
+{
+    uint64_t *own = array_alloc(g->nodes, sizeof *own);
+    for (size_t n = 0; own && n < g->nodes; n++) {
+        own[n] = 0;
+        uint64_t m = g->node_mesh[n];
+        for (size_t k = m < g->meshes ? g->mesh_first[m] : 0; m < g->meshes && k < g->mesh_first[m + 1]; k++) {
+            uint64_t a = g->accessor[k];
+            uint64_t count = a < g->accessors && g->accessor_count[a] != NO_NODE ? g->accessor_count[a] : 0;
+            own[n] = add_capped(own[n], count > cap ? cap : count, cap);
+        }
+    }
+    return own;
 }
 
 glint_status gltf_check_nodes(const unsigned char *text, size_t size, const char *file, glint_error *err)
@@ -395,29 +583,39 @@ glint_status gltf_check_nodes(const unsigned char *text, size_t size, const char
         s = error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", file);
     size_t cycle = SIZE_MAX;
     if (!s && g.nodes)
-        s = count_paths(&g, paths, &cycle, err, file);
+        s = count_paths(&g, NULL, GLTF_MAX_NODES + 1, paths, &cycle, err, file);
     if (!s && cycle != SIZE_MAX)
         s = error_set(err, GLINT_ERR_INVALID, "%s: node %zu is among its own children's descendants (the node hierarchy has a cycle)",
                       file, cycle);
     /* Every node's own expansion is bounded, whichever becomes a root, and
      * so are all scenes' roots together. */
-    uint64_t total = 0;
-    for (size_t n = 0; !s && n < g.nodes; n++)
-        total = paths[n] > total ? paths[n] : total;
-    uint64_t roots = 0;
-    for (size_t k = 0; !s && k < g.root_count; k++)
-        if (g.roots[k] < g.nodes)
-            roots = add_capped(roots, paths[g.roots[k]]);
-    if (!s && (total > GLTF_MAX_NODES || roots > GLTF_MAX_NODES))
+    if (!s && g.nodes && largest_expansion(&g, paths, GLTF_MAX_NODES + 1) > GLTF_MAX_NODES)
         s = error_set(err, GLINT_ERR_INVALID,
                       "%s: the node hierarchy expands to more than %d nodes (a node counts once for each path to it "
                       "from a root), too many to import",
                       file, GLTF_MAX_NODES);
+    /* Assimp copies a mesh's vertices and indices for each placement of
+     * it, before glint sees any: bounded the same way, weighted. */
+    uint64_t limit = model_file_memory_limit() / GLTF_PLACED_BYTES, *own = NULL;
+    if (!s && g.nodes && limit && !(own = placed_weights(&g, limit + 1)))
+        s = error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", file);
+    if (own && !s)
+        s = count_paths(&g, own, limit + 1, paths, &cycle, err, file);
+    if (own && !s && largest_expansion(&g, paths, limit + 1) > limit)
+        s = error_set(err, GLINT_ERR_INVALID,
+                      "%s: its nodes place their meshes' vertices and indices more times than half of this "
+                      "machine's memory holds (about %d bytes each once placed)",
+                      file, GLTF_PLACED_BYTES);
+    free(own);
     free(paths);
     free(g.first);
     free(g.child);
     free(g.roots);
     free(g.node_names);
+    free(g.node_mesh);
+    free(g.mesh_first);
+    free(g.accessor);
+    free(g.accessor_count);
     free(r.names);
     return s;
 }
