@@ -3,8 +3,10 @@
  * reporting its problems alone); its tiles rendered across the ranks
  * (lead.c on rank 0, follow.c on the others); the image written by rank 0
  * alone, as glint writes it; and one exit code for every rank. */
+#define _GNU_SOURCE /* sched_getaffinity */
 #include <fcntl.h>
 #include <mpi.h>
+#include <sched.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -54,6 +56,8 @@ static int refuse_unsupported(const cli_options *o)
         return cli_complain(CLI_EXIT_USAGE, "glint-mpi reads no scene from standard input: name a file");
     if (o->output && strcmp(o->output, "-") == 0)
         return cli_complain(CLI_EXIT_USAGE, "glint-mpi writes no image to standard output: give -o FILE");
+    if (o->partial)
+        return cli_complain(CLI_EXIT_USAGE, "glint-mpi does not stop gently on a signal yet: --partial is glint's");
     return -1;
 }
 
@@ -92,11 +96,23 @@ static void print_summary(const cli_run *r, int ranks, const rank_report *report
     fputc('\n', stderr);
 }
 
+/* The render threads of a rank without --threads: one per processor it
+ * may run on. mpirun binds each rank to one core by default when there are
+ * at most two ranks, to a socket beyond: a thread per core of the machine
+ * would then share the cores bound to. */
+static int default_threads(void)
+{
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    int n = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 0;
+    return n > 0 ? n : processors_online(1024);
+}
+
 /* Renders and, on rank 0, writes the image; the exit code. Every rank has
  * loaded the scene into r. */
 static int render(const cli_options *o, cli_run *r, int rank, int ranks)
 {
-    glint_render_options ro = {.threads = o->threads > 0 ? (int)o->threads : processors_online(1024)};
+    glint_render_options ro = {.threads = o->threads > 0 ? (int)o->threads : default_threads()};
     if (rank != 0) {
         follow_render(r->scene, &ro);
         return CLI_EXIT_OK;

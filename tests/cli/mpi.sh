@@ -3,7 +3,8 @@
 # example scene render to the bytes glint gives, on 1, 2, 3, 4 and 7 ranks
 # with various thread counts, the regular and the jittered sampler; a scene
 # error is reported once, by rank 0, with glint's message, and every rank
-# exits with glint's code, writing nothing; bad flags likewise.
+# exits with glint's code, writing nothing; bad flags likewise, and what
+# glint-mpi cannot do yet (-o -, --partial) is refused.
 # Skipped (exit 77) when glint-mpi was not built (no MPI found) or mpirun is
 # missing. Ranks run as root inside containers, and more ranks than cores.
 # Under ASan the leaks OpenMPI leaves are suppressed (mpi.supp).
@@ -137,5 +138,10 @@ st=$?
 mpi_codes 2 -o - -q >/dev/null 2>&1
 [ "$st" -eq 2 ] && codes_are 2 2 && [ "$(grep -c 'standard output' mpi.err)" -eq 1 ]
 verdict $? "glint-mpi refuses -o - on every rank, saying so once"
+if [ "$full" -eq 1 ]; then
+    mpi 2 --partial -q -o out.png >/dev/null 2>mpi.err
+    [ $? -eq 2 ] && [ "$(grep -c -- '--partial' mpi.err)" -eq 1 ] && [ "$(cat out.png)" = old ]
+    verdict $? "glint-mpi refuses --partial, which it cannot honour yet, saying so once"
+fi
 
 finish
