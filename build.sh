@@ -12,7 +12,7 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(gcc make cmake pkg-config libembree-dev zlib1g-dev libpng-dev libjpeg62-turbo-dev libyaml-dev libassimp-dev
-          libopenexr-dev libcmocka-dev clang libclang-rt-14-dev openexr)
+          libopenexr-dev libcmocka-dev clang libclang-rt-14-dev openexr openmpi-bin libopenmpi-dev)
 
 install_missing() {
     local missing=()
@@ -100,15 +100,15 @@ case "${1:-}" in
 render)
     shift
     install_missing
-    cmake/pgo-build.sh build
+    cmake/pgo-build.sh build -DGLINT_MPI=ON
     ./build/glint -o glint.png "$@"
     ;;
 test)
     install_missing
     # The same profile-guided build as render, so the tests check what users run.
-    cmake/pgo-build.sh build -DGLINT_WERROR=ON
+    cmake/pgo-build.sh build -DGLINT_WERROR=ON -DGLINT_MPI=ON
     ctest --test-dir build --output-on-failure -j "$(nproc)"
-    build build-asan -DGLINT_WERROR=ON -DGLINT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
+    build build-asan -DGLINT_WERROR=ON -DGLINT_MPI=ON -DGLINT_SANITIZE=ON -DCMAKE_BUILD_TYPE=RelWithDebInfo
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
         ctest --test-dir build-asan --output-on-failure -j "$(nproc)"
     same_images build/glint build-asan/glint
@@ -116,7 +116,7 @@ test)
     # flags for a bounded time each (tests/fuzz/README.md); a crash, leak or
     # timeout fails the test. The flags' parser prints as glint does: its
     # stdout and stderr are closed (libFuzzer's own messages still show).
-    CC=clang build build-fuzz -DGLINT_WERROR=ON -DGLINT_FUZZ=ON -DGLINT_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
+    CC=clang build build-fuzz -DGLINT_WERROR=ON -DGLINT_FUZZ=ON -DGLINT_MPI=OFF -DGLINT_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
     fuzz scene 8192
     fuzz mesh 16384
     fuzz texture 16384

@@ -10,6 +10,7 @@
 #include <unistd.h>
 #include "glint.h"
 #include "cli/args.h"
+#include "cli/setup.h"
 
 /* The render's cancel flag is a volatile int; on the platforms glint runs
  * on, sig_atomic_t is that int. */
@@ -78,102 +79,6 @@ static int reported(int code)
     return code > CLI_EXIT_IO ? code : CLI_EXIT_IO;
 }
 
-static int exit_code_of(glint_status s)
-{
-    switch (s) {
-    case GLINT_OK: return CLI_EXIT_OK;
-    case GLINT_ERR_INVALID: return CLI_EXIT_BAD_INPUT;
-    case GLINT_ERR_IO: return CLI_EXIT_IO;
-    case GLINT_ERR_CANCELLED: return CLI_EXIT_INTERRUPTED;
-    default: return CLI_EXIT_INTERNAL;
-    }
-}
-
-static void apply_overrides(const cli_options *o, glint_settings *s)
-{
-    if (o->width >= 0) s->width = (int)o->width;
-    if (o->height >= 0) s->height = (int)o->height;
-    if (o->spp >= 0) s->samples_per_pixel = (int)o->spp;
-    if (o->depth >= 0) s->max_depth = (int)o->depth;
-    if (o->seed >= 0) s->seed = (uint32_t)o->seed;
-    if (o->sampler >= 0) s->sampler = (glint_sampler)o->sampler;
-}
-
-typedef struct progress {
-    struct timespec start;
-    double last_print;
-} progress;
-
-static double seconds_since(const struct timespec *t0)
-{
-    struct timespec t;
-    clock_gettime(CLOCK_MONOTONIC, &t);
-    return (t.tv_sec - t0->tv_sec) + (t.tv_nsec - t0->tv_nsec) * 1e-9;
-}
-
-static void show_progress(void *user, int done, int total)
-{
-    progress *p = user;
-    double elapsed = seconds_since(&p->start);
-    if (done < total && elapsed - p->last_print < 0.1)
-        return;
-    p->last_print = elapsed;
-    double left = done > 0 ? elapsed * (total - done) / done : 0;
-    fprintf(stderr, "\r%3d%%  %.1f s elapsed, %.1f s left   ", (int)(100.0 * done / total), elapsed, left);
-    if (done == total)
-        fputs("\r\033[K", stderr);
-    fflush(stderr);
-}
-
-#define MAX_PROBLEMS 20
-
-static void print_problem(void *user, const char *message)
-{
-    ++*(int *)user;
-    fprintf(stderr, "%s\n", message);
-}
-
-/* The name of a scene file in messages: "<stdin>" for '-'. */
-static const char *scene_name(const char *path)
-{
-    return strcmp(path, "-") == 0 ? "<stdin>" : path;
-}
-
-/* Loads the scene file, or standard input for '-' (or builds a scene
- * around a model file, seen as o asks and framed for the image size it
- * gives), printing every problem and a last line saying what became of the
- * run; NULL after reporting, with *code the exit code: bad input, or an
- * internal failure when memory ran out. */
-static glint_scene *load_scene(const cli_options *o, const char *path, const char *outcome, int *code)
-{
-    glint_error err = {0};
-    glint_scene *scene;
-    const char *name = scene_name(path);
-    bool from_stdin = strcmp(path, "-") == 0;
-    if (glint_is_model_path(path)) {
-        /* An image over the pixel limit is framed for the default size:
-         * the flags are refused as usage when the size is set (run). */
-        bool fits = o->width * o->height <= GLINT_MAX_PIXELS;
-        glint_model_view_options view = {.view = o->view >= 0 ? (glint_model_view)o->view : GLINT_VIEW_AUTO,
-                                          .width = o->width > 0 && fits ? (int)o->width : 0,
-                                          .height = o->height > 0 && fits ? (int)o->height : 0};
-        scene = glint_scene_for_model_ex(path, &view, &err);
-        if (!scene)
-            cli_complain(CLI_EXIT_BAD_INPUT, "%s", err.message);
-    } else {
-        int problems = 0;
-        glint_load_options lo = {.report = print_problem, .report_user = &problems, .max_errors = MAX_PROBLEMS};
-        scene = from_stdin ? glint_scene_load_stream(stdin, name, &lo, &err) : glint_scene_load_file(path, &lo, &err);
-        if (!scene)
-            cli_complain(CLI_EXIT_BAD_INPUT, "%s: %d problem%s%s; %s", name, problems, problems == 1 ? "" : "s",
-                         problems >= MAX_PROBLEMS ? " (stopped at the limit)" : "", outcome);
-    }
-    for (int i = 0; i < glint_scene_warning_count(scene); i++)
-        fprintf(stderr, "glint: warning: %s\n", glint_scene_warning(scene, i));
-    *code = err.status == GLINT_ERR_NOMEM ? CLI_EXIT_INTERNAL : CLI_EXIT_BAD_INPUT;
-    return scene;
-}
-
 /* Prints `before`, then n and the word for n things: "1 texture", "2 textures". */
 static void print_count(const char *before, long long n, const char *one, const char *many)
 {
@@ -184,11 +89,11 @@ static void print_count(const char *before, long long n, const char *one, const 
 static int check_one(const cli_options *o, const char *path)
 {
     int code;
-    glint_scene *scene = load_scene(o, path, "not valid", &code);
+    glint_scene *scene = cli_load_scene(o, path, "not valid", true, &code);
     if (!scene)
         return code;
     glint_scene_counts c = glint_scene_get_counts(scene);
-    printf("%s: ok:", scene_name(path));
+    printf("%s: ok:", cli_scene_name(path));
     print_count(" ", c.textures, "texture", "textures");
     print_count(", ", c.materials, "material", "materials");
     print_count(", ", c.shapes, "shape", "shapes");
@@ -222,72 +127,19 @@ static int check_only(const cli_options *o)
     return worst;
 }
 
-/* Where the image goes: a file, or standard output for "-". */
-typedef struct destination {
-    const char *path;                 /* the file, or "-" */
-    const glint_image_format *format;
-    const char *shown;                /* its name in messages: the file's, or "<stdout>" */
-    char default_path[32];            /* glint.png, or glint.EXT of --format */
-} destination;
-
-/* Chooses where the image goes and in which format, and checks before
- * rendering that it can go there: -o, else the scene's output setting, else
- * glint.png (glint.ppm with --format ppm); a --format that disagrees with
- * the file's extension, or an --exr-pixel for other formats, is refused.
- * Returns -1 to go on, or the exit code after complaining. The path may
- * point into the scene. */
-static int choose_destination(const cli_options *o, const glint_scene *scene, destination *d)
-{
-    d->path = o->output ? o->output : glint_scene_get_output(scene);
-    if (!d->path) {
-        snprintf(d->default_path, sizeof d->default_path, "glint%s", o->format ? o->format->extensions[0] : ".png");
-        d->path = d->default_path;
-    }
-    glint_error err = {0};
-    if (strcmp(d->path, "-") == 0) {
-        d->format = o->format ? o->format : glint_image_format_named("png");
-        d->shown = "<stdout>";
-    } else {
-        glint_status st = glint_image_check_path(d->path, &err);
-        if (st)
-            return cli_complain(st == GLINT_ERR_INVALID ? CLI_EXIT_USAGE : exit_code_of(st), "%s", err.message);
-        d->format = glint_image_format_for_path(d->path);
-        d->shown = d->path;
-        if (o->format && o->format != d->format)
-            return cli_complain(CLI_EXIT_USAGE, "--format %s does not match the output '%s', a %s file by its extension",
-                                o->format->extensions[0] + 1, d->path, d->format->name);
-    }
-    /* A pixel type asked for and not given would be a surprise found after
-     * the render. */
-    if (o->exr_pixel >= 0 && strcmp(d->format->name, "OpenEXR") != 0)
-        return strcmp(d->path, "-") != 0
-                   ? cli_complain(CLI_EXIT_USAGE, "--exr-pixel is for .exr output, not '%s'", d->path)
-                   : cli_complain(CLI_EXIT_USAGE, "--exr-pixel is for .exr output, not %s on standard output "
-                                                  "(add --format exr)", d->format->name);
-    return -1;
-}
-
-/* Writes the image to its destination. */
-static glint_status write_image(const destination *d, const glint_image *image,
-                                const glint_image_write_options *options, glint_error *err)
-{
-    return strcmp(d->path, "-") == 0 ? glint_image_write_fd(image, STDOUT_FILENO, d->format, options, d->shown, err)
-                                     : glint_image_write_ex(image, d->path, options, err);
-}
-
 /* An interrupted render: nothing written, or with --partial its finished
  * tiles. Either way the exit code says it was interrupted. */
 static int interrupted_run(const cli_options *o, const glint_image *image, const glint_render_stats *stats,
-                           const destination *d, const glint_image_write_options *write_options)
+                           const cli_run *r)
 {
     if (!o->partial)
         return cli_complain(CLI_EXIT_INTERRUPTED, "interrupted: nothing written");
     glint_error err = {0};
-    glint_status st = write_image(d, image, write_options, &err);
+    glint_status st = cli_write_image(r, image, &err);
     if (st)
-        return cli_complain(exit_code_of(st), "interrupted, and the finished tiles were not written: %s", err.message);
+        return cli_complain(cli_exit_code_of(st), "interrupted, and the finished tiles were not written: %s", err.message);
     return cli_complain(CLI_EXIT_INTERRUPTED, "interrupted: %d of %d tiles finished, written to %s (the rest black)",
-                        stats->tiles_done, stats->tiles_total, d->shown);
+                        stats->tiles_done, stats->tiles_total, r->dest.shown);
 }
 
 /* --print-scene: the scene, with the output -o names, as a scene file on
@@ -299,7 +151,7 @@ static int print_scene(glint_scene *scene, const char *output)
     if (!st)
         st = glint_scene_write_yaml(scene, stdout, &err);
     glint_scene_free(scene);
-    return st ? cli_complain(exit_code_of(st), "%s", err.message) : CLI_EXIT_OK;
+    return st ? cli_complain(cli_exit_code_of(st), "%s", err.message) : CLI_EXIT_OK;
 }
 
 static int run(const cli_options *o)
@@ -309,87 +161,53 @@ static int run(const cli_options *o)
         return cli_complain(CLI_EXIT_USAGE, "will not write a%s %s image to a terminal; redirect stdout or give -o FILE",
                             o->format && strchr("AEIOU", o->format->name[0]) ? "n" : "",
                             o->format ? o->format->name : "PNG");
-    glint_error err = {0};
-    int code = CLI_EXIT_INTERNAL;
-    glint_scene *scene = o->scene ? load_scene(o, o->scene, "nothing rendered", &code) : glint_scene_seed_room(&err);
-    if (!scene)
-        return o->scene ? code : cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
-    destination d;
-    code = choose_destination(o, scene, &d);
-    if (code >= 0) {
-        glint_scene_free(scene); /* last: the path may point into it */
+    cli_run r;
+    int code = cli_prepare(o, true, &r);
+    if (code >= 0)
         return code;
-    }
-    glint_status st = GLINT_OK;
-    glint_image_write_options write_options = {.exr_pixel = o->exr_pixel >= 0 ? o->exr_pixel : GLINT_EXR_HALF};
-    for (int i = 0; i < o->swaps && !st; i++)
-        st = glint_scene_replace_image(scene, o->swap_name[i], o->swap_path[i], &err);
-    glint_settings settings = glint_scene_get_settings(scene);
-    apply_overrides(o, &settings);
-    if (st) {
-        glint_scene_free(scene);
-        /* Whatever stopped the scene, unreadable textures included, is bad input. */
-        return cli_complain(st == GLINT_ERR_NOMEM ? CLI_EXIT_INTERNAL : CLI_EXIT_BAD_INPUT, "%s", err.message);
-    }
-    /* The scene's own settings passed when it loaded: only the flags can
-     * make them fail now (an image too large in all, say). */
-    if (glint_scene_set_settings(scene, &settings, &err)) {
-        glint_scene_free(scene);
-        return cli_complain(CLI_EXIT_USAGE, "%s", err.message);
-    }
-
     if (o->print_scene)
-        return print_scene(scene, o->output);
-
-    /* An output over one of the run's own inputs would destroy it. */
-    if (strcmp(d.path, "-") != 0 && glint_scene_check_output(scene, d.path, &err)) {
-        glint_scene_free(scene);
-        return cli_complain(CLI_EXIT_IO, "%s", err.message);
-    }
+        return print_scene(r.scene, o->output);
 
     /* From here on a signal cancels the render (its BVH build included),
      * which then writes nothing, or with --partial its finished tiles. */
     rendering = 1;
-    progress prog = {.last_print = -1};
+    cli_progress prog = {.last_print = -1};
     clock_gettime(CLOCK_MONOTONIC, &prog.start);
     glint_render_options ro = {.threads = o->threads > 0 ? (int)o->threads : 0,
                                .cancel = (const volatile int *)&interrupted, .keep_partial = o->partial};
     if (!o->quiet && isatty(STDERR_FILENO)) {
-        ro.progress = show_progress;
+        ro.progress = cli_show_progress;
         ro.progress_user = &prog;
     }
     glint_image image;
     glint_render_stats stats;
-    st = glint_render(scene, &ro, &image, &stats, &err);
+    glint_error err = {0};
+    glint_status st = glint_render(r.scene, &ro, &image, &stats, &err);
     if (ro.progress && st == GLINT_ERR_CANCELLED)
         fputs("\r\033[K", stderr); /* the progress line stopped short */
     if (st == GLINT_ERR_CANCELLED) {
-        code = interrupted_run(o, &image, &stats, &d, &write_options);
+        code = interrupted_run(o, &image, &stats, &r);
         glint_image_free(&image);
-        glint_scene_free(scene);
+        glint_scene_free(r.scene);
         return code;
     }
     if (!st)
-        st = write_image(&d, &image, &write_options, &err);
+        st = cli_write_image(&r, &image, &err);
     glint_image_free(&image);
     if (st) {
-        glint_scene_free(scene);
-        return cli_complain(exit_code_of(st), "%s", err.message);
+        glint_scene_free(r.scene);
+        return cli_complain(cli_exit_code_of(st), "%s", err.message);
     }
-    /* A warning, not a failure: the image is written, without them. */
-    if (stats.nan_samples > 0)
-        fprintf(stderr, "glint: warning: %llu sample%s came out NaN (not a number) and %s left out of %s pixel%s\n",
-                (unsigned long long)stats.nan_samples, stats.nan_samples == 1 ? "" : "s",
-                stats.nan_samples == 1 ? "was" : "were", stats.nan_samples == 1 ? "its" : "their",
-                stats.nan_samples == 1 ? "" : "s");
+    cli_warn_nan(stats.nan_samples);
     if (!o->quiet) {
+        const glint_settings *settings = &r.settings;
         long threads = o->threads > 0 ? (long)o->threads : sysconf(_SC_NPROCESSORS_ONLN);
         fprintf(stderr, "glint: %dx%d, %d spp, %ld thread%s: %.3f s, %llu samples, %llu rays, %.1f Mrays/s -> %s\n",
-                settings.width, settings.height, settings.samples_per_pixel, threads, threads == 1 ? "" : "s", stats.seconds,
-                (unsigned long long)stats.samples, (unsigned long long)stats.rays,
-                stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, d.shown);
+                settings->width, settings->height, settings->samples_per_pixel, threads, threads == 1 ? "" : "s",
+                stats.seconds, (unsigned long long)stats.samples, (unsigned long long)stats.rays,
+                stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, r.dest.shown);
     }
-    glint_scene_free(scene); /* last: output may point into it */
+    glint_scene_free(r.scene); /* last: output may point into it */
     return CLI_EXIT_OK;
 }
 

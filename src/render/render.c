@@ -1,8 +1,10 @@
-/* render.c - glint_render: hands out tiles to threads, traces each tile's
- * blocks of pixels through the camera into the film (film.h), reports
- * progress and stops when cancelled. Each pixel depends only on its own
- * position and the scene, so the image is the same for any thread count,
- * tile size or tile order. */
+/* render.c - the render back-end (render_tiles.h) and glint_render, its
+ * local case: threads take tiles from a feed, trace each tile's blocks of
+ * pixels through the camera into the film (film.h) and hand the finished
+ * tile back to the feed; progress, and stopping when cancelled. Each pixel
+ * depends only on its own position and the scene, so the image is the same
+ * for any thread count, tile size, tile order or process a tile is
+ * rendered in. */
 #include <pthread.h>
 #include <stdatomic.h>
 #include <stdlib.h>
@@ -15,6 +17,7 @@
 #include "render/film.h"
 #include "render/hit.h"
 #include "render/integrator.h"
+#include "render/render_tiles.h"
 
 #define MAX_THREADS 1024
 
@@ -23,16 +26,18 @@ typedef struct job {
     const accel *acc;
     camera cam;
     const glint_render_options *opts;
+    const render_feed *feed;
     film film;
-    int tiles_x, tiles_total, tile_size, grid;
-    atomic_int next_tile;
-    unsigned char *finished;      /* finished[tile] != 0 once its pixels are all rendered */
+    render_layout layout;
+    int grid;
     int tiles_done;               /* under progress_lock */
     pthread_mutex_t progress_lock;
 } job;
 
 typedef struct worker {
     job *job;
+    int tiles_done;
+    uint64_t pixels_done;         /* in the tiles it finished */
     uint64_t rays;
     uint64_t nan_samples;         /* samples left out of their pixels as NaN */
 } worker;
@@ -144,15 +149,26 @@ static bool cancelled(const job *j)
     return j->opts->cancel && *j->opts->cancel;
 }
 
-/* The pixels of tile `tile`: columns x0 to x1 and rows y0 to y1, the ends
- * excluded. */
-static void tile_bounds(const job *j, int tile, int *x0, int *y0, int *x1, int *y1)
+void render_tile_bounds(const render_layout *l, int tile, int *x0, int *y0, int *x1, int *y1)
 {
-    const glint_settings *s = &j->scene->settings;
-    *x0 = (tile % j->tiles_x) * j->tile_size;
-    *y0 = (tile / j->tiles_x) * j->tile_size;
-    *x1 = *x0 + j->tile_size < s->width ? *x0 + j->tile_size : s->width;
-    *y1 = *y0 + j->tile_size < s->height ? *y0 + j->tile_size : s->height;
+    *x0 = (tile % l->tiles_x) * l->tile_size;
+    *y0 = (tile / l->tiles_x) * l->tile_size;
+    *x1 = *x0 + l->tile_size < l->width ? *x0 + l->tile_size : l->width;
+    *y1 = *y0 + l->tile_size < l->height ? *y0 + l->tile_size : l->height;
+}
+
+glint_status render_layout_for(const glint_scene *scene, int tile_size, render_layout *l, glint_error *err)
+{
+    if (tile_size < 0 || tile_size > 65536)
+        return error_set(err, GLINT_ERR_INVALID, "tile size must be 0..65536, got %d", tile_size);
+    /* Tiles hold whole blocks: the size is rounded up to a multiple of 4. */
+    int size = tile_size ? tile_size : 32;
+    l->tile_size = (size + BLOCK_W - 1) / BLOCK_W * BLOCK_W;
+    l->width = scene->settings.width;
+    l->height = scene->settings.height;
+    l->tiles_x = (l->width + l->tile_size - 1) / l->tile_size;
+    l->tiles_total = l->tiles_x * ((l->height + l->tile_size - 1) / l->tile_size);
+    return GLINT_OK;
 }
 
 /* Renders a tile; false if the render was cancelled before it was whole.
@@ -167,7 +183,7 @@ static void tile_bounds(const job *j, int tile, int *x0, int *y0, int *x1, int *
 static bool render_tile(tracer *t, job *j, int tile, uint64_t *nan_samples)
 {
     int x0, y0, x1, y1;
-    tile_bounds(j, tile, &x0, &y0, &x1, &y1);
+    render_tile_bounds(&j->layout, tile, &x0, &y0, &x1, &y1);
     for (int y = y0; y < y1; y += BLOCK_H) {
         for (int x = x0; x < x1; x += BLOCK_W) {
             if (cancelled(j))
@@ -194,15 +210,28 @@ static void *worker_run(void *arg)
     worker *w = arg;
     job *j = w->job;
     tracer t = {.scene = j->scene, .acc = j->acc, .reach = tracer_reach(j->scene), .cancel = j->opts->cancel};
+    const render_feed *f = j->feed;
+    const render_layout *l = &j->layout;
     int tile;
-    while ((tile = atomic_fetch_add(&j->next_tile, 1)) < j->tiles_total) {
-        if (cancelled(j) || !render_tile(&t, j, tile, &w->nan_samples))
+    while ((tile = f->next(f->user)) >= 0 && tile < l->tiles_total) {
+        if (cancelled(j))
             break;
-        j->finished[tile] = 1;
+        int x0, y0, x1, y1;
+        render_tile_bounds(l, tile, &x0, &y0, &x1, &y1);
+        if (!render_tile(&t, j, tile, &w->nan_samples)) {
+            /* What a cancelled tile traced is not its image. */
+            film_clear(&j->film, x0, y0, x1, y1);
+            break;
+        }
+        w->tiles_done++;
+        w->pixels_done += (uint64_t)(x1 - x0) * (uint64_t)(y1 - y0);
+        if (f->done)
+            f->done(f->user, tile, j->film.pixels + 3 * ((size_t)y0 * (size_t)l->width + (size_t)x0),
+                    3 * (size_t)l->width);
         if (j->opts->progress) {
             /* The lock keeps the calls one at a time and their counts in order. */
             pthread_mutex_lock(&j->progress_lock);
-            j->opts->progress(j->opts->progress_user, ++j->tiles_done, j->tiles_total);
+            j->opts->progress(j->opts->progress_user, ++j->tiles_done, l->tiles_total);
             pthread_mutex_unlock(&j->progress_lock);
         }
     }
@@ -217,8 +246,9 @@ static double now_seconds(void)
     return ts.tv_sec + ts.tv_nsec * 1e-9;
 }
 
-/* Runs the job on `count` threads, the caller's being the first. */
-static glint_status run_workers(job *j, int count, uint64_t *rays, uint64_t *nan_samples, glint_error *err)
+/* Runs the job on `count` threads, the caller's being the first, adding
+ * up their counts in *sum. */
+static glint_status run_workers(job *j, int count, worker *sum, glint_error *err)
 {
     worker *ws = calloc((size_t)count, sizeof *ws);
     if (!ws)
@@ -226,17 +256,25 @@ static glint_status run_workers(job *j, int count, uint64_t *rays, uint64_t *nan
     for (int i = 0; i < count; i++)
         ws[i].job = j;
     parallel_run(count, worker_run, ws, sizeof *ws);
-    *rays = *nan_samples = 0;
     for (int i = 0; i < count; i++) {
-        *rays += ws[i].rays;
-        *nan_samples += ws[i].nan_samples;
+        sum->tiles_done += ws[i].tiles_done;
+        sum->pixels_done += ws[i].pixels_done;
+        sum->rays += ws[i].rays;
+        sum->nan_samples += ws[i].nan_samples;
     }
     free(ws);
     return GLINT_OK;
 }
 
-glint_status glint_render(const glint_scene *scene, const glint_render_options *options, glint_image *out,
-                          glint_render_stats *stats, glint_error *err)
+/* Frees the film unless it is the caller's. */
+static void drop_film(job *j)
+{
+    if (!j->feed->pixels)
+        film_free(&j->film);
+}
+
+glint_status render_tiles(const glint_scene *scene, const glint_render_options *options, const render_feed *feed,
+                          glint_image *out, glint_render_stats *stats, glint_error *err)
 {
     static const glint_render_options defaults;
     const glint_render_options *o = options ? options : &defaults;
@@ -245,35 +283,28 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
     out->pixels = NULL;
     if (o->threads < 0 || o->threads > MAX_THREADS)
         return error_set(err, GLINT_ERR_INVALID, "thread count must be 0..%d, got %d", MAX_THREADS, o->threads);
-    if (o->tile_size < 0 || o->tile_size > 65536)
-        return error_set(err, GLINT_ERR_INVALID, "tile size must be 0..65536, got %d", o->tile_size);
+    job j = {.scene = scene, .opts = o, .feed = feed};
+    glint_status st = render_layout_for(scene, o->tile_size, &j.layout, err);
+    if (st)
+        return st;
     double start = now_seconds();
 
-    /* Tiles hold whole blocks: the size is rounded up to a multiple of 4. */
-    int tile_size = o->tile_size ? o->tile_size : 32;
-    tile_size = (tile_size + BLOCK_W - 1) / BLOCK_W * BLOCK_W;
-    job j = {.scene = scene, .opts = o, .tile_size = tile_size};
     j.grid = 1;
     while (j.grid * j.grid < s->samples_per_pixel)
         j.grid++;
-    if (!film_init(&j.film, s->width, s->height, j.grid * j.grid))
-        return error_set(err, GLINT_ERR_NOMEM, "out of memory for a %dx%d image", s->width, s->height);
-    camera_init(&j.cam, &scene->camera, s->width, s->height);
-    j.tiles_x = (s->width + j.tile_size - 1) / j.tile_size;
-    j.tiles_total = j.tiles_x * ((s->height + j.tile_size - 1) / j.tile_size);
-    atomic_init(&j.next_tile, 0);
-    if (!(j.finished = calloc((size_t)j.tiles_total, 1))) {
-        film_free(&j.film);
+    if (feed->pixels) {
+        j.film = (film){.pixels = feed->pixels, .width = s->width, .height = s->height, .samples = j.grid * j.grid};
+    } else if (!film_init(&j.film, s->width, s->height, j.grid * j.grid)) {
         return error_set(err, GLINT_ERR_NOMEM, "out of memory for a %dx%d image", s->width, s->height);
     }
+    camera_init(&j.cam, &scene->camera, s->width, s->height);
     /* Embree builds with every thread asked for; tracing needs no more
      * threads than tiles. */
     int build_threads = o->threads ? o->threads : processors_online(MAX_THREADS);
-    int threads = build_threads < j.tiles_total ? build_threads : j.tiles_total;
+    int threads = build_threads < j.layout.tiles_total ? build_threads : j.layout.tiles_total;
 
     accel *acc = NULL;
     bool *shape_opaque, *instance_opaque;
-    glint_status st = GLINT_OK;
     if (!hit_opacity(scene, &shape_opaque, &instance_opaque)) {
         st = error_set(err, GLINT_ERR_NOMEM, "out of memory building the accelerator");
     } else {
@@ -286,15 +317,14 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
     if (st && st != GLINT_ERR_CANCELLED) {
         free(shape_opaque);
         free(instance_opaque);
-        film_free(&j.film);
-        free(j.finished);
+        drop_film(&j);
         return st;
     }
-    uint64_t rays = 0, nan_samples = 0;
+    worker sum = {0};
     if (!st) {
         j.acc = acc;
         pthread_mutex_init(&j.progress_lock, NULL);
-        st = run_workers(&j, threads, &rays, &nan_samples, err);
+        st = run_workers(&j, threads, &sum, err);
         pthread_mutex_destroy(&j.progress_lock);
         accel_free(acc);
     }
@@ -304,35 +334,36 @@ glint_status glint_render(const glint_scene *scene, const glint_render_options *
     if (stopped)
         st = error_set(err, GLINT_ERR_CANCELLED, "render cancelled");
     if (st && !(stopped && o->keep_partial)) {
-        film_free(&j.film);
-        free(j.finished);
+        drop_film(&j);
         return st;
     }
     /* A cancelled render keeping its finished tiles: the others, rendered
-     * in part or not at all, are black. */
-    uint64_t pixels_done = 0;
-    int finished = 0;
-    for (int tile = 0; tile < j.tiles_total; tile++) {
-        int x0, y0, x1, y1;
-        tile_bounds(&j, tile, &x0, &y0, &x1, &y1);
-        if (j.finished[tile]) {
-            finished++;
-            pixels_done += (uint64_t)(x1 - x0) * (uint64_t)(y1 - y0);
-            continue;
-        }
-        film_clear(&j.film, x0, y0, x1, y1);
-    }
-    free(j.finished);
+     * in part (made black again) or not at all, are black. */
     out->width = s->width;
     out->height = s->height;
     out->pixels = j.film.pixels;
     if (stats) {
         stats->seconds = now_seconds() - start;
-        stats->samples = pixels_done * (uint64_t)(j.grid * j.grid);
-        stats->rays = rays;
-        stats->nan_samples = nan_samples;
-        stats->tiles_done = finished;
-        stats->tiles_total = j.tiles_total;
+        stats->samples = sum.pixels_done * (uint64_t)(j.grid * j.grid);
+        stats->rays = sum.rays;
+        stats->nan_samples = sum.nan_samples;
+        stats->tiles_done = sum.tiles_done;
+        stats->tiles_total = j.layout.tiles_total;
     }
     return st;
+}
+
+/* glint_render's feed: every tile in order, from a counter. */
+static int next_in_order(void *user)
+{
+    return atomic_fetch_add((atomic_int *)user, 1);
+}
+
+glint_status glint_render(const glint_scene *scene, const glint_render_options *options, glint_image *out,
+                          glint_render_stats *stats, glint_error *err)
+{
+    atomic_int next;
+    atomic_init(&next, 0);
+    render_feed feed = {.next = next_in_order, .user = &next};
+    return render_tiles(scene, options, &feed, out, stats, err);
 }

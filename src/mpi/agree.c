@@ -1,0 +1,33 @@
+/* agree.c - numbers every rank agrees on, waited for without spinning
+ * (agree.h). */
+#include <mpi.h>
+#include "mpi/agree.h"
+#include "mpi/backoff.h"
+
+/* Waits for a started collective to complete. */
+static void wait_quietly(MPI_Request *request)
+{
+    backoff b = {0};
+    int done = 0;
+    for (;;) {
+        MPI_Test(request, &done, MPI_STATUS_IGNORE);
+        if (done)
+            return;
+        backoff_after(&b, false);
+    }
+}
+
+void agree_on_rank0(int *value)
+{
+    MPI_Request request;
+    MPI_Ibcast(value, 1, MPI_INT, 0, MPI_COMM_WORLD, &request);
+    wait_quietly(&request);
+}
+
+void agree_on_max(int *value)
+{
+    int mine = *value;
+    MPI_Request request;
+    MPI_Iallreduce(&mine, value, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD, &request);
+    wait_quietly(&request);
+}

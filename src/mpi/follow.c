@@ -1,0 +1,114 @@
+/* follow.c - a glint-mpi worker: tiles asked for, rendered and sent back
+ * (follow.h). It keeps up to twice its thread count of tiles in hand,
+ * asking for more once no more than one a thread is left, so that its
+ * threads do not wait for the answer. */
+#include <mpi.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "cli/args.h"
+#include "mpi/backoff.h"
+#include "mpi/follow.h"
+#include "mpi/local_render.h"
+#include "mpi/tile_outbox.h"
+#include "mpi/tile_queue.h"
+
+typedef struct follower {
+    render_layout layout;
+    tile_queue queue;
+    tile_outbox outbox;
+} follower;
+
+static int follow_next(void *user)
+{
+    return tile_queue_take(&((follower *)user)->queue);
+}
+
+static void follow_done(void *user, int tile, const float *pixels, size_t stride)
+{
+    follower *f = user;
+    tile_outbox_put(&f->outbox, &f->layout, tile, pixels, stride);
+}
+
+/* Sends every finished tile waiting; whether there was one. */
+static bool send_finished(follower *f)
+{
+    tile_message *m;
+    bool sent = false;
+    while ((m = tile_outbox_take(&f->outbox)) != NULL) {
+        MPI_Send(m->bytes, (int)m->size, MPI_BYTE, 0, TAG_PIXELS, MPI_COMM_WORLD);
+        free(m);
+        sent = true;
+    }
+    return sent;
+}
+
+/* Receives rank 0's answer to this rank's ASK: its tiles into the queue,
+ * or the queue closed when there are no more (or they do not fit: a rank 0
+ * of another build). */
+static void take_tiles(follower *f, const MPI_Status *st)
+{
+    int n = 0, tiles[MAX_BATCH];
+    MPI_Get_count(st, MPI_INT, &n);
+    if (n < 0 || n > MAX_BATCH) {
+        MPI_Recv(NULL, 0, MPI_INT, 0, TAG_TILES, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        n = 0;
+    } else {
+        MPI_Recv(tiles, n, MPI_INT, 0, TAG_TILES, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    }
+    if (n == 0 || !tile_queue_put(&f->queue, tiles, n))
+        tile_queue_close(&f->queue);
+}
+
+void follow_render(const glint_scene *scene, const glint_render_options *options)
+{
+    int threads = options->threads;
+    int want = 2 * threads < MAX_BATCH ? 2 * threads : MAX_BATCH;
+    follower f;
+    glint_error err = {0};
+    local_render own = {0};
+    rank_report report = {0};
+    tile_outbox_init(&f.outbox);
+    bool ready = !render_layout_for(scene, options->tile_size, &f.layout, &err) &&
+                 tile_queue_init(&f.queue, threads + MAX_BATCH);
+    render_feed feed = {.next = follow_next, .done = follow_done, .user = &f};
+    if (ready && local_render_start(&own, scene, options, &feed)) {
+        bool asked = false;
+        backoff b = {0};
+        for (;;) {
+            bool busy = send_finished(&f);
+            if (local_render_finished(&own))
+                break;
+            if (!asked && !f.queue.closed && tile_queue_count(&f.queue) <= threads) {
+                MPI_Send(&want, 1, MPI_INT, 0, TAG_ASK, MPI_COMM_WORLD);
+                asked = true;
+            }
+            int flag = 0;
+            MPI_Status st;
+            MPI_Iprobe(0, TAG_TILES, MPI_COMM_WORLD, &flag, &st);
+            if (flag) {
+                take_tiles(&f, &st);
+                asked = false;
+            }
+            backoff_after(&b, busy || flag);
+        }
+        local_render_join(&own);
+        send_finished(&f);
+        /* A render that failed may leave an answer on its way. */
+        if (asked) {
+            MPI_Status st;
+            MPI_Probe(0, TAG_TILES, MPI_COMM_WORLD, &st);
+            take_tiles(&f, &st);
+        }
+        report = local_render_report(&own);
+        glint_image_free(&own.image);
+        if (!report.code && tile_outbox_failed(&f.outbox))
+            report = (rank_report){.code = CLI_EXIT_INTERNAL, .message = "out of memory sending a tile"};
+    } else {
+        report = (rank_report){.code = CLI_EXIT_INTERNAL};
+        snprintf(report.message, sizeof report.message, "%s", ready ? own.err.message : "out of memory");
+    }
+    MPI_Send(&report, sizeof report, MPI_BYTE, 0, TAG_DONE, MPI_COMM_WORLD);
+    if (ready)
+        tile_queue_free(&f.queue);
+    tile_outbox_free(&f.outbox);
+}

@@ -1,0 +1,16 @@
+/* follow.h - every rank of glint-mpi but rank 0 while rendering: it asks
+ * rank 0 for tiles, renders them on its threads and sends each back as it
+ * is finished. */
+#ifndef GLINT_MPI_FOLLOW_H
+#define GLINT_MPI_FOLLOW_H
+
+#include "glint.h"
+
+/* Renders the tiles rank 0 (lead_render, lead.h) hands this rank, on
+ * options->threads threads (set, not 0), until rank 0 has no more, and
+ * reports to it how the render went; also when it failed, which rank 0
+ * says. Called on the thread that initialised MPI, the only one that
+ * calls it. */
+void follow_render(const glint_scene *scene, const glint_render_options *options);
+
+#endif

@@ -1,0 +1,213 @@
+/* lead.c - rank 0 of glint-mpi: the pull queue of tiles, its own share of
+ * the render, and the image the other ranks' tiles are put into (lead.h).
+ *
+ * Tiles are handed out in order from one counter, to rank 0's own render
+ * threads one at a time (the render feed's next) and to the other ranks in
+ * batches as they ask. A batch is at most what was asked for and at most
+ * a 2 x ranks-th of what is left, so that the last tiles are spread thin
+ * and no rank is left with a long tail while others wait. */
+#include <mpi.h>
+#include <pthread.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "cli/args.h"
+#include "cli/setup.h"
+#include "mpi/backoff.h"
+#include "mpi/lead.h"
+#include "mpi/local_render.h"
+
+typedef struct lead {
+    render_layout layout;
+    int ranks;
+    pthread_mutex_t lock;     /* over next_tile and closed */
+    int next_tile;            /* the first tile not handed out */
+    bool closed;              /* a rank failed: no more tiles are handed out */
+    atomic_int local_done;    /* tiles rank 0 finished */
+    int remote_done;          /* tiles received from the other ranks */
+    volatile int stop;        /* rank 0's render's cancel flag */
+    float *pixels;            /* the image */
+} lead;
+
+/* Up to `want` tiles into tiles[], the next in order; 0 once none are left
+ * (or a rank failed). */
+static int hand_out(lead *l, int want, int *tiles)
+{
+    pthread_mutex_lock(&l->lock);
+    int left = l->closed ? 0 : l->layout.tiles_total - l->next_tile;
+    int spread = left / (2 * l->ranks) > 1 ? left / (2 * l->ranks) : 1;
+    int n = want < left ? want : left;
+    n = n < spread ? n : spread;
+    for (int i = 0; i < n; i++)
+        tiles[i] = l->next_tile++;
+    pthread_mutex_unlock(&l->lock);
+    return n;
+}
+
+static void close_queue(lead *l)
+{
+    pthread_mutex_lock(&l->lock);
+    l->closed = true;
+    pthread_mutex_unlock(&l->lock);
+}
+
+/* The render feed of rank 0's own threads. */
+static int lead_next(void *user)
+{
+    int tile;
+    return hand_out(user, 1, &tile) ? tile : -1;
+}
+
+static void lead_done(void *user, int tile, const float *pixels, size_t stride)
+{
+    lead *l = user;
+    atomic_fetch_add(&l->local_done, 1);
+}
+
+/* Answers rank `from`'s ASK with a batch of tiles (none: no more). */
+static void answer_ask(lead *l, int from)
+{
+    int want = 0, tiles[MAX_BATCH];
+    MPI_Recv(&want, 1, MPI_INT, from, TAG_ASK, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    want = want < 1 ? 1 : want > MAX_BATCH ? MAX_BATCH : want;
+    int n = hand_out(l, want, tiles);
+    MPI_Send(tiles, n, MPI_INT, from, TAG_TILES, MPI_COMM_WORLD);
+}
+
+/* Takes in a PIXELS message from rank `from` of `size` bytes, into the
+ * image; false when it is no tile of the layout (a rank of another build). */
+static bool take_pixels(lead *l, int from, int size, unsigned char *buffer, int capacity)
+{
+    if (size > capacity) {
+        /* Received all the same, so that it is not left pending. */
+        unsigned char *big = malloc((size_t)size);
+        MPI_Recv(big, big ? size : 0, MPI_BYTE, from, TAG_PIXELS, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        free(big);
+        return false;
+    }
+    MPI_Recv(buffer, size, MPI_BYTE, from, TAG_PIXELS, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    tile_header h;
+    if ((size_t)size < sizeof h)
+        return false;
+    memcpy(&h, buffer, sizeof h);
+    if (h.tile < 0 || h.tile >= l->layout.tiles_total)
+        return false;
+    int x0, y0, x1, y1;
+    render_tile_bounds(&l->layout, h.tile, &x0, &y0, &x1, &y1);
+    size_t row = 3 * (size_t)(x1 - x0);
+    if ((size_t)size != sizeof h + row * (size_t)(y1 - y0) * sizeof(float))
+        return false;
+    const unsigned char *from_bytes = buffer + sizeof h;
+    for (int y = y0; y < y1; y++)
+        memcpy(l->pixels + 3 * ((size_t)y * (size_t)l->layout.width + (size_t)x0),
+               from_bytes + row * sizeof(float) * (size_t)(y - y0), row * sizeof(float));
+    l->remote_done++;
+    return true;
+}
+
+/* Serves the other ranks until they have all reported and rank 0's own
+ * render has returned; false if a rank sent what no tile is. */
+static bool serve(lead *l, local_render *own, bool progress, rank_report *reports)
+{
+    int capacity = (int)sizeof(tile_header) + 3 * (int)sizeof(float) * l->layout.tile_size * l->layout.tile_size;
+    unsigned char *buffer = malloc((size_t)capacity);
+    bool sound = buffer != NULL;
+    cli_progress prog = {.last_print = -1};
+    clock_gettime(CLOCK_MONOTONIC, &prog.start);
+    int reported = 0, shown = -1;
+    backoff b = {0};
+    while (reported < l->ranks - 1 || !local_render_finished(own)) {
+        int flag = 0;
+        MPI_Status st;
+        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
+        if (flag && st.MPI_TAG == TAG_ASK) {
+            answer_ask(l, st.MPI_SOURCE);
+        } else if (flag && st.MPI_TAG == TAG_PIXELS) {
+            int size = 0;
+            MPI_Get_count(&st, MPI_BYTE, &size);
+            if (!take_pixels(l, st.MPI_SOURCE, size, buffer, sound ? capacity : 0))
+                sound = false;
+        } else if (flag && st.MPI_TAG == TAG_DONE) {
+            rank_report *r = &reports[st.MPI_SOURCE];
+            MPI_Recv(r, sizeof *r, MPI_BYTE, st.MPI_SOURCE, TAG_DONE, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            r->message[sizeof r->message - 1] = '\0';
+            reported++;
+            if (r->code) {
+                close_queue(l);
+                l->stop = 1;
+            }
+        } else if (flag) {
+            /* No tag of the protocol: taken and dropped. */
+            MPI_Recv(NULL, 0, MPI_BYTE, st.MPI_SOURCE, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            sound = false;
+        }
+        if (!sound) {
+            close_queue(l);
+            l->stop = 1;
+        }
+        int done = atomic_load(&l->local_done) + l->remote_done;
+        if (progress && done != shown) {
+            cli_show_progress(&prog, done, l->layout.tiles_total);
+            shown = done;
+        }
+        backoff_after(&b, flag);
+    }
+    if (progress && shown != l->layout.tiles_total)
+        fputs("\r\033[K", stderr); /* the progress line stopped short */
+    free(buffer);
+    return sound;
+}
+
+int lead_render(const glint_scene *scene, const glint_render_options *options, int ranks, bool progress,
+                glint_image *out, rank_report *reports)
+{
+    *out = (glint_image){0};
+    glint_error err = {0};
+    lead l = {.ranks = ranks};
+    if (render_layout_for(scene, options->tile_size, &l.layout, &err))
+        return cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
+    l.pixels = calloc((size_t)l.layout.width * (size_t)l.layout.height * 3, sizeof(float));
+    pthread_mutex_init(&l.lock, NULL);
+    atomic_init(&l.local_done, 0);
+    if (!l.pixels)
+        close_queue(&l); /* the others are told there is nothing to do */
+    glint_render_options own_options = *options;
+    own_options.cancel = &l.stop;
+    own_options.progress = NULL;
+    render_feed feed = {.next = lead_next, .done = lead_done, .user = &l, .pixels = l.pixels};
+    local_render own = {0}; /* its image, when it returns one, is l.pixels */
+    bool started = l.pixels && local_render_start(&own, scene, &own_options, &feed);
+    if (!started) {
+        close_queue(&l);
+        atomic_store(&own.finished, true);
+    }
+    bool sound = serve(&l, &own, progress, reports);
+    if (started)
+        local_render_join(&own);
+    pthread_mutex_destroy(&l.lock);
+    reports[0] = local_render_report(&own);
+    if (!l.pixels)
+        reports[0] = (rank_report){.code = CLI_EXIT_INTERNAL, .message = "out of memory for the image"};
+    /* Rank 0's render cancelled for another rank's failure is that rank's. */
+    if (reports[0].code && own.status == GLINT_ERR_CANCELLED && l.stop)
+        reports[0].code = 0;
+    int code = CLI_EXIT_OK;
+    for (int r = 0; r < ranks; r++) {
+        if (!reports[r].code)
+            continue;
+        fprintf(stderr, "glint-mpi: rank %d: %s\n", r, reports[r].message);
+        code = reports[r].code > code ? reports[r].code : code;
+    }
+    int done = atomic_load(&l.local_done) + l.remote_done;
+    if (!code && !sound)
+        code = cli_complain(CLI_EXIT_INTERNAL, "a rank sent a message that is no tile of this image: "
+                                               "are all ranks running the same glint-mpi?");
+    else if (!code && done != l.layout.tiles_total)
+        code = cli_complain(CLI_EXIT_INTERNAL, "only %d of %d tiles came back", done, l.layout.tiles_total);
+    if (code) {
+        free(l.pixels);
+        return code;
+    }
+    *out = (glint_image){.width = l.layout.width, .height = l.layout.height, .pixels = l.pixels};
+    return CLI_EXIT_OK;
+}

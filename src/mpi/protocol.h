@@ -1,0 +1,42 @@
+/* protocol.h - the messages glint-mpi's ranks exchange while rendering,
+ * all in MPI_COMM_WORLD, all between rank 0 and one other rank:
+ *
+ *   rank r -> 0   ASK     int: how many tiles it would like
+ *   0 -> rank r   TILES   int[n]: tile indices to render; n == 0: no more
+ *   rank r -> 0   PIXELS  a tile_header, then the tile's pixels, 3 floats
+ *                         each, row after row (its size from the layout)
+ *   rank r -> 0   DONE    a rank_report, once, after its last PIXELS
+ *
+ * A rank asks again only after the answer to its last ASK came, so each
+ * has at most one ASK unanswered. Messages between two ranks arrive in the
+ * order sent, so rank 0 has every tile of a rank before its DONE. Every
+ * rank runs the same build (same byte order and float format). */
+#ifndef GLINT_MPI_PROTOCOL_H
+#define GLINT_MPI_PROTOCOL_H
+
+#include <stdint.h>
+#include "glint.h"
+
+enum mpi_tag { TAG_ASK = 1, TAG_TILES, TAG_PIXELS, TAG_DONE };
+
+/* The most tiles one TILES message carries. */
+#define MAX_BATCH 64
+
+/* What precedes a tile's pixels in a PIXELS message. */
+typedef struct tile_header {
+    int32_t tile;
+    int32_t pad;              /* 0: the pixels start 8-byte aligned */
+} tile_header;
+
+/* How a rank's render went: sent to rank 0 in DONE, and rank 0's own. */
+typedef struct rank_report {
+    uint64_t rays, samples, nan_samples;
+    double seconds;           /* the render's wall-clock time on that rank */
+    double busy;              /* seconds its threads spent rendering tiles, all added */
+    int32_t tiles;            /* tiles it rendered */
+    int32_t threads;          /* its render threads */
+    int32_t code;             /* 0, or the exit code of its failed render */
+    char message[sizeof(((glint_error *)0)->message)]; /* why it failed, when code is not 0 */
+} rank_report;
+
+#endif
