@@ -1,7 +1,8 @@
 /* follow.c - a glint-mpi worker: tiles asked for, rendered and sent back
- * (follow.h). It keeps up to twice its thread count of tiles in hand,
- * asking for more once no more than one a thread is left, so that its
- * threads do not wait for the answer. */
+ * (follow.h). It keeps up to four tiles a thread in hand, asking for more
+ * once no more than two a thread are left: the answer can take two of its
+ * MPI thread's and rank 0's idle sleeps (backoff.h), about as long as a
+ * small tile takes, so its threads do not wait for it. */
 #include <mpi.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -62,14 +63,14 @@ static void take_tiles(follower *f, const MPI_Status *st)
 void follow_render(const glint_scene *scene, const glint_render_options *options)
 {
     int threads = options->threads;
-    int want = 2 * threads < MAX_BATCH ? 2 * threads : MAX_BATCH;
+    int want = 4 * threads < MAX_BATCH ? 4 * threads : MAX_BATCH;
     follower f;
     glint_error err = {0};
     local_render own = {0};
     rank_report report = {0};
     tile_outbox_init(&f.outbox);
     bool ready = !render_layout_for(scene, options->tile_size, &f.layout, &err) &&
-                 tile_queue_init(&f.queue, threads + MAX_BATCH);
+                 tile_queue_init(&f.queue, 2 * threads + MAX_BATCH);
     render_feed feed = {.next = follow_next, .done = follow_done, .user = &f};
     if (ready && local_render_start(&own, scene, options, &feed)) {
         bool asked = false;
@@ -78,7 +79,7 @@ void follow_render(const glint_scene *scene, const glint_render_options *options
             bool busy = send_finished(&f);
             if (local_render_finished(&own))
                 break;
-            if (!asked && !f.queue.closed && tile_queue_count(&f.queue) <= threads) {
+            if (!asked && !f.queue.closed && tile_queue_count(&f.queue) <= 2 * threads) {
                 MPI_Send(&want, 1, MPI_INT, 0, TAG_ASK, MPI_COMM_WORLD);
                 asked = true;
             }

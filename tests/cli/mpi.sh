@@ -4,7 +4,8 @@
 # with various thread counts, the regular and the jittered sampler; a scene
 # error is reported once, by rank 0, with glint's message, and every rank
 # exits with glint's code, writing nothing; bad flags likewise, and what
-# glint-mpi cannot do yet (-o -, --partial) is refused.
+# glint-mpi cannot do yet (-o -, --partial) is refused; a rank killed ends
+# the job.
 # Skipped (exit 77) when glint-mpi was not built (no MPI found) or mpirun is
 # missing. Ranks run as root inside containers, and more ranks than cores.
 # Under ASan the leaks OpenMPI leaves are suppressed (mpi.supp).
@@ -142,6 +143,45 @@ if [ "$full" -eq 1 ]; then
     mpi 2 --partial -q -o out.png >/dev/null 2>mpi.err
     [ $? -eq 2 ] && [ "$(grep -c -- '--partial' mpi.err)" -eq 1 ] && [ "$(cat out.png)" = old ]
     verdict $? "glint-mpi refuses --partial, which it cannot honour yet, saying so once"
+fi
+
+# A rank killed mid-render ends the whole job within seconds, non-zero,
+# with no rank left and the output as it was (mpirun's own doing, kept
+# here so that nothing glint-mpi does defeats it: no rank may hang).
+if [ "$full" -eq 1 ]; then
+    rm -f pid.*
+    timeout "$limit" mpirun --oversubscribe -np 3 sh -c 'echo $$ >"pid.$OMPI_COMM_WORLD_RANK"; exec "$@"' sh \
+        "$GLINT_MPI" -w 2000 -h 2000 --spp 64 --threads 1 -q -o out.png >/dev/null 2>&1 &
+    job=$!
+    for _ in $(seq 100); do
+        [ -s pid.1 ] && break
+        sleep 0.1
+    done
+    sleep 1
+    kill -9 "$(cat pid.1)"
+    for _ in $(seq 100); do
+        kill -0 "$job" 2>/dev/null || break
+        sleep 0.1
+    done
+    if kill -0 "$job" 2>/dev/null; then
+        verdict 1 "the job ends within 10 s of a rank killed"
+        kill "$job"
+    else
+        wait "$job"
+        st=$?
+        # mpirun may return while the ranks it ended are being reaped.
+        for _ in $(seq 50); do
+            alive=0
+            for f in pid.*; do
+                ! kill -0 "$(cat "$f")" 2>/dev/null || alive=1
+            done
+            [ "$alive" -eq 1 ] || break
+            sleep 0.1
+        done
+        [ "$st" -ne 0 ] && [ "$alive" -eq 0 ] && [ "$(cat out.png)" = old ] &&
+            [ "$(ls -A | grep -c '^\.\?out\.png.')" -eq 0 ]
+        verdict $? "a rank killed: the job ends (exit $st), no rank left, the output as it was"
+    fi
 fi
 
 finish
