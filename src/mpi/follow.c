@@ -13,10 +13,17 @@
 #include "mpi/tile_outbox.h"
 #include "mpi/tile_queue.h"
 
+/* The most finished tiles on their way to rank 0 at once. */
+#define SENDS_IN_FLIGHT 16
+
 typedef struct follower {
     render_layout layout;
     tile_queue queue;
     tile_outbox outbox;
+    /* The tiles being sent, each kept until its send completes. */
+    MPI_Request sends[SENDS_IN_FLIGHT];
+    tile_message *sending[SENDS_IN_FLIGHT]; /* NULL: a free slot */
+    int in_flight;
 } follower;
 
 static int follow_next(void *user)
@@ -30,17 +37,48 @@ static void follow_done(void *user, int tile, const float *pixels, size_t stride
     tile_outbox_put(&f->outbox, &f->layout, tile, pixels, stride);
 }
 
-/* Sends every finished tile waiting; whether there was one. */
+/* Frees the tiles whose sends completed and starts sending the finished
+ * tiles waiting, as many as there are free slots; whether anything
+ * happened. The sends do not block: OpenMPI's blocking send of a tile
+ * spins until rank 0 takes it, which took a worker's core from its render
+ * threads for a third of the time (seed room, 2 ranks x 1 thread). */
 static bool send_finished(follower *f)
 {
-    tile_message *m;
-    bool sent = false;
-    while ((m = tile_outbox_take(&f->outbox)) != NULL) {
-        MPI_Send(m->bytes, (int)m->size, MPI_BYTE, 0, TAG_PIXELS, MPI_COMM_WORLD);
-        free(m);
-        sent = true;
+    bool busy = false;
+    for (int i = 0; i < SENDS_IN_FLIGHT; i++) {
+        if (f->sending[i]) {
+            int done = 0;
+            MPI_Test(&f->sends[i], &done, MPI_STATUS_IGNORE);
+            if (!done)
+                continue;
+            free(f->sending[i]);
+            f->sending[i] = NULL;
+            f->in_flight--;
+            busy = true;
+        }
+        tile_message *m = tile_outbox_take(&f->outbox);
+        if (!m)
+            continue;
+        f->sending[i] = m;
+        f->in_flight++;
+        MPI_Isend(m->bytes, (int)m->size, MPI_BYTE, 0, TAG_PIXELS, MPI_COMM_WORLD, &f->sends[i]);
+        busy = true;
     }
-    return sent;
+    return busy;
+}
+
+/* Once the render has returned: sends every finished tile left, waiting
+ * without spinning. With none in flight after send_finished, each free
+ * slot found the outbox empty, and nothing adds to it any more. */
+static void send_rest(follower *f)
+{
+    backoff b = {0};
+    for (;;) {
+        bool busy = send_finished(f);
+        if (f->in_flight == 0)
+            return;
+        backoff_after(&b, busy);
+    }
 }
 
 /* Receives rank 0's answer to this rank's ASK: its tiles into the queue,
@@ -64,7 +102,7 @@ void follow_render(const glint_scene *scene, const glint_render_options *options
 {
     int threads = options->threads;
     int want = 4 * threads < MAX_BATCH ? 4 * threads : MAX_BATCH;
-    follower f;
+    follower f = {.in_flight = 0};
     glint_error err = {0};
     local_render own = {0};
     rank_report report = {0};
@@ -93,7 +131,7 @@ void follow_render(const glint_scene *scene, const glint_render_options *options
             backoff_after(&b, busy || flag);
         }
         local_render_join(&own);
-        send_finished(&f);
+        send_rest(&f);
         /* A render that failed may leave an answer on its way. */
         if (asked) {
             MPI_Status st;

@@ -141,7 +141,9 @@ static bool serve(lead *l, local_render *own, bool progress, rank_report *report
             MPI_Recv(NULL, 0, MPI_BYTE, st.MPI_SOURCE, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
             sound = false;
         }
-        if (!sound) {
+        /* Rank 0's own render failing (out of memory, Embree) fails the
+         * image: the other ranks are given no more work. */
+        if (!sound || (local_render_finished(own) && own->status != GLINT_OK)) {
             close_queue(l);
             l->stop = 1;
         }

@@ -174,7 +174,12 @@ int main(int argc, char **argv)
             code = cli_prepare(&o, false, &r);
     }
     /* A rank that could not load what rank 0 loaded said why itself. */
+    int own = code;
     agree_on_max(&code);
+    if (rank == 0 && own < 0 && code >= 0)
+        fputs("glint-mpi: another rank could not load the scene rank 0 loaded (its messages above): for now every "
+              "rank reads the scene's files itself, from the same path\n",
+              stderr);
     if (code < 0)
         code = render(&o, &r, rank, ranks);
     agree_on_rank0(&code);

@@ -4,8 +4,8 @@
 # with various thread counts, the regular and the jittered sampler; a scene
 # error is reported once, by rank 0, with glint's message, and every rank
 # exits with glint's code, writing nothing; bad flags likewise, and what
-# glint-mpi cannot do yet (-o -, --partial) is refused; a rank killed ends
-# the job.
+# glint-mpi cannot do yet (-o -, --partial) is refused; ranks that cannot
+# read the scene rank 0 read fail it alike; a rank killed ends the job.
 # Skipped (exit 77) when glint-mpi was not built (no MPI found) or mpirun is
 # missing. Ranks run as root inside containers, and more ranks than cores.
 # Under ASan the leaks OpenMPI leaves are suppressed (mpi.supp).
@@ -144,6 +144,21 @@ if [ "$full" -eq 1 ]; then
     [ $? -eq 2 ] && [ "$(grep -c -- '--partial' mpi.err)" -eq 1 ] && [ "$(cat out.png)" = old ]
     verdict $? "glint-mpi refuses --partial, which it cannot honour yet, saying so once"
 fi
+
+# Workers that cannot read the scene rank 0 read (run elsewhere: for now
+# each rank reads the files itself) say so, rank 0 says what it means, and
+# every rank exits 1.
+mkdir -p lead elsewhere
+cp "$here/scenes/shapes.yaml" lead/
+rm -f code.*
+timeout "$limit" mpirun --oversubscribe --mca orte_abort_on_non_zero_status 0 \
+    -np 1 --wdir lead sh -c '"$@"; c=$?; echo "$c" >"../code.0"; exit "$c"' sh \
+    "$GLINT_MPI" shapes.yaml -w 64 -h 48 -q -o out.png : \
+    -np 2 --wdir elsewhere sh -c '"$@"; c=$?; echo "$c" >"../code.$OMPI_COMM_WORLD_RANK"; exit "$c"' sh \
+    "$GLINT_MPI" shapes.yaml -w 64 -h 48 -q -o out.png >/dev/null 2>mpi.err
+codes_are 3 1 && [ "$(grep -c "cannot read scene 'shapes.yaml'" mpi.err)" -eq 2 ] &&
+    [ "$(grep -c 'another rank could not load the scene rank 0 loaded' mpi.err)" -eq 1 ] && [ ! -e lead/out.png ]
+verdict $? "ranks that cannot read rank 0's scene: each says so, rank 0 once what it means, every rank exits 1"
 
 # A rank killed mid-render ends the whole job within seconds, non-zero,
 # with no rank left and the output as it was (mpirun's own doing, kept
