@@ -189,6 +189,19 @@ static size_t key_length(const quick *q, size_t i, bool flow)
     return p - i;
 }
 
+/* The plain key at pos (key_length) as a scalar, the reader moved past
+ * its ':'; not ours when there is none. */
+static bool give_key(quick *q, bool flow)
+{
+    size_t length = key_length(q, q->pos, flow);
+    if (!length)
+        return not_ours(q);
+    if (!give_scalar(q, q->pos, q->pos, length, YAML_PLAIN_SCALAR_STYLE))
+        return false;
+    q->pos += length + 1;
+    return true;
+}
+
 /* Whether a plain scalar may start with the byte at i: not with an
  * indicator, and with '-' only before a digit, a letter or a '.'. */
 static bool plain_start(const quick *q, size_t i)
@@ -312,13 +325,7 @@ static bool flow_collection(quick *q)
         return false;
     while (at(q, q->pos) != close) {
         if (map) {
-            size_t length = key_length(q, q->pos, true);
-            if (!length)
-                return not_ours(q);
-            if (!give_scalar(q, q->pos, q->pos, length, YAML_PLAIN_SCALAR_STYLE))
-                return false;
-            q->pos += length + 1;
-            if (!flow_space(q))
+            if (!give_key(q, true) || !flow_space(q))
                 return false;
         }
         if (!flow_value(q) || !flow_space(q))
@@ -371,13 +378,7 @@ static bool block_map(quick *q, long indent)
     if (!give_start(q, true, false))
         return false;
     do {
-        size_t length = key_length(q, q->pos, false);
-        if (!length)
-            return not_ours(q);
-        if (!give_scalar(q, q->pos, q->pos, length, YAML_PLAIN_SCALAR_STYLE))
-            return false;
-        q->pos += length + 1;
-        if (!block_value(q, indent))
+        if (!give_key(q, false) || !block_value(q, indent))
             return false;
     } while (q->indent == indent);
     return q->indent < indent ? give_end(q, true) : not_ours(q);
