@@ -2,6 +2,7 @@
  * render: loading the scene and applying the flags, choosing and checking
  * where the image goes, writing it, the progress line, and the words for
  * what went wrong. */
+#include <signal.h>
 #include <stdio.h>
 #include <string.h>
 #include <unistd.h>
@@ -179,6 +180,29 @@ glint_status cli_write_image(const cli_run *r, const glint_image *image, glint_e
     return strcmp(d->path, "-") == 0
                ? glint_image_write_fd(image, STDOUT_FILENO, d->format, &r->write_options, d->shown, err)
                : glint_image_write_ex(image, d->path, &r->write_options, err);
+}
+
+int cli_interrupted(const cli_options *o, const cli_run *r, const glint_image *image, int tiles_done,
+                    int tiles_total)
+{
+    if (!o->partial)
+        return cli_complain(CLI_EXIT_INTERRUPTED, "interrupted: nothing written");
+    glint_error err = {0};
+    glint_status st = cli_write_image(r, image, &err);
+    if (st)
+        return cli_complain(cli_exit_code_of(st), "interrupted, and the finished tiles were not written: %s", err.message);
+    return cli_complain(CLI_EXIT_INTERRUPTED, "interrupted: %d of %d tiles finished, written to %s (the rest black)",
+                        tiles_done, tiles_total, r->dest.shown);
+}
+
+void cli_catch_signals(void (*on_signal)(int))
+{
+    struct sigaction sa;
+    memset(&sa, 0, sizeof sa);
+    sa.sa_handler = on_signal;
+    static const int stops[] = {SIGINT, SIGTERM, SIGHUP, SIGQUIT};
+    for (size_t i = 0; i < sizeof stops / sizeof stops[0]; i++)
+        sigaction(stops[i], &sa, NULL);
 }
 
 void cli_warn_nan(uint64_t nan_samples)

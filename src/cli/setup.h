@@ -69,6 +69,18 @@ int cli_prepare(const cli_options *o, bool with_output, cli_run *r);
  * name and a rename, or standard output). */
 glint_status cli_write_image(const cli_run *r, const glint_image *image, glint_error *err);
 
+/* An interrupted render's end: nothing written, or, with --partial, the
+ * image of its tiles_done finished tiles of tiles_total (the rest black);
+ * said on stderr. The exit code: CLI_EXIT_INTERRUPTED, or the write's
+ * failure. */
+int cli_interrupted(const cli_options *o, const cli_run *r, const glint_image *image, int tiles_done,
+                    int tiles_total);
+
+/* Sends SIGINT, SIGTERM, SIGHUP (the terminal closed) and SIGQUIT (Ctrl-\)
+ * to on_signal from here on: each ends a render the same way, rather than
+ * kill the command without a word (and, for SIGQUIT, a core dump). */
+void cli_catch_signals(void (*on_signal)(int));
+
 /* The warning for samples that came out NaN and were left out of their
  * pixels, on stderr; nothing when nan_samples is 0. */
 void cli_warn_nan(uint64_t nan_samples);

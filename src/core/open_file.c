@@ -3,6 +3,7 @@
  * model's buffer URI, so the open is non-blocking and the type checked on
  * the open descriptor (no window between a stat and the open); blocking
  * mode comes back for the reads, which a regular file never makes wait.
+ * Opens go through the thread's file log (file_log.h) when it has one.
  * The files of /proc and /sys call themselves regular but have a size of
  * 0 or 4096 whatever they hold: they are refused as not regular. */
 #include <errno.h>
@@ -10,6 +11,7 @@
 #include <stdbool.h>
 #include <string.h>
 #include <unistd.h>
+#include "core/file_log.h"
 #include "core/open_file.h"
 #ifdef __linux__
 #include <linux/magic.h>
@@ -29,7 +31,8 @@ static bool pseudo_file(int fd)
 #endif
 }
 
-int open_file_read(const char *path, struct stat *st, int *errnum)
+/* open_file_read on the file system itself. */
+static int open_regular(const char *path, struct stat *st, int *errnum)
 {
     int fd = open(path, O_RDONLY | O_CLOEXEC | O_NOCTTY | O_NONBLOCK);
     if (fd < 0) {
@@ -49,6 +52,16 @@ int open_file_read(const char *path, struct stat *st, int *errnum)
         return fd;
     close(fd);
     return -1;
+}
+
+int open_file_read(const char *path, struct stat *st, int *errnum)
+{
+    int fd;
+    if (file_log_replay_open(path, &fd, st, errnum))
+        return fd;
+    fd = open_regular(path, st, errnum);
+    file_log_note_open(path, fd, st, fd >= 0 ? 0 : *errnum);
+    return fd;
 }
 
 FILE *open_file_stream(const char *path, struct stat *st, int *errnum)

@@ -4,8 +4,6 @@
  * A model may come from anyone, so the files it names must lie in its
  * folder or below: a buffer URI "../../../etc/passwd" would otherwise be
  * read and shown as vertices. */
-/* realpath() is X/Open. */
-#define _XOPEN_SOURCE 700
 #include <errno.h>
 #include <limits.h>
 #include <stdbool.h>
@@ -15,6 +13,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "core/file_log.h"
 #include "core/error.h"
 #include "core/open_file.h"
 #include "model/model_file.h"
@@ -124,9 +123,9 @@ glint_status model_file_check_inside(const char *dir, const char *path, const ch
 {
     char real_dir[PATH_MAX], real_path[PATH_MAX];
     /* A file that does not resolve is left to the open, which says why. */
-    if (!realpath(path, real_path))
+    if (!file_realpath(path, real_path))
         return GLINT_OK;
-    if (!realpath(dir[0] ? dir : ".", real_dir))
+    if (!file_realpath(dir[0] ? dir : ".", real_dir))
         return error_set(err, GLINT_ERR_IO, "%s: cannot resolve its folder: %s", file, strerror(errno));
     if (below(real_dir, real_path))
         return GLINT_OK;

@@ -6,6 +6,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "core/file_log.h"
 #include "core/array.h"
 #include "core/error.h"
 #include "model/model_build.h"
@@ -53,7 +54,7 @@ static bool is_file(const model_import *job, const char *name)
 {
     char *path = model_file_path(job->dir, name);
     struct stat st;
-    bool yes = path && stat(path, &st) == 0 && S_ISREG(st.st_mode);
+    bool yes = path && file_stat(path, &st) == 0 && S_ISREG(st.st_mode);
     free(path);
     return yes;
 }

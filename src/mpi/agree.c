@@ -24,10 +24,21 @@ void agree_on_rank0(int *value)
     wait_quietly(&request);
 }
 
-void agree_on_max(int *value)
+/* The ranks' *value combined by op, on every rank. */
+static void agree_by(int *value, MPI_Op op)
 {
     int mine = *value;
     MPI_Request request;
-    MPI_Iallreduce(&mine, value, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD, &request);
+    MPI_Iallreduce(&mine, value, 1, MPI_INT, op, MPI_COMM_WORLD, &request);
     wait_quietly(&request);
+}
+
+void agree_on_max(int *value)
+{
+    agree_by(value, MPI_MAX);
+}
+
+void agree_on_min(int *value)
+{
+    agree_by(value, MPI_MIN);
 }

@@ -12,4 +12,7 @@ void agree_on_rank0(int *value);
 /* The largest of the ranks' *value, on every rank. */
 void agree_on_max(int *value);
 
+/* The smallest of the ranks' *value, on every rank. */
+void agree_on_min(int *value);
+
 #endif

@@ -24,6 +24,7 @@ typedef struct follower {
     MPI_Request sends[SENDS_IN_FLIGHT];
     tile_message *sending[SENDS_IN_FLIGHT]; /* NULL: a free slot */
     int in_flight;
+    volatile int stop;        /* the render's cancel flag */
 } follower;
 
 static int follow_next(void *user)
@@ -98,9 +99,21 @@ static void take_tiles(follower *f, const MPI_Status *st)
         tile_queue_close(&f->queue);
 }
 
+/* Whether the render is to stop now: the rank's own signal, or rank 0's
+ * STOP, taken in. */
+static bool told_to_stop(const glint_render_options *options)
+{
+    int flag = 0;
+    MPI_Iprobe(0, TAG_STOP, MPI_COMM_WORLD, &flag, MPI_STATUS_IGNORE);
+    if (flag)
+        MPI_Recv(NULL, 0, MPI_BYTE, 0, TAG_STOP, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    return flag || (options->cancel && *options->cancel);
+}
+
 void follow_render(const glint_scene *scene, const glint_render_options *options)
 {
     int threads = options->threads;
+    glint_render_options own_options = *options;
     int want = 4 * threads < MAX_BATCH ? 4 * threads : MAX_BATCH;
     follower f = {.in_flight = 0};
     glint_error err = {0};
@@ -110,13 +123,16 @@ void follow_render(const glint_scene *scene, const glint_render_options *options
     bool ready = !render_layout_for(scene, options->tile_size, &f.layout, &err) &&
                  tile_queue_init(&f.queue, 2 * threads + MAX_BATCH);
     render_feed feed = {.next = follow_next, .done = follow_done, .user = &f};
-    if (ready && local_render_start(&own, scene, options, &feed)) {
+    own_options.cancel = &f.stop;
+    if (ready && local_render_start(&own, scene, &own_options, &feed)) {
         bool asked = false;
         backoff b = {0};
         for (;;) {
             bool busy = send_finished(&f);
             if (local_render_finished(&own))
                 break;
+            if (!f.stop && told_to_stop(options))
+                f.stop = 1;
             if (!asked && !f.queue.closed && tile_queue_count(&f.queue) <= 2 * threads) {
                 MPI_Send(&want, 1, MPI_INT, 0, TAG_ASK, MPI_COMM_WORLD);
                 asked = true;

@@ -7,9 +7,9 @@
 #include "glint.h"
 
 /* Renders the tiles rank 0 (lead_render, lead.h) hands this rank, on
- * options->threads threads (set, not 0), until rank 0 has no more, and
- * reports to it how the render went; also when it failed, which rank 0
- * says. Called on the thread that initialised MPI, the only one that
+ * options->threads threads (set, not 0), until rank 0 has no more or tells
+ * it to stop, or options->cancel (a signal's flag, when set) is set; and
+ * reports to it how the render went, also when it failed (rank 0 says). Called on the thread that initialised MPI, the only one that
  * calls it. */
 void follow_render(const glint_scene *scene, const glint_render_options *options);
 

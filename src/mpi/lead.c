@@ -26,6 +26,9 @@ typedef struct lead {
     atomic_int local_done;    /* tiles rank 0 finished */
     int remote_done;          /* tiles received from the other ranks */
     volatile int stop;        /* rank 0's render's cancel flag */
+    const volatile int *interrupt; /* set when a signal asks the job to stop */
+    MPI_Request *stops;       /* the STOP sent to each rank, once stopping */
+    bool *reported;           /* which ranks sent their DONE */
     float *pixels;            /* the image */
 } lead;
 
@@ -49,6 +52,20 @@ static void close_queue(lead *l)
     pthread_mutex_lock(&l->lock);
     l->closed = true;
     pthread_mutex_unlock(&l->lock);
+}
+
+/* Ends the render early, on every rank: no more tiles are handed out,
+ * rank 0's own render is cancelled, and every rank still rendering is
+ * told to stop (STOP), so that it reports at once. */
+static void stop_everyone(lead *l)
+{
+    if (l->stop)
+        return;
+    close_queue(l);
+    l->stop = 1;
+    for (int r = 1; r < l->ranks; r++)
+        if (!l->reported[r])
+            MPI_Isend(NULL, 0, MPI_BYTE, r, TAG_STOP, MPI_COMM_WORLD, &l->stops[r]);
 }
 
 /* The render feed of rank 0's own threads. */
@@ -131,22 +148,19 @@ static bool serve(lead *l, local_render *own, bool progress, rank_report *report
             rank_report *r = &reports[st.MPI_SOURCE];
             MPI_Recv(r, sizeof *r, MPI_BYTE, st.MPI_SOURCE, TAG_DONE, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
             r->message[sizeof r->message - 1] = '\0';
+            l->reported[st.MPI_SOURCE] = true;
             reported++;
-            if (r->code) {
-                close_queue(l);
-                l->stop = 1;
-            }
+            if (r->code)
+                stop_everyone(l);
         } else if (flag) {
             /* No tag of the protocol: taken and dropped. */
             MPI_Recv(NULL, 0, MPI_BYTE, st.MPI_SOURCE, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
             sound = false;
         }
-        /* Rank 0's own render failing (out of memory, Embree) fails the
-         * image: the other ranks are given no more work. */
-        if (!sound || (local_render_finished(own) && own->status != GLINT_OK)) {
-            close_queue(l);
-            l->stop = 1;
-        }
+        /* A signal, a rank sending what is no tile, or rank 0's own render
+         * failing (out of memory, Embree) ends the render everywhere. */
+        if (*l->interrupt || !sound || (local_render_finished(own) && own->status != GLINT_OK))
+            stop_everyone(l);
         int done = atomic_load(&l->local_done) + l->remote_done;
         if (progress && done != shown) {
             cli_show_progress(&prog, done, l->layout.tiles_total);
@@ -156,19 +170,31 @@ static bool serve(lead *l, local_render *own, bool progress, rank_report *report
     }
     if (progress && shown != l->layout.tiles_total)
         fputs("\r\033[K", stderr); /* the progress line stopped short */
+    MPI_Waitall(l->ranks, l->stops, MPI_STATUSES_IGNORE);
     free(buffer);
     return sound;
 }
 
 int lead_render(const glint_scene *scene, const glint_render_options *options, int ranks, bool progress,
-                glint_image *out, rank_report *reports)
+                glint_image *out, int *tiles_done, rank_report *reports)
 {
+    static const volatile int never = 0;
     *out = (glint_image){0};
+    *tiles_done = 0;
     glint_error err = {0};
-    lead l = {.ranks = ranks};
+    lead l = {.ranks = ranks, .interrupt = options->cancel ? options->cancel : &never};
     if (render_layout_for(scene, options->tile_size, &l.layout, &err))
         return cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
     l.pixels = calloc((size_t)l.layout.width * (size_t)l.layout.height * 3, sizeof(float));
+    l.stops = malloc((size_t)ranks * sizeof *l.stops);
+    l.reported = calloc((size_t)ranks, sizeof *l.reported);
+    if (!l.stops || !l.reported) {
+        /* Not even the others can be told: MPI ends the job. */
+        fputs("glint-mpi: out of memory for the ranks' state\n", stderr);
+        MPI_Abort(MPI_COMM_WORLD, CLI_EXIT_INTERNAL);
+    }
+    for (int r = 0; r < ranks; r++)
+        l.stops[r] = MPI_REQUEST_NULL;
     pthread_mutex_init(&l.lock, NULL);
     atomic_init(&l.local_done, 0);
     if (!l.pixels)
@@ -187,29 +213,37 @@ int lead_render(const glint_scene *scene, const glint_render_options *options, i
     if (started)
         local_render_join(&own);
     pthread_mutex_destroy(&l.lock);
+    free(l.stops);
+    free(l.reported);
     reports[0] = local_render_report(&own);
     if (!l.pixels)
         reports[0] = (rank_report){.code = CLI_EXIT_INTERNAL, .message = "out of memory for the image"};
-    /* Rank 0's render cancelled for another rank's failure is that rank's. */
-    if (reports[0].code && own.status == GLINT_ERR_CANCELLED && l.stop)
-        reports[0].code = 0;
+    /* A rank whose render was cancelled (by a signal, or told to stop)
+     * reports 4: the job was interrupted, unless a rank failed, which is
+     * then what stopped the others. */
     int code = CLI_EXIT_OK;
+    bool interrupted = *l.interrupt;
     for (int r = 0; r < ranks; r++) {
-        if (!reports[r].code)
-            continue;
-        fprintf(stderr, "glint-mpi: rank %d: %s\n", r, reports[r].message);
-        code = reports[r].code > code ? reports[r].code : code;
+        if (reports[r].code == CLI_EXIT_INTERRUPTED)
+            interrupted = true;
+        else if (reports[r].code) {
+            fprintf(stderr, "glint-mpi: rank %d: %s\n", r, reports[r].message);
+            code = reports[r].code > code ? reports[r].code : code;
+        }
     }
     int done = atomic_load(&l.local_done) + l.remote_done;
     if (!code && !sound)
         code = cli_complain(CLI_EXIT_INTERNAL, "a rank sent a message that is no tile of this image: "
                                                "are all ranks running the same glint-mpi?");
+    else if (!code && interrupted)
+        code = CLI_EXIT_INTERRUPTED;
     else if (!code && done != l.layout.tiles_total)
         code = cli_complain(CLI_EXIT_INTERNAL, "only %d of %d tiles came back", done, l.layout.tiles_total);
-    if (code) {
+    if (code && code != CLI_EXIT_INTERRUPTED) {
         free(l.pixels);
         return code;
     }
     *out = (glint_image){.width = l.layout.width, .height = l.layout.height, .pixels = l.pixels};
-    return CLI_EXIT_OK;
+    *tiles_done = done;
+    return code;
 }

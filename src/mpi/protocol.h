@@ -6,6 +6,9 @@
  *   rank r -> 0   PIXELS  a tile_header, then the tile's pixels, 3 floats
  *                         each, row after row (its size from the layout)
  *   rank r -> 0   DONE    a rank_report, once, after its last PIXELS
+ *   0 -> rank r   STOP    nothing: stop rendering now (a signal, or another
+ *                         rank failed); sent at most once, maybe after the
+ *                         rank's DONE, when it is no longer read
  *
  * A rank asks again only after the answer to its last ASK came, so each
  * has at most one ASK unanswered. Messages between two ranks arrive in the
@@ -17,7 +20,7 @@
 #include <stdint.h>
 #include "glint.h"
 
-enum mpi_tag { TAG_ASK = 1, TAG_TILES, TAG_PIXELS, TAG_DONE };
+enum mpi_tag { TAG_ASK = 1, TAG_TILES, TAG_PIXELS, TAG_DONE, TAG_STOP };
 
 /* The most tiles one TILES message carries. */
 #define MAX_BATCH 64

@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include "core/array.h"
 #include "core/error.h"
+#include "core/file_log.h"
 #include "core/message_fit.h"
 #include "scene/scene.h"
 
@@ -28,7 +29,7 @@ glint_status scene_note_file(glint_scene *scene, const struct stat *st, glint_er
 glint_status scene_note_path(glint_scene *scene, const char *path, glint_error *err)
 {
     struct stat st;
-    return stat(path, &st) == 0 ? scene_note_file(scene, &st, err) : GLINT_OK;
+    return file_stat(path, &st) == 0 ? scene_note_file(scene, &st, err) : GLINT_OK;
 }
 
 glint_status glint_scene_check_output(const glint_scene *scene, const char *path, glint_error *err)

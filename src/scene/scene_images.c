@@ -5,6 +5,7 @@
  * SCENE_MAX_IMAGE_BYTES. */
 #include <stdlib.h>
 #include <sys/stat.h>
+#include "core/file_log.h"
 #include "core/array.h"
 #include "core/error.h"
 #include "scene/scene.h"
@@ -15,7 +16,7 @@ glint_status scene_load_image(void *user, const char *path, texture_image *out, 
     struct stat st;
     /* A file that cannot be found is decoded as it is, for the decoder's
      * message; it is never kept. */
-    bool known = stat(path, &st) == 0;
+    bool known = file_stat(path, &st) == 0;
     long found = known ? file_set_find(&scene->image_files, st.st_dev, st.st_ino) : -1;
     if (found >= 0) {
         const texture_image *shared = &scene->images[found];

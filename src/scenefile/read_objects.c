@@ -1,12 +1,11 @@
 /* read_objects.c - the scene file's objects: shapes of every registered
  * kind, groups with their transforms and materials, and model files. */
-/* realpath() is X/Open. */
-#define _XOPEN_SOURCE 700
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/file_log.h"
 #include "core/array.h"
 #include "core/transform.h"
 #include "geometry/shape_kind.h"
@@ -116,7 +115,7 @@ void read_objects(loader *l, const ynode *list, const context *ctx);
 static int import_model(loader *l, const ynode *file, const char *path, double crease)
 {
     char canonical[PATH_MAX];
-    if (!realpath(path, canonical)) {
+    if (!file_realpath(path, canonical)) {
         diag_at(&l->d, file, "cannot read model '%s': %s", path, strerror(errno));
         return -1;
     }

@@ -11,14 +11,13 @@
  * after the objects), the load starts again with whole trees, which makes
  * the reports. A load that succeeds streamed makes the same calls, in the
  * same order, as one with whole trees. */
-/* realpath() is X/Open. */
-#define _XOPEN_SOURCE 700
 #include <errno.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/stat.h>
+#include "core/file_log.h"
 #include "core/array.h"
 #include "core/error.h"
 #include "core/message_fit.h"
@@ -29,7 +28,6 @@
 #include "scenefile/scene_reader.h"
 
 #define MAX_FILES 1000            /* files read for one scene, includes counted */
-#define MAX_SCENE_FILE_BYTES (64L << 20)
 
 static scene_file_mode mode = SCENE_FILE_STREAMED;
 
@@ -238,7 +236,7 @@ static void read_bytes(loader *l, const char *data, size_t size, const char *nam
 }
 
 /* Reads all of the stream f, named `name`, to its end, at most
- * MAX_SCENE_FILE_BYTES; NULL with a message in err on failure. */
+ * SCENE_FILE_MAX_BYTES; NULL with a message in err on failure. */
 static char *read_all(FILE *f, const char *name, size_t *size, glint_error *err)
 {
     char *data = NULL;
@@ -250,14 +248,14 @@ static char *read_all(FILE *f, const char *name, size_t *size, glint_error *err)
             return NULL;
         }
         /* One byte past the limit tells a stream at the limit from a larger one. */
-        size_t left = (size_t)MAX_SCENE_FILE_BYTES + 1 - n;
+        size_t left = (size_t)SCENE_FILE_MAX_BYTES + 1 - n;
         n += got = fread(data + n, 1, cap - n < left ? cap - n : left, f);
-    } while (got > 0 && n <= (size_t)MAX_SCENE_FILE_BYTES);
+    } while (got > 0 && n <= (size_t)SCENE_FILE_MAX_BYTES);
     if (ferror(f))
         error_set(err, GLINT_ERR_IO, "cannot read scene '%s': %s", name, strerror(errno));
-    else if (n > (size_t)MAX_SCENE_FILE_BYTES)
+    else if (n > (size_t)SCENE_FILE_MAX_BYTES)
         error_set(err, GLINT_ERR_INVALID, "scene '%s' is too large: more than %ld bytes (the limit)", name,
-                  MAX_SCENE_FILE_BYTES);
+                  SCENE_FILE_MAX_BYTES);
     else {
         *size = n;
         return data;
@@ -280,9 +278,9 @@ static char *slurp(const char *path, bool include, size_t *size, struct stat *st
     }
     char *data = NULL;
     /* The size first, so that a file too large is refused unread. */
-    if (st->st_size > MAX_SCENE_FILE_BYTES)
+    if (st->st_size > SCENE_FILE_MAX_BYTES)
         error_set(err, GLINT_ERR_INVALID, "scene '%s' is too large: %lld bytes (limit %ld)", path,
-                  (long long)st->st_size, MAX_SCENE_FILE_BYTES);
+                  (long long)st->st_size, SCENE_FILE_MAX_BYTES);
     else
         data = read_all(f, path, size, err);
     fclose(f);
@@ -292,7 +290,7 @@ static char *slurp(const char *path, bool include, size_t *size, struct stat *st
 static void read_file(loader *l, const char *path, const ynode *from)
 {
     char canonical[PATH_MAX];
-    if (!realpath(path, canonical)) {
+    if (!file_realpath(path, canonical)) {
         if (from)
             diag_at(&l->d, from, "cannot include '%s': %s", path, strerror(errno));
         else {
@@ -341,8 +339,8 @@ static void read_file(loader *l, const char *path, const ynode *from)
         return;
     }
     l->bytes += (long)size;
-    if (l->bytes > MAX_SCENE_FILE_BYTES) {
-        diag_at(&l->d, from, "scene files too large together (limit %ld bytes)", MAX_SCENE_FILE_BYTES);
+    if (l->bytes > SCENE_FILE_MAX_BYTES) {
+        diag_at(&l->d, from, "scene files too large together (limit %ld bytes)", SCENE_FILE_MAX_BYTES);
         l->d.closed = true;
         free(data);
         return;

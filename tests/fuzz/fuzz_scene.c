@@ -9,7 +9,10 @@
  * the same first message; and read from whole trees rather than with the
  * objects read while parsed (the default, scenefile/scene_file.h), they
  * must be refused with the same first message or load to the same scene,
- * written back byte for byte.
+ * written back byte for byte. A load recorded (core/file_log.h), packed,
+ * unpacked with its files' bytes and replayed, as glint-mpi's ranks load
+ * rank 0's scene, must come out as the recorded load did; the packed log
+ * with one byte changed must be unpacked or refused, cleanly.
  * Problems are only counted (NULL report): the library must stay silent.
  * Relative includes and texture files resolve against the working
  * directory, since the input is named "fuzz.yaml" (tests/fuzz/README.md). */
@@ -19,7 +22,9 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <unistd.h>
 #include "glint.h"
+#include "core/file_log.h"
 #include "scenefile/scene_file.h"
 #include "scenefile/yaml_tree.h"
 
@@ -63,6 +68,70 @@ static char *outcome(const glint_scene *scene, const glint_error *err)
     return text;
 }
 
+/* Two loads' outcomes must be the same; frees both scenes. */
+static void expect_same_and_free(glint_scene *a, const glint_error *a_err, glint_scene *b, const glint_error *b_err)
+{
+    char *a_text = outcome(a, a_err), *b_text = outcome(b, b_err);
+    if (strcmp(a_text, b_text) != 0)
+        abort();
+    free(a_text);
+    free(b_text);
+    glint_scene_free(a);
+    glint_scene_free(b);
+}
+
+/* Gives the unpacked log every recorded file's bytes, read again. */
+static void take_files(const file_log *recorded, file_log *unpacked)
+{
+    for (size_t i = 0; i < file_log_file_count(recorded); i++) {
+        uint64_t size;
+        glint_error err;
+        int fd = file_log_open_file(recorded, i, &size, &err);
+        if (fd < 0)
+            abort(); /* the corpus's files do not change */
+        char buffer[4096];
+        for (ssize_t n; size > 0 && (n = read(fd, buffer, sizeof buffer)) > 0; size -= (uint64_t)n)
+            if (file_log_take_bytes(unpacked, buffer, (size_t)n, &err))
+                abort();
+        close(fd);
+        if (size != 0)
+            abort();
+    }
+}
+
+/* The load recorded, then replayed from its packed log, must come out the
+ * same; the packed log with one byte changed is unpacked or refused. */
+static void same_when_replayed(const uint8_t *data, size_t size, const glint_load_options *options)
+{
+    file_log *log = file_log_new();
+    if (!log)
+        abort();
+    glint_error err, replay_err, pack_err;
+    err.message[0] = replay_err.message[0] = '\0';
+    file_log_record(log);
+    glint_scene *scene = glint_scene_load_memory((const char *)data, size, "fuzz.yaml", options, &err);
+    file_log_stop();
+    unsigned char *packed;
+    size_t packed_size;
+    if (file_log_pack(log, &packed, &packed_size, &pack_err))
+        abort();
+    file_log *unpacked = file_log_unpack(packed, packed_size, &pack_err);
+    if (!unpacked)
+        abort();
+    take_files(log, unpacked);
+    file_log_replay(unpacked);
+    glint_scene *replayed = glint_scene_load_memory((const char *)data, size, "fuzz.yaml", options, &replay_err);
+    file_log_stop();
+    expect_same_and_free(scene, &err, replayed, &replay_err);
+    file_log_free(unpacked);
+    if (packed_size > 0) {
+        packed[(size * 131 + (size ? data[0] : 0)) % packed_size] ^= (unsigned char)(size ? data[size - 1] | 1 : 1);
+        file_log_free(file_log_unpack(packed, packed_size, &pack_err));
+    }
+    free(packed);
+    file_log_free(log);
+}
+
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
 {
     same_with_both_readers(data, size);
@@ -90,12 +159,7 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
     scene_file_set_mode(SCENE_FILE_WHOLE);
     glint_scene *whole = glint_scene_load_memory((const char *)data, size, "fuzz.yaml", &options, &whole_err);
     scene_file_set_mode(SCENE_FILE_STREAMED);
-    char *a = outcome(scene, &err), *b = outcome(whole, &whole_err);
-    if (strcmp(a, b) != 0)
-        abort();
-    free(a);
-    free(b);
-    glint_scene_free(whole);
-    glint_scene_free(scene);
+    expect_same_and_free(scene, &err, whole, &whole_err);
+    same_when_replayed(data, size, &options);
     return 0;
 }
