@@ -17,28 +17,33 @@ static void wait_quietly(MPI_Request *request)
     }
 }
 
-void agree_on_rank0(int *value)
+void agree_on_rank0_bytes(MPI_Comm comm, void *bytes, int n)
 {
     MPI_Request request;
-    MPI_Ibcast(value, 1, MPI_INT, 0, MPI_COMM_WORLD, &request);
+    MPI_Ibcast(bytes, n, MPI_BYTE, 0, comm, &request);
     wait_quietly(&request);
+}
+
+void agree_on_rank0(MPI_Comm comm, int *value)
+{
+    agree_on_rank0_bytes(comm, value, sizeof *value);
 }
 
 /* The ranks' *value combined by op, on every rank. */
-static void agree_by(int *value, MPI_Op op)
+static void agree_by(MPI_Comm comm, int *value, MPI_Op op)
 {
     int mine = *value;
     MPI_Request request;
-    MPI_Iallreduce(&mine, value, 1, MPI_INT, op, MPI_COMM_WORLD, &request);
+    MPI_Iallreduce(&mine, value, 1, MPI_INT, op, comm, &request);
     wait_quietly(&request);
 }
 
-void agree_on_max(int *value)
+void agree_on_max(MPI_Comm comm, int *value)
 {
-    agree_by(value, MPI_MAX);
+    agree_by(comm, value, MPI_MAX);
 }
 
-void agree_on_min(int *value)
+void agree_on_min(MPI_Comm comm, int *value)
 {
-    agree_by(value, MPI_MIN);
+    agree_by(comm, value, MPI_MIN);
 }

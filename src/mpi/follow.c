@@ -6,7 +6,6 @@
 #include <mpi.h>
 #include <stdio.h>
 #include <stdlib.h>
-#include "cli/args.h"
 #include "mpi/backoff.h"
 #include "mpi/follow.h"
 #include "mpi/local_render.h"
@@ -25,6 +24,7 @@ typedef struct follower {
     tile_message *sending[SENDS_IN_FLIGHT]; /* NULL: a free slot */
     int in_flight;
     volatile int stop;        /* the render's cancel flag */
+    MPI_Comm comm;
 } follower;
 
 static int follow_next(void *user)
@@ -62,7 +62,7 @@ static bool send_finished(follower *f)
             continue;
         f->sending[i] = m;
         f->in_flight++;
-        MPI_Isend(m->bytes, (int)m->size, MPI_BYTE, 0, TAG_PIXELS, MPI_COMM_WORLD, &f->sends[i]);
+        MPI_Isend(m->bytes, (int)m->size, MPI_BYTE, 0, TAG_PIXELS, f->comm, &f->sends[i]);
         busy = true;
     }
     return busy;
@@ -90,10 +90,10 @@ static void take_tiles(follower *f, const MPI_Status *st)
     int n = 0, tiles[MAX_BATCH];
     MPI_Get_count(st, MPI_INT, &n);
     if (n < 0 || n > MAX_BATCH) {
-        MPI_Recv(NULL, 0, MPI_INT, 0, TAG_TILES, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        MPI_Recv(NULL, 0, MPI_INT, 0, TAG_TILES, f->comm, MPI_STATUS_IGNORE);
         n = 0;
     } else {
-        MPI_Recv(tiles, n, MPI_INT, 0, TAG_TILES, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        MPI_Recv(tiles, n, MPI_INT, 0, TAG_TILES, f->comm, MPI_STATUS_IGNORE);
     }
     if (n == 0 || !tile_queue_put(&f->queue, tiles, n))
         tile_queue_close(&f->queue);
@@ -101,21 +101,21 @@ static void take_tiles(follower *f, const MPI_Status *st)
 
 /* Whether the render is to stop now: the rank's own signal, or rank 0's
  * STOP, taken in. */
-static bool told_to_stop(const glint_render_options *options)
+static bool told_to_stop(const follower *f, const glint_render_options *options)
 {
     int flag = 0;
-    MPI_Iprobe(0, TAG_STOP, MPI_COMM_WORLD, &flag, MPI_STATUS_IGNORE);
+    MPI_Iprobe(0, TAG_STOP, f->comm, &flag, MPI_STATUS_IGNORE);
     if (flag)
-        MPI_Recv(NULL, 0, MPI_BYTE, 0, TAG_STOP, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        MPI_Recv(NULL, 0, MPI_BYTE, 0, TAG_STOP, f->comm, MPI_STATUS_IGNORE);
     return flag || (options->cancel && *options->cancel);
 }
 
-void follow_render(const glint_scene *scene, const glint_render_options *options)
+rank_report follow_render(MPI_Comm comm, const glint_scene *scene, const glint_render_options *options)
 {
     int threads = options->threads;
     glint_render_options own_options = *options;
     int want = 4 * threads < MAX_BATCH ? 4 * threads : MAX_BATCH;
-    follower f = {.in_flight = 0};
+    follower f = {.comm = comm};
     glint_error err = {0};
     local_render own = {0};
     rank_report report = {0};
@@ -131,15 +131,15 @@ void follow_render(const glint_scene *scene, const glint_render_options *options
             bool busy = send_finished(&f);
             if (local_render_finished(&own))
                 break;
-            if (!f.stop && told_to_stop(options))
+            if (!f.stop && told_to_stop(&f, options))
                 f.stop = 1;
             if (!asked && !f.queue.closed && tile_queue_count(&f.queue) <= 2 * threads) {
-                MPI_Send(&want, 1, MPI_INT, 0, TAG_ASK, MPI_COMM_WORLD);
+                MPI_Send(&want, 1, MPI_INT, 0, TAG_ASK, comm);
                 asked = true;
             }
             int flag = 0;
             MPI_Status st;
-            MPI_Iprobe(0, TAG_TILES, MPI_COMM_WORLD, &flag, &st);
+            MPI_Iprobe(0, TAG_TILES, comm, &flag, &st);
             if (flag) {
                 take_tiles(&f, &st);
                 asked = false;
@@ -151,19 +151,20 @@ void follow_render(const glint_scene *scene, const glint_render_options *options
         /* A render that failed may leave an answer on its way. */
         if (asked) {
             MPI_Status st;
-            MPI_Probe(0, TAG_TILES, MPI_COMM_WORLD, &st);
+            MPI_Probe(0, TAG_TILES, comm, &st);
             take_tiles(&f, &st);
         }
         report = local_render_report(&own);
         glint_image_free(&own.image);
-        if (!report.code && tile_outbox_failed(&f.outbox))
-            report = (rank_report){.code = CLI_EXIT_INTERNAL, .message = "out of memory sending a tile"};
+        if (!report.status && tile_outbox_failed(&f.outbox))
+            report = (rank_report){.status = GLINT_ERR_NOMEM, .message = "out of memory sending a tile"};
     } else {
-        report = (rank_report){.code = CLI_EXIT_INTERNAL};
+        report = (rank_report){.status = ready ? own.status : GLINT_ERR_NOMEM};
         snprintf(report.message, sizeof report.message, "%s", ready ? own.err.message : "out of memory");
     }
-    MPI_Send(&report, sizeof report, MPI_BYTE, 0, TAG_DONE, MPI_COMM_WORLD);
+    MPI_Send(&report, sizeof report, MPI_BYTE, 0, TAG_DONE, comm);
     if (ready)
         tile_queue_free(&f.queue);
     tile_outbox_free(&f.outbox);
+    return report;
 }

@@ -4,13 +4,15 @@
 #ifndef GLINT_MPI_FOLLOW_H
 #define GLINT_MPI_FOLLOW_H
 
-#include "glint.h"
+#include <mpi.h>
+#include "mpi/protocol.h"
 
-/* Renders the tiles rank 0 (lead_render, lead.h) hands this rank, on
- * options->threads threads (set, not 0), until rank 0 has no more or tells
- * it to stop, or options->cancel (a signal's flag, when set) is set; and
- * reports to it how the render went, also when it failed (rank 0 says). Called on the thread that initialised MPI, the only one that
+/* Renders the tiles rank 0 of comm (lead_render, lead.h) hands this rank,
+ * on options->threads threads (set, not 0), until rank 0 has no more or
+ * tells it to stop, or options->cancel (a signal's flag, when set) is set;
+ * and reports to it how the render went, also when it failed. Returns that
+ * report. Called on the thread that initialised MPI, the only one that
  * calls it. */
-void follow_render(const glint_scene *scene, const glint_render_options *options);
+rank_report follow_render(MPI_Comm comm, const glint_scene *scene, const glint_render_options *options);
 
 #endif

@@ -11,13 +11,13 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "cli/args.h"
-#include "cli/setup.h"
+#include "core/error.h"
 #include "mpi/backoff.h"
 #include "mpi/lead.h"
 #include "mpi/local_render.h"
 
 typedef struct lead {
+    MPI_Comm comm;
     render_layout layout;
     int ranks;
     pthread_mutex_t lock;     /* over next_tile and closed */
@@ -65,13 +65,13 @@ static void stop_everyone(lead *l)
     l->stop = 1;
     for (int r = 1; r < l->ranks; r++)
         if (!l->reported[r])
-            MPI_Isend(NULL, 0, MPI_BYTE, r, TAG_STOP, MPI_COMM_WORLD, &l->stops[r]);
+            MPI_Isend(NULL, 0, MPI_BYTE, r, TAG_STOP, l->comm, &l->stops[r]);
 }
 
 /* The render feed of rank 0's own threads. */
 static int lead_next(void *user)
 {
-    int tile;
+    int tile = -1;
     return hand_out(user, 1, &tile) ? tile : -1;
 }
 
@@ -85,10 +85,10 @@ static void lead_done(void *user, int tile, const float *pixels, size_t stride)
 static void answer_ask(lead *l, int from)
 {
     int want = 0, tiles[MAX_BATCH];
-    MPI_Recv(&want, 1, MPI_INT, from, TAG_ASK, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    MPI_Recv(&want, 1, MPI_INT, from, TAG_ASK, l->comm, MPI_STATUS_IGNORE);
     want = want < 1 ? 1 : want > MAX_BATCH ? MAX_BATCH : want;
     int n = hand_out(l, want, tiles);
-    MPI_Send(tiles, n, MPI_INT, from, TAG_TILES, MPI_COMM_WORLD);
+    MPI_Send(tiles, n, MPI_INT, from, TAG_TILES, l->comm);
 }
 
 /* Takes in a PIXELS message from rank `from` of `size` bytes, into the
@@ -98,11 +98,11 @@ static bool take_pixels(lead *l, int from, int size, unsigned char *buffer, int 
     if (size > capacity) {
         /* Received all the same, so that it is not left pending. */
         unsigned char *big = malloc((size_t)size);
-        MPI_Recv(big, big ? size : 0, MPI_BYTE, from, TAG_PIXELS, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+        MPI_Recv(big, big ? size : 0, MPI_BYTE, from, TAG_PIXELS, l->comm, MPI_STATUS_IGNORE);
         free(big);
         return false;
     }
-    MPI_Recv(buffer, size, MPI_BYTE, from, TAG_PIXELS, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+    MPI_Recv(buffer, size, MPI_BYTE, from, TAG_PIXELS, l->comm, MPI_STATUS_IGNORE);
     tile_header h;
     if ((size_t)size < sizeof h)
         return false;
@@ -124,19 +124,17 @@ static bool take_pixels(lead *l, int from, int size, unsigned char *buffer, int 
 
 /* Serves the other ranks until they have all reported and rank 0's own
  * render has returned; false if a rank sent what no tile is. */
-static bool serve(lead *l, local_render *own, bool progress, rank_report *reports)
+static bool serve(lead *l, local_render *own, const glint_render_options *options, rank_report *reports)
 {
     int capacity = (int)sizeof(tile_header) + 3 * (int)sizeof(float) * l->layout.tile_size * l->layout.tile_size;
     unsigned char *buffer = malloc((size_t)capacity);
     bool sound = buffer != NULL;
-    cli_progress prog = {.last_print = -1};
-    clock_gettime(CLOCK_MONOTONIC, &prog.start);
     int reported = 0, shown = -1;
     backoff b = {0};
     while (reported < l->ranks - 1 || !local_render_finished(own)) {
         int flag = 0;
         MPI_Status st;
-        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, MPI_COMM_WORLD, &flag, &st);
+        MPI_Iprobe(MPI_ANY_SOURCE, MPI_ANY_TAG, l->comm, &flag, &st);
         if (flag && st.MPI_TAG == TAG_ASK) {
             answer_ask(l, st.MPI_SOURCE);
         } else if (flag && st.MPI_TAG == TAG_PIXELS) {
@@ -146,15 +144,15 @@ static bool serve(lead *l, local_render *own, bool progress, rank_report *report
                 sound = false;
         } else if (flag && st.MPI_TAG == TAG_DONE) {
             rank_report *r = &reports[st.MPI_SOURCE];
-            MPI_Recv(r, sizeof *r, MPI_BYTE, st.MPI_SOURCE, TAG_DONE, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            MPI_Recv(r, sizeof *r, MPI_BYTE, st.MPI_SOURCE, TAG_DONE, l->comm, MPI_STATUS_IGNORE);
             r->message[sizeof r->message - 1] = '\0';
             l->reported[st.MPI_SOURCE] = true;
             reported++;
-            if (r->code)
+            if (r->status)
                 stop_everyone(l);
         } else if (flag) {
             /* No tag of the protocol: taken and dropped. */
-            MPI_Recv(NULL, 0, MPI_BYTE, st.MPI_SOURCE, st.MPI_TAG, MPI_COMM_WORLD, MPI_STATUS_IGNORE);
+            MPI_Recv(NULL, 0, MPI_BYTE, st.MPI_SOURCE, st.MPI_TAG, l->comm, MPI_STATUS_IGNORE);
             sound = false;
         }
         /* A signal, a rank sending what is no tile, or rank 0's own render
@@ -162,39 +160,35 @@ static bool serve(lead *l, local_render *own, bool progress, rank_report *report
         if (*l->interrupt || !sound || (local_render_finished(own) && own->status != GLINT_OK))
             stop_everyone(l);
         int done = atomic_load(&l->local_done) + l->remote_done;
-        if (progress && done != shown) {
-            cli_show_progress(&prog, done, l->layout.tiles_total);
+        if (options->progress && done != shown) {
+            options->progress(options->progress_user, done, l->layout.tiles_total);
             shown = done;
         }
         backoff_after(&b, flag);
     }
-    if (progress && shown != l->layout.tiles_total)
-        fputs("\r\033[K", stderr); /* the progress line stopped short */
     MPI_Waitall(l->ranks, l->stops, MPI_STATUSES_IGNORE);
     free(buffer);
     return sound;
 }
 
-int lead_render(const glint_scene *scene, const glint_render_options *options, int ranks, bool progress,
-                glint_image *out, int *tiles_done, rank_report *reports)
+glint_status lead_render(MPI_Comm comm, const glint_scene *scene, const glint_render_options *options, int ranks,
+                         glint_image *out, int *tiles_done, rank_report *reports, glint_error *err)
 {
     static const volatile int never = 0;
     *out = (glint_image){0};
     *tiles_done = 0;
-    glint_error err = {0};
-    lead l = {.ranks = ranks, .interrupt = options->cancel ? options->cancel : &never};
-    if (render_layout_for(scene, options->tile_size, &l.layout, &err))
-        return cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
-    l.pixels = calloc((size_t)l.layout.width * (size_t)l.layout.height * 3, sizeof(float));
+    lead l = {.comm = comm, .ranks = ranks, .interrupt = options->cancel ? options->cancel : &never};
+    glint_status status = render_layout_for(scene, options->tile_size, &l.layout, err);
     l.stops = malloc((size_t)ranks * sizeof *l.stops);
     l.reported = calloc((size_t)ranks, sizeof *l.reported);
     if (!l.stops || !l.reported) {
         /* Not even the others can be told: MPI ends the job. */
-        fputs("glint-mpi: out of memory for the ranks' state\n", stderr);
-        MPI_Abort(MPI_COMM_WORLD, CLI_EXIT_INTERNAL);
+        fputs("glint: out of memory for the ranks' state\n", stderr);
+        MPI_Abort(comm, 5);
     }
     for (int r = 0; r < ranks; r++)
         l.stops[r] = MPI_REQUEST_NULL;
+    l.pixels = status ? NULL : calloc((size_t)l.layout.width * (size_t)l.layout.height * 3, sizeof(float));
     pthread_mutex_init(&l.lock, NULL);
     atomic_init(&l.local_done, 0);
     if (!l.pixels)
@@ -209,41 +203,37 @@ int lead_render(const glint_scene *scene, const glint_render_options *options, i
         close_queue(&l);
         atomic_store(&own.finished, true);
     }
-    bool sound = serve(&l, &own, progress, reports);
+    bool sound = serve(&l, &own, options, reports);
     if (started)
         local_render_join(&own);
     pthread_mutex_destroy(&l.lock);
     free(l.stops);
     free(l.reported);
     reports[0] = local_render_report(&own);
-    if (!l.pixels)
-        reports[0] = (rank_report){.code = CLI_EXIT_INTERNAL, .message = "out of memory for the image"};
+    if (!l.pixels && !status)
+        reports[0] = (rank_report){.status = GLINT_ERR_NOMEM, .message = "out of memory for the image"};
     /* A rank whose render was cancelled (by a signal, or told to stop)
-     * reports 4: the job was interrupted, unless a rank failed, which is
-     * then what stopped the others. */
-    int code = CLI_EXIT_OK;
+     * was interrupted, unless a rank failed, which is then what stopped
+     * the others: the first rank that failed is the one reported. */
     bool interrupted = *l.interrupt;
-    for (int r = 0; r < ranks; r++) {
-        if (reports[r].code == CLI_EXIT_INTERRUPTED)
+    for (int r = 0; r < ranks && !status; r++) {
+        if (reports[r].status == GLINT_ERR_CANCELLED)
             interrupted = true;
-        else if (reports[r].code) {
-            fprintf(stderr, "glint-mpi: rank %d: %s\n", r, reports[r].message);
-            code = reports[r].code > code ? reports[r].code : code;
-        }
+        else if (reports[r].status)
+            status = error_set(err, (glint_status)reports[r].status, "rank %d: %s", r, reports[r].message);
     }
     int done = atomic_load(&l.local_done) + l.remote_done;
-    if (!code && !sound)
-        code = cli_complain(CLI_EXIT_INTERNAL, "a rank sent a message that is no tile of this image: "
-                                               "are all ranks running the same glint-mpi?");
-    else if (!code && interrupted)
-        code = CLI_EXIT_INTERRUPTED;
-    else if (!code && done != l.layout.tiles_total)
-        code = cli_complain(CLI_EXIT_INTERNAL, "only %d of %d tiles came back", done, l.layout.tiles_total);
-    if (code && code != CLI_EXIT_INTERRUPTED) {
+    if (!status && !sound)
+        status = error_set(err, GLINT_ERR_INVALID, "a rank sent a message that is no tile of this image");
+    else if (!status && interrupted)
+        status = error_set(err, GLINT_ERR_CANCELLED, "render cancelled");
+    else if (!status && done != l.layout.tiles_total)
+        status = error_set(err, GLINT_ERR_INVALID, "only %d of %d tiles came back", done, l.layout.tiles_total);
+    if (status && status != GLINT_ERR_CANCELLED) {
         free(l.pixels);
-        return code;
+        return status;
     }
     *out = (glint_image){.width = l.layout.width, .height = l.layout.height, .pixels = l.pixels};
     *tiles_done = done;
-    return code;
+    return status;
 }

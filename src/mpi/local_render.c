@@ -3,7 +3,6 @@
 #include <stdio.h>
 #include <string.h>
 #include <time.h>
-#include "cli/setup.h"
 #include "core/error.h"
 #include "mpi/local_render.h"
 
@@ -74,12 +73,15 @@ void local_render_join(local_render *r)
 
 rank_report local_render_report(local_render *r)
 {
-    rank_report rep = {.rays = r->stats.rays, .samples = r->stats.samples, .nan_samples = r->stats.nan_samples,
-                       .seconds = r->stats.seconds, .busy = atomic_load(&r->busy_ns) * 1e-9,
-                       .tiles = r->stats.tiles_done, .threads = r->options.threads};
-    if (r->status) {
-        rep.code = cli_exit_code_of(r->status);
+    rank_report rep = {.stats = {.rays = r->stats.rays,
+                                 .samples = r->stats.samples,
+                                 .nan_samples = r->stats.nan_samples,
+                                 .seconds = r->stats.seconds,
+                                 .busy = atomic_load(&r->busy_ns) * 1e-9,
+                                 .tiles = r->stats.tiles_done,
+                                 .threads = r->options.threads},
+                       .status = r->status};
+    if (r->status)
         snprintf(rep.message, sizeof rep.message, "%s", r->err.message);
-    }
     return rep;
 }

@@ -42,8 +42,7 @@ bool local_render_finished(local_render *r);
  * caller's to free) and r->stats are its results. */
 void local_render_join(local_render *r);
 
-/* The rank's report of a joined render (protocol.h): the code is 0 or the
- * exit code of its failure. */
+/* The rank's report of a joined render (protocol.h). */
 rank_report local_render_report(local_render *r);
 
 #endif

@@ -1,15 +1,13 @@
-/* main.c - the glint-mpi command: every rank checked to run one build
- * (same_build.c); glint's flags (src/cli/args.c), read by every rank; the
- * scene loaded by rank 0, reporting its problems alone, and sent with its
- * files to the others, which load it from those bytes (ship_files.c); its
- * tiles rendered across the ranks (lead.c on rank 0, follow.c on the
- * others); the image written by rank 0 alone, as glint writes it; signals
- * handled as glint handles them; and one exit code for every rank.
- * --check and --print-scene are rank 0's alone. */
-#define _GNU_SOURCE /* sched_getaffinity */
+/* main.c - the glint-mpi command: glint's flags (src/cli/args.c), read by
+ * every rank; the scene loaded by rank 0, reporting its problems alone,
+ * and by the others from the files it sends (load_everywhere.c); the
+ * image rendered across the ranks (glint_mpi_render) and written by rank 0
+ * alone, as glint writes it; signals handled as glint handles them; and
+ * one exit code for every rank. --check and --print-scene are rank 0's
+ * alone. */
 #include <fcntl.h>
+#include <limits.h>
 #include <mpi.h>
-#include <sched.h>
 #include <signal.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,13 +16,11 @@
 #include "cli/args.h"
 #include "cli/reports.h"
 #include "cli/setup.h"
-#include "core/processors.h"
+#include "core/error.h"
+#include "glint_mpi.h"
 #include "mpi/agree.h"
-#include "mpi/follow.h"
-#include "mpi/lead.h"
+#include "mpi/load_everywhere.h"
 #include "mpi/same_build.h"
-#include "mpi/ship_files.h"
-#include "render/render_tiles.h"
 
 /* Runs parse with stdout and stderr sent nowhere: the other ranks read the
  * same flags as rank 0, which alone prints the help or their faults. */
@@ -50,24 +46,6 @@ static int parse_silently(int argc, char **argv, cli_options *o)
         close(err);
     if (null >= 0)
         close(null);
-    return code;
-}
-
-/* Rank 0's load of the scene (standard input kept first, when it is read)
- * with every file it reads noted in a new *log; -1, or the exit code after
- * complaining. */
-static int load_recording(const cli_options *o, bool from_stdin, cli_run *r, file_log **log)
-{
-    if (from_stdin) {
-        int code = keep_stdin();
-        if (code >= 0)
-            return code;
-    }
-    if (!(*log = file_log_new()))
-        return cli_complain(CLI_EXIT_INTERNAL, "out of memory");
-    file_log_record(*log);
-    int code = cli_prepare(o, true, r);
-    file_log_stop();
     return code;
 }
 
@@ -107,27 +85,24 @@ static int report_only(const cli_options *o)
  * (rank 0's count, when every rank has as many), and for each rank how
  * busy its threads were (their time on tiles over the render's time) and
  * how many tiles it rendered. */
-static void print_summary(const cli_run *r, int ranks, const rank_report *reports, double seconds)
+static void print_summary(const cli_run *r, int ranks, const glint_render_stats *total,
+                          const glint_mpi_rank_stats *each)
 {
-    uint64_t rays = 0, samples = 0;
     bool same_threads = true;
-    for (int i = 0; i < ranks; i++) {
-        rays += reports[i].rays;
-        samples += reports[i].samples;
-        same_threads = same_threads && reports[i].threads == reports[0].threads;
-    }
+    for (int i = 0; i < ranks; i++)
+        same_threads = same_threads && each[i].threads == each[0].threads;
     const glint_settings *s = &r->settings;
     fprintf(stderr, "glint-mpi: %dx%d, %d spp, %d rank%s x ", s->width, s->height, s->samples_per_pixel, ranks,
             ranks == 1 ? "" : "s");
     if (same_threads)
-        fprintf(stderr, "%d thread%s", reports[0].threads, reports[0].threads == 1 ? "" : "s");
+        fprintf(stderr, "%d thread%s", each[0].threads, each[0].threads == 1 ? "" : "s");
     else
         fputs("their threads", stderr);
-    fprintf(stderr, ": %.3f s, %llu samples, %llu rays, %.1f Mrays/s -> %s; busy:", seconds,
-            (unsigned long long)samples, (unsigned long long)rays, seconds > 0 ? rays / seconds * 1e-6 : 0.0,
-            r->dest.shown);
+    fprintf(stderr, ": %.3f s, %llu samples, %llu rays, %.1f Mrays/s -> %s; busy:", total->seconds,
+            (unsigned long long)total->samples, (unsigned long long)total->rays,
+            total->seconds > 0 ? total->rays / total->seconds * 1e-6 : 0.0, r->dest.shown);
     for (int i = 0; i < ranks; i++) {
-        const rank_report *p = &reports[i];
+        const glint_mpi_rank_stats *p = &each[i];
         double busy = p->seconds > 0 && p->threads > 0 ? p->busy / (p->seconds * p->threads) : 0;
         fprintf(stderr, "%s rank %d %.0f%% (%d tile%s", i ? "," : "", i, 100 * (busy < 1 ? busy : 1), p->tiles,
                 p->tiles == 1 ? "" : "s");
@@ -138,59 +113,72 @@ static void print_summary(const cli_run *r, int ranks, const rank_report *report
     fputc('\n', stderr);
 }
 
-/* The render threads of a rank without --threads: one per processor it
- * may run on. mpirun binds each rank to one core by default when there are
- * at most two ranks, to a socket beyond: a thread per core of the machine
- * would then share the cores bound to. */
-static int default_threads(void)
-{
-    cpu_set_t set;
-    CPU_ZERO(&set);
-    int n = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 0;
-    return n > 0 ? n : processors_online(1024);
-}
-
 /* Renders and, on rank 0, writes the image; the exit code. Every rank has
  * loaded the scene into r. */
 static int render(const cli_options *o, cli_run *r, int rank, int ranks)
 {
-    glint_render_options ro = {.threads = o->threads > 0 ? (int)o->threads : default_threads(),
-                               .cancel = (const volatile int *)&interrupted};
-    if (rank != 0) {
-        follow_render(r->scene, &ro);
-        return CLI_EXIT_OK;
+    cli_progress prog = {.last_print = -1};
+    clock_gettime(CLOCK_MONOTONIC, &prog.start);
+    glint_render_options ro = {.threads = o->threads > 0 ? (int)o->threads : 0,
+                               .cancel = (const volatile int *)&interrupted,
+                               .keep_partial = o->partial};
+    if (rank == 0 && !o->quiet) {
+        ro.progress = cli_show_progress;
+        ro.progress_user = &prog;
     }
-    rank_report *reports = calloc((size_t)ranks, sizeof *reports);
-    if (!reports)
-        return cli_complain(CLI_EXIT_INTERNAL, "out of memory for %d ranks' reports", ranks);
-    double start = MPI_Wtime();
+    glint_mpi_rank_stats *each = rank == 0 ? calloc((size_t)ranks, sizeof *each) : NULL;
+    if (rank == 0 && !each) {
+        fputs("glint-mpi: out of memory for the ranks' reports\n", stderr);
+        MPI_Abort(MPI_COMM_WORLD, CLI_EXIT_INTERNAL); /* the others cannot be told */
+    }
     glint_image image;
-    int tiles_done;
-    int code = lead_render(r->scene, &ro, ranks, !o->quiet, &image, &tiles_done, reports);
-    double seconds = MPI_Wtime() - start;
-    if (code == CLI_EXIT_INTERRUPTED) {
-        render_layout layout;
-        glint_error err;
-        render_layout_for(r->scene, ro.tile_size, &layout, &err); /* as lead_render's, which succeeded */
-        code = cli_interrupted(o, r, &image, tiles_done, layout.tiles_total);
-        glint_image_free(&image);
-    } else if (!code) {
-        glint_error err = {0};
-        glint_status st = cli_write_image(r, &image, &err);
-        glint_image_free(&image);
-        if (st) {
-            code = cli_complain(cli_exit_code_of(st), "%s", err.message);
-        } else {
-            uint64_t nan_samples = 0;
-            for (int i = 0; i < ranks; i++)
-                nan_samples += reports[i].nan_samples;
-            cli_warn_nan(nan_samples);
-            if (!o->quiet)
-                print_summary(r, ranks, reports, seconds);
-        }
+    glint_render_stats total;
+    glint_error err = {0};
+    glint_status st = glint_mpi_render(MPI_COMM_WORLD, r->scene, &ro, &image, &total, each, &err);
+    if (ro.progress && st)
+        fputs("\r\033[K", stderr); /* the progress line stopped short */
+    int code = CLI_EXIT_OK;
+    if (rank != 0)
+        code = cli_exit_code_of(st);
+    else if (st == GLINT_ERR_CANCELLED)
+        code = cli_interrupted(o, r, &image, total.tiles_done, total.tiles_total);
+    else if (st)
+        code = cli_complain(cli_exit_code_of(st), "%s", err.message);
+    else if ((st = cli_write_image(r, &image, &err)))
+        code = cli_complain(cli_exit_code_of(st), "%s", err.message);
+    else {
+        cli_warn_nan(total.nan_samples);
+        if (!o->quiet)
+            print_summary(r, ranks, &total, each);
     }
-    free(reports);
+    glint_image_free(&image);
+    free(each);
     return code;
+}
+
+/* What the loader of the scene needs: the flags (on the other ranks,
+ * whether they were rank 0's), and where the scene goes, with the exit
+ * code of a failure. */
+typedef struct flag_load {
+    const cli_options *o;
+    bool other_flags;
+    cli_run *run;
+    int code;
+} flag_load;
+
+/* A scene_loader: the scene as the flags ask, its problems said (on rank
+ * 0 alone, unless another rank fails where rank 0 did not). */
+static glint_status load_flags_scene(void *user, bool rank0, glint_error *err)
+{
+    flag_load *l = user;
+    if (l->other_flags)
+        l->code = cli_complain(CLI_EXIT_INTERNAL, "this rank was given other arguments than rank 0");
+    else
+        l->code = cli_prepare(l->o, rank0, l->run);
+    /* Said already; the status only tells failure from success. */
+    return l->code < 0 ? GLINT_OK
+                       : error_set(err, l->code == CLI_EXIT_INTERNAL ? GLINT_ERR_NOMEM : GLINT_ERR_INVALID,
+                                   "the scene could not be loaded");
 }
 
 int main(int argc, char **argv)
@@ -207,7 +195,11 @@ int main(int argc, char **argv)
      * kills them a second later; a batch system may signal the ranks
      * themselves, or only one, which then stops the others. */
     cli_catch_signals(on_signal);
-    int code = check_same_build(rank, ranks);
+    /* Another build could read the flags otherwise: checked first. */
+    glint_error err = {0};
+    int code = -1;
+    if (check_same_build(MPI_COMM_WORLD, &err))
+        code = rank == 0 ? cli_complain(CLI_EXIT_USAGE, "%s", err.message) : CLI_EXIT_USAGE;
     cli_options o;
     /* Rank 0 parses first and prints; the others only when it found the
      * flags good, and silently, as they are the same flags. */
@@ -215,57 +207,48 @@ int main(int argc, char **argv)
         code = cli_parse_args(argc, argv, &o);
     if (rank == 0 && code < 0 && provided < MPI_THREAD_FUNNELED)
         code = cli_complain(CLI_EXIT_INTERNAL, "this MPI cannot run threads beside the one calling it");
-    agree_on_rank0(&code);
+    agree_on_rank0(MPI_COMM_WORLD, &code);
     /* --check and --print-scene are rank 0's alone. */
     int report = rank == 0 && code < 0 && (o.check || o.print_scene);
-    agree_on_rank0(&report);
+    agree_on_rank0(MPI_COMM_WORLD, &report);
     if (report) {
         code = rank == 0 ? report_only(&o) : CLI_EXIT_OK;
-        agree_on_rank0(&code);
+        agree_on_rank0(MPI_COMM_WORLD, &code);
         MPI_Finalize();
         return code;
     }
     cli_run r = {0};
-    /* Rank 0 loads the scene and checks the output first: a problem is
-     * reported once, by it, and every rank exits with its code. It notes
-     * the files it reads, to send them to the others. */
-    file_log *log = NULL;
-    bool from_stdin = rank == 0 && code < 0 && o.scene && strcmp(o.scene, "-") == 0;
-    if (code < 0 && rank == 0)
-        code = load_recording(&o, from_stdin, &r, &log);
-    agree_on_rank0(&code);
-    if (code < 0)
-        code = rank == 0 ? send_files(log, from_stdin) : receive_files(&log);
-    /* The others load the same scene from what rank 0 sent: no path of
-     * theirs is looked at. */
-    if (code < 0 && rank != 0) {
-        if (parse_silently(argc, argv, &o) >= 0) /* mpirun gives every rank the same arguments */
-            code = cli_complain(CLI_EXIT_INTERNAL, "rank %d was given other arguments than rank 0", rank);
-        else {
-            file_log_replay(log);
-            code = cli_prepare(&o, false, &r);
-            file_log_stop();
-        }
+    flag_load load = {.o = &o, .run = &r, .code = -1};
+    /* mpirun gives every rank the same arguments. */
+    if (code < 0 && rank != 0)
+        load.other_flags = parse_silently(argc, argv, &o) >= 0;
+    if (code < 0) {
+        bool from_stdin = rank == 0 && o.scene && strcmp(o.scene, "-") == 0;
+        int with_stdin = from_stdin;
+        agree_on_rank0(MPI_COMM_WORLD, &with_stdin);
+        int failed_rank;
+        glint_status st = load_everywhere(MPI_COMM_WORLD, load_flags_scene, &load, with_stdin, &failed_rank, &err);
+        /* A failure the loader did not say (sending rank 0's files, memory)
+         * is said here, on rank 0 and on the rank where it happened. */
+        code = load.code >= 0 ? load.code : st ? cli_exit_code_of(st) : -1;
+        if (st && load.code < 0 && (rank == 0 || rank == failed_rank))
+            cli_complain(code, "%s", err.message);
     }
-    file_log_free(log);
-    /* A rank that could not load what rank 0 loaded said why itself. */
-    int own = code;
-    agree_on_max(&code);
-    if (rank == 0 && own < 0 && code >= 0)
-        fputs("glint-mpi: another rank could not load the scene rank 0 loaded (its messages above)\n", stderr);
+    /* Every rank exits with the worst code. */
+    agree_on_max(MPI_COMM_WORLD, &code);
     rendering = code < 0;
     if (code < 0)
         code = render(&o, &r, rank, ranks);
     rendered = rendering;
     rendering = 0;
-    agree_on_rank0(&code);
+    agree_on_rank0(MPI_COMM_WORLD, &code);
     if (r.scene)
         glint_scene_free(r.scene);
     /* When mpirun signalled every rank (Ctrl-C, SIGTERM), they end without
      * MPI_Finalize, which would wait for an mpirun that is ending the job
      * until it kills them, a second later. */
     int everyone_signalled = interrupted;
-    agree_on_min(&everyone_signalled);
+    agree_on_min(MPI_COMM_WORLD, &everyone_signalled);
     if (!everyone_signalled)
         MPI_Finalize();
     return code;

@@ -1,5 +1,5 @@
 /* protocol.h - the messages glint-mpi's ranks exchange while rendering,
- * all in MPI_COMM_WORLD, all between rank 0 and one other rank:
+ * all in the job's communicator, all between rank 0 and one other rank:
  *
  *   rank r -> 0   ASK     int: how many tiles it would like
  *   0 -> rank r   TILES   int[n]: tile indices to render; n == 0: no more
@@ -18,7 +18,7 @@
 #define GLINT_MPI_PROTOCOL_H
 
 #include <stdint.h>
-#include "glint.h"
+#include "glint_mpi.h"
 
 enum mpi_tag { TAG_ASK = 1, TAG_TILES, TAG_PIXELS, TAG_DONE, TAG_STOP };
 
@@ -33,13 +33,9 @@ typedef struct tile_header {
 
 /* How a rank's render went: sent to rank 0 in DONE, and rank 0's own. */
 typedef struct rank_report {
-    uint64_t rays, samples, nan_samples;
-    double seconds;           /* the render's wall-clock time on that rank */
-    double busy;              /* seconds its threads spent rendering tiles, all added */
-    int32_t tiles;            /* tiles it rendered */
-    int32_t threads;          /* its render threads */
-    int32_t code;             /* 0, or the exit code of its failed render */
-    char message[sizeof(((glint_error *)0)->message)]; /* why it failed, when code is not 0 */
+    glint_mpi_rank_stats stats;
+    int32_t status;           /* a glint_status: GLINT_OK, or why its render failed */
+    char message[sizeof(((glint_error *)0)->message)]; /* why it failed, when it did */
 } rank_report;
 
 #endif

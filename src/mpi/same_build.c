@@ -6,7 +6,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include "cli/args.h"
+#include "core/error.h"
 #include "mpi/same_build.h"
 
 /* A build's name: "0.1.0 build 3f2a...", the version and the build ID in
@@ -56,26 +56,33 @@ static build_name this_build(void)
     return name;
 }
 
-int check_same_build(int rank, int ranks)
+glint_status check_same_build(MPI_Comm comm, glint_error *err)
 {
+    int rank, ranks;
+    MPI_Comm_rank(comm, &rank);
+    MPI_Comm_size(comm, &ranks);
     build_name mine = this_build();
     build_name *all = rank == 0 ? calloc((size_t)ranks, sizeof *all) : NULL;
     if (rank == 0 && !all) {
         /* Not even the others can be told: MPI ends the job. */
-        fputs("glint-mpi: out of memory for the ranks' builds\n", stderr);
-        MPI_Abort(MPI_COMM_WORLD, CLI_EXIT_INTERNAL);
+        fputs("glint: out of memory for the ranks' builds\n", stderr);
+        MPI_Abort(comm, 5);
     }
-    int code = -1;
-    MPI_Gather(&mine, sizeof mine, MPI_BYTE, all, sizeof mine, MPI_BYTE, 0, MPI_COMM_WORLD);
-    for (int r = 1; rank == 0 && r < ranks && code < 0; r++) {
+    int differs = 0;
+    MPI_Gather(&mine, sizeof mine, MPI_BYTE, all, sizeof mine, MPI_BYTE, 0, comm);
+    for (int r = 1; rank == 0 && r < ranks && !differs; r++) {
         all[r].text[sizeof all[r].text - 1] = '\0';
-        if (strcmp(all[r].text, mine.text) != 0)
-            code = cli_complain(CLI_EXIT_USAGE,
-                                "rank %d runs another build of glint-mpi (%s) than rank 0 (%s): every rank must run "
-                                "the same build, or the image would depend on which rank rendered what",
-                                r, all[r].text, mine.text);
+        if (strcmp(all[r].text, mine.text) != 0) {
+            differs = r;
+            error_set(err, GLINT_ERR_INVALID,
+                      "rank %d runs another build of glint (%s) than rank 0 (%s): every rank must run the same "
+                      "build, or the image would depend on which rank rendered what",
+                      r, all[r].text, mine.text);
+        }
     }
     free(all);
-    MPI_Bcast(&code, 1, MPI_INT, 0, MPI_COMM_WORLD);
-    return code;
+    MPI_Bcast(&differs, 1, MPI_INT, 0, comm);
+    if (differs && rank != 0)
+        error_set(err, GLINT_ERR_INVALID, "rank %d runs another build of glint than rank 0", differs);
+    return differs ? GLINT_ERR_INVALID : GLINT_OK;
 }

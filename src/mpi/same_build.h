@@ -7,8 +7,12 @@
 #ifndef GLINT_MPI_SAME_BUILD_H
 #define GLINT_MPI_SAME_BUILD_H
 
-/* Every rank calls it at once: -1 when all run rank 0's build, else
- * CLI_EXIT_USAGE on every rank, rank 0 having said which rank differs. */
-int check_same_build(int rank, int ranks);
+#include <mpi.h>
+#include "glint.h"
+
+/* Every rank of comm calls it at once: GLINT_OK when all run rank 0's
+ * build, else GLINT_ERR_INVALID on every rank with err naming the first
+ * rank that differs (on rank 0, with both builds). */
+glint_status check_same_build(MPI_Comm comm, glint_error *err);
 
 #endif

@@ -1,13 +1,14 @@
 /* ship_files.c - rank 0's files broadcast to the other ranks (ship_files.h).
  *
  * What is sent, all by MPI_Bcast from rank 0:
- *   head     3 uint64: the packed log's length (SHIP_FAILED: rank 0 could
- *            not pack it, and nothing follows), the files' bytes in all,
- *            standard input's bytes (0 without)
+ *   head     3 uint64: the packed log's length, the files' bytes in all,
+ *            standard input's bytes (0 without); or SHIP_FAILED and the
+ *            glint_status of rank 0's failure, and nothing follows
  *   log      the packed log
  *   chunks   the files' bytes one after the other, then standard input's,
  *            CHUNK_BYTES a chunk, each chunk after a uint64 that is 0, or
- *            SHIP_FAILED when rank 0 could not read it (the last chunk then)
+ *            the glint_status of rank 0's failure to read it, when the
+ *            chunk does not follow and nothing more comes
  * A worker that cannot keep what comes still takes part in every
  * broadcast, so that no rank is left waiting in one. */
 #define _GNU_SOURCE /* memfd_create */
@@ -20,8 +21,6 @@
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
-#include "cli/args.h"
-#include "cli/setup.h"
 #include "core/error.h"
 #include "mpi/ship_files.h"
 #include "scenefile/scene_file.h"
@@ -29,22 +28,15 @@
 #define SHIP_FAILED UINT64_MAX
 #define CHUNK_BYTES ((size_t)16 << 20)
 
-/* Broadcasts n bytes from rank 0, in pieces MPI's int counts can hold. */
-static void broadcast(void *bytes, size_t n)
+/* Broadcasts n bytes from rank 0 of comm, in pieces MPI's int counts can
+ * hold. */
+static void broadcast(MPI_Comm comm, void *bytes, size_t n)
 {
     for (size_t at = 0; at < n;) {
         int piece = n - at < (size_t)1 << 30 ? (int)(n - at) : 1 << 30;
-        MPI_Bcast((unsigned char *)bytes + at, piece, MPI_BYTE, 0, MPI_COMM_WORLD);
+        MPI_Bcast((unsigned char *)bytes + at, piece, MPI_BYTE, 0, comm);
         at += (size_t)piece;
     }
-}
-
-/* Says what went wrong; the exit code: a file that cannot be read (or
- * read again) is bad input, as for glint; memory running out or garbled
- * bytes from rank 0 are internal failures. */
-static int complain(const glint_error *err)
-{
-    return cli_complain(err->status == GLINT_ERR_IO ? CLI_EXIT_BAD_INPUT : CLI_EXIT_INTERNAL, "%s", err->message);
 }
 
 /* Writes all n bytes to fd; false with errno set. */
@@ -62,7 +54,7 @@ static bool write_all(int fd, const unsigned char *bytes, size_t n)
     return true;
 }
 
-int keep_stdin(void)
+glint_status keep_stdin(glint_error *err)
 {
     int kept = memfd_create("glint-stdin", MFD_CLOEXEC);
     unsigned char *buffer = malloc(1 << 16);
@@ -70,7 +62,7 @@ int keep_stdin(void)
         free(buffer);
         if (kept >= 0)
             close(kept);
-        return cli_complain(CLI_EXIT_INTERNAL, "out of memory keeping the scene from standard input");
+        return error_set(err, GLINT_ERR_NOMEM, "out of memory keeping the scene from standard input");
     }
     size_t total = 0;
     ssize_t got = 0;
@@ -85,17 +77,16 @@ int keep_stdin(void)
     }
     int e = errno;
     free(buffer);
-    if (got < 0 || (got > 0 && total <= (size_t)SCENE_FILE_MAX_BYTES)) {
-        close(kept);
-        return cli_complain(got < 0 ? CLI_EXIT_BAD_INPUT : CLI_EXIT_INTERNAL, "cannot %s the scene on standard input: %s",
-                            got < 0 ? "read" : "keep", strerror(e));
+    bool placed = got == 0 || total > (size_t)SCENE_FILE_MAX_BYTES;
+    if (placed && (lseek(kept, 0, SEEK_SET) != 0 || dup2(kept, STDIN_FILENO) != STDIN_FILENO)) {
+        placed = false;
+        e = errno;
     }
-    bool placed = lseek(kept, 0, SEEK_SET) == 0 && dup2(kept, STDIN_FILENO) == STDIN_FILENO;
-    e = errno;
     close(kept);
     if (!placed)
-        return cli_complain(CLI_EXIT_INTERNAL, "cannot keep the scene on standard input: %s", strerror(e));
-    return -1;
+        return error_set(err, got < 0 ? GLINT_ERR_IO : GLINT_ERR_NOMEM, "cannot %s the scene on standard input: %s",
+                         got < 0 ? "read" : "keep", strerror(e));
+    return GLINT_OK;
 }
 
 /* The sender's place in the bytes it sends: the file being read, and how
@@ -149,100 +140,113 @@ static bool read_next(reader *r, unsigned char *to, size_t n)
 
 /* Broadcasts n bytes from rank 0 in chunks: into `bytes`, or, on a rank
  * with nowhere to keep them (NULL), through `scratch` (CHUNK_BYTES). */
-static void broadcast_chunks(unsigned char *bytes, size_t n, unsigned char *scratch)
+static void broadcast_chunks(MPI_Comm comm, unsigned char *bytes, size_t n, unsigned char *scratch)
 {
     for (size_t at = 0; at < n; at += CHUNK_BYTES)
-        broadcast(bytes ? bytes + at : scratch, n - at < CHUNK_BYTES ? n - at : CHUNK_BYTES);
+        broadcast(comm, bytes ? bytes + at : scratch, n - at < CHUNK_BYTES ? n - at : CHUNK_BYTES);
 }
 
-int send_files(const file_log *log, bool with_stdin)
+glint_status send_files(MPI_Comm comm, const file_log *log, bool with_stdin, glint_error *err)
 {
-    glint_error err = {0};
     unsigned char *packed = NULL, *chunk = malloc(CHUNK_BYTES);
     size_t packed_size = 0;
     struct stat st;
     reader r = {.log = log, .fd = -1};
+    glint_status status = GLINT_OK;
     if (!chunk)
-        error_set(&err, GLINT_ERR_NOMEM, "out of memory sending the scene's files");
+        status = error_set(err, GLINT_ERR_NOMEM, "out of memory sending the scene's files");
     else if (with_stdin && fstat(STDIN_FILENO, &st) != 0)
-        error_set(&err, GLINT_ERR_IO, "cannot send the scene on standard input: %s", strerror(errno));
+        status = error_set(err, GLINT_ERR_IO, "cannot send the scene on standard input: %s", strerror(errno));
     else
-        file_log_pack(log, &packed, &packed_size, &err);
-    r.stdin_left = with_stdin && !err.status ? (uint64_t)st.st_size : 0;
-    uint64_t head[3] = {err.status ? SHIP_FAILED : packed_size, file_log_file_bytes(log), r.stdin_left};
-    broadcast(head, sizeof head);
-    if (err.status) {
+        status = file_log_pack(log, &packed, &packed_size, err);
+    r.stdin_left = with_stdin && !status ? (uint64_t)st.st_size : 0;
+    uint64_t head[3] = {status ? SHIP_FAILED : packed_size, status ? (uint64_t)status : file_log_file_bytes(log),
+                        r.stdin_left};
+    broadcast(comm, head, sizeof head);
+    if (status) {
         free(chunk);
-        return complain(&err);
+        return status;
     }
-    broadcast_chunks(packed, packed_size, NULL);
+    broadcast_chunks(comm, packed, packed_size, NULL);
     free(packed);
-    bool sound = true;
-    for (uint64_t left = head[1] + head[2]; left > 0 && sound;) {
+    for (uint64_t left = head[1] + head[2]; left > 0 && !status;) {
         size_t n = left < CHUNK_BYTES ? (size_t)left : CHUNK_BYTES;
-        sound = read_next(&r, chunk, n);
-        uint64_t word = sound ? 0 : SHIP_FAILED;
-        broadcast(&word, sizeof word);
-        if (sound)
-            broadcast(chunk, n);
+        if (!read_next(&r, chunk, n))
+            status = error_set(err, r.err.status, "%s", r.err.message);
+        uint64_t word = status ? (uint64_t)status : 0;
+        broadcast(comm, &word, sizeof word);
+        if (!status)
+            broadcast(comm, chunk, n);
         left -= n;
     }
     if (r.fd >= 0)
         close(r.fd);
     free(chunk);
-    return sound ? -1 : complain(&r.err);
+    return status;
 }
 
-int receive_files(file_log **out)
+/* Rank 0's failure, as a rank that did not see it tells it. */
+static glint_status rank0_failed(glint_status status, glint_error *err)
+{
+    return error_set(err, status, "rank 0 could not send the scene's files");
+}
+
+glint_status receive_files(MPI_Comm comm, file_log **out, glint_error *err)
 {
     *out = NULL;
     uint64_t head[3];
-    broadcast(head, sizeof head);
+    broadcast(comm, head, sizeof head);
     if (head[0] == SHIP_FAILED)
-        return CLI_EXIT_INTERNAL; /* rank 0 said why */
+        return rank0_failed((glint_status)head[1], err);
     unsigned char *chunk = malloc(CHUNK_BYTES);
     if (!chunk) {
-        fputs("glint-mpi: out of memory taking the scene's files from rank 0\n", stderr);
-        MPI_Abort(MPI_COMM_WORLD, CLI_EXIT_INTERNAL); /* it cannot even take part */
+        fputs("glint: out of memory taking the scene's files from rank 0\n", stderr);
+        MPI_Abort(comm, 5); /* it cannot even take part */
     }
-    glint_error err = {0};
+    glint_status status = GLINT_OK;
     unsigned char *packed = head[0] <= SIZE_MAX ? malloc(head[0] ? (size_t)head[0] : 1) : NULL;
     if (!packed)
-        error_set(&err, GLINT_ERR_NOMEM, "out of memory taking the scene's files from rank 0");
-    broadcast_chunks(packed, (size_t)head[0], chunk);
-    file_log *log = packed ? file_log_unpack(packed, (size_t)head[0], &err) : NULL;
+        status = error_set(err, GLINT_ERR_NOMEM, "out of memory taking the scene's files from rank 0");
+    broadcast_chunks(comm, packed, (size_t)head[0], chunk);
+    file_log *log = packed ? file_log_unpack(packed, (size_t)head[0], err) : NULL;
     free(packed);
+    if (!log && !status)
+        status = err->status;
     if (log && file_log_file_bytes(log) != head[1])
-        error_set(&err, GLINT_ERR_INVALID, "the scene's files came garbled from rank 0");
+        status = error_set(err, GLINT_ERR_INVALID, "the scene's files came garbled from rank 0");
     int kept_stdin = head[2] > 0 ? memfd_create("glint-stdin", MFD_CLOEXEC) : -1;
-    if (head[2] > 0 && kept_stdin < 0 && !err.status)
-        error_set(&err, GLINT_ERR_NOMEM, "cannot keep the scene on standard input: %s", strerror(errno));
-    bool rank0_failed = false;
-    for (uint64_t done = 0, total = head[1] + head[2]; done < total && !rank0_failed;) {
+    if (head[2] > 0 && kept_stdin < 0 && !status)
+        status = error_set(err, GLINT_ERR_NOMEM, "cannot keep the scene on standard input: %s", strerror(errno));
+    glint_status failed_there = GLINT_OK;
+    for (uint64_t done = 0, total = head[1] + head[2]; done < total;) {
         size_t n = total - done < CHUNK_BYTES ? (size_t)(total - done) : CHUNK_BYTES;
         uint64_t word;
-        broadcast(&word, sizeof word);
-        if ((rank0_failed = word != 0))
+        broadcast(comm, &word, sizeof word);
+        if (word != 0) {
+            failed_there = (glint_status)word;
             break;
-        broadcast(chunk, n);
+        }
+        broadcast(comm, chunk, n);
         /* The chunk's bytes of files, then of standard input. */
         size_t to_files = done < head[1] ? (size_t)(head[1] - done < n ? head[1] - done : n) : 0;
-        if (!err.status && to_files > 0)
-            file_log_take_bytes(log, chunk, to_files, &err);
-        if (!err.status && n > to_files && !write_all(kept_stdin, chunk + to_files, n - to_files))
-            error_set(&err, GLINT_ERR_NOMEM, "cannot keep the scene on standard input: %s", strerror(errno));
+        if (!status && to_files > 0)
+            status = file_log_take_bytes(log, chunk, to_files, err);
+        if (!status && n > to_files && !write_all(kept_stdin, chunk + to_files, n - to_files))
+            status = error_set(err, GLINT_ERR_NOMEM, "cannot keep the scene on standard input: %s", strerror(errno));
         done += n;
     }
     free(chunk);
-    if (!err.status && !rank0_failed && kept_stdin >= 0 &&
+    if (!status && !failed_there && kept_stdin >= 0 &&
         (lseek(kept_stdin, 0, SEEK_SET) != 0 || dup2(kept_stdin, STDIN_FILENO) != STDIN_FILENO))
-        error_set(&err, GLINT_ERR_IO, "cannot keep the scene on standard input: %s", strerror(errno));
+        status = error_set(err, GLINT_ERR_IO, "cannot keep the scene on standard input: %s", strerror(errno));
     if (kept_stdin >= 0)
         close(kept_stdin);
-    if (err.status || rank0_failed) {
+    if (failed_there)
+        status = rank0_failed(failed_there, err);
+    if (status) {
         file_log_free(log);
-        return rank0_failed ? CLI_EXIT_INTERNAL : complain(&err);
+        return status;
     }
     *out = log;
-    return -1;
+    return GLINT_OK;
 }

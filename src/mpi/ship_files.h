@@ -7,23 +7,24 @@
 #ifndef GLINT_MPI_SHIP_FILES_H
 #define GLINT_MPI_SHIP_FILES_H
 
+#include <mpi.h>
 #include <stdbool.h>
 #include "core/file_log.h"
 
 /* Rank 0, before loading a scene from standard input: reads it whole (up
  * to one byte past the loader's limit, which then refuses it) into memory
  * that becomes standard input, so that it can be sent after the load has
- * read it. -1, or the exit code after complaining. */
-int keep_stdin(void);
+ * read it. GLINT_ERR_IO when it cannot be read, GLINT_ERR_NOMEM kept. */
+glint_status keep_stdin(glint_error *err);
 
-/* Rank 0: sends `log`, the files' bytes and, when `with_stdin`, standard
- * input as keep_stdin kept it. -1, or the exit code after complaining;
- * the other ranks then fail too, quietly. */
-int send_files(const file_log *log, bool with_stdin);
+/* Rank 0 of comm: sends `log`, the files' bytes and, when `with_stdin`,
+ * standard input as keep_stdin kept it. On failure (a file changed since
+ * the load, memory) the other ranks fail too. */
+glint_status send_files(MPI_Comm comm, const file_log *log, bool with_stdin, glint_error *err);
 
-/* Every other rank: receives what send_files sends into *log, a log to
- * replay (and its standard input, when sent). -1, or an exit code: after
- * complaining when the rank failed itself, quietly when rank 0 did. */
-int receive_files(file_log **log);
+/* Every other rank of comm: receives what send_files sends into *log, a
+ * log to replay (and its standard input, when sent): err says why not, in
+ * its own words when the rank failed itself, else that rank 0 did. */
+glint_status receive_files(MPI_Comm comm, file_log **log, glint_error *err);
 
 #endif

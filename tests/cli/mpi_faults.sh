@@ -133,7 +133,7 @@ if [ -n "$build_id" ]; then
         -np 2 ./other-glint-mpi -w 64 -h 48 -q -o out.png >/dev/null 2>mpi.err
     st=$?
     [ "$st" -eq 2 ] && untouched &&
-        [ "$(grep -c "rank 1 runs another build of glint-mpi (.* build $other_id) than rank 0 (.* build $build_id)" mpi.err)" -eq 1 ]
+        [ "$(grep -c "rank 1 runs another build of glint (.* build $other_id) than rank 0 (.* build $build_id)" mpi.err)" -eq 1 ]
     verdict $? "another build on rank 1 is refused: exit 2 ($st), said once: $(head -c 400 mpi.err)"
 else
     echo "note: glint-mpi has no build ID (readelf missing?): the mismatched build is not checked"

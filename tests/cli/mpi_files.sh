@@ -4,9 +4,10 @@
 # bytes to the other ranks, which never open a scene path. Here the other
 # ranks run in a folder that has none of the scene's files, or decoys of
 # the same names with other contents (another include, texture and model):
-# the image is glint's either way. A scene on standard input and an image
-# on standard output are glint's too, as are --check and --print-scene
-# (rank 0's alone). Skipped (exit 77) without glint-mpi or mpirun.
+# the image is glint's either way, through glint-mpi and through the C API
+# (examples/embed_mpi.c). A scene on standard input and an image on
+# standard output are glint's too, as are --check and --print-scene (rank
+# 0's alone). Skipped (exit 77) without glint-mpi or mpirun.
 # Usage: mpi_files.sh PATH/TO/glint
 source "$(dirname "$0")/lib/harness.sh"
 source "$(dirname "$0")/lib/mpi.sh"
@@ -66,6 +67,21 @@ verdict $? "ranks among decoys render rank 0's files: glint's bytes; $(tail -c 3
 verdict $? "only rank 0 writes the image"
 others empty 3
 verdict $? "ranks without the files render rank 0's: glint's bytes; $(tail -c 300 mpi.log)"
+
+# A C program through libglint_mpi (examples/embed_mpi.c), built beside
+# glint: the same bytes, from rank 0's files; a scene missing fails every
+# rank alike.
+EMBED_MPI=$(dirname "$GLINT")/embed_mpi
+rm -f lead/out.png
+timeout "$limit" mpirun --oversubscribe -np 1 --wdir lead "$EMBED_MPI" assets/scene.yaml out.png : \
+    -np 2 --wdir decoy "$EMBED_MPI" assets/scene.yaml out.png >mpi.log 2>&1
+st=$?
+[ "$st" -eq 0 ] && cmp -s glint.png lead/out.png && [ ! -e decoy/out.png ]
+verdict $? "embed_mpi renders rank 0's files across 3 ranks: glint's bytes (exit $st: $(head -c 300 mpi.log))"
+timeout "$limit" mpirun --oversubscribe -np 3 "$EMBED_MPI" no-such.yaml out.png >mpi.log 2>&1
+st=$?
+[ "$st" -eq 1 ] && [ "$(grep -c "rank [012]: cannot read scene 'no-such.yaml': No such file or directory" mpi.log)" -eq 3 ]
+verdict $? "embed_mpi with a scene missing: every rank fails with rank 0's message (exit $st: $(head -c 300 mpi.log))"
 
 # The scene on standard input, the image on standard output.
 scene_file=$here/scenes/shapes.yaml

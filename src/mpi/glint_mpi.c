@@ -1,0 +1,132 @@
+/* glint_mpi.c - glint's C API across the ranks of an MPI job
+ * (include/glint_mpi.h): the scene loaded everywhere from rank 0's files
+ * (load_everywhere.c), and the render split between rank 0 (lead.c) and
+ * the others (follow.c), every rank returning rank 0's outcome. */
+#define _GNU_SOURCE /* sched_getaffinity */
+#include <sched.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include "core/error.h"
+#include "core/processors.h"
+#include "glint_mpi.h"
+#include "mpi/agree.h"
+#include "mpi/follow.h"
+#include "mpi/lead.h"
+#include "mpi/load_everywhere.h"
+#include "mpi/same_build.h"
+#include "render/render_tiles.h"
+
+/* What a scene_loader of glint_mpi_scene_load_file needs. */
+typedef struct file_load {
+    const char *path;
+    const glint_load_options *options;
+    glint_scene *scene;
+} file_load;
+
+static glint_status load_file(void *user, bool rank0, glint_error *err)
+{
+    file_load *f = user;
+    /* Only rank 0 reports problems: the others load what it loaded. */
+    glint_load_options quiet = {0};
+    if (f->options)
+        quiet = *f->options;
+    quiet.report = NULL;
+    f->scene = glint_scene_load_file(f->path, rank0 ? f->options : &quiet, err);
+    return f->scene ? GLINT_OK : err->status;
+}
+
+glint_scene *glint_mpi_scene_load_file(MPI_Comm comm, const char *path, const glint_load_options *options,
+                                       glint_error *err)
+{
+    glint_error mine = {0};
+    file_load f = {.path = path, .options = options};
+    int failed_rank;
+    if (!check_same_build(comm, &mine) && load_everywhere(comm, load_file, &f, false, &failed_rank, &mine)) {
+        glint_scene_free(f.scene);
+        f.scene = NULL;
+    }
+    if (err)
+        *err = mine;
+    return f.scene;
+}
+
+/* The render threads of a rank not told how many: one per processor it
+ * may run on. mpirun binds each rank to one core by default when there
+ * are at most two ranks, to a socket beyond: a thread per core of the
+ * machine would then share the cores bound to. */
+static int threads_available(void)
+{
+    cpu_set_t set;
+    CPU_ZERO(&set);
+    int n = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 0;
+    return n > 0 ? n : processors_online(1024);
+}
+
+/* Rank 0's share and the whole render's outcome on rank 0. */
+static glint_status render_lead(MPI_Comm comm, const glint_scene *scene, const glint_render_options *options,
+                                glint_image *out, glint_render_stats *stats, glint_mpi_rank_stats *rank_stats,
+                                glint_error *err)
+{
+    int ranks;
+    MPI_Comm_size(comm, &ranks);
+    rank_report *reports = calloc((size_t)ranks, sizeof *reports);
+    if (!reports) {
+        /* Not even the others can be told: MPI ends the job. */
+        fputs("glint: out of memory for the ranks' reports\n", stderr);
+        MPI_Abort(comm, 5);
+    }
+    double start = MPI_Wtime();
+    int tiles_done = 0;
+    glint_status status = lead_render(comm, scene, options, ranks, out, &tiles_done, reports, err);
+    glint_render_stats total = {.seconds = MPI_Wtime() - start, .tiles_done = tiles_done};
+    for (int r = 0; r < ranks; r++) {
+        total.rays += reports[r].stats.rays;
+        total.samples += reports[r].stats.samples;
+        total.nan_samples += reports[r].stats.nan_samples;
+        if (rank_stats)
+            rank_stats[r] = reports[r].stats;
+    }
+    free(reports);
+    render_layout layout;
+    if (!render_layout_for(scene, options->tile_size, &layout, NULL))
+        total.tiles_total = layout.tiles_total;
+    if (stats)
+        *stats = total;
+    if (status == GLINT_ERR_CANCELLED && !options->keep_partial)
+        glint_image_free(out);
+    return status;
+}
+
+glint_status glint_mpi_render(MPI_Comm comm, const glint_scene *scene, const glint_render_options *options,
+                              glint_image *out, glint_render_stats *stats, glint_mpi_rank_stats *rank_stats,
+                              glint_error *err)
+{
+    int rank;
+    MPI_Comm_rank(comm, &rank);
+    *out = (glint_image){0};
+    glint_error outcome = {0};
+    glint_render_options o = options ? *options : (glint_render_options){0};
+    if (o.threads <= 0)
+        o.threads = threads_available();
+    /* A tile is known by its index in the layout, which the tile size makes. */
+    int smallest = o.tile_size, largest = o.tile_size;
+    agree_on_min(comm, &smallest);
+    agree_on_max(comm, &largest);
+    glint_status status = check_same_build(comm, &outcome);
+    if (!status && smallest != largest) {
+        error_set(&outcome, GLINT_ERR_INVALID, "the ranks were given different tile sizes (%d to %d)", smallest, largest);
+    } else if (!status && rank == 0) {
+        render_lead(comm, scene, &o, out, stats, rank_stats, &outcome);
+    } else if (!status) {
+        rank_report own = follow_render(comm, scene, &o);
+        if (stats)
+            *stats = (glint_render_stats){.seconds = own.stats.seconds, .samples = own.stats.samples,
+                                          .rays = own.stats.rays, .nan_samples = own.stats.nan_samples,
+                                          .tiles_done = own.stats.tiles};
+    }
+    /* Every rank returns rank 0's outcome. */
+    agree_on_rank0_bytes(comm, &outcome, (int)sizeof outcome);
+    if (err)
+        *err = outcome;
+    return outcome.status;
+}
