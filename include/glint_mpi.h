@@ -35,8 +35,9 @@ extern "C" {
  * on every rank, or NULL on every rank with err saying why: rank 0's
  * failure as glint_scene_load_file says it, or the failure of another rank
  * (out of memory, say), on that rank in its own words and on the others as
- * "rank N could not load the scene". The ranks must run the same build
- * (glint_mpi_render says why). */
+ * "rank N could not load the scene rank 0 loaded". The ranks must run the
+ * same build, or every rank fails with GLINT_ERR_INVALID: another build
+ * (version or linker build ID) could compute other pixels. */
 glint_scene *glint_mpi_scene_load_file(MPI_Comm comm, const char *path, const glint_load_options *options,
                                        glint_error *err);
 
@@ -59,7 +60,10 @@ typedef struct glint_mpi_rank_stats {
  * processor the rank may run on), cancel (a flag, set by a signal handler
  * say, that stops every rank's render when set on any), keep_partial (rank
  * 0's); progress is called on rank 0 alone, counting every rank's tiles.
- * The tile size must be the same on every rank.
+ * The tile size must be the same on every rank (a rank with another fails
+ * the render). A rank whose own scene could not be built may call it with
+ * NULL: the render then fails on every rank, naming it. No rank waits for
+ * the others before it begins: rank 0 renders while they finish loading.
  *
  * On rank 0, *out is the image (free it with glint_image_free), stats (when
  * not NULL) the whole render's (rays, samples and tiles of every rank,
@@ -68,10 +72,8 @@ typedef struct glint_mpi_rank_stats {
  * and stats their own share; rank_stats is not touched. Every rank returns
  * the same status: GLINT_ERR_CANCELLED when a cancel flag stopped it (with
  * keep_partial, rank 0's *out then holds the tiles finished, the rest
- * black), GLINT_ERR_INVALID when the ranks run different builds of glint
- * (version or build ID: another build could compute other pixels) or a
- * different tile size, or the first rank's failure (out of memory, say),
- * err naming the rank. */
+ * black), or the first rank's failure (out of memory, say), err naming the
+ * rank. */
 glint_status glint_mpi_render(MPI_Comm comm, const glint_scene *scene, const glint_render_options *options,
                               glint_image *out, glint_render_stats *stats, glint_mpi_rank_stats *rank_stats,
                               glint_error *err);

@@ -112,6 +112,11 @@ static bool told_to_stop(const follower *f, const glint_render_options *options)
 
 rank_report follow_render(MPI_Comm comm, const glint_scene *scene, const glint_render_options *options)
 {
+    if (!scene) {
+        rank_report failed = {.status = GLINT_ERR_INVALID, .message = "it could not load the scene rank 0 loaded"};
+        MPI_Send(&failed, sizeof failed, MPI_BYTE, 0, TAG_DONE, comm);
+        return failed;
+    }
     int threads = options->threads;
     glint_render_options own_options = *options;
     int want = 4 * threads < MAX_BATCH ? 4 * threads : MAX_BATCH;

@@ -41,7 +41,7 @@ glint_scene *glint_mpi_scene_load_file(MPI_Comm comm, const char *path, const gl
     glint_error mine = {0};
     file_load f = {.path = path, .options = options};
     int failed_rank;
-    if (!check_same_build(comm, &mine) && load_everywhere(comm, load_file, &f, false, &failed_rank, &mine)) {
+    if (!check_same_build(comm, &mine) && load_everywhere(comm, load_file, &f, false, true, &failed_rank, &mine)) {
         glint_scene_free(f.scene);
         f.scene = NULL;
     }
@@ -108,16 +108,11 @@ glint_status glint_mpi_render(MPI_Comm comm, const glint_scene *scene, const gli
     glint_render_options o = options ? *options : (glint_render_options){0};
     if (o.threads <= 0)
         o.threads = threads_available();
-    /* A tile is known by its index in the layout, which the tile size makes. */
-    int smallest = o.tile_size, largest = o.tile_size;
-    agree_on_min(comm, &smallest);
-    agree_on_max(comm, &largest);
-    glint_status status = check_same_build(comm, &outcome);
-    if (!status && smallest != largest) {
-        error_set(&outcome, GLINT_ERR_INVALID, "the ranks were given different tile sizes (%d to %d)", smallest, largest);
-    } else if (!status && rank == 0) {
+    /* No collective before the render: rank 0 begins at once, while the
+     * others may still be loading the scene. */
+    if (rank == 0) {
         render_lead(comm, scene, &o, out, stats, rank_stats, &outcome);
-    } else if (!status) {
+    } else {
         rank_report own = follow_render(comm, scene, &o);
         if (stats)
             *stats = (glint_render_stats){.seconds = own.stats.seconds, .samples = own.stats.samples,

@@ -22,8 +22,8 @@ static glint_status load_recording(scene_loader load, void *user, bool with_stdi
     return status;
 }
 
-glint_status load_everywhere(MPI_Comm comm, scene_loader load, void *user, bool with_stdin, int *failed_rank,
-                             glint_error *err)
+glint_status load_everywhere(MPI_Comm comm, scene_loader load, void *user, bool with_stdin, bool wait_for_all,
+                             int *failed_rank, glint_error *err)
 {
     *failed_rank = 0;
     int rank;
@@ -39,15 +39,21 @@ glint_status load_everywhere(MPI_Comm comm, scene_loader load, void *user, bool 
         file_log_free(log);
         return told.status;
     }
-    glint_status status = rank == 0 ? send_files(comm, log, with_stdin, err) : receive_files(comm, &log, err);
+    bool by_rank0 = rank == 0;
+    glint_status status = rank == 0 ? send_files(comm, log, with_stdin, err)
+                                    : receive_files(comm, &log, &by_rank0, err);
     if (!status && rank != 0) {
         file_log_replay(log);
         status = load(user, false, err);
         file_log_stop();
     }
     file_log_free(log);
+    if (!wait_for_all) {
+        *failed_rank = status && !by_rank0 ? rank : 0;
+        return status;
+    }
     /* The first rank that failed, and why, on every rank. */
-    int first = status ? rank : INT_MAX;
+    int first = status ? (by_rank0 ? 0 : rank) : INT_MAX;
     agree_on_min(comm, &first);
     if (first == INT_MAX)
         return GLINT_OK;

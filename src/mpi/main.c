@@ -222,26 +222,36 @@ int main(int argc, char **argv)
     /* mpirun gives every rank the same arguments. */
     if (code < 0 && rank != 0)
         load.other_flags = parse_silently(argc, argv, &o) >= 0;
+    /* Whether this rank takes part in the render: every rank when every
+     * load succeeded; also a rank whose own load failed, which tells rank 0
+     * so in the render (no rank waits for the others' loads: rank 0 begins
+     * rendering at once); none when the flags or rank 0's load failed. */
+    bool joins = code < 0;
     if (code < 0) {
         bool from_stdin = rank == 0 && o.scene && strcmp(o.scene, "-") == 0;
         int with_stdin = from_stdin;
         agree_on_rank0(MPI_COMM_WORLD, &with_stdin);
         int failed_rank;
-        glint_status st = load_everywhere(MPI_COMM_WORLD, load_flags_scene, &load, with_stdin, &failed_rank, &err);
+        glint_status st =
+            load_everywhere(MPI_COMM_WORLD, load_flags_scene, &load, with_stdin, false, &failed_rank, &err);
         /* A failure the loader did not say (sending rank 0's files, memory)
          * is said here, on rank 0 and on the rank where it happened. */
         code = load.code >= 0 ? load.code : st ? cli_exit_code_of(st) : -1;
         if (st && load.code < 0 && (rank == 0 || rank == failed_rank))
             cli_complain(code, "%s", err.message);
+        joins = !st || failed_rank != 0;
     }
-    /* Every rank exits with the worst code. */
-    agree_on_max(MPI_COMM_WORLD, &code);
-    rendering = code < 0;
-    if (code < 0)
+    rendering = joins;
+    if (joins) {
+        int own = code;
         code = render(&o, &r, rank, ranks);
+        code = own >= 0 ? own : code;
+    }
     rendered = rendering;
     rendering = 0;
-    agree_on_rank0(MPI_COMM_WORLD, &code);
+    /* Every rank exits with the worst code: a rank that ran out of memory
+     * loading the scene makes it 5, as it would be for glint. */
+    agree_on_max(MPI_COMM_WORLD, &code);
     if (r.scene)
         glint_scene_free(r.scene);
     /* When mpirun signalled every rank (Ctrl-C, SIGTERM), they end without

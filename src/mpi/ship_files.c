@@ -191,13 +191,16 @@ static glint_status rank0_failed(glint_status status, glint_error *err)
     return error_set(err, status, "rank 0 could not send the scene's files");
 }
 
-glint_status receive_files(MPI_Comm comm, file_log **out, glint_error *err)
+glint_status receive_files(MPI_Comm comm, file_log **out, bool *by_rank0, glint_error *err)
 {
     *out = NULL;
+    *by_rank0 = false;
     uint64_t head[3];
     broadcast(comm, head, sizeof head);
-    if (head[0] == SHIP_FAILED)
+    if (head[0] == SHIP_FAILED) {
+        *by_rank0 = true;
         return rank0_failed((glint_status)head[1], err);
+    }
     unsigned char *chunk = malloc(CHUNK_BYTES);
     if (!chunk) {
         fputs("glint: out of memory taking the scene's files from rank 0\n", stderr);
@@ -241,8 +244,10 @@ glint_status receive_files(MPI_Comm comm, file_log **out, glint_error *err)
         status = error_set(err, GLINT_ERR_IO, "cannot keep the scene on standard input: %s", strerror(errno));
     if (kept_stdin >= 0)
         close(kept_stdin);
-    if (failed_there)
+    if (failed_there) {
+        *by_rank0 = true;
         status = rank0_failed(failed_there, err);
+    }
     if (status) {
         file_log_free(log);
         return status;

@@ -24,7 +24,8 @@ glint_status send_files(MPI_Comm comm, const file_log *log, bool with_stdin, gli
 
 /* Every other rank of comm: receives what send_files sends into *log, a
  * log to replay (and its standard input, when sent): err says why not, in
- * its own words when the rank failed itself, else that rank 0 did. */
-glint_status receive_files(MPI_Comm comm, file_log **log, glint_error *err);
+ * its own words when the rank failed itself, else (*by_rank0) that rank 0
+ * did. */
+glint_status receive_files(MPI_Comm comm, file_log **log, bool *by_rank0, glint_error *err);
 
 #endif

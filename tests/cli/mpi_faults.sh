@@ -118,6 +118,43 @@ if [ "$full" -eq 1 ]; then
     fi
 fi
 
+# A rank short of memory (its address space limited) fails the job
+# cleanly, saying so: taking rank 0's files, loading the scene (rank 0
+# then names it), or starting to render. The limits are tried from small to large until the job
+# succeeds, so that whatever OpenMPI itself takes, some fail in the load.
+# Not under ASan, whose shadow memory needs no such limit.
+if [ "$full" -eq 1 ]; then
+    awk 'BEGIN { n = 500
+        for (i = 0; i <= n; i++) for (j = 0; j <= n; j++) print "v", i, j, 0
+        for (i = 0; i < n; i++) for (j = 0; j < n; j++) {
+            a = i * (n + 1) + j + 1; print "f", a, a + 1, a + n + 2; print "f", a, a + n + 2, a + n + 1 } }' >grid.obj
+    printf 'glint: 1
+settings: { width: 64, height: 48 }
+camera: { position: [250, 250, 600], look_at: [250, 250, 0], fov: 60 }
+lights:
+  - { type: point, position: [0, 0, 100] }
+objects:
+  - { type: mesh, file: grid.obj }
+' >grid.yaml
+    in_load=0 clean=0 tries=0
+    for kib in $(seq 250000 50000 1500000); do
+        echo old >out.png
+        timeout "$limit" mpirun --oversubscribe -np 1 "$GLINT_MPI" grid.yaml -q -o out.png : \
+            -np 1 sh -c "ulimit -v $kib; exec \"\$0\" grid.yaml -q -o out.png" "$GLINT_MPI" >/dev/null 2>mpi.err
+        st=$?
+        [ "$st" -ne 0 ] || break
+        tries=$((tries + 1))
+        if { [ "$st" -eq 5 ] || [ "$st" -eq 1 ]; } && grep -q 'out of memory\|^glint: rank 1: ' mpi.err && untouched; then
+            clean=$((clean + 1))
+        else
+            echo "a rank limited to $kib KiB: exit $st: $(head -c 300 mpi.err)"
+        fi
+        ! grep -q 'rank 1: it could not load the scene rank 0 loaded' mpi.err || in_load=1
+    done
+    [ "$tries" -gt 0 ] && [ "$clean" -eq "$tries" ] && [ "$in_load" -eq 1 ]
+    verdict $? "a rank short of memory: $clean of $tries failed runs clean (exit 1 or 5, said, output untouched), some in the load ($in_load)"
+fi
+
 # A rank running another build (here glint-mpi with another build ID, as
 # another compiler or version would have) is refused before any work.
 build_id=$(readelf -n "$GLINT_MPI" 2>/dev/null | sed -n 's/.*Build ID: *//p')
