@@ -1,18 +1,30 @@
 /* mpi_model.c - glint-mpi past this machine, by simulation: the measured
  * time of every tile of a render (bench_tile_times's output) replayed
  * through glint-mpi's scheduler, as src/mpi/lead.c and src/mpi/follow.c
- * implement it, for 2 to 256 ranks over a network of a stated latency and
- * bandwidth. It prints the predicted wall time, speed-up and parallel
- * efficiency, and how busy rank 0's MPI thread is.
+ * implement it, or through one of two alternatives to it, for 2 to 256
+ * ranks over a network of a stated latency and bandwidth. It prints the
+ * predicted wall time, speed-up and parallel efficiency, and how busy
+ * rank 0's MPI thread is.
  *
  * What is simulated, event by event:
- * - One shared counter of tiles. Rank 0's render threads take tiles from it
- *   one at a time; a worker asks for min(4 x threads, 64) when it holds no
- *   more than 2 x threads, and rank 0 answers with at most
- *   min(want, max(1, left / (2 x ranks))), none when none are left.
- * - Every rank's MPI thread loop, one message a turn on rank 0, with the
- *   idle sleeps of src/mpi/backoff.h (20 us doubling to 1 ms); each message
- *   it sends or takes costs it --message-us, and a tile's pixels are copied
+ * - The schedule (--schedule):
+ *   pull (the default, glint-mpi's): one shared counter of tiles. Rank 0's
+ *   render threads take tiles from it one at a time; a worker asks for
+ *   min(4 x threads, 64) when it holds no more than 2 x threads, and rank 0
+ *   answers with at most min(want, max(1, left / (2 x ranks))), none when
+ *   none are left.
+ *   static (Tachyon's): rank r renders tiles r, r + N, r + 2N, ... of N
+ *   ranks; no message but the finished tiles and DONE.
+ *   steal: rank r starts with the r-th of N contiguous blocks of tiles. A
+ *   rank with no tile left to begin asks the rank holding the most (known
+ *   to it for free, which favours stealing) for some; that rank's MPI
+ *   thread answers on its next turn with the back half, rounded up, of
+ *   the tiles it has not begun (none if it has none left by then, and the
+ *   thief asks again). A rank that finds no tile left anywhere is done,
+ *   and its MPI thread goes on answering asks (with none) until the end.
+ * - Every rank's MPI thread loop, one message taken a turn, with the idle
+ *   sleeps of src/mpi/backoff.h (20 us doubling to 1 ms); each message it
+ *   sends or takes costs it --message-us, and a tile's pixels are copied
  *   at --copy-gbs (twice on rank 0: out of MPI into the image; once on a
  *   worker, into the message).
  * - Messages over links of --latency-us and --gbits: each rank sends and
@@ -24,11 +36,13 @@
  *   binomial tree, each rank sending to its children one after the other,
  *   and builds its BVH and renders at once; a worker loads the scene once
  *   MPI_Bcast would return (it has forwarded the files), then builds its
- *   BVH (the measured set-up) and renders, asking for tiles as soon as its
- *   load is done. --startup loaded is the render alone as glint-mpi's
- *   summary times it today (every rank has loaded its scene from a shared
- *   folder; each builds its BVH, then renders); --startup none leaves out
- *   loads and BVH builds (the scheduler, the network and the tail alone).
+ *   BVH (the measured set-up) and renders, its MPI loop (asking for tiles,
+ *   in the pull queue) running as soon as its load is done. --startup
+ *   loaded is the render alone as glint-mpi's summary times it today
+ *   (every rank has loaded its scene from a shared folder; each builds its
+ *   BVH, then renders); --startup none leaves out loads and BVH builds (the
+ *   scheduler, the network and the tail alone). Every schedule has the
+ *   same start-up.
  *
  * Not simulated: mpirun's launch, writing the image, MPI's rendezvous for
  * large messages and its 16 sends in flight per worker, and the MPI
@@ -37,8 +51,9 @@
  * measuring machine's.
  *
  *   bench_mpi_model TIMES.txt [--one-core S] [--ranks 2,4,...] [--threads N]
- *       [--startup broadcast|loaded|none] [--latency-us 50] [--gbits 10]
- *       [--message-us 3] [--copy-gbs 5] [--file-bytes N]
+ *       [--schedule pull|static|steal] [--startup broadcast|loaded|none]
+ *       [--latency-us 50] [--gbits 10] [--message-us 3] [--copy-gbs 5]
+ *       [--file-bytes N]
  *
  * --one-core S scales the tiles so that one core takes S seconds for the
  * frame, load and set-up included (they are not scaled); without it the
@@ -72,9 +87,13 @@ typedef struct measured {
 
 typedef enum startup { START_BROADCAST, START_LOADED, START_NONE } startup;
 
+/* How the tiles are shared out among the ranks (--schedule). */
+typedef enum scheduler { SCHEDULE_PULL, SCHEDULE_STATIC, SCHEDULE_STEAL } scheduler;
+
 /* The assumptions of one simulation. */
 typedef struct assumptions {
     int threads;                 /* render threads per rank */
+    scheduler plan;              /* pull queue, static interleave or work stealing */
     startup start;
     double tile_scale;           /* each measured tile time is multiplied by it */
     double load, setup;          /* a rank's scene load and BVH set-up, seconds */
@@ -88,7 +107,8 @@ typedef struct assumptions {
 enum message_kind { ASK, TILES, PIXELS, DONE };
 
 /* A message on its way or waiting to be taken. `count`: tiles wanted
- * (ASK), given (TILES, from `first` on), or the tile (PIXELS). */
+ * (ASK, to rank 0 or, in work stealing, to any rank), given (TILES, from
+ * `first` on), or the tile (PIXELS). */
 typedef struct message {
     double arrival;
     enum message_kind kind;
@@ -104,9 +124,10 @@ typedef struct fifo {
 
 typedef struct rank_state {
     fifo inbox;                  /* messages, in the order they arrive */
-    fifo queue;                  /* a worker's tiles given and not begun */
+    fifo queue;                  /* its tiles given and not begun (not rank 0's in the pull queue) */
     fifo outbox;                 /* a worker's finished tiles not yet sent */
-    bool asked, closed, finished; /* an ASK unanswered; no more tiles; the MPI loop ended */
+    bool asked, closed;          /* an ASK unanswered; no more tiles will come */
+    bool reported, finished;     /* a worker's DONE sent; the MPI loop ended */
     int waiting, ended;          /* render threads waiting for tiles; render threads ended */
     double sleep;                /* the MPI thread's next idle sleep (backoff.h) */
     double send_free, receive_free; /* when its link is free to send, to receive */
@@ -276,12 +297,41 @@ static int hand_out(simulation *s, int want, int *first)
     return n;
 }
 
+/* `rank`'s answer to an ASK for `want` tiles, the first in *first: lead.c's
+ * hand_out in the pull queue; in work stealing the back half, rounded up,
+ * of the tiles it has not begun (a contiguous run: a rank's tiles are one
+ * run, its block or what it stole, taken from at both ends). */
+static int give_tiles(simulation *s, int rank, int want, int *first)
+{
+    if (s->assumed->plan == SCHEDULE_PULL)
+        return hand_out(s, want, first);
+    fifo *q = &s->r[rank].queue;
+    int n = (q->count + 1) / 2;
+    q->count -= n;
+    *first = n ? ((int *)q->items)[(q->head + q->count) % q->capacity] : 0;
+    return n;
+}
+
 /* The time a rank's render thread spends on `tile`; a worker's also packs
  * its pixels into a message (tile_outbox.c). */
 static double render_time(const simulation *s, int rank, int tile)
 {
     double t = s->m->seconds[tile] * s->assumed->tile_scale;
     return rank ? t + tile_bytes(s, tile) / s->assumed->copy_speed : t;
+}
+
+/* The tile a free render thread of `rank` begins, -1 when it has none at
+ * hand: rank 0's in the pull queue from the shared counter (closed once
+ * that is empty), any other from the rank's queue. */
+static int next_tile(simulation *s, int rank)
+{
+    rank_state *r = &s->r[rank];
+    int tile = -1;
+    if (rank == 0 && s->assumed->plan == SCHEDULE_PULL) {
+        r->closed = hand_out(s, 1, &tile) == 0;
+        return r->closed ? -1 : tile;
+    }
+    return r->queue.count ? pop_tile(&r->queue) : -1;
 }
 
 /* A render thread of `rank` is free at `time`, having finished `tile`
@@ -292,19 +342,15 @@ static void thread_free(simulation *s, int rank, int tile, double time)
     rank_state *r = &s->r[rank];
     if (tile >= 0 && rank)
         fifo_push(&r->outbox, &tile);
-    int next = -1;
-    if (rank == 0 && hand_out(s, 1, &next) == 0)
-        next = -1;
-    else if (rank == 0)
+    else if (tile >= 0)
         s->lead_tiles++;
-    else if (rank && r->queue.count)
-        next = pop_tile(&r->queue);
-    else if (rank && !r->closed)
-        r->waiting++;
+    int next = next_tile(s, rank);
     if (next >= 0)
         schedule(s, time + render_time(s, rank, next), THREAD_FREE, rank, next);
-    else if (rank == 0 || r->closed)
+    else if (r->closed)
         r->ended++;
+    else
+        r->waiting++;
 }
 
 /* backoff.h's backoff_after: the time of the MPI thread's next turn. */
@@ -320,51 +366,11 @@ static double after_turn(rank_state *r, double time, bool busy)
     return wake;
 }
 
-/* A turn of lead.c's serve loop at `time`: ends it once every worker has
- * reported and rank 0's render has returned, else takes one message. */
-static void lead_turn(simulation *s, double time)
-{
-    rank_state *r = &s->r[0];
-    const assumptions *a = s->assumed;
-    if (s->reported == s->ranks - 1 && r->ended == a->threads) {
-        s->end = time;
-        r->finished = true;
-        return;
-    }
-    message *msg = fifo_front(&r->inbox);
-    double cost = 0;
-    bool taken = msg && msg->arrival <= time;
-    if (taken) {
-        message m = *msg;
-        fifo_pop(&r->inbox);
-        cost = a->message_cost;
-        if (m.kind == ASK) {
-            message answer = {.kind = TILES};
-            int want = m.count > MAX_BATCH ? MAX_BATCH : m.count;
-            answer.count = hand_out(s, want, &answer.first);
-            cost += a->message_cost;
-            send_message(s, 0, m.from, time + cost, 4.0 * answer.count, answer);
-        } else if (m.kind == PIXELS) {
-            cost += 2 * tile_bytes(s, m.count) / a->copy_speed;
-        } else {
-            s->reported++;
-        }
-    }
-    r->busy += cost;
-    schedule(s, after_turn(r, time + cost, taken), MPI_TURN, 0, -1);
-}
-
-/* Rank 0's answer to a worker's ASK taken: its tiles into the queue (the
- * threads waiting take them at once), or the queue closed. */
-static void take_tiles(simulation *s, int rank, const message *m, double time)
+/* Sets `rank`'s waiting render threads on its queued tiles at `time`, and
+ * ends those left waiting once no more tiles will come. */
+static void start_waiting(simulation *s, int rank, double time)
 {
     rank_state *r = &s->r[rank];
-    for (int i = 0; i < m->count; i++) {
-        int tile = m->first + i;
-        fifo_push(&r->queue, &tile);
-    }
-    r->closed = m->count == 0;
-    r->asked = false;
     for (; r->waiting > 0 && r->queue.count; r->waiting--) {
         int tile = pop_tile(&r->queue);
         schedule(s, time + render_time(s, rank, tile), THREAD_FREE, rank, tile);
@@ -375,9 +381,114 @@ static void take_tiles(simulation *s, int rank, const message *m, double time)
     }
 }
 
-/* A turn of follow.c's loop at `time`: finished tiles sent, the loop ended
- * with DONE once the render has returned, else an ASK when few tiles are
- * left and rank 0's answer taken when it is there. */
+/* The answer to `rank`'s ASK, taken at `time`: its tiles into the queue
+ * (the threads waiting take them at once). None closes a worker of the
+ * pull queue; a thief asks again. */
+static void take_tiles(simulation *s, int rank, const message *m, double time)
+{
+    rank_state *r = &s->r[rank];
+    for (int i = 0; i < m->count; i++) {
+        int tile = m->first + i;
+        fifo_push(&r->queue, &tile);
+    }
+    r->closed = m->count == 0 && s->assumed->plan == SCHEDULE_PULL;
+    r->asked = false;
+    start_waiting(s, rank, time);
+}
+
+/* The rank with the most tiles not begun, -1 when no rank has any. */
+static int most_loaded(const simulation *s)
+{
+    int most = -1;
+    for (int i = 0; i < s->ranks; i++)
+        if (s->r[i].queue.count && (most < 0 || s->r[i].queue.count > s->r[most].queue.count))
+            most = i;
+    return most;
+}
+
+/* Whether `rank` asks for tiles now: a worker of the pull queue holding
+ * no more than 2 x threads, a rank of work stealing holding none; never
+ * while an ask is unanswered or once no more tiles will come. */
+static bool wants_tiles(const simulation *s, int rank)
+{
+    const rank_state *r = &s->r[rank];
+    if (r->asked || r->closed)
+        return false;
+    if (s->assumed->plan == SCHEDULE_PULL)
+        return rank && r->queue.count <= 2 * s->assumed->threads;
+    return s->assumed->plan == SCHEDULE_STEAL && r->queue.count == 0;
+}
+
+/* follow.c's ask, or a thief's: when `rank` wants tiles, an ASK sent at
+ * `time` to rank 0 (pull queue) or to the rank holding the most tiles
+ * (work stealing); a thief that finds none left anywhere is closed
+ * instead. Returns when its MPI thread is done. */
+static double ask(simulation *s, int rank, double time)
+{
+    rank_state *r = &s->r[rank];
+    if (!wants_tiles(s, rank))
+        return time;
+    int to = s->assumed->plan == SCHEDULE_STEAL ? most_loaded(s) : 0;
+    if (to < 0) {
+        r->closed = true;
+        start_waiting(s, rank, time);
+        return time;
+    }
+    int want = 4 * s->assumed->threads < MAX_BATCH ? 4 * s->assumed->threads : MAX_BATCH;
+    time += s->assumed->message_cost;
+    send_message(s, rank, to, time, 4, (message){.kind = ASK, .count = want});
+    r->asked = true;
+    return time;
+}
+
+/* Takes the first message of `rank`'s inbox if it is there by *time, the
+ * MPI thread's work added to *time: an ASK answered, TILES queued, PIXELS
+ * copied into rank 0's image, a DONE counted. Whether one was taken. */
+static bool take_message(simulation *s, int rank, double *time)
+{
+    const assumptions *a = s->assumed;
+    message *front = fifo_front(&s->r[rank].inbox);
+    if (!front || front->arrival > *time)
+        return false;
+    message m = *front;
+    fifo_pop(&s->r[rank].inbox);
+    *time += a->message_cost;
+    if (m.kind == ASK) {
+        message answer = {.kind = TILES};
+        answer.count = give_tiles(s, rank, m.count > MAX_BATCH ? MAX_BATCH : m.count, &answer.first);
+        *time += a->message_cost;
+        send_message(s, rank, m.from, *time, 4.0 * answer.count, answer);
+    } else if (m.kind == TILES) {
+        take_tiles(s, rank, &m, *time);
+    } else if (m.kind == PIXELS) {
+        *time += 2 * tile_bytes(s, m.count) / a->copy_speed;
+    } else {
+        s->reported++;
+    }
+    return true;
+}
+
+/* A turn of lead.c's serve loop at `time`: ends it once every worker has
+ * reported and rank 0's render has returned, else (after a thief's ask,
+ * in work stealing) takes one message. */
+static void lead_turn(simulation *s, double time)
+{
+    rank_state *r = &s->r[0];
+    if (s->reported == s->ranks - 1 && r->ended == s->assumed->threads) {
+        s->end = time;
+        r->finished = true;
+        return;
+    }
+    double t = ask(s, 0, time);
+    bool taken = take_message(s, 0, &t);
+    r->busy += t - time;
+    schedule(s, after_turn(r, t, taken), MPI_TURN, 0, -1);
+}
+
+/* A turn of follow.c's loop at `time`: finished tiles sent, DONE once the
+ * render has returned (the loop then ended, but in work stealing, where it
+ * goes on answering asks), an ASK when the rank wants tiles and one
+ * message taken when it is there. */
 static void follow_turn(simulation *s, int rank, double time)
 {
     rank_state *r = &s->r[rank];
@@ -389,29 +500,33 @@ static void follow_turn(simulation *s, int rank, double time)
         t += a->message_cost;
         send_message(s, rank, 0, t, tile_bytes(s, tile), (message){.kind = PIXELS, .count = tile});
     }
-    if (r->ended == a->threads) {
+    if (r->ended == a->threads && !r->reported) {
         t += a->message_cost;
         send_message(s, rank, 0, t, REPORT_BYTES, (message){.kind = DONE});
-        r->finished = true;
-        r->busy += t - time;
-        return;
+        r->reported = true;
+        r->finished = a->plan != SCHEDULE_STEAL;
     }
-    int want = 4 * a->threads < MAX_BATCH ? 4 * a->threads : MAX_BATCH;
-    if (!r->asked && !r->closed && r->queue.count <= 2 * a->threads) {
-        t += a->message_cost;
-        send_message(s, rank, 0, t, 4, (message){.kind = ASK, .count = want});
-        r->asked = true;
-    }
-    message *answer = fifo_front(&r->inbox);
-    bool taken = answer && answer->arrival <= t;
-    if (taken) {
-        message m = *answer;
-        fifo_pop(&r->inbox);
-        t += a->message_cost;
-        take_tiles(s, rank, &m, t);
-    }
+    t = ask(s, rank, t);
+    bool taken = !r->finished && take_message(s, rank, &t);
     r->busy += t - time;
-    schedule(s, after_turn(r, t, sent || taken), MPI_TURN, rank, -1);
+    if (!r->finished)
+        schedule(s, after_turn(r, t, sent || taken), MPI_TURN, rank, -1);
+}
+
+/* Each rank's tiles at the start: none in the pull queue (they are asked
+ * for); in the static interleave rank r's r, r + N, r + 2N, ... of N
+ * ranks, all it gets; in work stealing its r-th of N contiguous blocks. */
+static void deal_tiles(simulation *s)
+{
+    bool interleave = s->assumed->plan == SCHEDULE_STATIC;
+    long tiles = s->m->tiles, n = s->ranks;
+    for (int r = 0; r < n && s->assumed->plan != SCHEDULE_PULL; r++) {
+        int first = interleave ? r : (int)(tiles * r / n);
+        int end = interleave ? (int)tiles : (int)(tiles * (r + 1) / n);
+        for (int t = first; t < end; t += interleave ? (int)n : 1)
+            fifo_push(&s->r[r].queue, &t);
+        s->r[r].closed = interleave;
+    }
 }
 
 /* When each rank's MPI_Bcast of the scene's files returns, from rank 0's
@@ -439,6 +554,7 @@ static result simulate(const measured *m, const assumptions *a, int ranks)
     for (int i = 0; i < ranks; i++)
         s.r[i] = (rank_state){.inbox.item_size = sizeof(message), .queue.item_size = sizeof(int),
                               .outbox.item_size = sizeof(int)};
+    deal_tiles(&s);
     double ready[MAX_RANKS];     /* when each rank's MPI loop starts */
     double load = a->start == START_BROADCAST ? a->load : 0, setup = a->start == START_NONE ? 0 : a->setup;
     if (a->start == START_BROADCAST) {
@@ -548,21 +664,23 @@ static double startup_for_target(const measured *m, const assumptions *a, double
 }
 
 static const char *const STARTUPS[] = {"broadcast", "loaded", "none"};
+static const char *const SCHEDULES[] = {"pull", "static", "steal"};
 
-/* The start-up called `name` (STARTUPS). */
-static startup startup_named(const char *name)
+/* The place of `name` among the `count` names (STARTUPS, SCHEDULES), or
+ * the end of the program with `error`. */
+static int named(const char *name, const char *const *names, int count, const char *error)
 {
-    for (startup s = START_BROADCAST; s <= START_NONE; s++)
-        if (strcmp(name, STARTUPS[s]) == 0)
-            return s;
-    die("--startup is broadcast, loaded or none");
+    for (int i = 0; i < count; i++)
+        if (strcmp(name, names[i]) == 0)
+            return i;
+    die(error);
 }
 
 int main(int argc, char **argv)
 {
     const char *path = NULL, *rank_list = "2,4,8,16,32,64,128,256";
     double one_core = 0, latency_us = 50, gbits = 10, message_us = 3, copy_gbs = 5, file_bytes = 3e6;
-    assumptions a = {.threads = 1, .start = START_BROADCAST};
+    assumptions a = {.threads = 1, .plan = SCHEDULE_PULL, .start = START_BROADCAST};
     for (int i = 1; i < argc; i++) {
         const char *o = argv[i], *v = i + 1 < argc ? argv[i + 1] : NULL;
         double *number = strcmp(o, "--one-core") == 0    ? &one_core
@@ -579,14 +697,16 @@ int main(int argc, char **argv)
             rank_list = argv[++i];
         } else if (strcmp(o, "--threads") == 0 && v) {
             a.threads = atoi(argv[++i]);
+        } else if (strcmp(o, "--schedule") == 0 && v) {
+            a.plan = (scheduler)named(argv[++i], SCHEDULES, 3, "--schedule is pull, static or steal");
         } else if (strcmp(o, "--startup") == 0 && v) {
-            a.start = startup_named(argv[++i]);
+            a.start = (startup)named(argv[++i], STARTUPS, 3, "--startup is broadcast, loaded or none");
         } else if (!path && o[0] != '-') {
             path = o;
         } else {
             die("usage: bench_mpi_model TIMES.txt [--one-core S] [--ranks 2,4,...] [--threads N] "
-                "[--startup broadcast|loaded|none] [--latency-us US] [--gbits G] [--message-us US] "
-                "[--copy-gbs G] [--file-bytes N]");
+                "[--schedule pull|static|steal] [--startup broadcast|loaded|none] [--latency-us US] [--gbits G] "
+                "[--message-us US] [--copy-gbs G] [--file-bytes N]");
         }
     }
     if (!path || a.threads < 1 || a.threads > MAX_THREADS || gbits <= 0 || copy_gbs <= 0 || latency_us < 0 ||
@@ -608,11 +728,12 @@ int main(int argc, char **argv)
     a.file_bytes = file_bytes;
 
     printf("Model: %dx%d in %d tiles of %d px; measured on one core: load %.3f s, set-up %.3f s, tiles %.3f s, "
-           "scaled x%.2f (tiles %.2f s); start-up %s; %d render thread%s a rank; links %.0f us and %.3g Gbit/s; "
-           "%.3g us of an MPI thread a message; copies at %.3g GB/s; scene files %.3g MB.\n\n",
+           "scaled x%.2f (tiles %.2f s); schedule %s; start-up %s; %d render thread%s a rank; "
+           "links %.0f us and %.3g Gbit/s; %.3g us of an MPI thread a message; copies at %.3g GB/s; "
+           "scene files %.3g MB.\n\n",
            m.width, m.height, m.tiles, m.tile_size, m.load, m.setup, work, a.tile_scale, work * a.tile_scale,
-           STARTUPS[a.start], a.threads, a.threads == 1 ? "" : "s", latency_us, gbits, message_us, copy_gbs,
-           file_bytes * 1e-6);
+           SCHEDULES[a.plan], STARTUPS[a.start], a.threads, a.threads == 1 ? "" : "s", latency_us, gbits,
+           message_us, copy_gbs, file_bytes * 1e-6);
     printf("| ranks | wall s | speed-up | efficiency | rank 0's MPI thread busy | rank 0's tiles "
            "| efficiency, no start-up |\n");
     printf("| --- | --- | --- | --- | --- | --- | --- |\n");
