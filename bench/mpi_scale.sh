@@ -18,6 +18,16 @@
 # it. The check against glint-mpi needs MPI (mpirun, and CMake finding MPI
 # to build glint-mpi); without it only the model runs. See bench/README.md,
 # "glint-mpi past this machine: the scaling model".
+#
+# bench/README.md's table "Which scheduler: pull queue, static interleave,
+# work stealing" is not run here; these commands give it, the model's rows
+# 8, 64 and 256 of each run (the last column: without start-up; the
+# bunny's files are 2409696 bytes):
+#   bench_tile_times bench/bunny.yaml --size 3840x2160 --spp 1 --runs 5 >t.txt
+#   awk '$1 == "tile" && $2 < 1920 && $3 >= 1080 { $4 = sprintf("%.7f", $4 * 10) } { print }' t.txt >bl.txt
+#   awk '$1 == "tile" && $2 < 1920 && $3 < 1080 { $4 = sprintf("%.7f", $4 * 10) } { print }' t.txt >tl.txt
+#   for f in t bl tl; do for s in pull static steal; do
+#       bench_mpi_model $f.txt --one-core 60 --file-bytes 2409696 --schedule $s --ranks 8,64,256; done; done
 set -euo pipefail
 
 BENCH_DIR=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
