@@ -1,16 +1,28 @@
 /* follow.c - a glint-mpi worker: tiles asked for, rendered and sent back
- * (follow.h). It keeps up to four tiles a thread in hand, asking for more
- * once no more than two a thread are left: the answer can take two of its
- * MPI thread's and rank 0's idle sleeps (backoff.h), about as long as a
- * small tile takes, so its threads do not wait for it. */
+ * (follow.h). It asks for a hand of tiles once, and rank 0 sends one more
+ * for each tile it sends back (protocol.h), so that its MPI thread need
+ * not poll: it sleeps until a render thread finishes a tile. The hand
+ * covers HOLD_NS of rendering at the time its tiles have taken so far (at
+ * least four a thread), more than rank 0's longest wait to answer
+ * (backoff.h); it asks for more when its tiles turn out faster. */
 #include <mpi.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <time.h>
 #include "mpi/backoff.h"
 #include "mpi/follow.h"
 #include "mpi/local_render.h"
 #include "mpi/tile_outbox.h"
 #include "mpi/tile_queue.h"
+
+/* The rendering a worker's hand covers: four of rank 0's longest sleeps. */
+#define HOLD_NS (4 * BACKOFF_MAX_NS)
+
+/* How long the MPI thread sleeps waiting for a finished tile: short while
+ * the hand is empty (tiles on their way) or sends are in flight (MPI moves
+ * them on only when called), long otherwise (to see a STOP). */
+#define WAIT_SHORT_NS 100000L
+#define WAIT_LONG_NS 2000000L
 
 /* The most finished tiles on their way to rank 0 at once. */
 #define SENDS_IN_FLIGHT 16
@@ -23,6 +35,7 @@ typedef struct follower {
     MPI_Request sends[SENDS_IN_FLIGHT];
     tile_message *sending[SENDS_IN_FLIGHT]; /* NULL: a free slot */
     int in_flight;
+    int finished;             /* tiles taken from the outbox to send */
     volatile int stop;        /* the render's cancel flag */
     MPI_Comm comm;
 } follower;
@@ -62,6 +75,7 @@ static bool send_finished(follower *f)
             continue;
         f->sending[i] = m;
         f->in_flight++;
+        f->finished++;
         MPI_Isend(m->bytes, (int)m->size, MPI_BYTE, 0, TAG_PIXELS, f->comm, &f->sends[i]);
         busy = true;
     }
@@ -78,7 +92,7 @@ static void send_rest(follower *f)
         bool busy = send_finished(f);
         if (f->in_flight == 0)
             return;
-        backoff_after(&b, busy);
+        backoff_after(&b, busy, false);
     }
 }
 
@@ -97,6 +111,16 @@ static void take_tiles(follower *f, const MPI_Status *st)
     }
     if (n == 0 || !tile_queue_put(&f->queue, tiles, n))
         tile_queue_close(&f->queue);
+}
+
+/* How many tiles to hold: enough for `threads` threads to render for
+ * HOLD_NS at the time a tile has taken so far (`busy_ns`, the threads' time
+ * on the tiles finished), at least four a thread, at most MAX_BATCH. */
+static int tiles_to_hold(const follower *f, int threads, uint64_t busy_ns)
+{
+    double tiles = f->finished > 0 && busy_ns > 0 ? (double)HOLD_NS * threads * f->finished / (double)busy_ns : 0;
+    int hold = tiles > 4.0 * threads ? (int)tiles + 1 : 4 * threads;
+    return hold < MAX_BATCH ? hold : MAX_BATCH;
 }
 
 /* Whether the render is to stop now: the rank's own signal, or rank 0's
@@ -119,7 +143,6 @@ rank_report follow_render(MPI_Comm comm, const glint_scene *scene, const glint_r
     }
     int threads = options->threads;
     glint_render_options own_options = *options;
-    int want = 4 * threads < MAX_BATCH ? 4 * threads : MAX_BATCH;
     follower f = {.comm = comm};
     glint_error err = {0};
     local_render own = {0};
@@ -130,38 +153,42 @@ rank_report follow_render(MPI_Comm comm, const glint_scene *scene, const glint_r
     render_feed feed = {.next = follow_next, .done = follow_done, .user = &f};
     own_options.cancel = &f.stop;
     if (ready && local_render_start(&own, scene, &own_options, &feed)) {
-        bool asked = false;
-        backoff b = {0};
+        int hand = 0; /* the tiles asked for in all: what rank 0 keeps in this rank's hand */
         for (;;) {
             bool busy = send_finished(&f);
             if (local_render_finished(&own))
                 break;
-            if (!f.stop && told_to_stop(&f, options))
+            /* A tile lost for want of memory fails the render at once. */
+            if (!f.stop && (told_to_stop(&f, options) || tile_outbox_failed(&f.outbox)))
                 f.stop = 1;
-            if (!asked && !f.queue.closed && tile_queue_count(&f.queue) <= 2 * threads) {
-                MPI_Send(&want, 1, MPI_INT, 0, TAG_ASK, comm);
-                asked = true;
+            int hold = tiles_to_hold(&f, threads, atomic_load(&own.busy_ns));
+            if (!f.queue.closed && hold > hand) {
+                int more = hold - hand;
+                MPI_Send(&more, 1, MPI_INT, 0, TAG_ASK, comm);
+                hand = hold;
             }
             int flag = 0;
             MPI_Status st;
             MPI_Iprobe(0, TAG_TILES, comm, &flag, &st);
-            if (flag) {
+            if (flag)
                 take_tiles(&f, &st);
-                asked = false;
+            if (busy || flag)
+                continue;
+            if (f.in_flight == SENDS_IN_FLIGHT) {
+                struct timespec ts = {0, WAIT_SHORT_NS};
+                nanosleep(&ts, NULL); /* the outbox may be full: no wait on it */
+            } else {
+                tile_outbox_wait(&f.outbox, f.in_flight > 0 || tile_queue_count(&f.queue) == 0 ? WAIT_SHORT_NS
+                                                                                              : WAIT_LONG_NS);
             }
-            backoff_after(&b, busy || flag);
         }
         local_render_join(&own);
         send_rest(&f);
-        /* A render that failed may leave an answer on its way. */
-        if (asked) {
-            MPI_Status st;
-            MPI_Probe(0, TAG_TILES, comm, &st);
-            take_tiles(&f, &st);
-        }
+        /* Tiles sent for this rank after a failure or a STOP are left
+         * unread: the render is over. */
         report = local_render_report(&own);
         glint_image_free(&own.image);
-        if (!report.status && tile_outbox_failed(&f.outbox))
+        if ((!report.status || report.status == GLINT_ERR_CANCELLED) && tile_outbox_failed(&f.outbox))
             report = (rank_report){.status = GLINT_ERR_NOMEM, .message = "out of memory sending a tile"};
     } else {
         report = (rank_report){.status = ready ? own.status : GLINT_ERR_NOMEM};

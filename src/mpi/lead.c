@@ -2,10 +2,12 @@
  * the render, and the image the other ranks' tiles are put into (lead.h).
  *
  * Tiles are handed out in order from one counter, to rank 0's own render
- * threads one at a time (the render feed's next) and to the other ranks in
- * batches as they ask. A batch is at most what was asked for and at most
- * a 2 x ranks-th of what is left, so that the last tiles are spread thin
- * and no rank is left with a long tail while others wait. */
+ * threads one at a time (the render feed's next) and to the other ranks:
+ * a hand of tiles when a rank asks, then one more for each tile it sends
+ * back, so that its hand stays full without its asking. A batch is at
+ * most what was asked for and at most a 2 x ranks-th of what is left, so
+ * that the last tiles are spread thin and no rank is left with a long
+ * tail while others wait. */
 #include <mpi.h>
 #include <pthread.h>
 #include <stdio.h>
@@ -28,6 +30,7 @@ typedef struct lead {
     volatile int stop;        /* rank 0's render's cancel flag */
     const volatile int *interrupt; /* set when a signal asks the job to stop */
     MPI_Request *stops;       /* the STOP sent to each rank, once stopping */
+    bool *closed_for;         /* the ranks told there are no more tiles */
     bool *reported;           /* which ranks sent their DONE */
     float *pixels;            /* the image */
 } lead;
@@ -81,14 +84,24 @@ static void lead_done(void *user, int tile, const float *pixels, size_t stride)
     atomic_fetch_add(&l->local_done, 1);
 }
 
-/* Answers rank `from`'s ASK with a batch of tiles (none: no more). */
-static void answer_ask(lead *l, int from)
+/* Sends rank `to` up to `want` more tiles; or, once there are none, tells
+ * it so, once. */
+static void send_tiles(lead *l, int to, int want)
 {
-    int want = 0, tiles[MAX_BATCH];
-    MPI_Recv(&want, 1, MPI_INT, from, TAG_ASK, l->comm, MPI_STATUS_IGNORE);
+    int tiles[MAX_BATCH];
     want = want < 1 ? 1 : want > MAX_BATCH ? MAX_BATCH : want;
     int n = hand_out(l, want, tiles);
-    MPI_Send(tiles, n, MPI_INT, from, TAG_TILES, l->comm);
+    if (n > 0 || !l->closed_for[to])
+        MPI_Send(tiles, n, MPI_INT, to, TAG_TILES, l->comm);
+    l->closed_for[to] = l->closed_for[to] || n == 0;
+}
+
+/* Answers rank `from`'s ASK: the tiles it would like added to its hand. */
+static void answer_ask(lead *l, int from)
+{
+    int want = 0;
+    MPI_Recv(&want, 1, MPI_INT, from, TAG_ASK, l->comm, MPI_STATUS_IGNORE);
+    send_tiles(l, from, want);
 }
 
 /* Takes in a PIXELS message from rank `from` of `size` bytes, into the
@@ -140,7 +153,10 @@ static bool serve(lead *l, local_render *own, const glint_render_options *option
         } else if (flag && st.MPI_TAG == TAG_PIXELS) {
             int size = 0;
             MPI_Get_count(&st, MPI_BYTE, &size);
-            if (!take_pixels(l, st.MPI_SOURCE, size, buffer, sound ? capacity : 0))
+            /* Each tile back is one to send: the rank's hand stays full. */
+            if (take_pixels(l, st.MPI_SOURCE, size, buffer, sound ? capacity : 0))
+                send_tiles(l, st.MPI_SOURCE, 1);
+            else
                 sound = false;
         } else if (flag && st.MPI_TAG == TAG_DONE) {
             rank_report *r = &reports[st.MPI_SOURCE];
@@ -164,7 +180,7 @@ static bool serve(lead *l, local_render *own, const glint_render_options *option
             options->progress(options->progress_user, done, l->layout.tiles_total);
             shown = done;
         }
-        backoff_after(&b, flag);
+        backoff_after(&b, flag, false);
     }
     MPI_Waitall(l->ranks, l->stops, MPI_STATUSES_IGNORE);
     free(buffer);
@@ -181,7 +197,8 @@ glint_status lead_render(MPI_Comm comm, const glint_scene *scene, const glint_re
     glint_status status = render_layout_for(scene, options->tile_size, &l.layout, err);
     l.stops = malloc((size_t)ranks * sizeof *l.stops);
     l.reported = calloc((size_t)ranks, sizeof *l.reported);
-    if (!l.stops || !l.reported) {
+    l.closed_for = calloc((size_t)ranks, sizeof *l.closed_for);
+    if (!l.stops || !l.reported || !l.closed_for) {
         /* Not even the others can be told: MPI ends the job. */
         fputs("glint: out of memory for the ranks' state\n", stderr);
         MPI_Abort(comm, 5);
@@ -209,6 +226,7 @@ glint_status lead_render(MPI_Comm comm, const glint_scene *scene, const glint_re
     pthread_mutex_destroy(&l.lock);
     free(l.stops);
     free(l.reported);
+    free(l.closed_for);
     reports[0] = local_render_report(&own);
     if (!l.pixels && !status)
         reports[0] = (rank_report){.status = GLINT_ERR_NOMEM, .message = "out of memory for the image"};

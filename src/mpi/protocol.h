@@ -1,8 +1,9 @@
 /* protocol.h - the messages glint-mpi's ranks exchange while rendering,
  * all in the job's communicator, all between rank 0 and one other rank:
  *
- *   rank r -> 0   ASK     int: how many tiles it would like
- *   0 -> rank r   TILES   int[n]: tile indices to render; n == 0: no more
+ *   rank r -> 0   ASK     int: how many tiles it would like added to its hand
+ *   0 -> rank r   TILES   int[n]: tile indices to render: an ASK's answer,
+ *                         or one for each PIXELS; n == 0, once: no more
  *   rank r -> 0   PIXELS  a tile_header, then the tile's pixels, 3 floats
  *                         each, row after row (its size from the layout)
  *   rank r -> 0   DONE    a rank_report, once, after its last PIXELS
@@ -10,10 +11,12 @@
  *                         rank failed); sent at most once, maybe after the
  *                         rank's DONE, when it is no longer read
  *
- * A rank asks again only after the answer to its last ASK came, so each
- * has at most one ASK unanswered. Messages between two ranks arrive in the
- * order sent, so rank 0 has every tile of a rank before its DONE. Every
- * rank runs the same build (same byte order and float format). */
+ * A rank asks once at the start and again only to hold more tiles; each
+ * tile it sends back brings it another, until there are none. Messages
+ * between two ranks arrive in the order sent, so rank 0 has every tile of
+ * a rank before its DONE, and a rank has every tile it was given before
+ * it is told there are no more. Every rank runs the same build (same byte
+ * order and float format). */
 #ifndef GLINT_MPI_PROTOCOL_H
 #define GLINT_MPI_PROTOCOL_H
 
@@ -23,7 +26,7 @@
 enum mpi_tag { TAG_ASK = 1, TAG_TILES, TAG_PIXELS, TAG_DONE, TAG_STOP };
 
 /* The most tiles one TILES message carries. */
-#define MAX_BATCH 64
+#define MAX_BATCH 256
 
 /* What precedes a tile's pixels in a PIXELS message. */
 typedef struct tile_header {

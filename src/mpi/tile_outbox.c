@@ -2,12 +2,14 @@
  * threads to its MPI thread (tile_outbox.h). */
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
 #include "mpi/protocol.h"
 #include "mpi/tile_outbox.h"
 
 void tile_outbox_init(tile_outbox *b)
 {
     pthread_mutex_init(&b->lock, NULL);
+    pthread_cond_init(&b->filled, NULL);
     b->first = b->last = NULL;
     b->failed = false;
 }
@@ -17,6 +19,7 @@ void tile_outbox_free(tile_outbox *b)
     tile_message *m;
     while ((m = tile_outbox_take(b)) != NULL)
         free(m);
+    pthread_cond_destroy(&b->filled);
     pthread_mutex_destroy(&b->lock);
 }
 
@@ -44,6 +47,7 @@ void tile_outbox_put(tile_outbox *b, const render_layout *l, int tile, const flo
         b->first = m;
     if (m)
         b->last = m;
+    pthread_cond_signal(&b->filled);
     pthread_mutex_unlock(&b->lock);
 }
 
@@ -58,6 +62,19 @@ tile_message *tile_outbox_take(tile_outbox *b)
     }
     pthread_mutex_unlock(&b->lock);
     return m;
+}
+
+void tile_outbox_wait(tile_outbox *b, long timeout_ns)
+{
+    struct timespec until;
+    clock_gettime(CLOCK_REALTIME, &until);
+    until.tv_nsec += timeout_ns;
+    until.tv_sec += until.tv_nsec / 1000000000L;
+    until.tv_nsec %= 1000000000L;
+    pthread_mutex_lock(&b->lock);
+    if (!b->first && !b->failed)
+        pthread_cond_timedwait(&b->filled, &b->lock, &until);
+    pthread_mutex_unlock(&b->lock);
 }
 
 bool tile_outbox_failed(tile_outbox *b)
