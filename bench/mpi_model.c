@@ -9,10 +9,12 @@
  * What is simulated, event by event:
  * - The schedule (--schedule):
  *   pull (the default, glint-mpi's): one shared counter of tiles. Rank 0's
- *   render threads take tiles from it one at a time; a worker asks for
- *   min(4 x threads, 64) when it holds no more than 2 x threads, and rank 0
- *   answers with at most min(want, max(1, left / (2 x ranks))), none when
- *   none are left.
+ *   render threads take tiles from it one at a time; a worker asks for a
+ *   hand of tiles covering HOLD of rendering at the pace of its tiles so
+ *   far (at least 4 x threads, at most MAX_BATCH), and again only for what
+ *   its hand should grow by. Rank 0 answers an ASK with at most
+ *   min(want, max(1, left / (2 x ranks))) and each PIXELS with one more
+ *   tile; once none are left, a worker is sent an empty TILES, once.
  *   static (Tachyon's): rank r renders tiles r, r + N, r + 2N, ... of N
  *   ranks; no message but the finished tiles and DONE.
  *   steal: rank r starts with the r-th of N contiguous blocks of tiles. A
@@ -23,7 +25,10 @@
  *   thief asks again). A rank that finds no tile left anywhere is done,
  *   and its MPI thread goes on answering asks (with none) until the end.
  * - Every rank's MPI thread loop, one message taken a turn, with the idle
- *   sleeps of src/mpi/backoff.h (20 us doubling to 1 ms); each message it
+ *   sleeps of src/mpi/backoff.h (20 us doubling to 1 ms, short again only
+ *   while a thief awaits its answer), but a pull worker's: it sleeps until
+ *   a render thread finishes a tile, or 100 us when its hand is empty or
+ *   its link is sending (its sends in flight), else 2 ms. Each message it
  *   sends or takes costs it --message-us, and a tile's pixels are copied
  *   at --copy-gbs (twice on rank 0: out of MPI into the image; once on a
  *   worker, into the message).
@@ -69,9 +74,12 @@
 
 #define MAX_RANKS 4096
 #define MAX_THREADS 256
-#define MAX_BATCH 64             /* src/mpi/protocol.h */
+#define MAX_BATCH 256            /* src/mpi/protocol.h */
 #define BACKOFF_MIN 20e-6        /* src/mpi/backoff.h */
 #define BACKOFF_MAX 1e-3
+#define HOLD (4 * BACKOFF_MAX)   /* src/mpi/follow.c: the rendering a worker's hand covers */
+#define WAIT_SHORT 100e-6        /* follow.c: a worker's wait for a finished tile */
+#define WAIT_LONG 2e-3
 #define TILE_HEADER_BYTES 8      /* tile_header */
 #define TARGET_RANKS 64          /* the target: 90% at 64 ranks */
 #define TARGET_EFFICIENCY 0.9
@@ -127,6 +135,12 @@ typedef struct rank_state {
     fifo queue;                  /* its tiles given and not begun (not rank 0's in the pull queue) */
     fifo outbox;                 /* a worker's finished tiles not yet sent */
     bool asked, closed;          /* an ASK unanswered; no more tiles will come */
+    bool told_none;              /* rank 0 sent it the empty TILES (pull queue) */
+    int hand;                    /* a pull worker's tiles asked for in all */
+    int rendered;                /* tiles its threads finished */
+    double rendering;            /* seconds its threads spent on them */
+    bool on_tiles;               /* a pull worker's MPI thread waits for a finished tile */
+    int turn;                    /* the MPI thread's turn to come: earlier ones are void */
     bool reported, finished;     /* a worker's DONE sent; the MPI loop ended */
     int waiting, ended;          /* render threads waiting for tiles; render threads ended */
     double sleep;                /* the MPI thread's next idle sleep (backoff.h) */
@@ -137,8 +151,8 @@ typedef struct rank_state {
 enum event_kind { THREAD_FREE, MPI_TURN };
 
 /* A render thread that finished `tile` (-1: none) and takes the next, or
- * an MPI thread's next turn. `order` keeps events of one time in the order
- * they were made. */
+ * an MPI thread's turn number `tile`. `order` keeps events of one time in
+ * the order they were made. */
 typedef struct event {
     double time;
     long order;
@@ -241,6 +255,12 @@ static void schedule(simulation *s, double time, enum event_kind kind, int rank,
     }
 }
 
+/* Sets `rank`'s MPI thread's next turn at `time`, voiding any set before. */
+static void turn_at(simulation *s, int rank, double time)
+{
+    schedule(s, time, MPI_TURN, rank, ++s->r[rank].turn);
+}
+
 /* Takes the earliest event from the heap (there is one). */
 static event next_event(simulation *s)
 {
@@ -312,6 +332,22 @@ static int give_tiles(simulation *s, int rank, int want, int *first)
     return n;
 }
 
+/* lead.c's send_tiles: `rank` sends rank `to` up to `want` (1 to
+ * MAX_BATCH) tiles at *time, its work added to *time; in the pull queue
+ * an empty answer only once. */
+static void send_tiles(simulation *s, int rank, int to, int want, double *time)
+{
+    message answer = {.kind = TILES};
+    want = want < 1 ? 1 : want > MAX_BATCH ? MAX_BATCH : want;
+    answer.count = give_tiles(s, rank, want, &answer.first);
+    rank_state *dst = &s->r[to];
+    if (answer.count == 0 && dst->told_none)
+        return;
+    dst->told_none = answer.count == 0 && s->assumed->plan == SCHEDULE_PULL;
+    *time += s->assumed->message_cost;
+    send_message(s, rank, to, *time, 4.0 * answer.count, answer);
+}
+
 /* The time a rank's render thread spends on `tile`; a worker's also packs
  * its pixels into a message (tile_outbox.c). */
 static double render_time(const simulation *s, int rank, int tile)
@@ -335,15 +371,24 @@ static int next_tile(simulation *s, int rank)
 }
 
 /* A render thread of `rank` is free at `time`, having finished `tile`
- * (-1: none yet): the tile goes to rank 0's image or the worker's outbox,
- * and the thread takes the next tile, waits for one, or ends. */
+ * (-1: none yet): the tile goes to rank 0's image or the worker's outbox
+ * (waking its MPI thread if it waits for one), and the thread takes the
+ * next tile, waits for one, or ends. */
 static void thread_free(simulation *s, int rank, int tile, double time)
 {
     rank_state *r = &s->r[rank];
+    if (tile >= 0) {
+        r->rendered++;
+        r->rendering += render_time(s, rank, tile);
+    }
     if (tile >= 0 && rank)
         fifo_push(&r->outbox, &tile);
     else if (tile >= 0)
         s->lead_tiles++;
+    if (tile >= 0 && r->on_tiles) {
+        r->on_tiles = false;
+        turn_at(s, rank, time);
+    }
     int next = next_tile(s, rank);
     if (next >= 0)
         schedule(s, time + render_time(s, rank, next), THREAD_FREE, rank, next);
@@ -353,14 +398,15 @@ static void thread_free(simulation *s, int rank, int tile, double time)
         r->waiting++;
 }
 
-/* backoff.h's backoff_after: the time of the MPI thread's next turn. */
+/* backoff.h's backoff_after: the time of the MPI thread's next turn, at
+ * once when `busy`; the sleeps start short again only while an answer is
+ * awaited (a thief's, in work stealing: backoff.h's `urgent`). */
 static double after_turn(rank_state *r, double time, bool busy)
 {
-    if (busy || r->sleep < BACKOFF_MIN) {
+    if (r->asked || r->sleep < BACKOFF_MIN)
         r->sleep = BACKOFF_MIN;
-        if (busy)
-            return time;
-    }
+    if (busy)
+        return time;
     double wake = time + r->sleep;
     r->sleep = r->sleep * 2 < BACKOFF_MAX ? r->sleep * 2 : BACKOFF_MAX;
     return wake;
@@ -406,17 +452,29 @@ static int most_loaded(const simulation *s)
     return most;
 }
 
-/* Whether `rank` asks for tiles now: a worker of the pull queue holding
- * no more than 2 x threads, a rank of work stealing holding none; never
- * while an ask is unanswered or once no more tiles will come. */
-static bool wants_tiles(const simulation *s, int rank)
+/* follow.c's tiles_to_hold: the tiles a pull worker's threads render in
+ * HOLD at the time its tiles have taken so far, at least 4 x threads, at
+ * most MAX_BATCH. */
+static int tiles_to_hold(const simulation *s, const rank_state *r)
+{
+    int threads = s->assumed->threads;
+    double tiles = r->rendered ? HOLD * threads * r->rendered / r->rendering : 0;
+    int hold = tiles > 4.0 * threads ? (int)tiles + 1 : 4 * threads;
+    return hold < MAX_BATCH ? hold : MAX_BATCH;
+}
+
+/* How many tiles `rank` asks for now, 0 for none: a worker of the pull
+ * queue what its hand should grow by, a rank of work stealing holding none
+ * one ask (the victim decides how many) unless one is unanswered; none
+ * once no more tiles will come. */
+static int tiles_wanted(const simulation *s, int rank)
 {
     const rank_state *r = &s->r[rank];
-    if (r->asked || r->closed)
-        return false;
+    if (r->closed)
+        return 0;
     if (s->assumed->plan == SCHEDULE_PULL)
-        return rank && r->queue.count <= 2 * s->assumed->threads;
-    return s->assumed->plan == SCHEDULE_STEAL && r->queue.count == 0;
+        return rank && tiles_to_hold(s, r) > r->hand ? tiles_to_hold(s, r) - r->hand : 0;
+    return s->assumed->plan == SCHEDULE_STEAL && !r->asked && r->queue.count == 0;
 }
 
 /* follow.c's ask, or a thief's: when `rank` wants tiles, an ASK sent at
@@ -426,7 +484,8 @@ static bool wants_tiles(const simulation *s, int rank)
 static double ask(simulation *s, int rank, double time)
 {
     rank_state *r = &s->r[rank];
-    if (!wants_tiles(s, rank))
+    int want = tiles_wanted(s, rank);
+    if (!want)
         return time;
     int to = s->assumed->plan == SCHEDULE_STEAL ? most_loaded(s) : 0;
     if (to < 0) {
@@ -434,16 +493,17 @@ static double ask(simulation *s, int rank, double time)
         start_waiting(s, rank, time);
         return time;
     }
-    int want = 4 * s->assumed->threads < MAX_BATCH ? 4 * s->assumed->threads : MAX_BATCH;
     time += s->assumed->message_cost;
     send_message(s, rank, to, time, 4, (message){.kind = ASK, .count = want});
     r->asked = true;
+    r->hand += want;
     return time;
 }
 
 /* Takes the first message of `rank`'s inbox if it is there by *time, the
  * MPI thread's work added to *time: an ASK answered, TILES queued, PIXELS
- * copied into rank 0's image, a DONE counted. Whether one was taken. */
+ * copied into rank 0's image (in the pull queue, a tile sent back for it),
+ * a DONE counted. Whether one was taken. */
 static bool take_message(simulation *s, int rank, double *time)
 {
     const assumptions *a = s->assumed;
@@ -454,14 +514,13 @@ static bool take_message(simulation *s, int rank, double *time)
     fifo_pop(&s->r[rank].inbox);
     *time += a->message_cost;
     if (m.kind == ASK) {
-        message answer = {.kind = TILES};
-        answer.count = give_tiles(s, rank, m.count > MAX_BATCH ? MAX_BATCH : m.count, &answer.first);
-        *time += a->message_cost;
-        send_message(s, rank, m.from, *time, 4.0 * answer.count, answer);
+        send_tiles(s, rank, m.from, m.count, time);
     } else if (m.kind == TILES) {
         take_tiles(s, rank, &m, *time);
     } else if (m.kind == PIXELS) {
         *time += 2 * tile_bytes(s, m.count) / a->copy_speed;
+        if (a->plan == SCHEDULE_PULL)
+            send_tiles(s, rank, m.from, 1, time);
     } else {
         s->reported++;
     }
@@ -482,13 +541,14 @@ static void lead_turn(simulation *s, double time)
     double t = ask(s, 0, time);
     bool taken = take_message(s, 0, &t);
     r->busy += t - time;
-    schedule(s, after_turn(r, t, taken), MPI_TURN, 0, -1);
+    turn_at(s, 0, after_turn(r, t, taken));
 }
 
 /* A turn of follow.c's loop at `time`: finished tiles sent, DONE once the
  * render has returned (the loop then ended, but in work stealing, where it
  * goes on answering asks), an ASK when the rank wants tiles and one
- * message taken when it is there. */
+ * message taken when it is there; then the next turn at once, or after
+ * follow.c's wait for a tile (pull queue) or backoff.h's sleep. */
 static void follow_turn(simulation *s, int rank, double time)
 {
     rank_state *r = &s->r[rank];
@@ -509,8 +569,12 @@ static void follow_turn(simulation *s, int rank, double time)
     t = ask(s, rank, t);
     bool taken = !r->finished && take_message(s, rank, &t);
     r->busy += t - time;
-    if (!r->finished)
-        schedule(s, after_turn(r, t, sent || taken), MPI_TURN, rank, -1);
+    r->on_tiles = !r->finished && !sent && !taken && a->plan == SCHEDULE_PULL;
+    bool soon = r->queue.count == 0 || r->send_free > t;
+    if (r->on_tiles)
+        turn_at(s, rank, t + (soon ? WAIT_SHORT : WAIT_LONG));
+    else if (!r->finished)
+        turn_at(s, rank, after_turn(r, t, sent || taken));
 }
 
 /* Each rank's tiles at the start: none in the pull queue (they are asked
@@ -571,7 +635,7 @@ static result simulate(const measured *m, const assumptions *a, int ranks)
     /* Rank 0 builds its BVH as soon as it has loaded, beside the
      * broadcast; a worker once its own load is done. */
     for (int i = 0; i < ranks; i++) {
-        schedule(&s, ready[i], MPI_TURN, i, -1);
+        turn_at(&s, i, ready[i]);
         for (int t = 0; t < a->threads; t++)
             schedule(&s, (i ? ready[i] : load) + setup, THREAD_FREE, i, -1);
     }
@@ -581,9 +645,11 @@ static result simulate(const measured *m, const assumptions *a, int ranks)
         event e = next_event(&s);
         if (e.kind == THREAD_FREE)
             thread_free(&s, e.rank, e.tile, e.time);
-        else if (!s.r[e.rank].finished && e.rank == 0)
+        else if (e.tile != s.r[e.rank].turn || s.r[e.rank].finished)
+            continue; /* a turn voided, or after the loop ended */
+        else if (e.rank == 0)
             lead_turn(&s, e.time);
-        else if (!s.r[e.rank].finished)
+        else
             follow_turn(&s, e.rank, e.time);
     }
     double work = 0;
