@@ -13,7 +13,7 @@ static void wait_quietly(MPI_Request *request)
         MPI_Test(request, &done, MPI_STATUS_IGNORE);
         if (done)
             return;
-        backoff_after(&b, false, false);
+        backoff_after(&b, false);
     }
 }
 

@@ -19,12 +19,11 @@ typedef struct backoff {
 
 /* After a turn of the loop: returns at once when `busy` (something was
  * sent or received, and more may be waiting), else sleeps, twice as long
- * as last time up to BACKOFF_MAX_NS. Only `urgent` (an answer is awaited)
- * starts the sleeps short again: a message handled is no reason to poll
- * faster, and each wake-up takes a core from a render thread. */
-static inline void backoff_after(backoff *b, bool busy, bool urgent)
+ * as last time up to BACKOFF_MAX_NS. A message handled is no reason to
+ * poll faster: each wake-up takes a core from a render thread. */
+static inline void backoff_after(backoff *b, bool busy)
 {
-    if (urgent || b->ns < BACKOFF_MIN_NS)
+    if (b->ns < BACKOFF_MIN_NS)
         b->ns = BACKOFF_MIN_NS;
     if (busy)
         return;

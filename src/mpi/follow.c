@@ -92,7 +92,7 @@ static void send_rest(follower *f)
         bool busy = send_finished(f);
         if (f->in_flight == 0)
             return;
-        backoff_after(&b, busy, false);
+        backoff_after(&b, busy);
     }
 }
 

@@ -14,7 +14,6 @@
 #include "mpi/lead.h"
 #include "mpi/load_everywhere.h"
 #include "mpi/same_build.h"
-#include "render/render_tiles.h"
 
 /* What a scene_loader of glint_mpi_scene_load_file needs. */
 typedef struct file_load {
@@ -75,21 +74,11 @@ static glint_status render_lead(MPI_Comm comm, const glint_scene *scene, const g
         fputs("glint: out of memory for the ranks' reports\n", stderr);
         MPI_Abort(comm, 5);
     }
-    double start = MPI_Wtime();
-    int tiles_done = 0;
-    glint_status status = lead_render(comm, scene, options, ranks, out, &tiles_done, reports, err);
-    glint_render_stats total = {.seconds = MPI_Wtime() - start, .tiles_done = tiles_done};
-    for (int r = 0; r < ranks; r++) {
-        total.rays += reports[r].stats.rays;
-        total.samples += reports[r].stats.samples;
-        total.nan_samples += reports[r].stats.nan_samples;
-        if (rank_stats)
-            rank_stats[r] = reports[r].stats;
-    }
+    glint_render_stats total;
+    glint_status status = lead_render(comm, scene, options, ranks, out, &total, reports, err);
+    for (int r = 0; rank_stats && r < ranks; r++)
+        rank_stats[r] = reports[r].stats;
     free(reports);
-    render_layout layout;
-    if (!render_layout_for(scene, options->tile_size, &layout, NULL))
-        total.tiles_total = layout.tiles_total;
     if (stats)
         *stats = total;
     if (status == GLINT_ERR_CANCELLED && !options->keep_partial)

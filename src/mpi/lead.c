@@ -180,7 +180,7 @@ static bool serve(lead *l, local_render *own, const glint_render_options *option
             options->progress(options->progress_user, done, l->layout.tiles_total);
             shown = done;
         }
-        backoff_after(&b, flag, false);
+        backoff_after(&b, flag);
     }
     MPI_Waitall(l->ranks, l->stops, MPI_STATUSES_IGNORE);
     free(buffer);
@@ -188,11 +188,11 @@ static bool serve(lead *l, local_render *own, const glint_render_options *option
 }
 
 glint_status lead_render(MPI_Comm comm, const glint_scene *scene, const glint_render_options *options, int ranks,
-                         glint_image *out, int *tiles_done, rank_report *reports, glint_error *err)
+                         glint_image *out, glint_render_stats *stats, rank_report *reports, glint_error *err)
 {
     static const volatile int never = 0;
+    double start = MPI_Wtime();
     *out = (glint_image){0};
-    *tiles_done = 0;
     lead l = {.comm = comm, .ranks = ranks, .interrupt = options->cancel ? options->cancel : &never};
     glint_status status = render_layout_for(scene, options->tile_size, &l.layout, err);
     l.stops = malloc((size_t)ranks * sizeof *l.stops);
@@ -241,6 +241,13 @@ glint_status lead_render(MPI_Comm comm, const glint_scene *scene, const glint_re
             status = error_set(err, (glint_status)reports[r].status, "rank %d: %s", r, reports[r].message);
     }
     int done = atomic_load(&l.local_done) + l.remote_done;
+    *stats = (glint_render_stats){.seconds = MPI_Wtime() - start, .tiles_done = done,
+                                  .tiles_total = l.layout.tiles_total};
+    for (int r = 0; r < ranks; r++) {
+        stats->rays += reports[r].stats.rays;
+        stats->samples += reports[r].stats.samples;
+        stats->nan_samples += reports[r].stats.nan_samples;
+    }
     if (!status && !sound)
         status = error_set(err, GLINT_ERR_INVALID, "a rank sent a message that is no tile of this image");
     else if (!status && interrupted)
@@ -252,6 +259,5 @@ glint_status lead_render(MPI_Comm comm, const glint_scene *scene, const glint_re
         return status;
     }
     *out = (glint_image){.width = l.layout.width, .height = l.layout.height, .pixels = l.pixels};
-    *tiles_done = done;
     return status;
 }

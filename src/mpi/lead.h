@@ -11,14 +11,15 @@
  * options->threads threads (which must be set, not 0), while every other
  * rank runs follow_render (follow.h); options->cancel, when set, is the
  * flag that stops the job, and options->progress counts every rank's
- * tiles. Returns GLINT_OK with *out the whole image (free it with
- * glint_image_free) and reports[r] rank r's report, for each of the ranks;
- * GLINT_ERR_CANCELLED when the flag was set or a rank was cancelled, with
- * *out the image of the *tiles_done tiles finished (the rest black), every
- * rank stopped; or the first failing rank's status, err naming it, with
+ * tiles. *stats is the whole render's (every rank's samples, rays and
+ * tiles, rank 0's wall-clock time) and reports[r] rank r's report, for
+ * each of the ranks. Returns GLINT_OK with *out the whole image (free it
+ * with glint_image_free); GLINT_ERR_CANCELLED when the flag was set or a
+ * rank was cancelled, with *out the image of the tiles finished (the rest
+ * black), every rank stopped; or the first failing rank's status, err naming it, with
  * *out empty. Called on the thread that initialised MPI, the only one that
  * calls it. */
 glint_status lead_render(MPI_Comm comm, const glint_scene *scene, const glint_render_options *options, int ranks,
-                         glint_image *out, int *tiles_done, rank_report *reports, glint_error *err);
+                         glint_image *out, glint_render_stats *stats, rank_report *reports, glint_error *err);
 
 #endif

@@ -6,7 +6,6 @@
  * one exit code for every rank. --check and --print-scene are rank 0's
  * alone. */
 #include <fcntl.h>
-#include <limits.h>
 #include <mpi.h>
 #include <signal.h>
 #include <stdio.h>
