@@ -36,13 +36,14 @@
  *   receives one message at a time at the link's bandwidth, so the tiles
  *   of all workers queue at rank 0's link. A tile travels as an 8-byte
  *   header and 3 floats a pixel.
- * - The start-up (--startup broadcast, the default): rank 0 loads the
- *   scene (the measured load time), sends its files (--file-bytes) down a
- *   binomial tree, each rank sending to its children one after the other,
- *   and builds its BVH and renders at once; a worker loads the scene once
- *   MPI_Bcast would return (it has forwarded the files), then builds its
- *   BVH (the measured set-up) and renders, its MPI loop (asking for tiles,
- *   in the pull queue) running as soon as its load is done. --startup
+ * - The start-up (--startup broadcast, the default): rank 0 sends the
+ *   scene's files (--file-bytes) down a binomial tree as its load opens
+ *   them (at its start, for a scene of one model: the load waits while
+ *   rank 0 sends), each rank sending to its children one after the other;
+ *   a worker loads as they come, from when MPI_Bcast would return (it has
+ *   forwarded the files). Every rank then takes the measured load time,
+ *   builds its BVH (the measured set-up) and renders, its MPI loop (asking
+ *   for tiles, in the pull queue) running as soon as its load is done. --startup
  *   loaded is the render alone as glint-mpi's summary times it today
  *   (every rank has loaded its scene from a shared folder; each builds its
  *   BVH, then renders); --startup none leaves out loads and BVH builds (the
@@ -619,25 +620,26 @@ static result simulate(const measured *m, const assumptions *a, int ranks)
         s.r[i] = (rank_state){.inbox.item_size = sizeof(message), .queue.item_size = sizeof(int),
                               .outbox.item_size = sizeof(int)};
     deal_tiles(&s);
-    double ready[MAX_RANKS];     /* when each rank's MPI loop starts */
+    double ready[MAX_RANKS];     /* when each rank's MPI loop starts: its load done */
     double load = a->start == START_BROADCAST ? a->load : 0, setup = a->start == START_NONE ? 0 : a->setup;
+    for (int i = 0; i < ranks; i++)
+        ready[i] = 0;
     if (a->start == START_BROADCAST) {
-        broadcast(a, ranks, load, ready);
+        /* Rank 0 sends a file as its load opens it (at once, for a scene
+         * of one model), its load waiting meanwhile; a worker's load runs
+         * as the files come. */
+        broadcast(a, ranks, 0, ready);
         s.r[0].send_free = ready[0];
-        for (int i = 1; i < ranks; i++) {
-            s.r[i].receive_free = ready[i];
+        for (int i = 0; i < ranks; i++) {
+            s.r[i].receive_free = i ? ready[i] : 0;
             ready[i] += load;
         }
-    } else {
-        for (int i = 0; i < ranks; i++)
-            ready[i] = 0;
     }
-    /* Rank 0 builds its BVH as soon as it has loaded, beside the
-     * broadcast; a worker once its own load is done. */
+    /* A rank builds its BVH once it has loaded. */
     for (int i = 0; i < ranks; i++) {
         turn_at(&s, i, ready[i]);
         for (int t = 0; t < a->threads; t++)
-            schedule(&s, (i ? ready[i] : load) + setup, THREAD_FREE, i, -1);
+            schedule(&s, ready[i] + setup, THREAD_FREE, i, -1);
     }
     while (!s.r[0].finished) {
         if (!s.events)

@@ -28,10 +28,11 @@ extern "C" {
 
 /* Loads the scene file at `path` on rank 0 of comm (as
  * glint_scene_load_file, options there as there; the other ranks ignore
- * their options) and sends the bytes of every file it read (the scene, its
- * includes, textures, models and their material files) to the other
- * ranks, which load the same scene from them without opening any path of
- * their own: their machines need no copy of the files. Returns the scene
+ * their options) and sends the bytes of every file it reads (the scene,
+ * its includes, textures, models and their material files) to the other
+ * ranks as it reads them; they load the same scene from them at the same
+ * time, on a thread of their own, without opening any path of their own:
+ * their machines need no copy of the files. Returns the scene
  * on every rank, or NULL on every rank with err saying why: rank 0's
  * failure as glint_scene_load_file says it, or the failure of another rank
  * (out of memory, say), on that rank in its own words and on the others as

@@ -84,13 +84,26 @@ static void print_help(void)
     fputs(USAGE_END, stdout);
 }
 
+static _Thread_local FILE *messages;
+
+FILE *cli_messages(void)
+{
+    return messages ? messages : stderr;
+}
+
+void cli_send_messages(FILE *to)
+{
+    messages = to;
+}
+
 int cli_complain(int code, const char *fmt, ...)
 {
     va_list ap;
     va_start(ap, fmt);
-    fputs("glint: ", stderr);
-    vfprintf(stderr, fmt, ap);
-    fputc('\n', stderr);
+    FILE *to = cli_messages();
+    fputs("glint: ", to);
+    vfprintf(to, fmt, ap);
+    fputc('\n', to);
     va_end(ap);
     return code;
 }

@@ -5,6 +5,7 @@
 #define GLINT_CLI_ARGS_H
 
 #include <stdbool.h>
+#include <stdio.h>
 #include "glint.h"
 
 /* What the glint command's exit status means (glint --help lists them). */
@@ -43,9 +44,19 @@ typedef struct cli_options {
     int swaps;
 } cli_options;
 
-/* Prints "glint: ", the message formatted from fmt and a newline on stderr,
- * and returns code, so that a caller can return both at once. */
+/* Prints "glint: ", the message formatted from fmt and a newline on the
+ * thread's messages (cli_messages: stderr unless sent elsewhere), and
+ * returns code, so that a caller can return both at once. */
 int cli_complain(int code, const char *fmt, ...) __attribute__((format(printf, 2, 3)));
+
+/* Where the calling thread's messages about the run go: stderr, or the
+ * stream cli_send_messages gave. */
+FILE *cli_messages(void);
+
+/* Sends the calling thread's messages to `to` (NULL: stderr again): a
+ * glint-mpi worker keeps its load's, which it shows only when the failure
+ * was its own and not rank 0's (rank 0 says its own). */
+void cli_send_messages(FILE *to);
 
 /* Fills all of *o from the argc arguments in argv (argv[0] the program's
  * name, skipped), moving the scene files named to argv[1] on, in their

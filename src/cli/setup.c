@@ -35,7 +35,7 @@ static void apply_overrides(const cli_options *o, glint_settings *s)
 static void print_problem(void *user, const char *message)
 {
     ++*(int *)user;
-    fprintf(stderr, "%s\n", message);
+    fprintf(cli_messages(), "%s\n", message);
 }
 
 const char *cli_scene_name(const char *path)

@@ -6,13 +6,19 @@
  * the order the log lists them: one descriptor however many thousands of
  * files a scene names. Each open replayed gets a fresh memory file holding
  * a copy of its file's bytes, so that it has its own offset and can be
- * read and closed as a file on disk is. */
+ * read and closed as a file on disk is.
+ *
+ * A replayed log may still be taking answers and bytes from another thread
+ * (glint-mpi's worker loads while rank 0's files arrive): its lock guards
+ * the answers, the index and the bytes taken, and a question waits on
+ * `arrived` until the log can answer it or is complete. The answers' strings
+ * never move once added, so a copy of an answer stays good after the lock. */
 #define _GNU_SOURCE /* memfd_create */
 #include <errno.h>
+#include <pthread.h>
 #include <stdlib.h>
 #include <string.h>
 #include <sys/mman.h>
-#include <sys/sendfile.h>
 #include <unistd.h>
 #include "core/array.h"
 #include "core/error.h"
@@ -49,6 +55,12 @@ struct file_log {
     uint64_t file_bytes;      /* their length in all */
     int store;                /* their bytes (replay); -1 */
     uint64_t taken;           /* how many of them came */
+    size_t packed;            /* the answers file_log_pack has packed (recording) */
+    file_log_open_hook on_open;
+    void *on_open_user;
+    pthread_mutex_t lock;     /* (replay) answers, index and taken, as they come */
+    pthread_cond_t arrived;   /* signalled when answers or bytes come, or all has */
+    bool complete;            /* (replay) nothing more comes: what is missing is not there */
 };
 
 static _Thread_local file_log *current_log;
@@ -57,8 +69,18 @@ static _Thread_local bool current_replays;
 file_log *file_log_new(void)
 {
     file_log *log = calloc(1, sizeof *log);
-    if (log)
-        log->store = -1;
+    if (!log)
+        return NULL;
+    log->store = -1;
+    if (pthread_mutex_init(&log->lock, NULL) != 0) {
+        free(log);
+        return NULL;
+    }
+    if (pthread_cond_init(&log->arrived, NULL) != 0) {
+        pthread_mutex_destroy(&log->lock);
+        free(log);
+        return NULL;
+    }
     return log;
 }
 
@@ -75,7 +97,15 @@ void file_log_free(file_log *log)
     id_table_free(&log->index);
     if (log->store >= 0)
         close(log->store);
+    pthread_cond_destroy(&log->arrived);
+    pthread_mutex_destroy(&log->lock);
     free(log);
+}
+
+void file_log_on_open(file_log *log, file_log_open_hook hook, void *user)
+{
+    log->on_open = hook;
+    log->on_open_user = user;
 }
 
 void file_log_record(file_log *log)
@@ -200,24 +230,41 @@ static void stat_of(const file_status *s, struct stat *st)
     st->st_nlink = 1;
 }
 
-/* The replayed answer to (question, path), or NULL with errno ENOENT. */
-static const answer *replayed(uint8_t question, const char *path)
+/* Copies the thread's replayed answer to (question, path) into *out once
+ * the log has it, and for an open that found its file, once all its bytes
+ * came: waits while more may come. False with errno ENOENT when the log
+ * has no answer, else errno set as the call failed (EIO for an open whose
+ * bytes never all came). */
+static bool replayed(uint8_t question, const char *path, answer *out)
 {
-    const answer *a = find(current_log, question, path);
-    if (!a)
+    file_log *log = current_log;
+    pthread_mutex_lock(&log->lock);
+    const answer *a;
+    while (!(a = find(log, question, path)) && !log->complete)
+        pthread_cond_wait(&log->arrived, &log->lock);
+    if (a)
+        *out = *a;
+    while (a && out->found && question == ASK_OPEN && log->taken - out->offset < out->status.size &&
+           !log->complete)
+        pthread_cond_wait(&log->arrived, &log->lock);
+    bool whole = !a || !out->found || question != ASK_OPEN || log->taken - out->offset >= out->status.size;
+    pthread_mutex_unlock(&log->lock);
+    if (!a) {
         errno = ENOENT;
-    else if (!a->found)
-        errno = a->errnum;
-    return a;
+        return false;
+    }
+    if (!out->found || !whole) {
+        errno = out->found ? EIO : out->errnum;
+        return false;
+    }
+    return true;
 }
 
 char *file_realpath(const char *path, char *resolved)
 {
     if (current_log && current_replays) {
-        const answer *a = replayed(ASK_REALPATH, path);
-        if (!a || !a->found)
-            return NULL;
-        return strcpy(resolved, a->resolved);
+        answer a;
+        return replayed(ASK_REALPATH, path, &a) ? strcpy(resolved, a.resolved) : NULL;
     }
     char *r = realpath(path, resolved);
     int e = errno;
@@ -235,10 +282,10 @@ char *file_realpath(const char *path, char *resolved)
 int file_stat(const char *path, struct stat *st)
 {
     if (current_log && current_replays) {
-        const answer *a = replayed(ASK_STAT, path);
-        if (!a || !a->found)
+        answer a;
+        if (!replayed(ASK_STAT, path, &a))
             return -1;
-        stat_of(&a->status, st);
+        stat_of(&a.status, st);
         return 0;
     }
     int r = stat(path, st);
@@ -254,44 +301,19 @@ int file_stat(const char *path, struct stat *st)
     return r;
 }
 
-void file_log_note_open(const char *path, int fd, const struct stat *st, int errnum)
+int file_log_note_open(const char *path, int fd, const struct stat *st, int errnum)
 {
     answer *a = to_note(ASK_OPEN, path);
     if (!a)
-        return;
+        return fd;
     a->found = fd >= 0;
     a->errnum = fd >= 0 ? 0 : errnum;
     if (fd >= 0) {
         a->status = status_of(st);
         current_log->failed = !add_file(current_log, a);
     }
-}
-
-/* A fresh memory file holding `size` bytes of the store from `offset`, at
- * its start; -1 with errno set. */
-static int copy_of(int store, uint64_t offset, uint64_t size)
-{
-    int fd = memfd_create("glint-file", MFD_CLOEXEC);
-    if (fd < 0)
-        return -1;
-    off_t from = (off_t)offset;
-    for (uint64_t left = size; left > 0;) {
-        ssize_t n = sendfile(fd, store, &from, left < (1u << 30) ? (size_t)left : (1u << 30));
-        if (n <= 0) {
-            int e = n < 0 ? errno : EIO;
-            close(fd);
-            errno = e;
-            return -1;
-        }
-        left -= (uint64_t)n;
-    }
-    if (lseek(fd, 0, SEEK_SET) != 0) {
-        int e = errno;
-        close(fd);
-        errno = e;
-        return -1;
-    }
-    return fd;
+    return current_log->on_open ? current_log->on_open(current_log->on_open_user, path, fd, fd >= 0 ? a->status.size : 0)
+                                : fd;
 }
 
 bool file_log_replay_open(const char *path, int *fd, struct stat *st, int *errnum)
@@ -299,16 +321,16 @@ bool file_log_replay_open(const char *path, int *fd, struct stat *st, int *errnu
     if (!current_log || !current_replays)
         return false;
     *fd = -1;
-    const answer *a = replayed(ASK_OPEN, path);
-    if (!a || !a->found) {
-        *errnum = a ? a->errnum : ENOENT;
+    answer a;
+    if (!replayed(ASK_OPEN, path, &a)) {
+        *errnum = errno;
         return true;
     }
-    *fd = copy_of(current_log->store, a->offset, a->status.size);
+    *fd = open_file_copy(current_log->store, a.offset, a.status.size);
     if (*fd < 0)
         *errnum = errno;
     else
-        stat_of(&a->status, st);
+        stat_of(&a.status, st);
     return true;
 }
 
@@ -347,29 +369,14 @@ static void put_text(packer *p, const char *s)
     put(p, s, n);
 }
 
-size_t file_log_file_count(const file_log *log)
-{
-    return log->file_count;
-}
-
-const char *file_log_file_path(const file_log *log, size_t i)
-{
-    return log->answers[log->files[i]].path;
-}
-
-uint64_t file_log_file_bytes(const file_log *log)
-{
-    return log->file_bytes;
-}
-
-glint_status file_log_pack(const file_log *log, unsigned char **bytes, size_t *size, glint_error *err)
+glint_status file_log_pack(file_log *log, unsigned char **bytes, size_t *size, glint_error *err)
 {
     *bytes = NULL;
     *size = 0;
     packer p = {0};
     put_u64(&p, LOG_MAGIC);
-    put_u64(&p, log->count);
-    for (size_t i = 0; i < log->count; i++) {
+    put_u64(&p, log->count - log->packed);
+    for (size_t i = log->packed; i < log->count; i++) {
         const answer *a = &log->answers[i];
         const file_status *s = &a->status;
         uint64_t numbers[] = {a->question, a->found,   (uint64_t)(int64_t)a->errnum, s->dev, s->ino, s->size,
@@ -384,29 +391,8 @@ glint_status file_log_pack(const file_log *log, unsigned char **bytes, size_t *s
     }
     *bytes = p.bytes;
     *size = p.size;
+    log->packed = log->count;
     return GLINT_OK;
-}
-
-int file_log_open_file(const file_log *log, size_t i, uint64_t *size, glint_error *err)
-{
-    const answer *a = &log->answers[log->files[i]];
-    *size = 0;
-    struct stat st;
-    int errnum;
-    int fd = open_file_read(a->path, &st, &errnum);
-    if (fd < 0) {
-        error_set(err, GLINT_ERR_IO, "cannot read '%s' again to send it: %s", a->path, open_file_reason(errnum));
-        return -1;
-    }
-    file_status now = status_of(&st);
-    if (now.dev != a->status.dev || now.ino != a->status.ino || now.size != a->status.size ||
-        now.mtime_sec != a->status.mtime_sec || now.mtime_nsec != a->status.mtime_nsec) {
-        close(fd);
-        error_set(err, GLINT_ERR_IO, "'%s' changed while the scene was loaded: run again", a->path);
-        return -1;
-    }
-    *size = a->status.size;
-    return fd;
 }
 
 typedef struct unpacker {
@@ -466,19 +452,17 @@ static bool get_answer(unpacker *u, answer *a, bool *no_memory)
     return sound;
 }
 
-file_log *file_log_unpack(const unsigned char *bytes, size_t size, glint_error *err)
+/* Adds the packed answers to the log, which is locked; false with err
+ * set when they are garbled or memory ran out. */
+static bool take_answers(file_log *log, const unsigned char *bytes, size_t size, glint_error *err)
 {
     unpacker u = {bytes, bytes + size, false};
     uint64_t magic, count;
     get(&u, &magic, sizeof magic);
     get(&u, &count, sizeof count);
     /* Each answer takes at least its numbers and two lengths. */
-    if (u.failed || magic != LOG_MAGIC || count > size / (11 * sizeof(uint64_t))) {
-        error_set(err, GLINT_ERR_INVALID, "the scene's files came garbled from rank 0");
-        return NULL;
-    }
-    file_log *log = file_log_new();
-    bool no_memory = !log;
+    bool no_memory = false;
+    u.failed = u.failed || magic != LOG_MAGIC || count > size / (11 * sizeof(uint64_t));
     for (uint64_t i = 0; i < count && !u.failed && !no_memory; i++) {
         answer a;
         /* Recording kept one answer a question: a second is garbled. */
@@ -495,32 +479,52 @@ file_log *file_log_unpack(const unsigned char *bytes, size_t size, glint_error *
             no_memory = !u.failed;
         }
     }
-    if (!no_memory && !u.failed && u.at == u.end) {
+    if (!no_memory && !u.failed && u.at == u.end && log->store < 0) {
         log->store = memfd_create("glint-files", MFD_CLOEXEC);
-        if (log->store >= 0)
-            return log;
-        no_memory = true;
+        no_memory = log->store < 0;
     }
-    file_log_free(log);
     if (no_memory)
         error_set(err, GLINT_ERR_NOMEM, "out of memory taking the scene's files from rank 0");
-    else
+    else if (u.failed || u.at != u.end)
         error_set(err, GLINT_ERR_INVALID, "the scene's files came garbled from rank 0");
-    return NULL;
+    return !no_memory && !u.failed && u.at == u.end;
+}
+
+glint_status file_log_take_answers(file_log *log, const unsigned char *bytes, size_t size, glint_error *err)
+{
+    pthread_mutex_lock(&log->lock);
+    bool taken = take_answers(log, bytes, size, err);
+    pthread_cond_broadcast(&log->arrived);
+    pthread_mutex_unlock(&log->lock);
+    return taken ? GLINT_OK : err->status;
+}
+
+void file_log_complete(file_log *log)
+{
+    pthread_mutex_lock(&log->lock);
+    log->complete = true;
+    pthread_cond_broadcast(&log->arrived);
+    pthread_mutex_unlock(&log->lock);
 }
 
 glint_status file_log_take_bytes(file_log *log, const void *data, size_t n, glint_error *err)
 {
+    pthread_mutex_lock(&log->lock);
+    glint_status status = GLINT_OK;
     if (n > log->file_bytes - log->taken)
-        return error_set(err, GLINT_ERR_INVALID, "more of the scene's files came from rank 0 than it announced");
-    for (const unsigned char *at = data; n > 0;) {
+        status = error_set(err, GLINT_ERR_INVALID, "more of the scene's files came from rank 0 than it announced");
+    for (const unsigned char *at = data; n > 0 && !status;) {
         ssize_t w = write(log->store, at, n);
         if (w <= 0)
-            return error_set(err, errno == ENOSPC || errno == ENOMEM ? GLINT_ERR_NOMEM : GLINT_ERR_IO,
-                             "cannot keep the scene's files from rank 0: %s", strerror(w < 0 ? errno : EIO));
-        at += w;
-        n -= (size_t)w;
-        log->taken += (uint64_t)w;
+            status = error_set(err, errno == ENOSPC || errno == ENOMEM ? GLINT_ERR_NOMEM : GLINT_ERR_IO,
+                               "cannot keep the scene's files from rank 0: %s", strerror(w < 0 ? errno : EIO));
+        else {
+            at += w;
+            n -= (size_t)w;
+            log->taken += (uint64_t)w;
+        }
     }
-    return GLINT_OK;
+    pthread_cond_broadcast(&log->arrived);
+    pthread_mutex_unlock(&log->lock);
+    return status;
 }

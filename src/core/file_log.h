@@ -1,7 +1,7 @@
 /* file_log.h - the file system as one scene load saw it, recorded so that
  * another process can load the same scene without the files: glint-mpi's
  * rank 0 records its load and sends the record and the files' bytes to the
- * other ranks, which replay it. While a log is replayed, every file a
+ * other ranks as it reads them, and they replay it as it comes. While a log is replayed, every file a
  * loader opens (open_file.h), resolves (file_realpath) or looks at
  * (file_stat) is answered from the log, and no path is looked up on the
  * replaying machine: its nodes need no shared file system, and a path
@@ -33,8 +33,24 @@ void file_log_free(file_log *log);
  * for each path kept. */
 void file_log_record(file_log *log);
 
-/* Makes `log` (unpacked, with all its bytes taken) the calling thread's to
- * answer from. A path the log does not know is not found (ENOENT). */
+/* Called on the recording thread right after each open the log notes (the
+ * first of each path), with its path, the opened file's descriptor (-1
+ * when the open failed) and its size; returns the descriptor the load
+ * reads: fd, or another at its start holding the same bytes, fd closed.
+ * glint-mpi's rank 0 packs the answers noted so far and sends them with a
+ * copy of the file's bytes, which its own load then reads: the ranks load
+ * the same bytes even from a file that changes meanwhile. */
+typedef int (*file_log_open_hook)(void *user, const char *path, int fd, uint64_t size);
+
+/* Sets the log's open hook (NULL for none). */
+void file_log_on_open(file_log *log, file_log_open_hook hook, void *user);
+
+/* Makes `log` the calling thread's to answer from. Its answers and bytes
+ * may still be coming (file_log_take_answers and file_log_take_bytes on
+ * another thread): a question it cannot answer yet, or an open whose bytes
+ * have not all come, waits until it can or until file_log_complete; then a
+ * path the log does not know is not found (ENOENT), and an open whose
+ * bytes never all came fails (EIO). */
 void file_log_replay(file_log *log);
 
 /* The thread looks at the file system itself again. */
@@ -54,34 +70,30 @@ int file_stat(const char *path, struct stat *st);
 bool file_log_replay_open(const char *path, int *fd, struct stat *st, int *errnum);
 
 /* For open_file_read: notes an open of `path` when the thread records:
- * its descriptor (or -1) with *st its status, or *errnum. */
-void file_log_note_open(const char *path, int fd, const struct stat *st, int errnum);
+ * its descriptor (or -1) with *st its status, or *errnum. Returns the
+ * descriptor to read the file from (the open hook's). */
+int file_log_note_open(const char *path, int fd, const struct stat *st, int errnum);
 
-/* The record, without the files' bytes, packed into *bytes (malloc'd,
- * *size long) for file_log_unpack in a process of the same build; the
- * files whose bytes go with it are file_log_file_count's, in order.
- * GLINT_ERR_NOMEM when memory ran out, here or while recording. */
-glint_status file_log_pack(const file_log *log, unsigned char **bytes, size_t *size, glint_error *err);
+/* The answers noted since the last call (at the first, all of them),
+ * without the files' bytes, packed into *bytes (malloc'd, *size long) for
+ * file_log_take_answers in a process of the same build. GLINT_ERR_NOMEM
+ * when memory ran out, here or while recording. */
+glint_status file_log_pack(file_log *log, unsigned char **bytes, size_t *size, glint_error *err);
 
-/* How many files' bytes go with the log, and their length in all. */
-size_t file_log_file_count(const file_log *log);
-uint64_t file_log_file_bytes(const file_log *log);
-
-/* The path of the i-th of them (from 0). */
-const char *file_log_file_path(const file_log *log, size_t i);
-
-/* Opens the i-th of them again for reading its bytes: its descriptor,
- * with *size its length; or -1 with err set when it cannot be opened or is
- * no longer the file the load read (changed since). */
-int file_log_open_file(const file_log *log, size_t i, uint64_t *size, glint_error *err);
-
-/* A log from file_log_pack's bytes, awaiting its files' bytes: NULL with
- * err set when they are no packed log or memory ran out. */
-file_log *file_log_unpack(const unsigned char *bytes, size_t size, glint_error *err);
+/* Adds answers file_log_pack packed, in the order it packed them, to a log
+ * to replay (from any thread, while another replays it): each open that
+ * found its file then awaits that file's bytes, after those of the opens
+ * before it. GLINT_ERR_INVALID when the bytes are no packed answers or
+ * answer a question the log has answered, GLINT_ERR_NOMEM. */
+glint_status file_log_take_answers(file_log *log, const unsigned char *bytes, size_t size, glint_error *err);
 
 /* Takes the next n bytes of the files, the files one after the other in
- * order: GLINT_ERR_NOMEM (or GLINT_ERR_IO) when they cannot be kept, and
- * GLINT_ERR_INVALID for more than awaited. */
+ * the order of their answers: GLINT_ERR_NOMEM (or GLINT_ERR_IO) when they
+ * cannot be kept, and GLINT_ERR_INVALID for more than the answers await. */
 glint_status file_log_take_bytes(file_log *log, const void *data, size_t n, glint_error *err);
+
+/* Nothing more comes to the log: the questions waiting for answers or
+ * bytes it lacks get their failure now. */
+void file_log_complete(file_log *log);
 
 #endif

@@ -6,10 +6,13 @@
  * Opens go through the thread's file log (file_log.h) when it has one.
  * The files of /proc and /sys call themselves regular but have a size of
  * 0 or 4096 whatever they hold: they are refused as not regular. */
+#define _GNU_SOURCE /* memfd_create */
 #include <errno.h>
 #include <fcntl.h>
 #include <stdbool.h>
 #include <string.h>
+#include <sys/mman.h>
+#include <sys/sendfile.h>
 #include <unistd.h>
 #include "core/file_log.h"
 #include "core/open_file.h"
@@ -60,8 +63,7 @@ int open_file_read(const char *path, struct stat *st, int *errnum)
     if (file_log_replay_open(path, &fd, st, errnum))
         return fd;
     fd = open_regular(path, st, errnum);
-    file_log_note_open(path, fd, st, fd >= 0 ? 0 : *errnum);
-    return fd;
+    return file_log_note_open(path, fd, st, fd >= 0 ? 0 : *errnum);
 }
 
 FILE *open_file_stream(const char *path, struct stat *st, int *errnum)
@@ -80,4 +82,29 @@ FILE *open_file_stream(const char *path, struct stat *st, int *errnum)
 const char *open_file_reason(int errnum)
 {
     return errnum ? strerror(errnum) : "not a regular file";
+}
+
+int open_file_copy(int fd, uint64_t offset, uint64_t size)
+{
+    int copy = memfd_create("glint-file", MFD_CLOEXEC);
+    if (copy < 0)
+        return -1;
+    off_t from = (off_t)offset;
+    for (uint64_t left = size; left > 0;) {
+        ssize_t n = sendfile(copy, fd, &from, left < (1u << 30) ? (size_t)left : (1u << 30));
+        if (n <= 0) {
+            int e = n < 0 ? errno : EIO;
+            close(copy);
+            errno = e;
+            return -1;
+        }
+        left -= (uint64_t)n;
+    }
+    if (lseek(copy, 0, SEEK_SET) != 0) {
+        int e = errno;
+        close(copy);
+        errno = e;
+        return -1;
+    }
+    return copy;
 }

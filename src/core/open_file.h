@@ -4,6 +4,7 @@
 #ifndef GLINT_CORE_OPEN_FILE_H
 #define GLINT_CORE_OPEN_FILE_H
 
+#include <stdint.h>
 #include <stdio.h>
 #include <sys/stat.h>
 
@@ -17,6 +18,12 @@ int open_file_read(const char *path, struct stat *st, int *errnum);
 
 /* As open_file_read, as a stdio stream; NULL on failure. */
 FILE *open_file_stream(const char *path, struct stat *st, int *errnum);
+
+/* A fresh memory file holding `size` bytes of the file fd from `offset`
+ * (fd's own offset left alone), at its start: a private copy, with an
+ * offset of its own, that no change to the file reaches. -1 with errno
+ * set (EIO when the file ended first). */
+int open_file_copy(int fd, uint64_t offset, uint64_t size);
 
 /* The words for open_file_read's *errnum: strerror's, or "not a regular
  * file" for 0. */

@@ -1,24 +1,88 @@
-/* load_everywhere.c - rank 0's load recorded, sent and replayed on the
- * other ranks (load_everywhere.h). */
+/* load_everywhere.c - rank 0's load recorded and sent as it goes, and
+ * replayed on the other ranks at the same time (load_everywhere.h).
+ *
+ * A worker loads on a thread of its own while its main thread, the one
+ * that calls MPI, takes in rank 0's files: the two loads run side by side,
+ * a worker's waiting only for files rank 0 has not opened yet, so that the
+ * workers begin to render about when rank 0 does. */
 #include <limits.h>
+#include <pthread.h>
 #include "core/error.h"
 #include "core/file_log.h"
 #include "mpi/agree.h"
 #include "mpi/load_everywhere.h"
 #include "mpi/ship_files.h"
 
-/* Rank 0's load, recording the files it reads into a new *log. */
-static glint_status load_recording(scene_loader load, void *user, bool with_stdin, file_log **log,
+/* Rank 0's load, its files sent to the others as it reads them. */
+static glint_status load_sending(MPI_Comm comm, scene_loader load, void *user, bool with_stdin, glint_error *err)
+{
+    glint_error told = {0};
+    if (with_stdin && send_stdin(comm, keep_stdin(&told), &told)) {
+        *err = told;
+        return told.status;
+    }
+    file_log *log = file_log_new();
+    file_sender sender;
+    glint_status began = send_files_begin(&sender, comm, log);
+    if (!log)
+        error_set(&told, GLINT_ERR_NOMEM, "out of memory");
+    else if (!began) {
+        file_log_record(log);
+        load(user, true, &told);
+        file_log_stop();
+    }
+    glint_status status = send_files_end(&sender, &told, err);
+    file_log_free(log);
+    return status;
+}
+
+/* A worker's load, on its own thread, replaying the log as it comes. */
+typedef struct replay {
+    file_log *log;
+    scene_loader load;
+    void *user;
+    glint_status status;
+    glint_error err;
+} replay;
+
+static void *load_replaying(void *arg)
+{
+    replay *r = arg;
+    file_log_replay(r->log);
+    r->status = r->load(r->user, false, &r->err);
+    file_log_stop();
+    return NULL;
+}
+
+/* A worker's load from rank 0's files; *by_rank0 when rank 0 failed. */
+static glint_status load_receiving(MPI_Comm comm, scene_loader load, void *user, bool with_stdin, bool *by_rank0,
                                    glint_error *err)
 {
-    glint_status status = with_stdin ? keep_stdin(err) : GLINT_OK;
-    if (!status && !(*log = file_log_new()))
-        status = error_set(err, GLINT_ERR_NOMEM, "out of memory");
-    if (status)
+    glint_status status = with_stdin ? receive_stdin(comm, by_rank0, err) : GLINT_OK;
+    if (*by_rank0)
         return status;
-    file_log_record(*log);
-    status = load(user, true, err);
-    file_log_stop();
+    replay r = {.log = file_log_new(), .load = load, .user = user};
+    pthread_t thread;
+    bool started = false;
+    if (!status && !r.log)
+        status = error_set(err, GLINT_ERR_NOMEM, "out of memory taking the scene's files from rank 0");
+    if (!status && !(started = pthread_create(&thread, NULL, load_replaying, &r) == 0))
+        status = error_set(err, GLINT_ERR_NOMEM, "out of memory for a thread to load the scene");
+    /* A rank that failed already still takes part, keeping nothing. */
+    glint_error received_err = {0};
+    glint_status received = receive_files(comm, status ? NULL : r.log, by_rank0, &received_err);
+    if (started)
+        pthread_join(thread, NULL);
+    file_log_free(r.log);
+    /* Rank 0's failure first, then the rank's own, receiving or loading. */
+    if (*by_rank0 || (!status && received)) {
+        *err = received_err;
+        return received;
+    }
+    if (!status && r.status) {
+        *err = r.err;
+        return r.status;
+    }
     return status;
 }
 
@@ -28,32 +92,17 @@ glint_status load_everywhere(MPI_Comm comm, scene_loader load, void *user, bool 
     *failed_rank = 0;
     int rank;
     MPI_Comm_rank(comm, &rank);
-    file_log *log = NULL;
-    glint_error told = {0};
-    if (rank == 0 && load_recording(load, user, with_stdin, &log, &told))
-        *err = told;
-    /* Rank 0's outcome, waited for without spinning: its load may be long. */
-    agree_on_rank0_bytes(comm, &told, (int)sizeof told);
-    if (told.status) {
-        *err = told;
-        file_log_free(log);
-        return told.status;
-    }
     bool by_rank0 = rank == 0;
-    glint_status status = rank == 0 ? send_files(comm, log, with_stdin, err)
-                                    : receive_files(comm, &log, &by_rank0, err);
-    if (!status && rank != 0) {
-        file_log_replay(log);
-        status = load(user, false, err);
-        file_log_stop();
-    }
-    file_log_free(log);
+    glint_status status = rank == 0 ? load_sending(comm, load, user, with_stdin, err)
+                                    : load_receiving(comm, load, user, with_stdin, &by_rank0, err);
+    if (status && by_rank0)
+        return status;
     if (!wait_for_all) {
-        *failed_rank = status && !by_rank0 ? rank : 0;
+        *failed_rank = status ? rank : 0;
         return status;
     }
     /* The first rank that failed, and why, on every rank. */
-    int first = status ? (by_rank0 ? 0 : rank) : INT_MAX;
+    int first = status ? rank : INT_MAX;
     agree_on_min(comm, &first);
     if (first == INT_MAX)
         return GLINT_OK;

@@ -157,23 +157,27 @@ static int render(const cli_options *o, cli_run *r, int rank, int ranks)
 
 /* What the loader of the scene needs: the flags (on the other ranks,
  * whether they were rank 0's), and where the scene goes, with the exit
- * code of a failure. */
+ * code of a failure; on the other ranks, where the load's messages wait. */
 typedef struct flag_load {
     const cli_options *o;
     bool other_flags;
     cli_run *run;
     int code;
+    FILE *messages;
 } flag_load;
 
 /* A scene_loader: the scene as the flags ask, its problems said (on rank
- * 0 alone, unless another rank fails where rank 0 did not). */
+ * 0 alone; on another rank kept in l->messages, which its thread loads
+ * while rank 0 does, until it is known whether the failure was its own). */
 static glint_status load_flags_scene(void *user, bool rank0, glint_error *err)
 {
     flag_load *l = user;
+    cli_send_messages(l->messages);
     if (l->other_flags)
         l->code = cli_complain(CLI_EXIT_INTERNAL, "this rank was given other arguments than rank 0");
     else
         l->code = cli_prepare(l->o, rank0, l->run);
+    cli_send_messages(NULL);
     /* Said already; the status only tells failure from success. */
     return l->code < 0 ? GLINT_OK
                        : error_set(err, l->code == CLI_EXIT_INTERNAL ? GLINT_ERR_NOMEM : GLINT_ERR_INVALID,
@@ -231,8 +235,16 @@ int main(int argc, char **argv)
         int with_stdin = from_stdin;
         agree_on_rank0(MPI_COMM_WORLD, &with_stdin);
         int failed_rank;
+        char *kept = NULL;
+        size_t kept_size = 0;
+        /* Without memory to keep them, the words are dropped, not said twice. */
+        if (rank != 0 && !(load.messages = open_memstream(&kept, &kept_size)))
+            load.messages = fopen("/dev/null", "w");
         glint_status st =
             load_everywhere(MPI_COMM_WORLD, load_flags_scene, &load, with_stdin, false, &failed_rank, &err);
+        if (load.messages && fclose(load.messages) == 0 && kept && st && failed_rank == rank)
+            fputs(kept, stderr);
+        free(kept);
         /* A failure the loader did not say (sending rank 0's files, memory)
          * is said here, on rank 0 and on the rank where it happened. */
         code = load.code >= 0 ? load.code : st ? cli_exit_code_of(st) : -1;

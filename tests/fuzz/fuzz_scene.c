@@ -9,10 +9,11 @@
  * the same first message; and read from whole trees rather than with the
  * objects read while parsed (the default, scenefile/scene_file.h), they
  * must be refused with the same first message or load to the same scene,
- * written back byte for byte. A load recorded (core/file_log.h), packed,
- * unpacked with its files' bytes and replayed, as glint-mpi's ranks load
- * rank 0's scene, must come out as the recorded load did; the packed log
- * with one byte changed must be unpacked or refused, cleanly.
+ * written back byte for byte. A load recorded (core/file_log.h), its
+ * answers packed and its files' bytes read as it opens them, then taken
+ * into another log and replayed, as glint-mpi's ranks load rank 0's scene,
+ * must come out as the recorded load did; what was sent, with one byte
+ * changed, must be taken or refused, cleanly.
  * Problems are only counted (NULL report): the library must stay silent.
  * Relative includes and texture files resolve against the working
  * directory, since the input is named "fuzz.yaml" (tests/fuzz/README.md). */
@@ -80,56 +81,111 @@ static void expect_same_and_free(glint_scene *a, const glint_error *a_err, glint
     glint_scene_free(b);
 }
 
-/* Gives the unpacked log every recorded file's bytes, read again. */
-static void take_files(const file_log *recorded, file_log *unpacked)
+/* What rank 0 of glint-mpi sends as its load opens files: the answers
+ * noted so far, then the file's bytes, as one stream. */
+typedef struct sent {
+    file_log *log;
+    FILE *stream;
+    char *bytes;
+    size_t size;
+    size_t first_answers;     /* where the first answers begin, after their length */
+} sent;
+
+static void put_piece(sent *s, const void *data, uint64_t n)
 {
-    for (size_t i = 0; i < file_log_file_count(recorded); i++) {
-        uint64_t size;
-        glint_error err;
-        int fd = file_log_open_file(recorded, i, &size, &err);
-        if (fd < 0)
-            abort(); /* the corpus's files do not change */
-        char buffer[4096];
-        for (ssize_t n; size > 0 && (n = read(fd, buffer, sizeof buffer)) > 0; size -= (uint64_t)n)
-            if (file_log_take_bytes(unpacked, buffer, (size_t)n, &err))
-                abort();
-        close(fd);
-        if (size != 0)
-            abort();
-    }
+    if (fwrite(&n, sizeof n, 1, s->stream) != 1 || (n && fwrite(data, 1, (size_t)n, s->stream) != n))
+        abort();
 }
 
-/* The load recorded, then replayed from its packed log, must come out the
- * same; the packed log with one byte changed is unpacked or refused. */
-static void same_when_replayed(const uint8_t *data, size_t size, const glint_load_options *options)
+/* The log's open hook: the answers packed, then the file read again with
+ * pread, as ship_files.c sends them. */
+static int note_sent(void *user, const char *path, int fd, uint64_t size)
+{
+    sent *s = user;
+    unsigned char *packed;
+    size_t packed_size;
+    glint_error err;
+    if (file_log_pack(s->log, &packed, &packed_size, &err))
+        abort();
+    fflush(s->stream);
+    if (!s->first_answers)
+        s->first_answers = s->size + sizeof(uint64_t);
+    put_piece(s, packed, packed_size);
+    free(packed);
+    unsigned char *bytes = malloc(size ? (size_t)size : 1);
+    if (!bytes || (size > 0 && pread(fd, bytes, (size_t)size, 0) != (ssize_t)size))
+        abort(); /* the corpus's files do not change */
+    put_piece(s, bytes, size);
+    free(bytes);
+    (void)path;
+    return fd;
+}
+
+/* Takes the stream's pieces into a new log, answers and bytes turn about:
+ * NULL when the log refuses them (a garbled stream), else the log,
+ * complete. */
+static file_log *taken(const char *bytes, size_t size)
 {
     file_log *log = file_log_new();
     if (!log)
         abort();
+    glint_error err;
+    bool answers = true, refused = false;
+    for (size_t at = 0; at + sizeof(uint64_t) <= size && !refused; answers = !answers) {
+        uint64_t n;
+        memcpy(&n, bytes + at, sizeof n);
+        at += sizeof n;
+        if (n > size - at)
+            break;
+        refused = answers ? file_log_take_answers(log, (const unsigned char *)bytes + at, (size_t)n, &err) != GLINT_OK
+                          : file_log_take_bytes(log, bytes + at, (size_t)n, &err) != GLINT_OK;
+        at += (size_t)n;
+    }
+    file_log_complete(log);
+    if (refused) {
+        file_log_free(log);
+        return NULL;
+    }
+    return log;
+}
+
+/* The load recorded, then replayed from what was sent, must come out the
+ * same; the sent answers with one byte changed are taken or refused. */
+static void same_when_replayed(const uint8_t *data, size_t size, const glint_load_options *options)
+{
+    sent s = {.log = file_log_new()};
+    if (!s.log || !(s.stream = open_memstream(&s.bytes, &s.size)))
+        abort();
     glint_error err, replay_err, pack_err;
     err.message[0] = replay_err.message[0] = '\0';
-    file_log_record(log);
+    file_log_on_open(s.log, note_sent, &s);
+    file_log_record(s.log);
     glint_scene *scene = glint_scene_load_memory((const char *)data, size, "fuzz.yaml", options, &err);
     file_log_stop();
     unsigned char *packed;
     size_t packed_size;
-    if (file_log_pack(log, &packed, &packed_size, &pack_err))
+    if (file_log_pack(s.log, &packed, &packed_size, &pack_err))
         abort();
-    file_log *unpacked = file_log_unpack(packed, packed_size, &pack_err);
-    if (!unpacked)
+    put_piece(&s, packed, packed_size);
+    free(packed);
+    if (fclose(s.stream) != 0)
         abort();
-    take_files(log, unpacked);
-    file_log_replay(unpacked);
+    file_log *replaying = taken(s.bytes, s.size);
+    if (!replaying)
+        abort();
+    file_log_replay(replaying);
     glint_scene *replayed = glint_scene_load_memory((const char *)data, size, "fuzz.yaml", options, &replay_err);
     file_log_stop();
     expect_same_and_free(scene, &err, replayed, &replay_err);
-    file_log_free(unpacked);
-    if (packed_size > 0) {
-        packed[(size * 131 + (size ? data[0] : 0)) % packed_size] ^= (unsigned char)(size ? data[size - 1] | 1 : 1);
-        file_log_free(file_log_unpack(packed, packed_size, &pack_err));
+    file_log_free(replaying);
+    size_t first = s.first_answers ? s.first_answers : sizeof(uint64_t);
+    if (s.size > first) {
+        s.bytes[first + (size * 131 + (size ? data[0] : 0)) % (s.size - first)] ^=
+            (unsigned char)(size ? data[size - 1] | 1 : 1);
+        file_log_free(taken(s.bytes, s.size));
     }
-    free(packed);
-    file_log_free(log);
+    free(s.bytes);
+    file_log_free(s.log);
 }
 
 int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size)
