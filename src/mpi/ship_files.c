@@ -3,7 +3,9 @@
  *
  * What is sent, all broadcast from rank 0: for a scene on standard input,
  * first its length (or STDIN_FAILED and the glint_status of rank 0's
- * failure to keep it) and its bytes, CHUNK_BYTES at a time. Then messages,
+ * failure to keep it) and its bytes, CHUNK_BYTES at a time, each chunk
+ * after a uint64 that is 0, or the glint_status of rank 0's failure to
+ * read it, when the chunk does not follow and nothing more comes. Then messages,
  * one or more an open of rank 0's load, each
  *   head     3 uint64: the length of the answers that follow, of the
  *            files' bytes that follow (at most CHUNK_BYTES), and whether
@@ -133,7 +135,7 @@ glint_status send_stdin(MPI_Comm comm, glint_status kept, glint_error *err)
     if (!status && !(chunk = malloc(CHUNK_BYTES)))
         status = error_set(err, GLINT_ERR_NOMEM, "out of memory sending the scene on standard input");
     uint64_t head[2] = {status ? STDIN_FAILED : (uint64_t)st.st_size, (uint64_t)status};
-    broadcast(comm, head, sizeof head);
+    agree_on_rank0_bytes(comm, head, (int)sizeof head);
     for (uint64_t at = 0; !status && at < head[0]; at += CHUNK_BYTES) {
         size_t n = head[0] - at < CHUNK_BYTES ? (size_t)(head[0] - at) : CHUNK_BYTES;
         if (!read_all_at(STDIN_FILENO, chunk, n, at))
@@ -158,7 +160,8 @@ glint_status receive_stdin(MPI_Comm comm, bool *by_rank0, glint_error *err)
 {
     *by_rank0 = false;
     uint64_t head[2];
-    broadcast(comm, head, sizeof head);
+    /* Waited for without spinning: rank 0 reads all of its standard input first. */
+    agree_on_rank0_bytes(comm, head, (int)sizeof head);
     if (head[0] == STDIN_FAILED)
         return rank0_failed((glint_status)head[1], by_rank0, err);
     unsigned char *chunk = malloc(CHUNK_BYTES);
