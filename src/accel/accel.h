@@ -43,6 +43,11 @@ typedef struct accel_geometry {
     /* When non-NULL and set non-zero, the build stops early: accel_build
      * then returns GLINT_ERR_CANCELLED. */
     const volatile int *cancel;
+    /* The camera samples the render will take (width x height x samples a
+     * pixel, whatever the threads, tiles or ranks): with few for each
+     * triangle, a quicker build of a looser BVH saves more time than its
+     * rays lose. */
+    double camera_samples;
 } accel_geometry;
 
 /* Builds the Embree device and scenes: one user geometry for every shape;

@@ -74,6 +74,7 @@ static RTCGeometry triangles(accel *a, const mesh *m, const float *positions, bo
                                (size_t)m->triangle_count);
     if (!opaque)
         rtcSetGeometryOccludedFilterFunction(g, accel_triangle_occluded);
+    rtcSetGeometryBuildQuality(g, a->quality);
     rtcCommitGeometry(g);
     return g;
 }
@@ -82,6 +83,7 @@ static RTCGeometry triangles(accel *a, const mesh *m, const float *positions, bo
 static RTCScene mesh_scene(accel *a, const mesh *m, bool opaque)
 {
     RTCScene s = rtcNewScene(a->device);
+    rtcSetSceneBuildQuality(s, a->quality);
     rtcSetSceneProgressMonitorFunction(s, build_progress, a);
     RTCGeometry g = triangles(a, m, m->positions, opaque);
     rtcAttachGeometry(s, g);
@@ -163,6 +165,27 @@ static bool add_meshes(accel *a, const accel_geometry *geo)
     return ok;
 }
 
+/* Below this many camera samples a triangle, Embree's quick build (LOW: a
+ * Morton-code BVH) beats its standard one (MEDIUM: SAH). Measured on the
+ * Stanford bunny (callgrind, bench/README.md): LOW builds it in 30M
+ * instructions against 161M, and each camera sample then costs 1% more
+ * (about 12 instructions), even at about 160 samples a triangle; rays
+ * beyond one a sample (reflections, more lights) move it lower. The
+ * choice depends on the scene and its settings alone, never on threads,
+ * tiles or ranks: a triangle hit exactly on an edge it shares is one
+ * triangle or the other by the BVH's order, so each render must build
+ * the same one for the same bytes. */
+#define QUICK_BUILD_SAMPLES_PER_TRIANGLE 100.0
+
+static enum RTCBuildQuality build_quality(const accel_geometry *geo)
+{
+    double triangles = 0;
+    for (int i = 0; i < geo->mesh_count; i++)
+        triangles += geo->meshes[i].triangle_count;
+    return geo->camera_samples < QUICK_BUILD_SAMPLES_PER_TRIANGLE * triangles ? RTC_BUILD_QUALITY_LOW
+                                                                               : RTC_BUILD_QUALITY_MEDIUM;
+}
+
 glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *err)
 {
     *out = NULL;
@@ -179,6 +202,7 @@ glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *er
     a->shape_count = geo->shape_count;
     a->shape_opaque = geo->shape_opaque;
     a->cancel = geo->cancel;
+    a->quality = build_quality(geo);
     /* Embree's threads start with the device (start_threads), not lazily in
      * the build or, worse, as the scene is released: there, TBB failing to
      * start one (memory running short) throws from a destructor and ends
@@ -205,6 +229,7 @@ glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *er
     rtcSetDeviceErrorFunction(a->device, error_fn, &embree_err);
     a->scene = rtcNewScene(a->device);
     if (a->scene) {
+        rtcSetSceneBuildQuality(a->scene, a->quality);
         rtcSetSceneProgressMonitorFunction(a->scene, build_progress, a);
         if (!sort_shapes(a) || !add_meshes(a, geo)) {
             rtcSetDeviceErrorFunction(a->device, NULL, NULL);

@@ -42,6 +42,7 @@ struct accel {
     bool instanced;           /* some mesh is placed through Embree instances */
     const bool *shape_opaque; /* per shape, or NULL */
     const volatile int *cancel; /* the build stops once it is set, or NULL */
+    enum RTCBuildQuality quality; /* of every BVH built (build_quality) */
 };
 
 /* True when shape `index` is known to block all light. */

@@ -308,8 +308,17 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
     if (!hit_opacity(scene, &shape_opaque, &instance_opaque)) {
         st = error_set(err, GLINT_ERR_NOMEM, "out of memory building the accelerator");
     } else {
-        accel_geometry geo = {build_threads, scene->shapes, scene->shape_count, scene->meshes, scene->mesh_count,
-                              scene->instances, scene->instance_count, shape_opaque, instance_opaque, o->cancel};
+        accel_geometry geo = {.threads = build_threads,
+                              .shapes = scene->shapes,
+                              .shape_count = scene->shape_count,
+                              .meshes = scene->meshes,
+                              .mesh_count = scene->mesh_count,
+                              .instances = scene->instances,
+                              .instance_count = scene->instance_count,
+                              .shape_opaque = shape_opaque,
+                              .instance_opaque = instance_opaque,
+                              .cancel = o->cancel,
+                              .camera_samples = (double)s->width * s->height * s->samples_per_pixel};
         st = accel_build(&acc, &geo, err);
     }
     /* A build the cancel flag stopped goes on as a render that finished no
