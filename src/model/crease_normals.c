@@ -5,6 +5,7 @@
 #include "core/array.h"
 #include "core/error.h"
 #include "core/vec.h"
+#include "model/corner_angle.h"
 #include "model/crease_normals.h"
 #include "core/id_table.h"
 
@@ -71,7 +72,7 @@ static void faces(const float *positions, const uint32_t *at, size_t count, floa
         for (int k = 0; k < 3; k++) {
             vec3 a = v3_sub(p[(k + 1) % 3], p[k]), b = v3_sub(p[(k + 2) % 3], p[k]);
             double cross = v3_length(v3_cross(a, b)), dot = v3_dot(a, b);
-            angle[3 * t + k] = isfinite(cross) && isfinite(dot) ? (float)atan2(cross, dot) : 0.0f;
+            angle[3 * t + k] = corner_angle(cross, dot);
         }
     }
 }

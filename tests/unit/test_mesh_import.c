@@ -24,6 +24,7 @@
 
 #include "glint.h"
 #include "tmp_tree.h"
+#include "model/corner_angle.h"
 #include "model/obj_read.h"
 #include "model/text_scan.h"
 #include "model/triangulate.h"
@@ -783,6 +784,40 @@ static void test_scan_decimal_random(void **state)
         if (stop != text + n || memcmp(&got, &want, sizeof got) != 0)
             fail_msg("'%s' read as %.17g, strtod gives %.17g", text, got, want);
     }
+}
+
+/* corner_angle is (float)atan2 bit for bit: at random, near the eighths
+ * its tangent is reduced to, and at zeros, signs and extremes. */
+static void test_corner_angle(void **state)
+{
+    uint64_t seed = 88172645463325252ULL;
+    for (int i = 0; i < 400000; i++) {
+        double r[2];
+        for (int k = 0; k < 2; k++) {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            r[k] = (double)(seed >> 11) * 0x1p-53;
+        }
+        double y = ldexp(r[0], (int)(seed % 64) - 32), x = ldexp(r[1] - 0.5, (int)(seed / 64 % 64) - 32);
+        if (i % 4 == 0) {
+            double t = (double)(seed % 9) / 8 + (r[1] - 0.5) * 1e-9; /* about an eighth */
+            x = i % 8 ? y / t : -y * t;
+        }
+        float got = corner_angle(y, x), want = (float)atan2(y, x);
+        if (memcmp(&got, &want, sizeof got) != 0)
+            fail_msg("corner_angle(%a, %a) is %a, atan2 gives %a", y, x, got, want);
+    }
+    static const double edge[][2] = {
+        {0, 0}, {0, -0.0}, {0, 1}, {0, -1}, {1, 0}, {1, -0.0}, {-0.0, -1}, {-1, 1}, {1e-310, 1}, {1, 1e-310},
+        {5e-324, 5e-324}, {1e308, 1e308}, {1e308, -1e-308}, {0x1p-900, 0x1p-901}, {1, 1}, {1, -1},
+    };
+    for (size_t i = 0; i < sizeof edge / sizeof edge[0]; i++) {
+        float got = corner_angle(edge[i][0], edge[i][1]), want = (float)atan2(edge[i][0], edge[i][1]);
+        if (memcmp(&got, &want, sizeof got) != 0)
+            fail_msg("corner_angle(%a, %a) is %a, atan2 gives %a", edge[i][0], edge[i][1], got, want);
+    }
+    assert_true(corner_angle(INFINITY, 1) == 0 && corner_angle(1, NAN) == 0);
 }
 
 static void test_obj_number_forms(void **state)
@@ -2055,6 +2090,7 @@ int main(void)
         cmocka_unit_test(test_obj_missing_texture),
         cmocka_unit_test(test_scan_decimal_forms),
         cmocka_unit_test(test_scan_decimal_random),
+        cmocka_unit_test(test_corner_angle),
         cmocka_unit_test(test_obj_number_forms),
         cmocka_unit_test(test_obj_index_errors),
         cmocka_unit_test(test_obj_corner_forms),
