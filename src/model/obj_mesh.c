@@ -24,6 +24,7 @@ typedef struct joiner {
     size_t next;              /* the triangle after the last one whose normals came */
     vertex_key *keys;
     size_t count, cap;
+    uint32_t *last;           /* per welded position: the vertex last joined there, UINT32_MAX for none */
     id_table index;
     const char *file;
     glint_error *err;
@@ -46,8 +47,31 @@ static bool key_equal(const void *keys, uint32_t id, const void *key)
     return memcmp((const vertex_key *)keys + id, key, sizeof(vertex_key)) == 0;
 }
 
+/* Sets *slot to the vertex of `key`, entering it when it is new. */
+static glint_status join_key(joiner *j, const vertex_key *key, uint32_t *slot)
+{
+    if (!array_reserve((void **)&j->keys, &j->cap, j->count + 1, sizeof *j->keys))
+        return out_of_memory(j->file, j->err);
+    uint32_t w[6];
+    memcpy(w, key, sizeof w);
+    if (!id_table_intern(&j->index, id_hash_words(w, 6), key, (uint32_t)j->count, key_hash, key_equal, j->keys,
+                         slot))
+        return out_of_memory(j->file, j->err);
+    if (*slot == j->count) {
+        if (j->count >= MODEL_MAX_COUNT)
+            return error_set(j->err, GLINT_ERR_INVALID, "%s: too many vertices (more than %lld)", j->file,
+                             MODEL_MAX_COUNT);
+        j->keys[j->count++] = *key;
+    }
+    j->last[key->position] = *slot;
+    return GLINT_OK;
+}
+
 /* Replaces corner k of triangle t by the vertex of that corner with
- * `normal`, entering the vertex when it is new. */
+ * `normal`, entering the vertex when it is new. On a smooth surface the
+ * corners at a point are mostly one vertex: the one last joined there is
+ * tried before the hash table (join_key), which then sees little more than
+ * the new vertices. */
 static glint_status join(joiner *j, size_t t, int k, const float *normal)
 {
     obj_model *m = j->m;
@@ -57,20 +81,12 @@ static glint_status join(joiner *j, size_t t, int k, const float *normal)
     if (c->vt >= 0)
         memcpy(key.uv, m->uvs + 2 * (size_t)c->vt, sizeof key.uv);
     memcpy(key.normal, normal, sizeof key.normal);
-    if (!array_reserve((void **)&j->keys, &j->cap, j->count + 1, sizeof *j->keys))
-        return out_of_memory(j->file, j->err);
-    uint32_t w[6];
-    memcpy(w, &key, sizeof w);
-    if (!id_table_intern(&j->index, id_hash_words(w, 6), &key, (uint32_t)j->count, key_hash, key_equal, j->keys,
-                         slot))
-        return out_of_memory(j->file, j->err);
-    if (*slot == j->count) {
-        if (j->count >= MODEL_MAX_COUNT)
-            return error_set(j->err, GLINT_ERR_INVALID, "%s: too many vertices (more than %lld)", j->file,
-                             MODEL_MAX_COUNT);
-        j->keys[j->count++] = key;
+    uint32_t last = j->last[key.position];
+    if (last != UINT32_MAX && key_equal(j->keys, last, &key)) {
+        *slot = last;
+        return GLINT_OK;
     }
-    return GLINT_OK;
+    return join_key(j, &key, slot);
 }
 
 static bool is_smooth(const uint64_t *smooth, size_t t)
@@ -120,11 +136,14 @@ static glint_status generate(obj_model *m, double crease, const char *file, obj_
     joiner j = {.m = m, .file = file, .err = err};
     uint32_t *weld = array_alloc(m->position_count, sizeof *weld), *at = NULL;
     uint64_t *smooth = calloc(nt / 64 + 1, sizeof *smooth);
-    glint_status s = weld && smooth && crease_weld(m->positions, m->position_count, weld)
+    j.last = array_alloc(m->position_count, sizeof *j.last);
+    glint_status s = weld && smooth && j.last && crease_weld(m->positions, m->position_count, weld)
                          ? GLINT_OK
                          : out_of_memory(file, err);
     j.weld = weld;
     j.smooth = smooth;
+    for (size_t i = 0; !s && i < m->position_count; i++)
+        j.last[i] = UINT32_MAX;
     for (size_t t = 0; !s && t < nt; t++)
         if (m->corners[m->triangles[3 * t]].vn < 0) {
             smooth[t / 64] |= 1ull << (t % 64);
@@ -146,6 +165,7 @@ static glint_status generate(obj_model *m, double crease, const char *file, obj_
     free(at);
     free(weld);
     free(smooth);
+    free(j.last);
     id_table_free(&j.index);
     if (!s)
         s = fill_joined(&j, out);
