@@ -18,16 +18,41 @@ static float finite_or_zero(double x)
     return isfinite(f) ? f : 0.0f;
 }
 
+/* What each part's statement holds. */
+static const struct {
+    const char *keyword, *needs;
+    int least, most;
+} kinds[] = {
+    {"v", "at least 3 numbers (x y z)", 3, INT32_MAX},
+    {"vt", "1 to 3 numbers (u [v [w]])", 1, 3},
+    {"vn", "3 numbers (x y z)", 3, 3},
+};
+
+/* The item of part `what` from the numbers read. */
+static void item_of(obj_part what, double c[3], float item[3])
+{
+    for (int k = 0; k < 3; k++)
+        item[k] = (float)c[k];
+    if (what == PART_VT)
+        c[1] = 1 - c[1]; /* OBJ's v = 0 is the image's bottom row, glint's its top */
+    for (int k = 0; what != PART_V && k < 3; k++)
+        item[k] = finite_or_zero(c[k]);
+}
+
+bool obj_plain_item(scan_line *l, obj_part what, float item[3])
+{
+    /* Plain numbers are finite floats: a vertex needs no check. */
+    double c[3] = {0, 0, 0};
+    if (scan_plain_numbers(l, c, kinds[what].least, 3) < 0)
+        return false;
+    item_of(what, c, item);
+    return true;
+}
+
 glint_status obj_parse_item(scan_line *l, scan_pos at, obj_part what, float item[3], glint_error *err)
 {
-    static const struct {
-        const char *keyword, *needs;
-        int least, most;
-    } kinds[] = {
-        {"v", "at least 3 numbers (x y z)", 3, INT32_MAX},
-        {"vt", "1 to 3 numbers (u [v [w]])", 1, 3},
-        {"vn", "3 numbers (x y z)", 3, 3},
-    };
+    if (obj_plain_item(l, what, item))
+        return GLINT_OK;
     double c[3] = {0, 0, 0};
     scan_pos where[3];
     int n = scan_numbers(l, c, where, 3, err);
@@ -35,15 +60,11 @@ glint_status obj_parse_item(scan_line *l, scan_pos at, obj_part what, float item
         return GLINT_ERR_INVALID;
     if (n < kinds[what].least || n > kinds[what].most)
         return scan_error(l, at, err, "'%s' needs %s, got %d", kinds[what].keyword, kinds[what].needs, n);
-    for (int k = 0; k < 3; k++)
-        item[k] = (float)c[k];
     for (int k = 0; what == PART_V && k < 3; k++)
-        if (!isfinite(item[k]))
-            return scan_error(l, where[k], err, "a vertex is not finite (%g %g %g)", item[0], item[1], item[2]);
-    if (what == PART_VT)
-        c[1] = 1 - c[1]; /* OBJ's v = 0 is the image's bottom row, glint's its top */
-    for (int k = 0; what != PART_V && k < 3; k++)
-        item[k] = finite_or_zero(c[k]);
+        if (!isfinite((float)c[k]))
+            return scan_error(l, where[k], err, "a vertex is not finite (%g %g %g)", (float)c[0], (float)c[1],
+                              (float)c[2]);
+    item_of(what, c, item);
     return GLINT_OK;
 }
 
@@ -118,6 +139,34 @@ glint_status obj_add_face(obj_parser *r, const scan_line *l, scan_pos at, size_t
     return s;
 }
 
+bool obj_raw_face(obj_parser *r, const scan_line *l, scan_pos at, const int32_t *raw, size_t n, unsigned form,
+                  glint_status *s, glint_error *err)
+{
+    obj_model *m = r->m;
+    if (m->corner_count + n >= MODEL_MAX_COUNT || m->triangle_count + n >= MODEL_MAX_COUNT)
+        return false;
+    if (!obj_face_room(r, n) || !array_reserve((void **)&r->resolved, &r->resolved_cap, n, sizeof *r->resolved)) {
+        *s = obj_out_of_memory(r, err);
+        return true;
+    }
+    for (size_t k = 0; k < n; k++) {
+        obj_corner *c = &r->resolved[k];
+        int32_t *out[3] = {&c->v, &c->vt, &c->vn};
+        *c = (obj_corner){-1, -1, -1};
+        for (int j = 0; j < 3; j++)
+            if ((form & 1u << j) && !obj_absolute_index(raw[3 * k + j], obj_item_count(m, (obj_part)j), out[j]))
+                return false;
+    }
+    for (size_t k = 0; k < n; k++) {
+        r->face_at[k] = (uint32_t)r->resolved[k].v;
+        if (!obj_corner_known(r, &r->resolved[k], &r->face[k]) &&
+            (*s = obj_corner_id(r, l, at, &r->resolved[k], &r->face[k], err)))
+            return true;
+    }
+    *s = obj_add_face(r, l, at, n, form, err);
+    return true;
+}
+
 bool obj_face_room(obj_parser *r, size_t n)
 {
     size_t cap = r->face_cap;
@@ -127,9 +176,18 @@ bool obj_face_room(obj_parser *r, size_t n)
 
 static glint_status read_face(obj_parser *r, scan_line *l, scan_pos at, glint_error *err)
 {
+    const char *start = l->p;
     size_t n = 0;
     unsigned first_form = 0;
     glint_status s = GLINT_OK;
+    long plain = obj_scan_plain_face(l, &r->raw, &n, &r->raw_cap, &first_form);
+    if (plain < 0)
+        return obj_out_of_memory(r, err);
+    if (plain > 0 && obj_raw_face(r, l, at, r->raw, (size_t)plain, first_form, &s, err))
+        return s;
+    /* Corner by corner, each checked as it is read, for the messages. */
+    l->p = start;
+    n = 0;
     while (!s && scan_more(l)) {
         scan_pos here = scan_here(l);
         obj_corner c;

@@ -1578,6 +1578,37 @@ static void test_obj_corner_ids_in_order(void **state)
     expect_split_same(text, strlen(text), pieces, sizeof pieces / sizeof pieces[0]);
 }
 
+/* Lines in the plain form most files are written in, which the reader
+ * takes whole, give the model that the same values give spelt so that it
+ * reads them word by word (exponents, continuations, comments, a tenth
+ * digit), in one pass and in pieces parsed ahead. */
+static void test_obj_plain_lines(void **state)
+{
+    static const char plain[] = "v 0.5 -1.25 3\nv -0 1.00000000000001 2\nv 9007199254740992 0.1 .5\n"
+                                "v 1. +7 -0.000000000000000001\nvt 0.25 0.75\nvt 1\nvn 0 0 1\n"
+                                "f 1/1/1 2/2/1 3/1/1\nf -3/-2/-1 +2/2/1 000000004/1/1\nf 1//1 2//1 3//1\n"
+                                "f 4 3 2 1\nf 1/2 2/1 3/2\r\n";
+    static const char worded[] = "v 0.5 -1.25 3e0\nv -0 1.00000000000001 \\\n2\nv 9007199254740992e0 0.1 .5 # x\n"
+                                 "v 1. +7 -1e-18\nvt 25e-2 0.75\nvt 1 # one\nvn 0 0 1 \\\n\n"
+                                 "f 1/1/1 2/2/1 \\\n3/1/1\nf -3/-2/-1 +2/2/1 0000000004/1/1\nf 1//1 2//1 3//1 #\n"
+                                 "f 4 3 2 1 # four\nf 1/2 2/1 \\\r\n3/2\r\n";
+    static const size_t pieces[] = {1, 9, 40};
+    obj_model a, b;
+    glint_error err = {0};
+    assert_int_equal(obj_read_memory_split(&a, (const unsigned char *)plain, strlen(plain), "plain.obj", 1,
+                                           (size_t)1 << 40, &err),
+                     GLINT_OK);
+    assert_int_equal(obj_read_memory_split(&b, (const unsigned char *)worded, strlen(worded), "worded.obj", 1,
+                                           (size_t)1 << 40, &err),
+                     GLINT_OK);
+    assert_int_equal(a.triangle_count, 6);
+    expect_same_model(&a, &b);
+    obj_model_free(&a);
+    obj_model_free(&b);
+    expect_split_same(plain, strlen(plain), pieces, sizeof pieces / sizeof pieces[0]);
+    expect_split_same(worded, strlen(worded), pieces, sizeof pieces / sizeof pieces[0]);
+}
+
 /* A large grid, whole and with an error near its end, in pieces of the
  * sizes real reads use and others. */
 static void test_obj_split_grid(void **state)
@@ -2109,6 +2140,7 @@ int main(void)
         cmocka_unit_test(test_obj_chunks),
         cmocka_unit_test(test_obj_split_same),
         cmocka_unit_test(test_obj_split_grid),
+        cmocka_unit_test(test_obj_plain_lines),
         cmocka_unit_test(test_obj_corner_ids_in_order),
         cmocka_unit_test(test_ply_ascii_and_binary),
         cmocka_unit_test(test_stl_ascii_and_binary),
