@@ -31,18 +31,23 @@ static const double atan_eighths[9] = {
  * angle surely lies. */
 #define MARGIN 0x1p-36
 
+/* corner_angle's answer outside the range of its reduction. */
+static float far_angle(double cross, double dot)
+{
+    return isfinite(cross) && isfinite(dot) ? (float)atan2(cross, dot) : 0.0f;
+}
+
 float corner_angle(double cross, double dot)
 {
-    if (!isfinite(cross) || !isfinite(dot))
-        return 0.0f;
     double y = cross, x = fabs(dot);
     bool steep = y > x;
     double num = steep ? x : y, den = steep ? y : x;
-    /* A negative cross (-0 too), both zero, and the far ends of double's
-     * range (where the reduction below could overflow or lose bits) go to
-     * atan2. */
-    if (signbit(cross) || !(den > 0x1p-900 && den < 0x1p900))
-        return (float)atan2(cross, dot);
+    /* A negative cross (-0 too), both zero, either not finite (num is
+     * then not at most den, or den not below 2^900), and the far ends of
+     * double's range (where the reduction below could overflow or lose
+     * bits) go to far_angle. */
+    if (signbit(cross) || !(num <= den) || !(den > 0x1p-900 && den < 0x1p900))
+        return far_angle(cross, dot);
     int i = (int)(num / den * 8 + 0.5);
     double c = i * 0.125;
     double u = (num - c * den) / (den + c * num), u2 = u * u;
@@ -52,5 +57,5 @@ float corner_angle(double cross, double dot)
     if (dot < 0)
         a = M_PI - a;
     float lo = (float)(a - a * MARGIN), hi = (float)(a + a * MARGIN);
-    return lo == hi ? lo : (float)atan2(cross, dot);
+    return lo == hi ? lo : far_angle(cross, dot);
 }

@@ -228,11 +228,13 @@ static void corner_normal(const crease *k, const uint32_t *at, size_t c, float *
     size_t t = c / 3;
     uint32_t p = at[c], lo = k->first[p], mid = lo + k->outliers[p], hi = k->first[p + 1];
     const float *own = k->normal + 3 * t;
-    bool alone = !k->core[c] || is_flat(own); /* the core's sum may not stand for its faces */
-    if (lo == mid && (!alone || k->everything) && k->core_has_unit[p]) {
+    /* Every face counts at 180 degrees, and with no outliers for a corner
+     * whose face is in the core: the core's unit sum is its normal. */
+    if (k->core_has_unit[p] && (k->everything || (lo == mid && k->core[c] && !is_flat(own)))) {
         memcpy(out, k->core_unit + 3 * (size_t)p, 3 * sizeof *out);
         return;
     }
+    bool alone = !k->core[c] || is_flat(own); /* the core's sum may not stand for its faces */
     const double *core = k->core_sum + 3 * (size_t)p;
     vec3 sum = v3(core[0], core[1], core[2]);
     if (k->outliers[p] > MAX_OUTLIERS) {

@@ -76,7 +76,7 @@ bool obj_scan_corner(scan_line *l, raw_corner *rc)
 /* Reads a plain index at s, before end: an optional sign, then 1 to 9
  * digits, into *out; returns the byte after it, or NULL when there is none
  * such or it is 0. */
-static const char *plain_index(const char *s, const char *end, int32_t *out)
+static inline const char *plain_index(const char *s, const char *end, int32_t *out)
 {
     bool negative = s < end && *s == '-';
     s += s < end && (*s == '-' || *s == '+');

@@ -158,8 +158,24 @@ static inline bool obj_corner_known(const obj_parser *r, const obj_corner *c, ui
 
 /* ------------------------------------------------- obj_statement.c */
 
-/* The statement the word [w, w + n) starts. */
-obj_keyword obj_keyword_of(const char *w, size_t n);
+/* The statement the word [w, w + n) starts. (Inline: it is asked of every
+ * line.) */
+static inline obj_keyword obj_keyword_of(const char *w, size_t n)
+{
+    if (n == 1 && w[0] == 'v')
+        return KEY_V;
+    if (n == 1 && w[0] == 'f')
+        return KEY_F;
+    if (n == 2 && w[0] == 'v' && w[1] == 'n')
+        return KEY_VN;
+    if (n == 2 && w[0] == 'v' && w[1] == 't')
+        return KEY_VT;
+    if (scan_word_is(w, n, "usemtl"))
+        return KEY_USEMTL;
+    if (scan_word_is(w, n, "mtllib"))
+        return KEY_MTLLIB;
+    return KEY_OTHER;
+}
 
 /* The part a v, vt or vn statement adds. */
 static inline obj_part obj_item_part(obj_keyword k)

@@ -68,17 +68,24 @@ glint_status obj_parse_item(scan_line *l, scan_pos at, obj_part what, float item
     return GLINT_OK;
 }
 
-bool obj_add_item(obj_model *m, obj_part what, const float item[3])
+/* Appends the `floats` floats of item to *items, of which there are
+ * *count, with room for *cap. */
+static bool append(float **items, size_t *count, size_t *cap, size_t floats, const float *item)
 {
-    float **items[] = {&m->positions, &m->uvs, &m->normals};
-    size_t *counts[] = {&m->position_count, &m->uv_count, &m->normal_count};
-    size_t *caps[] = {&m->position_cap, &m->uv_cap, &m->normal_cap};
-    size_t floats = what == PART_VT ? 2 : 3, *count = counts[what];
-    if (!array_reserve((void **)items[what], caps[what], *count + 1, floats * sizeof(float)))
+    if (!array_reserve((void **)items, cap, *count + 1, floats * sizeof(float)))
         return false;
-    memcpy(*items[what] + floats * *count, item, floats * sizeof(float));
+    memcpy(*items + floats * *count, item, floats * sizeof(float));
     ++*count;
     return true;
+}
+
+bool obj_add_item(obj_model *m, obj_part what, const float item[3])
+{
+    if (what == PART_V)
+        return append(&m->positions, &m->position_count, &m->position_cap, 3, item);
+    if (what == PART_VT)
+        return append(&m->uvs, &m->uv_count, &m->uv_cap, 2, item);
+    return append(&m->normals, &m->normal_count, &m->normal_cap, 3, item);
 }
 
 /* Reads a v, vt or vn statement (`what`), whose keyword is at `at`, and
@@ -94,23 +101,25 @@ static glint_status read_item(obj_parser *r, scan_line *l, scan_pos at, obj_part
     return obj_add_item(r->m, what, item) ? GLINT_OK : obj_out_of_memory(r, err);
 }
 
-static glint_status add_triangle(obj_parser *r, const scan_line *l, scan_pos at, uint32_t a, uint32_t b,
-                                 uint32_t c, glint_error *err)
+/* Adds the `count` triangles of the face in r->face whose corners are
+ * r->face[tri[3t]], r->face[tri[3t + 1]] and r->face[tri[3t + 2]]. */
+static glint_status add_triangles(obj_parser *r, const scan_line *l, scan_pos at, const uint32_t *tri, size_t count,
+                                  glint_error *err)
 {
     obj_model *m = r->m;
-    if (m->triangle_count >= MODEL_MAX_COUNT)
+    if (m->triangle_count + count > MODEL_MAX_COUNT)
         return obj_too_many(l, at, "triangles", err);
-    if (!array_reserve((void **)&m->triangles, &m->triangle_cap, m->triangle_count + 1, 3 * sizeof(uint32_t)))
+    if (!array_reserve((void **)&m->triangles, &m->triangle_cap, m->triangle_count + count, 3 * sizeof(uint32_t)))
         return obj_out_of_memory(r, err);
     if (m->run_count == 0 || m->runs[m->run_count - 1].material != r->material) {
         if (!array_reserve((void **)&m->runs, &m->run_cap, m->run_count + 1, sizeof *m->runs))
             return obj_out_of_memory(r, err);
         m->runs[m->run_count++] = (obj_run){(uint32_t)m->triangle_count, r->material};
     }
-    uint32_t *t = m->triangles + 3 * m->triangle_count++;
-    t[0] = a;
-    t[1] = b;
-    t[2] = c;
+    uint32_t *t = m->triangles + 3 * m->triangle_count;
+    for (size_t i = 0; i < 3 * count; i++)
+        t[i] = r->face[tri[i]];
+    m->triangle_count += count;
     return GLINT_OK;
 }
 
@@ -124,19 +133,16 @@ static const char *form_text(unsigned form)
 glint_status obj_add_face(obj_parser *r, const scan_line *l, scan_pos at, size_t n, unsigned form,
                           glint_error *err)
 {
+    static const uint32_t triangle[3] = {0, 1, 2};
     obj_model *m = r->m;
-    glint_status s = GLINT_OK;
     m->generate |= !(form & 1u << PART_VN);
     m->textured |= (form & 1u << PART_VT) != 0;
     if (n == 3)
-        return add_triangle(r, l, at, r->face[0], r->face[1], r->face[2], err);
+        return add_triangles(r, l, at, triangle, 1, err);
     if (!array_reserve((void **)&r->split, &r->split_cap, 3 * (n - 2), sizeof *r->split) ||
         !triangulate_polygon(&r->work, m->positions, r->face_at, n, r->split))
         return obj_out_of_memory(r, err);
-    for (size_t t = 0; !s && t < n - 2; t++)
-        s = add_triangle(r, l, at, r->face[r->split[3 * t]], r->face[r->split[3 * t + 1]],
-                         r->face[r->split[3 * t + 2]], err);
-    return s;
+    return add_triangles(r, l, at, r->split, n - 2, err);
 }
 
 bool obj_raw_face(obj_parser *r, const scan_line *l, scan_pos at, const int32_t *raw, size_t n, unsigned form,
@@ -149,13 +155,15 @@ bool obj_raw_face(obj_parser *r, const scan_line *l, scan_pos at, const int32_t 
         *s = obj_out_of_memory(r, err);
         return true;
     }
+    /* Every corner has a vertex. */
     for (size_t k = 0; k < n; k++) {
+        const int32_t *written = raw + 3 * k;
         obj_corner *c = &r->resolved[k];
-        int32_t *out[3] = {&c->v, &c->vt, &c->vn};
-        *c = (obj_corner){-1, -1, -1};
-        for (int j = 0; j < 3; j++)
-            if ((form & 1u << j) && !obj_absolute_index(raw[3 * k + j], obj_item_count(m, (obj_part)j), out[j]))
-                return false;
+        c->vt = c->vn = -1;
+        if (!obj_absolute_index(written[PART_V], m->position_count, &c->v) ||
+            ((form & 1u << PART_VT) && !obj_absolute_index(written[PART_VT], m->uv_count, &c->vt)) ||
+            ((form & 1u << PART_VN) && !obj_absolute_index(written[PART_VN], m->normal_count, &c->vn)))
+            return false;
     }
     for (size_t k = 0; k < n; k++) {
         r->face_at[k] = (uint32_t)r->resolved[k].v;
@@ -277,23 +285,6 @@ static glint_status read_mtllib(obj_parser *r, scan_line *l, scan_pos at, glint_
     if (!s)
         m->libraries[m->library_count++] = offset;
     return s;
-}
-
-obj_keyword obj_keyword_of(const char *w, size_t n)
-{
-    if (n == 1 && w[0] == 'v')
-        return KEY_V;
-    if (n == 1 && w[0] == 'f')
-        return KEY_F;
-    if (n == 2 && w[0] == 'v' && w[1] == 'n')
-        return KEY_VN;
-    if (n == 2 && w[0] == 'v' && w[1] == 't')
-        return KEY_VT;
-    if (scan_word_is(w, n, "usemtl"))
-        return KEY_USEMTL;
-    if (scan_word_is(w, n, "mtllib"))
-        return KEY_MTLLIB;
-    return KEY_OTHER;
 }
 
 glint_status obj_statement(obj_parser *r, scan_line *l, glint_error *err)

@@ -272,7 +272,13 @@ static double slow_decimal(const char *s, const char *stop)
     return strtod(buf, NULL);
 }
 
-const char *scan_plain_decimal(const char *s, const char *end, double *out)
+/* Reads a plain decimal at s, before end, the form nearly every file
+ * writes: an optional sign, then digits with an optional '.', at least one
+ * digit and at most 19 in all, worth at most 2^53 as an integer, and no
+ * exponent after them. Returns the first byte after it, with *out set to
+ * what scan_decimal gives (one exact division), or NULL for anything else,
+ * for scan_decimal to read. */
+static inline const char *plain_decimal(const char *s, const char *end, double *out)
 {
     static const double powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,
                                     1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19};
@@ -305,7 +311,7 @@ int scan_plain_numbers(scan_line *l, double *out, int least, int most)
     const char *p = l->p, *end = l->end;
     int n = 0;
     while (scan_plain_start(p = scan_skip_blanks(p, end), end))
-        if (n == most || !(p = scan_plain_decimal(p, end, &out[n++])) || !scan_plain_stop(p, end))
+        if (n == most || !(p = plain_decimal(p, end, &out[n++])) || !scan_plain_stop(p, end))
             return -1;
     if (n < least)
         return -1;
@@ -315,7 +321,7 @@ int scan_plain_numbers(scan_line *l, double *out, int least, int most)
 
 const char *scan_decimal(const char *s, const char *end, double *out)
 {
-    const char *plain = scan_plain_decimal(s, end, out);
+    const char *plain = plain_decimal(s, end, out);
     if (plain)
         return plain;
     static const double powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,

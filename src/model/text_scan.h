@@ -118,14 +118,6 @@ bool scan_keep_text(char **text, size_t *len, size_t *cap, const char *s, const 
  * exact in one multiplication or division; anything else goes to strtod. */
 const char *scan_decimal(const char *s, const char *end, double *out);
 
-/* Reads a plain decimal at s, before end, the form nearly every file
- * writes: an optional sign, then digits with an optional '.', at least one
- * digit and at most 19 in all, worth at most 2^53 as an integer, and no
- * exponent after them. Returns the first byte after it, with *out set to
- * what scan_decimal gives (one exact division), or NULL for anything else,
- * for scan_decimal to read. */
-const char *scan_plain_decimal(const char *s, const char *end, double *out);
-
 /* For the plain readers: the first byte from p on that is not a blank, or
  * end. */
 static inline const char *scan_skip_blanks(const char *p, const char *end)
@@ -149,13 +141,16 @@ static inline bool scan_plain_stop(const char *p, const char *end)
     return p == end || scan_is_blank(*p) || *p == '\n';
 }
 
-/* Reads the rest of the line as `least` to `most` plain decimals (see
- * scan_plain_decimal) between blanks, into out, and moves to the line's
- * end; returns how many there were. Returns -1, l unchanged, when the rest
- * of the line is anything else (a continuation, a comment, another word
- * or number form, or too few or many): then scan_numbers is to read it.
- * A line break ends the line too, at which l->p then stops: a caller may
- * set l->end to the end of the text and find the line's end so. */
+/* Reads the rest of the line as `least` to `most` plain decimals between
+ * blanks, the form nearly every file writes (an optional sign, then digits
+ * with an optional '.', at least one digit and at most 19 in all, worth
+ * at most 2^53 as an integer, no exponent), into out, as scan_decimal
+ * reads them, and moves to the line's end; returns how many there were.
+ * Returns -1, l unchanged, when the rest of the line is anything else (a
+ * continuation, a comment, another word or number form, or too few or
+ * many): then scan_numbers is to read it. A line break ends the line too,
+ * at which l->p then stops: a caller may set l->end to the end of the text
+ * and find the line's end so. */
 int scan_plain_numbers(scan_line *l, double *out, int least, int most);
 
 /* Writes at most 24 bytes of the word [s, s + len) into out for a message,

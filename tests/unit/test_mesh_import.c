@@ -817,7 +817,10 @@ static void test_corner_angle(void **state)
         if (memcmp(&got, &want, sizeof got) != 0)
             fail_msg("corner_angle(%a, %a) is %a, atan2 gives %a", edge[i][0], edge[i][1], got, want);
     }
-    assert_true(corner_angle(INFINITY, 1) == 0 && corner_angle(1, NAN) == 0);
+    static const double far[][2] = {{INFINITY, 1}, {1, NAN}, {NAN, 1}, {1, -INFINITY}, {INFINITY, INFINITY},
+                                    {-INFINITY, 1}, {NAN, NAN}, {0, NAN}};
+    for (size_t i = 0; i < sizeof far / sizeof far[0]; i++)
+        assert_true(corner_angle(far[i][0], far[i][1]) == 0);
 }
 
 static void test_obj_number_forms(void **state)
