@@ -33,17 +33,17 @@ typedef struct ahead {
     } u;
 } ahead;
 
-/* Parses the corners of the face on l into pc->corners and completes *a as
- * AHEAD_FACE; leaves *a and pc->corners as they were when it cannot. */
-static void ahead_face(text_piece *pc, scan_line *l, ahead *a)
+/* Parses the corners of a face that is not plain (obj_scan_plain_face) on
+ * l into pc->corners, one by one: their count and *form, or 0, with
+ * pc->corners as it was, when the line is not to be taken whole. */
+static size_t ahead_corners(text_piece *pc, scan_line *l, unsigned *form)
 {
     size_t first = pc->corner_count, n = 0;
-    unsigned form = 0;
     while (scan_more(l)) {
         raw_corner rc;
-        if (!obj_scan_corner(l, &rc) || (n > 0 && rc.form != form) || n + 1 >= MODEL_MAX_COUNT)
+        if (!obj_scan_corner(l, &rc) || (n > 0 && rc.form != *form) || n + 1 >= MODEL_MAX_COUNT)
             goto refused;
-        form = rc.form;
+        *form = rc.form;
         if (!array_reserve((void **)&pc->corners, &pc->corner_cap, pc->corner_count + 3, sizeof *pc->corners)) {
             pc->no_memory = true;
             goto refused;
@@ -60,15 +60,90 @@ static void ahead_face(text_piece *pc, scan_line *l, ahead *a)
         pc->corner_count += 3;
         n++;
     }
-    if (n < 3)
-        goto refused;
+    if (n >= 3)
+        return n;
+refused:
+    pc->corner_count = first;
+    return 0;
+}
+
+/* Parses the corners of the face on l into pc->corners and completes *a as
+ * AHEAD_FACE; leaves *a and pc->corners as they were when it cannot. */
+static void ahead_face(text_piece *pc, scan_line *l, ahead *a)
+{
+    size_t first = pc->corner_count;
+    unsigned form = 0;
+    long n = obj_scan_plain_face(l, &pc->corners, &pc->corner_count, &pc->corner_cap, &form);
+    if (n < 0)
+        pc->no_memory = true;
+    else if (n == 0)
+        n = (long)ahead_corners(pc, l, &form);
+    if (n <= 0)
+        return;
     a->kind = AHEAD_FACE;
     a->what = (uint8_t)form;
     a->corners = (uint32_t)n;
     a->u.first = first;
-    return;
-refused:
-    pc->corner_count = first;
+}
+
+/* Parses the line at p into *a when it is a plain v, vt, vn or f line
+ * (obj_plain_item, obj_scan_plain_face) ending in a line break: nearly
+ * every line of a large file, found and read in one pass rather than
+ * looked for and then read. Returns the byte after its break; NULL, with
+ * pc as it was, for any other line. */
+static const char *plain_line(text_piece *pc, const char *p, ahead *a)
+{
+    const char *end = pc->end;
+    if (end - p < 3)
+        return NULL;
+    size_t n = p[1] == ' ' ? 1 : p[2] == ' ' ? 2 : 0;
+    obj_keyword k = n ? obj_keyword_of(p, n) : KEY_OTHER;
+    scan_line l;
+    scan_start(&l, p + n, end, 1, pc->file);
+    if (k == KEY_V || k == KEY_VT || k == KEY_VN) {
+        if (!obj_plain_item(&l, obj_item_part(k), a->u.item) || l.p == end || *l.p != '\n')
+            return NULL;
+        a->kind = AHEAD_ITEM;
+        a->what = (uint8_t)obj_item_part(k);
+        return l.p + 1;
+    }
+    if (k != KEY_F)
+        return NULL;
+    size_t first = pc->corner_count;
+    unsigned form;
+    long corners = obj_scan_plain_face(&l, &pc->corners, &pc->corner_count, &pc->corner_cap, &form);
+    if (corners <= 0 || l.p == end || *l.p != '\n') {
+        pc->corner_count = first;
+        return NULL;
+    }
+    a->kind = AHEAD_FACE;
+    a->what = (uint8_t)form;
+    a->corners = (uint32_t)corners;
+    a->u.first = first;
+    return l.p + 1;
+}
+
+/* Parses the logical line [p, span->end), the piece's row `row`, into *a
+ * as far as it can be; false for a line that needs no record (blank, a
+ * comment, a statement glint ignores). */
+static bool parse_line(text_piece *pc, const char *p, const scan_span *span, long row, ahead *a)
+{
+    scan_line l;
+    scan_start(&l, p, span->end, 1 + row, pc->file);
+    if (!scan_more(&l))
+        return false;
+    scan_pos at = scan_here(&l);
+    size_t n;
+    const char *w = scan_word(&l, &n);
+    obj_keyword k = obj_keyword_of(w, n);
+    glint_error unused;
+    if ((k == KEY_V || k == KEY_VT || k == KEY_VN) && !obj_parse_item(&l, at, obj_item_part(k), a->u.item, &unused)) {
+        a->kind = AHEAD_ITEM;
+        a->what = (uint8_t)obj_item_part(k);
+    } else if (k == KEY_F) {
+        ahead_face(pc, &l, a);
+    }
+    return k != KEY_OTHER;
 }
 
 void *text_piece_parse(void *arg)
@@ -79,34 +154,25 @@ void *text_piece_parse(void *arg)
     text_piece own = *(text_piece *)arg, *pc = &own;
     const char *p = pc->start;
     long row = 0;
-    scan_span span;
-    glint_error unused;
-    while (!pc->no_memory && p < pc->end && scan_next_line(p, pc->end, pc->last, &span)) {
-        scan_line l;
-        scan_start(&l, p, span.end, 1 + row, pc->file);
+    while (!pc->no_memory && p < pc->end) {
         ahead a = {.offset = (uint32_t)(p - pc->start), .row = (uint32_t)row, .kind = AHEAD_LINE};
-        obj_keyword k = KEY_OTHER;
-        if (scan_more(&l)) {
-            scan_pos at = scan_here(&l);
-            size_t n;
-            const char *w = scan_word(&l, &n);
-            k = obj_keyword_of(w, n);
-            if ((k == KEY_V || k == KEY_VT || k == KEY_VN) && !obj_parse_item(&l, at, obj_item_part(k), a.u.item, &unused)) {
-                a.kind = AHEAD_ITEM;
-                a.what = (uint8_t)obj_item_part(k);
-            } else if (k == KEY_F) {
-                ahead_face(pc, &l, &a);
-            }
+        const char *next = plain_line(pc, p, &a);
+        long rows = 1;
+        bool kept = true;
+        if (!next) {
+            scan_span span;
+            if (!scan_next_line(p, pc->end, pc->last, &span))
+                break;
+            kept = parse_line(pc, p, &span, row, &a);
+            next = span.next;
+            rows = span.rows;
         }
-        /* Blank lines, comments and statements glint ignores need no record. */
-        if (k != KEY_OTHER) {
-            if (!array_reserve((void **)&pc->items, &pc->cap, pc->count + 1, sizeof *pc->items))
-                pc->no_memory = true;
-            else
-                pc->items[pc->count++] = a;
-        }
-        row += span.rows;
-        p = span.next;
+        if (kept && !array_reserve((void **)&pc->items, &pc->cap, pc->count + 1, sizeof *pc->items))
+            pc->no_memory = true;
+        else if (kept)
+            pc->items[pc->count++] = a;
+        row += rows;
+        p = next;
     }
     pc->rows = row;
     *(text_piece *)arg = own;
@@ -126,40 +192,16 @@ static glint_status merge_line(obj_parser *r, const text_piece *pc, const ahead 
 }
 
 /* Adds the face of record a as its line would be read; false, with nothing
- * changed, when its indices do not all resolve or it could pass a limit:
- * then obj_statement() is to read its line. */
+ * changed, when obj_statement() is to read its line (obj_raw_face). */
 static bool merge_face(obj_parser *r, const text_piece *pc, const ahead *a, long base, glint_status *s,
                        glint_error *err)
 {
-    obj_model *m = r->m;
-    size_t n = a->corners;
-    const int32_t *raw = pc->corners + a->u.first;
-    if (m->corner_count + n >= MODEL_MAX_COUNT || m->triangle_count + n >= MODEL_MAX_COUNT)
-        return false;
-    if (!obj_face_room(r, n) || !array_reserve((void **)&r->resolved, &r->resolved_cap, n, sizeof *r->resolved)) {
-        *s = obj_out_of_memory(r, err);
-        return true;
-    }
-    for (size_t k = 0; k < n; k++) {
-        obj_corner *c = &r->resolved[k];
-        int32_t *out[3] = {&c->v, &c->vt, &c->vn};
-        *c = (obj_corner){-1, -1, -1};
-        for (int j = 0; j < 3; j++)
-            if ((a->what & 1u << j) && !obj_absolute_index(raw[3 * k + j], obj_item_count(m, (obj_part)j), out[j]))
-                return false;
-    }
-    /* Nothing below can fail but for memory: the place is for form's sake. */
+    /* Nothing can fail but for memory: the place is for form's sake. */
     scan_line l;
     const char *p = pc->start + a->offset;
     scan_start(&l, p, p, base + a->row, r->file);
     scan_pos at = {base + a->row, 1};
-    for (size_t k = 0; k < n; k++) {
-        r->face_at[k] = (uint32_t)r->resolved[k].v;
-        if ((*s = obj_corner_id(r, &l, at, &r->resolved[k], &r->face[k], err)))
-            return true;
-    }
-    *s = obj_add_face(r, &l, at, n, a->what, err);
-    return true;
+    return obj_raw_face(r, &l, at, pc->corners + a->u.first, a->corners, a->what, s, err);
 }
 
 glint_status text_piece_merge(obj_parser *r, const text_piece *pc, glint_error *err)

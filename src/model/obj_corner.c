@@ -73,6 +73,67 @@ bool obj_scan_corner(scan_line *l, raw_corner *rc)
     return whole;
 }
 
+/* Reads a plain index at s, before end: an optional sign, then 1 to 9
+ * digits, into *out; returns the byte after it, or NULL when there is none
+ * such or it is 0. */
+static inline const char *plain_index(const char *s, const char *end, int32_t *out)
+{
+    bool negative = s < end && *s == '-';
+    s += s < end && (*s == '-' || *s == '+');
+    const char *stop = end - s > 9 ? s + 9 : end;
+    int32_t v = 0;
+    for (unsigned d; s < stop && (d = (unsigned char)*s - '0') < 10; s++)
+        v = v * 10 + (int32_t)d;
+    if (v == 0 || (s == stop && s < end && scan_is_digit(*s)))
+        return NULL; /* none, 0, or a tenth digit */
+    *out = negative ? -v : v;
+    return s;
+}
+
+long obj_scan_plain_face(scan_line *l, int32_t **raw, size_t *count, size_t *cap, unsigned *form)
+{
+    const char *p = l->p, *end = l->end;
+    size_t first = *count;
+    long n = 0;
+    unsigned face_form = 0;
+    for (; scan_plain_start(p = scan_skip_blanks(p, end), end); n++) {
+        if (n + 1 >= MODEL_MAX_COUNT)
+            return 0;
+        if (!array_reserve((void **)raw, cap, first + 3 * (size_t)n + 3, sizeof **raw))
+            return -1;
+        int32_t *c = *raw + first + 3 * (size_t)n;
+        unsigned f = 1u << PART_V;
+        c[1] = c[2] = 0;
+        if (!(p = plain_index(p, end, &c[0])))
+            return 0;
+        if (p < end && *p == '/') {
+            if (++p < end && *p != '/') {
+                f |= 1u << PART_VT;
+                if (!(p = plain_index(p, end, &c[1])))
+                    return 0;
+            }
+            /* v//vn, or v/vt/vn */
+            if (!(f & 1u << PART_VT) || (p < end && *p == '/')) {
+                if (p == end || *p != '/')
+                    return 0;
+                p++;
+                f |= 1u << PART_VN;
+                if (!(p = plain_index(p, end, &c[2])))
+                    return 0;
+            }
+        }
+        if (!scan_plain_stop(p, end) || (n > 0 && f != face_form))
+            return 0;
+        face_form = f;
+    }
+    if (n < 3)
+        return 0;
+    *count = first + 3 * (size_t)n;
+    *form = face_form;
+    l->p = p;
+    return n;
+}
+
 glint_status obj_read_corner(obj_parser *r, scan_line *l, scan_pos at, obj_corner *c, unsigned *form,
                              const char **word_out, size_t *len_out, glint_error *err)
 {
@@ -130,14 +191,6 @@ static bool corner_equal(const void *keys, uint32_t id, const void *key)
     return a->v == b->v && a->vt == b->vt && a->vn == b->vn;
 }
 
-/* The difference of a corner's index of a part from its vertex index, or
- * NO_PART when it lacks the part. */
-#define NO_PART INT64_MIN
-static int64_t part_offset(int32_t index, int32_t v)
-{
-    return index < 0 ? NO_PART : (int64_t)index - v;
-}
-
 /* The id of a new corner c. */
 static glint_status corner_new(obj_parser *r, const scan_line *l, scan_pos at, const obj_corner *c, uint32_t *id,
                                glint_error *err)
@@ -161,7 +214,7 @@ glint_status obj_corner_id(obj_parser *r, const scan_line *l, scan_pos at, const
                            glint_error *err)
 {
     obj_model *m = r->m;
-    int64_t vt = part_offset(c->vt, c->v), vn = part_offset(c->vn, c->v);
+    int64_t vt = obj_part_offset(c->vt, c->v), vn = obj_part_offset(c->vn, c->v);
     if (!r->related) {
         r->relation[0] = vt;
         r->relation[1] = vn;

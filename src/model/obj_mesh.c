@@ -20,10 +20,10 @@ typedef struct vertex_key {
 typedef struct joiner {
     obj_model *m;
     const uint32_t *weld;     /* each position's first equal one */
-    const uint64_t *smooth;   /* bit t: triangle t has no normals of its own */
-    size_t next;              /* the triangle after the last one whose normals came */
+    const uint32_t *smooth;   /* the triangles without normals of their own, in order */
     vertex_key *keys;
     size_t count, cap;
+    uint32_t *last;           /* per welded position: the vertex last joined there, UINT32_MAX for none */
     id_table index;
     const char *file;
     glint_error *err;
@@ -34,11 +34,21 @@ static glint_status out_of_memory(const char *file, glint_error *err)
     return error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", file);
 }
 
-static uint32_t key_hash(const void *keys, uint32_t id)
+/* The hash of a key: its words folded by multiplying, then mixed once,
+ * in a third of id_hash_words' instructions. */
+static uint32_t vertex_hash(const vertex_key *key)
 {
     uint32_t w[6];
-    memcpy(w, (const vertex_key *)keys + id, sizeof w);
-    return id_hash_words(w, 6);
+    memcpy(w, key, sizeof w);
+    uint64_t h = w[0];
+    for (int i = 1; i < 6; i++)
+        h = h * 0x9e3779b97f4a7c15u + w[i];
+    return hash_u32((uint32_t)(h >> 32) ^ (uint32_t)h);
+}
+
+static uint32_t key_hash(const void *keys, uint32_t id)
+{
+    return vertex_hash((const vertex_key *)keys + id);
 }
 
 static bool key_equal(const void *keys, uint32_t id, const void *key)
@@ -46,9 +56,31 @@ static bool key_equal(const void *keys, uint32_t id, const void *key)
     return memcmp((const vertex_key *)keys + id, key, sizeof(vertex_key)) == 0;
 }
 
+/* Sets *slot to the vertex of `key`, entering it when it is new. Out of
+ * line, so that join's quick path saves no registers for it. */
+static __attribute__((noinline)) glint_status join_key(joiner *j, const vertex_key *key, uint32_t *slot)
+{
+    if (!array_reserve((void **)&j->keys, &j->cap, j->count + 1, sizeof *j->keys))
+        return out_of_memory(j->file, j->err);
+    if (!id_table_intern(&j->index, vertex_hash(key), key, (uint32_t)j->count, key_hash, key_equal, j->keys,
+                         slot))
+        return out_of_memory(j->file, j->err);
+    if (*slot == j->count) {
+        if (j->count >= MODEL_MAX_COUNT)
+            return error_set(j->err, GLINT_ERR_INVALID, "%s: too many vertices (more than %lld)", j->file,
+                             MODEL_MAX_COUNT);
+        j->keys[j->count++] = *key;
+    }
+    j->last[key->position] = *slot;
+    return GLINT_OK;
+}
+
 /* Replaces corner k of triangle t by the vertex of that corner with
- * `normal`, entering the vertex when it is new. */
-static glint_status join(joiner *j, size_t t, int k, const float *normal)
+ * `normal`, entering the vertex when it is new. On a smooth surface the
+ * corners at a point are mostly one vertex: the one last joined there is
+ * tried before the hash table (join_key), which then sees little more than
+ * the new vertices. */
+static inline glint_status join(joiner *j, size_t t, int k, const float *normal)
 {
     obj_model *m = j->m;
     uint32_t *slot = m->triangles + 3 * t + k;
@@ -57,39 +89,19 @@ static glint_status join(joiner *j, size_t t, int k, const float *normal)
     if (c->vt >= 0)
         memcpy(key.uv, m->uvs + 2 * (size_t)c->vt, sizeof key.uv);
     memcpy(key.normal, normal, sizeof key.normal);
-    if (!array_reserve((void **)&j->keys, &j->cap, j->count + 1, sizeof *j->keys))
-        return out_of_memory(j->file, j->err);
-    uint32_t w[6];
-    memcpy(w, &key, sizeof w);
-    if (!id_table_intern(&j->index, id_hash_words(w, 6), &key, (uint32_t)j->count, key_hash, key_equal, j->keys,
-                         slot))
-        return out_of_memory(j->file, j->err);
-    if (*slot == j->count) {
-        if (j->count >= MODEL_MAX_COUNT)
-            return error_set(j->err, GLINT_ERR_INVALID, "%s: too many vertices (more than %lld)", j->file,
-                             MODEL_MAX_COUNT);
-        j->keys[j->count++] = key;
+    uint32_t last = j->last[key.position];
+    if (last != UINT32_MAX && key_equal(j->keys, last, &key)) {
+        *slot = last;
+        return GLINT_OK;
     }
-    return GLINT_OK;
+    return join_key(j, &key, slot);
 }
 
-static bool is_smooth(const uint64_t *smooth, size_t t)
-{
-    return smooth[t / 64] >> (t % 64) & 1;
-}
-
-/* crease_emit_fn: the n-th triangle without normals is the n-th one with
- * its bit set; they come in order. */
+/* crease_emit_fn: the n-th triangle without normals. */
 static glint_status join_generated(void *ctx, size_t n, int k, const float normal[3])
 {
     joiner *j = ctx;
-    if (k == 0)
-        while (!is_smooth(j->smooth, j->next))
-            j->next++;
-    glint_status s = join(j, j->next, k, normal);
-    if (k == 2)
-        j->next++;
-    return s;
+    return join(j, j->smooth[n], k, normal);
 }
 
 /* Copies the joined vertices' values into out. */
@@ -119,33 +131,41 @@ static glint_status generate(obj_model *m, double crease, const char *file, obj_
     size_t nt = m->triangle_count, smooth_count = 0;
     joiner j = {.m = m, .file = file, .err = err};
     uint32_t *weld = array_alloc(m->position_count, sizeof *weld), *at = NULL;
-    uint64_t *smooth = calloc(nt / 64 + 1, sizeof *smooth);
-    glint_status s = weld && smooth && crease_weld(m->positions, m->position_count, weld)
+    uint32_t *smooth = array_alloc(nt, sizeof *smooth);
+    j.last = array_alloc(m->position_count, sizeof *j.last);
+    glint_status s = weld && smooth && j.last && crease_weld(m->positions, m->position_count, weld)
                          ? GLINT_OK
                          : out_of_memory(file, err);
     j.weld = weld;
     j.smooth = smooth;
+    for (size_t i = 0; !s && i < m->position_count; i++)
+        j.last[i] = UINT32_MAX;
     for (size_t t = 0; !s && t < nt; t++)
-        if (m->corners[m->triangles[3 * t]].vn < 0) {
-            smooth[t / 64] |= 1ull << (t % 64);
-            smooth_count++;
-        }
+        if (m->corners[m->triangles[3 * t]].vn < 0)
+            smooth[smooth_count++] = (uint32_t)t;
     if (!s && !(at = array_alloc(smooth_count, 3 * sizeof *at)))
         s = out_of_memory(file, err);
-    for (size_t t = 0, n = 0; !s && t < nt; t++)
-        for (int k = 0; k < 3 && is_smooth(smooth, t); k++)
-            at[n++] = weld[m->corners[m->triangles[3 * t + k]].v];
+    for (size_t n = 0; !s && n < smooth_count; n++)
+        for (int k = 0; k < 3; k++)
+            at[3 * n + k] = weld[m->corners[m->triangles[3 * (size_t)smooth[n] + k]].v];
     /* Sized for about one vertex a position, as on a smooth surface. */
     if (!s && !id_table_reserve(&j.index, m->position_count, key_hash, j.keys))
         s = out_of_memory(file, err);
-    for (size_t t = 0; !s && t < nt; t++)
-        for (int k = 0; !s && k < 3 && !is_smooth(smooth, t); k++)
+    /* The faces with normals, those between the ones listed as smooth. */
+    for (size_t t = 0, n = 0; !s && t < nt; t++) {
+        if (n < smooth_count && smooth[n] == t) {
+            n++;
+            continue;
+        }
+        for (int k = 0; !s && k < 3; k++)
             s = join(&j, t, k, m->normals + 3 * (size_t)m->corners[m->triangles[3 * t + k]].vn);
+    }
     if (!s)
         s = crease_normals(m->positions, m->position_count, at, smooth_count, crease, join_generated, &j, file, err);
     free(at);
     free(weld);
     free(smooth);
+    free(j.last);
     id_table_free(&j.index);
     if (!s)
         s = fill_joined(&j, out);

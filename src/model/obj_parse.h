@@ -33,7 +33,9 @@ typedef struct obj_parser {
     uint32_t *face;           /* the corner ids of the face being read */
     uint32_t *face_at;        /* and their positions */
     size_t face_cap;
-    obj_corner *resolved;     /* a face parsed ahead, its corners resolved before any is entered */
+    int32_t *raw;             /* a plain face's indices as written (obj_scan_plain_face) */
+    size_t raw_cap;
+    obj_corner *resolved;     /* a face's corners resolved before any is entered (obj_raw_face) */
     size_t resolved_cap;
     uint32_t *split;          /* its triangles as corner numbers */
     size_t split_cap;
@@ -98,6 +100,18 @@ typedef struct raw_corner {
  * parsing ahead may call it. */
 bool obj_scan_corner(scan_line *l, raw_corner *rc);
 
+/* Reads the rest of line l as a plain face, the form nearly every file
+ * writes: at least 3 corners of one form, each index an optional sign and
+ * 1 to 9 digits but not 0, with blanks between them. Appends their indices
+ * as written to (*raw)[*count ...], 3 per corner and 0 for a part a corner
+ * lacks, growing *raw (room *cap) with array_reserve; sets *form, moves to
+ * the line's end and returns the corners' count. Returns 0, with l and
+ * *count unchanged, for any other line (which obj_scan_corner then reads
+ * corner by corner), and -1 when memory runs out. A line break ends the
+ * line too, as for scan_plain_numbers. Touches nothing but its arguments,
+ * so threads parsing ahead may call it. */
+long obj_scan_plain_face(scan_line *l, int32_t **raw, size_t *count, size_t *cap, unsigned *form);
+
 /* An index as written made absolute among the `count` items read so far:
  * false when it names none of them. (Inline: every corner of a large file
  * parsed ahead passes here.) */
@@ -122,16 +136,57 @@ glint_status obj_read_corner(obj_parser *r, scan_line *l, scan_pos at, obj_corne
 glint_status obj_corner_id(obj_parser *r, const scan_line *l, scan_pos at, const obj_corner *c, uint32_t *id,
                            glint_error *err);
 
+/* The difference of a corner's index of a part from its vertex index, or
+ * INT64_MIN when it lacks the part. */
+static inline int64_t obj_part_offset(int32_t index, int32_t v)
+{
+    return index < 0 ? INT64_MIN : (int64_t)index - v;
+}
+
+/* obj_corner_id's quick case, inline, as nearly every corner of a large
+ * file is one: the id of a corner already entered that is related to its
+ * vertex as the first corner read was. False when obj_corner_id is to find
+ * the id. */
+static inline bool obj_corner_known(const obj_parser *r, const obj_corner *c, uint32_t *id)
+{
+    if ((size_t)c->v >= r->by_vertex_len || r->by_vertex[c->v] == UINT32_MAX ||
+        obj_part_offset(c->vt, c->v) != r->relation[0] || obj_part_offset(c->vn, c->v) != r->relation[1])
+        return false;
+    *id = r->by_vertex[c->v];
+    return true;
+}
+
 /* ------------------------------------------------- obj_statement.c */
 
-/* The statement the word [w, w + n) starts. */
-obj_keyword obj_keyword_of(const char *w, size_t n);
+/* The statement the word [w, w + n) starts. (Inline: it is asked of every
+ * line.) */
+static inline obj_keyword obj_keyword_of(const char *w, size_t n)
+{
+    if (n == 1 && w[0] == 'v')
+        return KEY_V;
+    if (n == 1 && w[0] == 'f')
+        return KEY_F;
+    if (n == 2 && w[0] == 'v' && w[1] == 'n')
+        return KEY_VN;
+    if (n == 2 && w[0] == 'v' && w[1] == 't')
+        return KEY_VT;
+    if (scan_word_is(w, n, "usemtl"))
+        return KEY_USEMTL;
+    if (scan_word_is(w, n, "mtllib"))
+        return KEY_MTLLIB;
+    return KEY_OTHER;
+}
 
 /* The part a v, vt or vn statement adds. */
 static inline obj_part obj_item_part(obj_keyword k)
 {
     return k == KEY_V ? PART_V : k == KEY_VT ? PART_VT : PART_VN;
 }
+
+/* Reads the rest of l as the plain numbers (scan_plain_numbers) of a v, vt
+ * or vn statement (`what`) into item, as obj_parse_item would; false, l
+ * unchanged, for any other text. Touches nothing but l and item. */
+bool obj_plain_item(scan_line *l, obj_part what, float item[3]);
 
 /* Reads the numbers of a v, vt or vn statement (`what`), whose keyword is
  * at `at`, as the item it adds: x y z, u and glint's v, or x y z. Touches
@@ -141,6 +196,15 @@ glint_status obj_parse_item(scan_line *l, scan_pos at, obj_part what, float item
 /* Appends an item of part `what` to the model's positions, uvs or normals;
  * false when memory runs out. The count is below MODEL_MAX_COUNT. */
 bool obj_add_item(obj_model *m, obj_part what, const float item[3]);
+
+/* Enters the face of n corners of form `form` read on l at `at`, whose
+ * indices as written are raw[3k], raw[3k + 1], raw[3k + 2] (0 for a part a
+ * corner lacks; obj_scan_plain_face). False, with nothing changed, when an
+ * index names no item read so far or the face could pass a limit: the line
+ * is then to be read corner by corner, for its message. Otherwise true,
+ * with *s the outcome (which fails only for memory). */
+bool obj_raw_face(obj_parser *r, const scan_line *l, scan_pos at, const int32_t *raw, size_t n, unsigned form,
+                  glint_status *s, glint_error *err);
 
 /* Room for n corners in r->face and r->face_at. */
 bool obj_face_room(obj_parser *r, size_t n);

@@ -233,6 +233,7 @@ static glint_status read_all(obj_model *m, source *src, const char *file, int th
     id_table_free(&r.name_index);
     free(r.face);
     free(r.face_at);
+    free(r.raw);
     free(r.resolved);
     free(r.split);
     triangulate_free(&r.work);

@@ -18,16 +18,41 @@ static float finite_or_zero(double x)
     return isfinite(f) ? f : 0.0f;
 }
 
+/* What each part's statement holds. */
+static const struct {
+    const char *keyword, *needs;
+    int least, most;
+} kinds[] = {
+    {"v", "at least 3 numbers (x y z)", 3, INT32_MAX},
+    {"vt", "1 to 3 numbers (u [v [w]])", 1, 3},
+    {"vn", "3 numbers (x y z)", 3, 3},
+};
+
+/* The item of part `what` from the numbers read. */
+static void item_of(obj_part what, double c[3], float item[3])
+{
+    for (int k = 0; k < 3; k++)
+        item[k] = (float)c[k];
+    if (what == PART_VT)
+        c[1] = 1 - c[1]; /* OBJ's v = 0 is the image's bottom row, glint's its top */
+    for (int k = 0; what != PART_V && k < 3; k++)
+        item[k] = finite_or_zero(c[k]);
+}
+
+bool obj_plain_item(scan_line *l, obj_part what, float item[3])
+{
+    /* Plain numbers are finite floats: a vertex needs no check. */
+    double c[3] = {0, 0, 0};
+    if (scan_plain_numbers(l, c, kinds[what].least, 3) < 0)
+        return false;
+    item_of(what, c, item);
+    return true;
+}
+
 glint_status obj_parse_item(scan_line *l, scan_pos at, obj_part what, float item[3], glint_error *err)
 {
-    static const struct {
-        const char *keyword, *needs;
-        int least, most;
-    } kinds[] = {
-        {"v", "at least 3 numbers (x y z)", 3, INT32_MAX},
-        {"vt", "1 to 3 numbers (u [v [w]])", 1, 3},
-        {"vn", "3 numbers (x y z)", 3, 3},
-    };
+    if (obj_plain_item(l, what, item))
+        return GLINT_OK;
     double c[3] = {0, 0, 0};
     scan_pos where[3];
     int n = scan_numbers(l, c, where, 3, err);
@@ -35,29 +60,32 @@ glint_status obj_parse_item(scan_line *l, scan_pos at, obj_part what, float item
         return GLINT_ERR_INVALID;
     if (n < kinds[what].least || n > kinds[what].most)
         return scan_error(l, at, err, "'%s' needs %s, got %d", kinds[what].keyword, kinds[what].needs, n);
-    for (int k = 0; k < 3; k++)
-        item[k] = (float)c[k];
     for (int k = 0; what == PART_V && k < 3; k++)
-        if (!isfinite(item[k]))
-            return scan_error(l, where[k], err, "a vertex is not finite (%g %g %g)", item[0], item[1], item[2]);
-    if (what == PART_VT)
-        c[1] = 1 - c[1]; /* OBJ's v = 0 is the image's bottom row, glint's its top */
-    for (int k = 0; what != PART_V && k < 3; k++)
-        item[k] = finite_or_zero(c[k]);
+        if (!isfinite((float)c[k]))
+            return scan_error(l, where[k], err, "a vertex is not finite (%g %g %g)", (float)c[0], (float)c[1],
+                              (float)c[2]);
+    item_of(what, c, item);
     return GLINT_OK;
+}
+
+/* Appends the `floats` floats of item to *items, of which there are
+ * *count, with room for *cap. */
+static bool append(float **items, size_t *count, size_t *cap, size_t floats, const float *item)
+{
+    if (!array_reserve((void **)items, cap, *count + 1, floats * sizeof(float)))
+        return false;
+    memcpy(*items + floats * *count, item, floats * sizeof(float));
+    ++*count;
+    return true;
 }
 
 bool obj_add_item(obj_model *m, obj_part what, const float item[3])
 {
-    float **items[] = {&m->positions, &m->uvs, &m->normals};
-    size_t *counts[] = {&m->position_count, &m->uv_count, &m->normal_count};
-    size_t *caps[] = {&m->position_cap, &m->uv_cap, &m->normal_cap};
-    size_t floats = what == PART_VT ? 2 : 3, *count = counts[what];
-    if (!array_reserve((void **)items[what], caps[what], *count + 1, floats * sizeof(float)))
-        return false;
-    memcpy(*items[what] + floats * *count, item, floats * sizeof(float));
-    ++*count;
-    return true;
+    if (what == PART_V)
+        return append(&m->positions, &m->position_count, &m->position_cap, 3, item);
+    if (what == PART_VT)
+        return append(&m->uvs, &m->uv_count, &m->uv_cap, 2, item);
+    return append(&m->normals, &m->normal_count, &m->normal_cap, 3, item);
 }
 
 /* Reads a v, vt or vn statement (`what`), whose keyword is at `at`, and
@@ -73,23 +101,25 @@ static glint_status read_item(obj_parser *r, scan_line *l, scan_pos at, obj_part
     return obj_add_item(r->m, what, item) ? GLINT_OK : obj_out_of_memory(r, err);
 }
 
-static glint_status add_triangle(obj_parser *r, const scan_line *l, scan_pos at, uint32_t a, uint32_t b,
-                                 uint32_t c, glint_error *err)
+/* Adds the `count` triangles of the face in r->face whose corners are
+ * r->face[tri[3t]], r->face[tri[3t + 1]] and r->face[tri[3t + 2]]. */
+static glint_status add_triangles(obj_parser *r, const scan_line *l, scan_pos at, const uint32_t *tri, size_t count,
+                                  glint_error *err)
 {
     obj_model *m = r->m;
-    if (m->triangle_count >= MODEL_MAX_COUNT)
+    if (m->triangle_count + count > MODEL_MAX_COUNT)
         return obj_too_many(l, at, "triangles", err);
-    if (!array_reserve((void **)&m->triangles, &m->triangle_cap, m->triangle_count + 1, 3 * sizeof(uint32_t)))
+    if (!array_reserve((void **)&m->triangles, &m->triangle_cap, m->triangle_count + count, 3 * sizeof(uint32_t)))
         return obj_out_of_memory(r, err);
     if (m->run_count == 0 || m->runs[m->run_count - 1].material != r->material) {
         if (!array_reserve((void **)&m->runs, &m->run_cap, m->run_count + 1, sizeof *m->runs))
             return obj_out_of_memory(r, err);
         m->runs[m->run_count++] = (obj_run){(uint32_t)m->triangle_count, r->material};
     }
-    uint32_t *t = m->triangles + 3 * m->triangle_count++;
-    t[0] = a;
-    t[1] = b;
-    t[2] = c;
+    uint32_t *t = m->triangles + 3 * m->triangle_count;
+    for (size_t i = 0; i < 3 * count; i++)
+        t[i] = r->face[tri[i]];
+    m->triangle_count += count;
     return GLINT_OK;
 }
 
@@ -103,19 +133,46 @@ static const char *form_text(unsigned form)
 glint_status obj_add_face(obj_parser *r, const scan_line *l, scan_pos at, size_t n, unsigned form,
                           glint_error *err)
 {
+    static const uint32_t triangle[3] = {0, 1, 2};
     obj_model *m = r->m;
-    glint_status s = GLINT_OK;
     m->generate |= !(form & 1u << PART_VN);
     m->textured |= (form & 1u << PART_VT) != 0;
     if (n == 3)
-        return add_triangle(r, l, at, r->face[0], r->face[1], r->face[2], err);
+        return add_triangles(r, l, at, triangle, 1, err);
     if (!array_reserve((void **)&r->split, &r->split_cap, 3 * (n - 2), sizeof *r->split) ||
         !triangulate_polygon(&r->work, m->positions, r->face_at, n, r->split))
         return obj_out_of_memory(r, err);
-    for (size_t t = 0; !s && t < n - 2; t++)
-        s = add_triangle(r, l, at, r->face[r->split[3 * t]], r->face[r->split[3 * t + 1]],
-                         r->face[r->split[3 * t + 2]], err);
-    return s;
+    return add_triangles(r, l, at, r->split, n - 2, err);
+}
+
+bool obj_raw_face(obj_parser *r, const scan_line *l, scan_pos at, const int32_t *raw, size_t n, unsigned form,
+                  glint_status *s, glint_error *err)
+{
+    obj_model *m = r->m;
+    if (m->corner_count + n >= MODEL_MAX_COUNT || m->triangle_count + n >= MODEL_MAX_COUNT)
+        return false;
+    if (!obj_face_room(r, n) || !array_reserve((void **)&r->resolved, &r->resolved_cap, n, sizeof *r->resolved)) {
+        *s = obj_out_of_memory(r, err);
+        return true;
+    }
+    /* Every corner has a vertex. */
+    for (size_t k = 0; k < n; k++) {
+        const int32_t *written = raw + 3 * k;
+        obj_corner *c = &r->resolved[k];
+        c->vt = c->vn = -1;
+        if (!obj_absolute_index(written[PART_V], m->position_count, &c->v) ||
+            ((form & 1u << PART_VT) && !obj_absolute_index(written[PART_VT], m->uv_count, &c->vt)) ||
+            ((form & 1u << PART_VN) && !obj_absolute_index(written[PART_VN], m->normal_count, &c->vn)))
+            return false;
+    }
+    for (size_t k = 0; k < n; k++) {
+        r->face_at[k] = (uint32_t)r->resolved[k].v;
+        if (!obj_corner_known(r, &r->resolved[k], &r->face[k]) &&
+            (*s = obj_corner_id(r, l, at, &r->resolved[k], &r->face[k], err)))
+            return true;
+    }
+    *s = obj_add_face(r, l, at, n, form, err);
+    return true;
 }
 
 bool obj_face_room(obj_parser *r, size_t n)
@@ -127,9 +184,18 @@ bool obj_face_room(obj_parser *r, size_t n)
 
 static glint_status read_face(obj_parser *r, scan_line *l, scan_pos at, glint_error *err)
 {
+    const char *start = l->p;
     size_t n = 0;
     unsigned first_form = 0;
     glint_status s = GLINT_OK;
+    long plain = obj_scan_plain_face(l, &r->raw, &n, &r->raw_cap, &first_form);
+    if (plain < 0)
+        return obj_out_of_memory(r, err);
+    if (plain > 0 && obj_raw_face(r, l, at, r->raw, (size_t)plain, first_form, &s, err))
+        return s;
+    /* Corner by corner, each checked as it is read, for the messages. */
+    l->p = start;
+    n = 0;
     while (!s && scan_more(l)) {
         scan_pos here = scan_here(l);
         obj_corner c;
@@ -219,23 +285,6 @@ static glint_status read_mtllib(obj_parser *r, scan_line *l, scan_pos at, glint_
     if (!s)
         m->libraries[m->library_count++] = offset;
     return s;
-}
-
-obj_keyword obj_keyword_of(const char *w, size_t n)
-{
-    if (n == 1 && w[0] == 'v')
-        return KEY_V;
-    if (n == 1 && w[0] == 'f')
-        return KEY_F;
-    if (n == 2 && w[0] == 'v' && w[1] == 'n')
-        return KEY_VN;
-    if (n == 2 && w[0] == 'v' && w[1] == 't')
-        return KEY_VT;
-    if (scan_word_is(w, n, "usemtl"))
-        return KEY_USEMTL;
-    if (scan_word_is(w, n, "mtllib"))
-        return KEY_MTLLIB;
-    return KEY_OTHER;
 }
 
 glint_status obj_statement(obj_parser *r, scan_line *l, glint_error *err)

@@ -16,29 +16,12 @@
 /* Exponents beyond this are infinity or zero whatever the digits. */
 #define MAX_EXPONENT 100000
 
-/* Classes of bytes, looked up once each in the inner loops. */
-enum {
-    BLANK = 1,                /* space, tab, CR, VT, FF */
-    DIGIT = 2,
-    STOP = 4                  /* may end a word: a blank, or the backslash of a continuation */
+const unsigned char scan_class[256] = {
+    [' '] = SCAN_BLANK | SCAN_STOP, ['\t'] = SCAN_BLANK | SCAN_STOP, ['\r'] = SCAN_BLANK | SCAN_STOP,
+    ['\v'] = SCAN_BLANK | SCAN_STOP, ['\f'] = SCAN_BLANK | SCAN_STOP, ['\\'] = SCAN_STOP,
+    ['0'] = SCAN_DIGIT, ['1'] = SCAN_DIGIT, ['2'] = SCAN_DIGIT, ['3'] = SCAN_DIGIT, ['4'] = SCAN_DIGIT,
+    ['5'] = SCAN_DIGIT, ['6'] = SCAN_DIGIT, ['7'] = SCAN_DIGIT, ['8'] = SCAN_DIGIT, ['9'] = SCAN_DIGIT,
 };
-
-static const unsigned char classes[256] = {
-    [' '] = BLANK | STOP, ['\t'] = BLANK | STOP, ['\r'] = BLANK | STOP, ['\v'] = BLANK | STOP,
-    ['\f'] = BLANK | STOP, ['\\'] = STOP,
-    ['0'] = DIGIT, ['1'] = DIGIT, ['2'] = DIGIT, ['3'] = DIGIT, ['4'] = DIGIT,
-    ['5'] = DIGIT, ['6'] = DIGIT, ['7'] = DIGIT, ['8'] = DIGIT, ['9'] = DIGIT,
-};
-
-static bool is_blank(char c)
-{
-    return classes[(unsigned char)c] & BLANK;
-}
-
-static bool is_digit(char c)
-{
-    return classes[(unsigned char)c] & DIGIT;
-}
 
 /* Length of the continuation at p ("\\\n" or "\\\r\n"), or 0. */
 static size_t continuation(const char *p, const char *end)
@@ -56,7 +39,7 @@ static size_t continuation(const char *p, const char *end)
 static bool has_comment(const char *s, const char *e)
 {
     for (const char *p = s; p < e; p++)
-        if (*p == '#' && (p == s || is_blank(p[-1])))
+        if (*p == '#' && (p == s || scan_is_blank(p[-1])))
             return true;
     return false;
 }
@@ -95,7 +78,7 @@ bool scan_more(scan_line *l)
 {
     while (l->p < l->end) {
         size_t c;
-        if (is_blank(*l->p)) {
+        if (scan_is_blank(*l->p)) {
             l->p++;
         } else if ((c = continuation(l->p, l->end)) != 0) {
             l->p += c;
@@ -117,14 +100,14 @@ scan_pos scan_here(const scan_line *l)
 
 bool scan_at_break(const scan_line *l, const char *p)
 {
-    return p >= l->end || is_blank(*p) || continuation(p, l->end) != 0;
+    return p >= l->end || scan_is_blank(*p) || continuation(p, l->end) != 0;
 }
 
 const char *scan_word(scan_line *l, size_t *len)
 {
     const char *s = l->p;
     for (;;) {
-        while (l->p < l->end && !(classes[(unsigned char)*l->p] & STOP))
+        while (l->p < l->end && !(scan_class[(unsigned char)*l->p] & SCAN_STOP))
             l->p++;
         if (scan_at_break(l, l->p))
             break;
@@ -179,13 +162,13 @@ bool scan_rest(scan_line *l, const char **s, const char **e)
         return false;
     const char *start = l->p, *stop = l->end;
     for (const char *p = start + 1; p < l->end; p++)
-        if (*p == '#' && (is_blank(p[-1]) || p[-1] == '\n')) {
+        if (*p == '#' && (scan_is_blank(p[-1]) || p[-1] == '\n')) {
             stop = p;
             break;
         }
     /* Trailing blanks, and continuations with only blanks after them. */
     for (;;) {
-        while (stop > start && is_blank(stop[-1]))
+        while (stop > start && scan_is_blank(stop[-1]))
             stop--;
         if (stop > start && stop[-1] == '\n')
             stop -= stop - 1 > start && stop[-2] == '\r' ? 3 : 2;
@@ -289,8 +272,58 @@ static double slow_decimal(const char *s, const char *stop)
     return strtod(buf, NULL);
 }
 
+/* Reads a plain decimal at s, before end, the form nearly every file
+ * writes: an optional sign, then digits with an optional '.', at least one
+ * digit and at most 19 in all, worth at most 2^53 as an integer, and no
+ * exponent after them. Returns the first byte after it, with *out set to
+ * what scan_decimal gives (one exact division), or NULL for anything else,
+ * for scan_decimal to read. */
+static inline const char *plain_decimal(const char *s, const char *end, double *out)
+{
+    static const double powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,
+                                    1e10, 1e11, 1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19};
+    const char *p = s;
+    bool negative = p < end && *p == '-';
+    p += p < end && (*p == '-' || *p == '+');
+    const char *whole = p;
+    /* 19 digits fit in 64 bits; more make the sum wrap, and are refused. */
+    uint64_t mantissa = 0;
+    for (unsigned d; p < end && (d = (unsigned char)*p - '0') < 10; p++)
+        mantissa = mantissa * 10 + d;
+    size_t digits = (size_t)(p - whole), fraction = 0;
+    if (p < end && *p == '.') {
+        const char *first = ++p;
+        for (unsigned d; p < end && (d = (unsigned char)*p - '0') < 10; p++)
+            mantissa = mantissa * 10 + d;
+        fraction = (size_t)(p - first);
+        digits += fraction;
+    }
+    if (digits == 0 || digits > 19 || mantissa > (1ULL << 53) || (p < end && (*p == 'e' || *p == 'E')))
+        return NULL;
+    /* Both operands are exact doubles: one correctly rounded division. */
+    double x = (double)mantissa / powers[fraction];
+    *out = negative ? -x : x;
+    return p;
+}
+
+int scan_plain_numbers(scan_line *l, double *out, int least, int most)
+{
+    const char *p = l->p, *end = l->end;
+    int n = 0;
+    while (scan_plain_start(p = scan_skip_blanks(p, end), end))
+        if (n == most || !(p = plain_decimal(p, end, &out[n++])) || !scan_plain_stop(p, end))
+            return -1;
+    if (n < least)
+        return -1;
+    l->p = p;
+    return n;
+}
+
 const char *scan_decimal(const char *s, const char *end, double *out)
 {
+    const char *plain = plain_decimal(s, end, out);
+    if (plain)
+        return plain;
     static const double powers[] = {1e0,  1e1,  1e2,  1e3,  1e4,  1e5,  1e6,  1e7,  1e8,  1e9,  1e10, 1e11,
                                     1e12, 1e13, 1e14, 1e15, 1e16, 1e17, 1e18, 1e19, 1e20, 1e21, 1e22};
     const char *p = s;
@@ -304,7 +337,7 @@ const char *scan_decimal(const char *s, const char *end, double *out)
     bool exact = true;        /* false once a digit is dropped */
     while (p < end && *p == '0')
         p++;
-    for (; p < end && is_digit(*p); p++) {
+    for (; p < end && scan_is_digit(*p); p++) {
         if (kept < 19) {
             mantissa = mantissa * 10 + (uint64_t)(*p - '0');
             kept++;
@@ -318,7 +351,7 @@ const char *scan_decimal(const char *s, const char *end, double *out)
         if (mantissa == 0)
             for (; p < end && *p == '0'; p++)
                 exponent--;
-        for (; p < end && is_digit(*p); p++) {
+        for (; p < end && scan_is_digit(*p); p++) {
             if (kept < 19) {
                 mantissa = mantissa * 10 + (uint64_t)(*p - '0');
                 kept++;
@@ -340,9 +373,9 @@ const char *scan_decimal(const char *s, const char *end, double *out)
         bool minus = false;
         if (q < end && (*q == '+' || *q == '-'))
             minus = *q++ == '-';
-        if (q < end && is_digit(*q)) {
+        if (q < end && scan_is_digit(*q)) {
             long e = 0;
-            for (; q < end && is_digit(*q); q++)
+            for (; q < end && scan_is_digit(*q); q++)
                 e = e < MAX_EXPONENT ? e * 10 + (*q - '0') : e;
             exponent += minus ? -e : e;
             p = q;

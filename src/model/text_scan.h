@@ -16,6 +16,28 @@ typedef struct scan_span {
     long rows;                /* physical lines it spans */
 } scan_span;
 
+/* Classes of bytes, looked up once each in the inner loops. */
+enum {
+    SCAN_BLANK = 1,           /* space, tab, CR, VT, FF */
+    SCAN_DIGIT = 2,
+    SCAN_STOP = 4             /* may end a word: a blank, or the backslash of a continuation */
+};
+
+/* The class bits of each byte. */
+extern const unsigned char scan_class[256];
+
+/* True when c is a blank: space, tab, CR, VT or FF. */
+static inline bool scan_is_blank(char c)
+{
+    return scan_class[(unsigned char)c] & SCAN_BLANK;
+}
+
+/* True when c is a decimal digit. */
+static inline bool scan_is_digit(char c)
+{
+    return scan_class[(unsigned char)c] & SCAN_DIGIT;
+}
+
 /* Finds the logical line starting at `start` among the bytes before `end`.
  * A backslash right before a line break continues the line, except on a
  * line with a comment. Returns false when the line has no break before
@@ -95,6 +117,41 @@ bool scan_keep_text(char **text, size_t *len, size_t *cap, const char *s, const 
  * significant digits worth at most 2^53 with a power of ten up to 22 are
  * exact in one multiplication or division; anything else goes to strtod. */
 const char *scan_decimal(const char *s, const char *end, double *out);
+
+/* For the plain readers: the first byte from p on that is not a blank, or
+ * end. */
+static inline const char *scan_skip_blanks(const char *p, const char *end)
+{
+    while (p < end && scan_is_blank(*p))
+        p++;
+    return p;
+}
+
+/* For the plain readers: true when a word starts at p, after blanks: p is
+ * before end and not at a line break. */
+static inline bool scan_plain_start(const char *p, const char *end)
+{
+    return p < end && *p != '\n';
+}
+
+/* For the plain readers: true when a word ending at p ends there as a
+ * plain one, at end, a blank or a line break. */
+static inline bool scan_plain_stop(const char *p, const char *end)
+{
+    return p == end || scan_is_blank(*p) || *p == '\n';
+}
+
+/* Reads the rest of the line as `least` to `most` plain decimals between
+ * blanks, the form nearly every file writes (an optional sign, then digits
+ * with an optional '.', at least one digit and at most 19 in all, worth
+ * at most 2^53 as an integer, no exponent), into out, as scan_decimal
+ * reads them, and moves to the line's end; returns how many there were.
+ * Returns -1, l unchanged, when the rest of the line is anything else (a
+ * continuation, a comment, another word or number form, or too few or
+ * many): then scan_numbers is to read it. A line break ends the line too,
+ * at which l->p then stops: a caller may set l->end to the end of the text
+ * and find the line's end so. */
+int scan_plain_numbers(scan_line *l, double *out, int least, int most);
 
 /* Writes at most 24 bytes of the word [s, s + len) into out for a message,
  * each byte that is not printable as '?', and "..." when it is cut. */

@@ -24,6 +24,7 @@
 
 #include "glint.h"
 #include "tmp_tree.h"
+#include "model/corner_angle.h"
 #include "model/obj_read.h"
 #include "model/text_scan.h"
 #include "model/triangulate.h"
@@ -785,6 +786,43 @@ static void test_scan_decimal_random(void **state)
     }
 }
 
+/* corner_angle is (float)atan2 bit for bit: at random, near the eighths
+ * its tangent is reduced to, and at zeros, signs and extremes. */
+static void test_corner_angle(void **state)
+{
+    uint64_t seed = 88172645463325252ULL;
+    for (int i = 0; i < 400000; i++) {
+        double r[2];
+        for (int k = 0; k < 2; k++) {
+            seed ^= seed << 13;
+            seed ^= seed >> 7;
+            seed ^= seed << 17;
+            r[k] = (double)(seed >> 11) * 0x1p-53;
+        }
+        double y = ldexp(r[0], (int)(seed % 64) - 32), x = ldexp(r[1] - 0.5, (int)(seed / 64 % 64) - 32);
+        if (i % 4 == 0) {
+            double t = (double)(seed % 9) / 8 + (r[1] - 0.5) * 1e-9; /* about an eighth */
+            x = i % 8 ? y / t : -y * t;
+        }
+        float got = corner_angle(y, x), want = (float)atan2(y, x);
+        if (memcmp(&got, &want, sizeof got) != 0)
+            fail_msg("corner_angle(%a, %a) is %a, atan2 gives %a", y, x, got, want);
+    }
+    static const double edge[][2] = {
+        {0, 0}, {0, -0.0}, {0, 1}, {0, -1}, {1, 0}, {1, -0.0}, {-0.0, -1}, {-1, 1}, {1e-310, 1}, {1, 1e-310},
+        {5e-324, 5e-324}, {1e308, 1e308}, {1e308, -1e-308}, {0x1p-900, 0x1p-901}, {1, 1}, {1, -1},
+    };
+    for (size_t i = 0; i < sizeof edge / sizeof edge[0]; i++) {
+        float got = corner_angle(edge[i][0], edge[i][1]), want = (float)atan2(edge[i][0], edge[i][1]);
+        if (memcmp(&got, &want, sizeof got) != 0)
+            fail_msg("corner_angle(%a, %a) is %a, atan2 gives %a", edge[i][0], edge[i][1], got, want);
+    }
+    static const double far[][2] = {{INFINITY, 1}, {1, NAN}, {NAN, 1}, {1, -INFINITY}, {INFINITY, INFINITY},
+                                    {-INFINITY, 1}, {NAN, NAN}, {0, NAN}};
+    for (size_t i = 0; i < sizeof far / sizeof far[0]; i++)
+        assert_true(corner_angle(far[i][0], far[i][1]) == 0);
+}
+
 static void test_obj_number_forms(void **state)
 {
     glint_scene *s = new_scene();
@@ -1543,6 +1581,37 @@ static void test_obj_corner_ids_in_order(void **state)
     expect_split_same(text, strlen(text), pieces, sizeof pieces / sizeof pieces[0]);
 }
 
+/* Lines in the plain form most files are written in, which the reader
+ * takes whole, give the model that the same values give spelt so that it
+ * reads them word by word (exponents, continuations, comments, a tenth
+ * digit), in one pass and in pieces parsed ahead. */
+static void test_obj_plain_lines(void **state)
+{
+    static const char plain[] = "v 0.5 -1.25 3\nv -0 1.00000000000001 2\nv 9007199254740992 0.1 .5\n"
+                                "v 1. +7 -0.000000000000000001\nvt 0.25 0.75\nvt 1\nvn 0 0 1\n"
+                                "f 1/1/1 2/2/1 3/1/1\nf -3/-2/-1 +2/2/1 000000004/1/1\nf 1//1 2//1 3//1\n"
+                                "f 4 3 2 1\nf 1/2 2/1 3/2\r\n";
+    static const char worded[] = "v 0.5 -1.25 3e0\nv -0 1.00000000000001 \\\n2\nv 9007199254740992e0 0.1 .5 # x\n"
+                                 "v 1. +7 -1e-18\nvt 25e-2 0.75\nvt 1 # one\nvn 0 0 1 \\\n\n"
+                                 "f 1/1/1 2/2/1 \\\n3/1/1\nf -3/-2/-1 +2/2/1 0000000004/1/1\nf 1//1 2//1 3//1 #\n"
+                                 "f 4 3 2 1 # four\nf 1/2 2/1 \\\r\n3/2\r\n";
+    static const size_t pieces[] = {1, 9, 40};
+    obj_model a, b;
+    glint_error err = {0};
+    assert_int_equal(obj_read_memory_split(&a, (const unsigned char *)plain, strlen(plain), "plain.obj", 1,
+                                           (size_t)1 << 40, &err),
+                     GLINT_OK);
+    assert_int_equal(obj_read_memory_split(&b, (const unsigned char *)worded, strlen(worded), "worded.obj", 1,
+                                           (size_t)1 << 40, &err),
+                     GLINT_OK);
+    assert_int_equal(a.triangle_count, 6);
+    expect_same_model(&a, &b);
+    obj_model_free(&a);
+    obj_model_free(&b);
+    expect_split_same(plain, strlen(plain), pieces, sizeof pieces / sizeof pieces[0]);
+    expect_split_same(worded, strlen(worded), pieces, sizeof pieces / sizeof pieces[0]);
+}
+
 /* A large grid, whole and with an error near its end, in pieces of the
  * sizes real reads use and others. */
 static void test_obj_split_grid(void **state)
@@ -2055,6 +2124,7 @@ int main(void)
         cmocka_unit_test(test_obj_missing_texture),
         cmocka_unit_test(test_scan_decimal_forms),
         cmocka_unit_test(test_scan_decimal_random),
+        cmocka_unit_test(test_corner_angle),
         cmocka_unit_test(test_obj_number_forms),
         cmocka_unit_test(test_obj_index_errors),
         cmocka_unit_test(test_obj_corner_forms),
@@ -2073,6 +2143,7 @@ int main(void)
         cmocka_unit_test(test_obj_chunks),
         cmocka_unit_test(test_obj_split_same),
         cmocka_unit_test(test_obj_split_grid),
+        cmocka_unit_test(test_obj_plain_lines),
         cmocka_unit_test(test_obj_corner_ids_in_order),
         cmocka_unit_test(test_ply_ascii_and_binary),
         cmocka_unit_test(test_stl_ascii_and_binary),
