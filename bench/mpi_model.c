@@ -27,8 +27,8 @@
  * - Every rank's MPI thread loop, one message taken a turn, with the idle
  *   sleeps of src/mpi/backoff.h (20 us doubling to 1 ms, short again only
  *   while a thief awaits its answer), but a pull worker's: it sleeps until
- *   a render thread finishes a tile, or 100 us when its hand is empty or
- *   its link is sending (its sends in flight), else 2 ms. Each message it
+ *   a render thread finishes a tile, or 100 us when its hand is empty,
+ *   else 2 ms. Each message it
  *   sends or takes costs it --message-us, and a tile's pixels are copied
  *   at --copy-gbs (twice on rank 0: out of MPI into the image; once on a
  *   worker, into the message).
@@ -571,7 +571,7 @@ static void follow_turn(simulation *s, int rank, double time)
     bool taken = !r->finished && take_message(s, rank, &t);
     r->busy += t - time;
     r->on_tiles = !r->finished && !sent && !taken && a->plan == SCHEDULE_PULL;
-    bool soon = r->queue.count == 0 || r->send_free > t;
+    bool soon = r->queue.count == 0;
     if (r->on_tiles)
         turn_at(s, rank, t + (soon ? WAIT_SHORT : WAIT_LONG));
     else if (!r->finished)
