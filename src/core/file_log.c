@@ -244,10 +244,12 @@ static bool replayed(uint8_t question, const char *path, answer *out)
         pthread_cond_wait(&log->arrived, &log->lock);
     if (a)
         *out = *a;
-    while (a && out->found && question == ASK_OPEN && log->taken - out->offset < out->status.size &&
-           !log->complete)
+    /* An open's bytes end where the next file's begin in the store. */
+    bool awaits_bytes = a && out->found && question == ASK_OPEN;
+    uint64_t end = awaits_bytes ? out->offset + out->status.size : 0;
+    while (awaits_bytes && log->taken < end && !log->complete)
         pthread_cond_wait(&log->arrived, &log->lock);
-    bool whole = !a || !out->found || question != ASK_OPEN || log->taken - out->offset >= out->status.size;
+    bool whole = log->taken >= end;
     pthread_mutex_unlock(&log->lock);
     if (!a) {
         errno = ENOENT;
