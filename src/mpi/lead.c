@@ -17,6 +17,7 @@
 #include "mpi/backoff.h"
 #include "mpi/lead.h"
 #include "mpi/local_render.h"
+#include "render/film.h"
 
 typedef struct lead {
     MPI_Comm comm;
@@ -205,7 +206,7 @@ glint_status lead_render(MPI_Comm comm, const glint_scene *scene, const glint_re
     }
     for (int r = 0; r < ranks; r++)
         l.stops[r] = MPI_REQUEST_NULL;
-    l.pixels = status ? NULL : calloc((size_t)l.layout.width * (size_t)l.layout.height * 3, sizeof(float));
+    l.pixels = status ? NULL : film_pixels_alloc(l.layout.width, l.layout.height);
     pthread_mutex_init(&l.lock, NULL);
     atomic_init(&l.local_done, 0);
     if (!l.pixels)

@@ -1,16 +1,39 @@
 /* film.c - the image a render fills: allocating and clearing it, and
  * counting and finding the NaN that film.h's rule keeps out of it. Adding
  * samples and writing a block's pixels are inline in film.h. */
+#define _DEFAULT_SOURCE /* madvise */
+#include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/mman.h>
 #include "render/film.h"
+
+/* The huge page size of x86-64 and arm64 kernels with 4 KiB pages. */
+#define HUGE_PAGE ((uintptr_t)2 << 20)
+
+float *film_pixels_alloc(int width, int height)
+{
+    size_t bytes = (size_t)width * (size_t)height * 3 * sizeof(float);
+    float *pixels = calloc(bytes / sizeof(float), sizeof(float));
+    /* An image is written once, page after page, by the render threads:
+     * with 4 KiB pages a 1920x1080 image took 6,000 page faults, 8% of a
+     * one-sample render's time (bench/README.md). calloc leaves a fresh
+     * mapping untouched, so the whole huge pages inside it can still be
+     * asked for; the kernel may refuse (transparent huge pages off), and
+     * nothing else changes. */
+    uintptr_t first = ((uintptr_t)pixels + HUGE_PAGE - 1) & ~(HUGE_PAGE - 1);
+    uintptr_t end = ((uintptr_t)pixels + bytes) & ~(HUGE_PAGE - 1);
+    if (pixels && end > first)
+        madvise((void *)first, end - first, MADV_HUGEPAGE);
+    return pixels;
+}
 
 bool film_init(film *f, int width, int height, int samples)
 {
     f->width = width;
     f->height = height;
     f->samples = samples;
-    f->pixels = calloc((size_t)width * height * 3, sizeof(float));
+    f->pixels = film_pixels_alloc(width, height);
     return f->pixels != NULL;
 }
 

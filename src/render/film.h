@@ -45,6 +45,11 @@ typedef struct film_block {
     int bad[RAY8];
 } film_block;
 
+/* The pixels of a black width x height image, 3 floats each, freed with
+ * free(); NULL when memory runs out. Backed by huge pages where the kernel
+ * allows, as an image is written in full once. */
+float *film_pixels_alloc(int width, int height);
+
 /* A black film of width x height pixels, each to be the average of
  * `samples` samples; false when memory runs out. */
 bool film_init(film *f, int width, int height, int samples);
