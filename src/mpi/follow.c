@@ -1,10 +1,15 @@
 /* follow.c - a glint-mpi worker: tiles asked for, rendered and sent back
  * (follow.h). It asks for a hand of tiles once, and rank 0 sends one more
  * for each tile it sends back (protocol.h), so that its MPI thread need
- * not poll: it sleeps until a render thread finishes a tile. The hand
- * covers HOLD_NS of rendering at the time its tiles have taken so far (at
- * least four a thread), more than rank 0's longest wait to answer
- * (backoff.h); it asks for more when its tiles turn out faster. */
+ * not poll: it sleeps until its render threads have finished half its
+ * hand, and sends those tiles in one message. The hand covers HOLD_NS of
+ * rendering at the time its tiles have taken so far (at least four a
+ * thread), so that the half left covers rank 0's longest wait to answer
+ * (backoff.h) twice; it asks for more when its tiles turn out faster.
+ *
+ * Waking for each tile, and a message for each, took a worker's core from
+ * its render thread 1,500 times in a 0.25 s render of the 1920x1080 bunny
+ * (its MPI thread shares its core); 180 times now (bench/README.md). */
 #include <mpi.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -18,24 +23,25 @@
 /* The rendering a worker's hand covers: four of rank 0's longest sleeps. */
 #define HOLD_NS (4 * BACKOFF_MAX_NS)
 
-/* How long the MPI thread sleeps waiting for a finished tile: short while
- * the hand is empty (tiles on their way), long otherwise (to see a STOP).
- * Sends in flight move on at the next finished tile: waking every 100 us
- * for them cost the render thread on its core 6% of the time (bunny and
- * seed room, 2 ranks on 2 cores, bench/README.md). */
+/* How long the MPI thread sleeps waiting for finished tiles: short while
+ * the hand is empty (tiles on their way) or once rank 0 has no more (each
+ * tile then goes at once), long otherwise (to see a STOP). Sends in flight
+ * move on at the next message: waking every 100 us for them cost the
+ * render thread on its core 6% of the time (bunny and seed room, 2 ranks
+ * on 2 cores, bench/README.md). */
 #define WAIT_SHORT_NS 100000L
 #define WAIT_LONG_NS 2000000L
 
-/* The most finished tiles on their way to rank 0 at once. */
+/* The most messages of finished tiles on their way to rank 0 at once. */
 #define SENDS_IN_FLIGHT 16
 
 typedef struct follower {
     render_layout layout;
     tile_queue queue;
     tile_outbox outbox;
-    /* The tiles being sent, each kept until its send completes. */
+    /* The messages being sent, each kept until its send completes. */
     MPI_Request sends[SENDS_IN_FLIGHT];
-    tile_message *sending[SENDS_IN_FLIGHT]; /* NULL: a free slot */
+    unsigned char *sending[SENDS_IN_FLIGHT]; /* NULL: a free slot */
     int in_flight;
     int finished;             /* tiles taken from the outbox to send */
     volatile int stop;        /* the render's cancel flag */
@@ -53,14 +59,15 @@ static void follow_done(void *user, int tile, const float *pixels, size_t stride
     tile_outbox_put(&f->outbox, &f->layout, tile, pixels, stride);
 }
 
-/* Frees the tiles whose sends completed and starts sending the finished
- * tiles waiting, as many as there are free slots; whether anything
- * happened. The sends do not block: OpenMPI's blocking send of a tile
- * spins until rank 0 takes it, which took a worker's core from its render
- * threads for a third of the time (seed room, 2 ranks x 1 thread). */
+/* Frees the messages whose sends completed and starts sending the
+ * finished tiles waiting, in one message, if a slot is free; whether
+ * anything happened. The sends do not block: OpenMPI's blocking send of a
+ * tile spins until rank 0 takes it, which took a worker's core from its
+ * render threads for a third of the time (seed room, 2 ranks x 1 thread). */
 static bool send_finished(follower *f)
 {
     bool busy = false;
+    int free_slot = -1;
     for (int i = 0; i < SENDS_IN_FLIGHT; i++) {
         if (f->sending[i]) {
             int done = 0;
@@ -72,24 +79,25 @@ static bool send_finished(follower *f)
             f->in_flight--;
             busy = true;
         }
-        tile_message *m = tile_outbox_take(&f->outbox);
-        if (!m)
-            continue;
-        f->sending[i] = m;
-        f->in_flight++;
-        f->finished++;
-        MPI_Isend(m->bytes, (int)m->size, MPI_BYTE, 0, TAG_PIXELS, f->comm, &f->sends[i]);
-        busy = true;
+        free_slot = i;
     }
-    return busy;
+    tile_batch m;
+    if (free_slot < 0 || !tile_outbox_take(&f->outbox, &m))
+        return busy;
+    f->sending[free_slot] = m.bytes;
+    f->in_flight++;
+    f->finished += m.tiles;
+    MPI_Isend(m.bytes, (int)m.size, MPI_BYTE, 0, TAG_PIXELS, f->comm, &f->sends[free_slot]);
+    return true;
 }
 
 /* Once the render has returned: sends every finished tile left, waiting
- * without spinning. With none in flight after send_finished, each free
- * slot found the outbox empty, and nothing adds to it any more. */
+ * without spinning long (the rank's cores are idle now). With none in
+ * flight after send_finished, a free slot found the outbox empty, and
+ * nothing adds to it any more. */
 static void send_rest(follower *f)
 {
-    backoff b = {0};
+    backoff b = {.max_ns = BACKOFF_IDLE_NS};
     for (;;) {
         bool busy = send_finished(f);
         if (f->in_flight == 0)
@@ -152,7 +160,7 @@ rank_report follow_render(MPI_Comm comm, const glint_scene *scene, const glint_r
     tile_outbox_init(&f.outbox);
     bool ready = !render_layout_for(scene, options->tile_size, &f.layout, &err) &&
                  tile_queue_init(&f.queue, 2 * threads + MAX_BATCH);
-    render_feed feed = {.next = follow_next, .done = follow_done, .user = &f};
+    render_feed feed = {.next = follow_next, .done = follow_done, .user = &f, .tiles_only = true};
     own_options.cancel = &f.stop;
     if (ready && local_render_start(&own, scene, &own_options, &feed)) {
         int hand = 0; /* the tiles asked for in all: what rank 0 keeps in this rank's hand */
@@ -178,9 +186,11 @@ rank_report follow_render(MPI_Comm comm, const glint_scene *scene, const glint_r
                 continue;
             if (f.in_flight == SENDS_IN_FLIGHT) {
                 struct timespec ts = {0, WAIT_SHORT_NS};
-                nanosleep(&ts, NULL); /* the outbox may be full: no wait on it */
+                nanosleep(&ts, NULL); /* no slot to send from: no wait on the outbox */
+            } else if (f.queue.closed || tile_queue_count(&f.queue) == 0) {
+                tile_outbox_wait(&f.outbox, 1, WAIT_SHORT_NS);
             } else {
-                tile_outbox_wait(&f.outbox, tile_queue_count(&f.queue) == 0 ? WAIT_SHORT_NS : WAIT_LONG_NS);
+                tile_outbox_wait(&f.outbox, hand / 2 > 1 ? hand / 2 : 1, WAIT_LONG_NS);
             }
         }
         local_render_join(&own);

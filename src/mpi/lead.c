@@ -105,44 +105,71 @@ static void answer_ask(lead *l, int from)
     send_tiles(l, from, want);
 }
 
-/* Takes in a PIXELS message from rank `from` of `size` bytes, into the
- * image; false when it is no tile of the layout (a rank of another build). */
-static bool take_pixels(lead *l, int from, int size, unsigned char *buffer, int capacity)
+/* Where PIXELS messages are received: grown to the largest so far. */
+typedef struct pixels_buffer {
+    unsigned char *bytes;
+    size_t capacity;
+} pixels_buffer;
+
+/* Puts the tiles of a PIXELS message of `size` bytes into the image; how
+ * many, or -1 when they are not whole tiles of the layout (a rank of
+ * another build). */
+static int put_tiles(lead *l, const unsigned char *bytes, size_t size)
 {
-    if (size > capacity) {
+    int tiles = 0;
+    for (size_t at = 0; at < size; tiles++) {
+        tile_header h;
+        if (size - at < sizeof h)
+            return -1;
+        memcpy(&h, bytes + at, sizeof h);
+        at += sizeof h;
+        if (h.tile < 0 || h.tile >= l->layout.tiles_total)
+            return -1;
+        int x0, y0, x1, y1;
+        render_tile_bounds(&l->layout, h.tile, &x0, &y0, &x1, &y1);
+        size_t row = 3 * (size_t)(x1 - x0) * sizeof(float);
+        if ((size - at) / row < (size_t)(y1 - y0))
+            return -1;
+        for (int y = y0; y < y1; y++, at += row)
+            memcpy(l->pixels + 3 * ((size_t)y * (size_t)l->layout.width + (size_t)x0), bytes + at, row);
+    }
+    return tiles;
+}
+
+/* Takes in a PIXELS message from rank `from` of `size` bytes, into the
+ * image; how many tiles it held, or -1 when they are not whole tiles of the
+ * layout or more than a worker holds (a rank of another build), or memory
+ * ran out. */
+static int take_pixels(lead *l, int from, int size, pixels_buffer *in)
+{
+    size_t most = (size_t)MAX_BATCH * (sizeof(tile_header) + 3 * sizeof(float) * (size_t)l->layout.tile_size *
+                                                                (size_t)l->layout.tile_size);
+    if ((size_t)size > in->capacity && (size_t)size <= most) {
+        unsigned char *bigger = realloc(in->bytes, (size_t)size);
+        if (bigger) {
+            in->bytes = bigger;
+            in->capacity = (size_t)size;
+        }
+    }
+    if ((size_t)size > in->capacity) {
         /* Received all the same, so that it is not left pending. */
         unsigned char *big = malloc((size_t)size);
         MPI_Recv(big, big ? size : 0, MPI_BYTE, from, TAG_PIXELS, l->comm, MPI_STATUS_IGNORE);
         free(big);
-        return false;
+        return -1;
     }
-    MPI_Recv(buffer, size, MPI_BYTE, from, TAG_PIXELS, l->comm, MPI_STATUS_IGNORE);
-    tile_header h;
-    if ((size_t)size < sizeof h)
-        return false;
-    memcpy(&h, buffer, sizeof h);
-    if (h.tile < 0 || h.tile >= l->layout.tiles_total)
-        return false;
-    int x0, y0, x1, y1;
-    render_tile_bounds(&l->layout, h.tile, &x0, &y0, &x1, &y1);
-    size_t row = 3 * (size_t)(x1 - x0);
-    if ((size_t)size != sizeof h + row * (size_t)(y1 - y0) * sizeof(float))
-        return false;
-    const unsigned char *from_bytes = buffer + sizeof h;
-    for (int y = y0; y < y1; y++)
-        memcpy(l->pixels + 3 * ((size_t)y * (size_t)l->layout.width + (size_t)x0),
-               from_bytes + row * sizeof(float) * (size_t)(y - y0), row * sizeof(float));
-    l->remote_done++;
-    return true;
+    MPI_Recv(in->bytes, size, MPI_BYTE, from, TAG_PIXELS, l->comm, MPI_STATUS_IGNORE);
+    int tiles = put_tiles(l, in->bytes, (size_t)size);
+    l->remote_done += tiles > 0 ? tiles : 0;
+    return tiles;
 }
 
 /* Serves the other ranks until they have all reported and rank 0's own
  * render has returned; false if a rank sent what no tile is. */
 static bool serve(lead *l, local_render *own, const glint_render_options *options, rank_report *reports)
 {
-    int capacity = (int)sizeof(tile_header) + 3 * (int)sizeof(float) * l->layout.tile_size * l->layout.tile_size;
-    unsigned char *buffer = malloc((size_t)capacity);
-    bool sound = buffer != NULL;
+    pixels_buffer in = {0};
+    bool sound = true;
     int reported = 0, shown = -1;
     backoff b = {0};
     while (reported < l->ranks - 1 || !local_render_finished(own)) {
@@ -155,8 +182,9 @@ static bool serve(lead *l, local_render *own, const glint_render_options *option
             int size = 0;
             MPI_Get_count(&st, MPI_BYTE, &size);
             /* Each tile back is one to send: the rank's hand stays full. */
-            if (take_pixels(l, st.MPI_SOURCE, size, buffer, sound ? capacity : 0))
-                send_tiles(l, st.MPI_SOURCE, 1);
+            int tiles = take_pixels(l, st.MPI_SOURCE, size, &in);
+            if (tiles > 0)
+                send_tiles(l, st.MPI_SOURCE, tiles);
             else
                 sound = false;
         } else if (flag && st.MPI_TAG == TAG_DONE) {
@@ -181,10 +209,11 @@ static bool serve(lead *l, local_render *own, const glint_render_options *option
             options->progress(options->progress_user, done, l->layout.tiles_total);
             shown = done;
         }
+        b.max_ns = local_render_finished(own) ? BACKOFF_IDLE_NS : 0;
         backoff_after(&b, flag);
     }
     MPI_Waitall(l->ranks, l->stops, MPI_STATUSES_IGNORE);
-    free(buffer);
+    free(in.bytes);
     return sound;
 }
 

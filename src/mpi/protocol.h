@@ -3,9 +3,12 @@
  *
  *   rank r -> 0   ASK     int: how many tiles it would like added to its hand
  *   0 -> rank r   TILES   int[n]: tile indices to render: an ASK's answer,
- *                         or one for each PIXELS; n == 0, once: no more
- *   rank r -> 0   PIXELS  a tile_header, then the tile's pixels, 3 floats
- *                         each, row after row (its size from the layout)
+ *                         or one for each tile a PIXELS brought back;
+ *                         n == 0, once: no more
+ *   rank r -> 0   PIXELS  one or more finished tiles (at most MAX_BATCH),
+ *                         each a tile_header, then the tile's pixels, 3
+ *                         floats each, row after row (its size from the
+ *                         layout)
  *   rank r -> 0   DONE    a rank_report, once, after its last PIXELS
  *   0 -> rank r   STOP    nothing: stop rendering now (a signal, or another
  *                         rank failed); sent at most once, maybe after the
@@ -25,7 +28,7 @@
 
 enum mpi_tag { TAG_ASK = 1, TAG_TILES, TAG_PIXELS, TAG_DONE, TAG_STOP };
 
-/* The most tiles one TILES message carries. */
+/* The most tiles one TILES or PIXELS message carries. */
 #define MAX_BATCH 256
 
 /* What precedes a tile's pixels in a PIXELS message. */

@@ -10,17 +10,33 @@ void tile_outbox_init(tile_outbox *b)
 {
     pthread_mutex_init(&b->lock, NULL);
     pthread_cond_init(&b->filled, NULL);
-    b->first = b->last = NULL;
+    b->batch = (tile_batch){0};
+    b->wanted = 1;
     b->failed = false;
 }
 
 void tile_outbox_free(tile_outbox *b)
 {
-    tile_message *m;
-    while ((m = tile_outbox_take(b)) != NULL)
-        free(m);
+    free(b->batch.bytes);
     pthread_cond_destroy(&b->filled);
     pthread_mutex_destroy(&b->lock);
+}
+
+/* Room for `more` bytes at the end of the batch, a new one made for
+ * `tiles` such tiles; false when memory ran out. */
+static bool make_room(tile_batch *t, size_t more, int tiles)
+{
+    if (t->capacity - t->size >= more)
+        return true;
+    size_t capacity = t->capacity ? t->capacity : more * (size_t)(tiles > 1 ? tiles : 1);
+    while (capacity - t->size < more)
+        capacity *= 2;
+    unsigned char *bytes = realloc(t->bytes, capacity);
+    if (!bytes)
+        return false;
+    t->bytes = bytes;
+    t->capacity = capacity;
+    return true;
 }
 
 void tile_outbox_put(tile_outbox *b, const render_layout *l, int tile, const float *pixels, size_t stride)
@@ -28,43 +44,39 @@ void tile_outbox_put(tile_outbox *b, const render_layout *l, int tile, const flo
     int x0, y0, x1, y1;
     render_tile_bounds(l, tile, &x0, &y0, &x1, &y1);
     size_t row = 3 * (size_t)(x1 - x0), size = sizeof(tile_header) + row * (size_t)(y1 - y0) * sizeof(float);
-    tile_message *m = malloc(sizeof *m + size);
-    if (m) {
-        m->next = NULL;
-        m->size = size;
+    /* Packed under the lock: a tile's copy takes a microsecond or two, and
+     * a message grows in place rather than being copied again to send. */
+    pthread_mutex_lock(&b->lock);
+    tile_batch *t = &b->batch;
+    if (make_room(t, size, b->wanted)) {
         tile_header h = {.tile = tile};
-        memcpy(m->bytes, &h, sizeof h);
-        float *out = (float *)(void *)(m->bytes + sizeof h);
+        memcpy(t->bytes + t->size, &h, sizeof h);
+        float *out = (float *)(void *)(t->bytes + t->size + sizeof h);
         for (int y = y0; y < y1; y++)
             memcpy(out + row * (size_t)(y - y0), pixels + stride * (size_t)(y - y0), row * sizeof(float));
-    }
-    pthread_mutex_lock(&b->lock);
-    if (!m)
+        t->size += size;
+        t->tiles++;
+    } else {
         b->failed = true;
-    else if (b->last)
-        b->last->next = m;
-    else
-        b->first = m;
-    if (m)
-        b->last = m;
-    pthread_cond_signal(&b->filled);
+    }
+    if (t->tiles >= b->wanted || b->failed)
+        pthread_cond_signal(&b->filled);
     pthread_mutex_unlock(&b->lock);
 }
 
-tile_message *tile_outbox_take(tile_outbox *b)
+bool tile_outbox_take(tile_outbox *b, tile_batch *out)
 {
     pthread_mutex_lock(&b->lock);
-    tile_message *m = b->first;
-    if (m) {
-        b->first = m->next;
-        if (!b->first)
-            b->last = NULL;
+    bool any = b->batch.tiles > 0;
+    if (any) {
+        *out = b->batch;
+        b->batch = (tile_batch){0};
     }
     pthread_mutex_unlock(&b->lock);
-    return m;
+    return any;
 }
 
-void tile_outbox_wait(tile_outbox *b, long timeout_ns)
+void tile_outbox_wait(tile_outbox *b, int tiles, long timeout_ns)
 {
     struct timespec until;
     clock_gettime(CLOCK_REALTIME, &until);
@@ -72,8 +84,10 @@ void tile_outbox_wait(tile_outbox *b, long timeout_ns)
     until.tv_sec += until.tv_nsec / 1000000000L;
     until.tv_nsec %= 1000000000L;
     pthread_mutex_lock(&b->lock);
-    if (!b->first && !b->failed)
-        pthread_cond_timedwait(&b->filled, &b->lock, &until);
+    b->wanted = tiles;
+    while (b->batch.tiles < tiles && !b->failed)
+        if (pthread_cond_timedwait(&b->filled, &b->lock, &until))
+            break;
     pthread_mutex_unlock(&b->lock);
 }
 

@@ -30,9 +30,7 @@ float *film_pixels_alloc(int width, int height)
 
 bool film_init(film *f, int width, int height, int samples)
 {
-    f->width = width;
-    f->height = height;
-    f->samples = samples;
+    *f = (film){.width = width, .height = height, .samples = samples};
     f->pixels = film_pixels_alloc(width, height);
     return f->pixels != NULL;
 }
@@ -59,7 +57,7 @@ bool film_has_nan(const film *f, int x0, int y0, int x1, int y1)
     mask8 any = {0};
     bool scalar_nan = false;
     for (int y = y0; y < y1; y++) {
-        const float *p = f->pixels + 3 * ((size_t)y * width + (size_t)x0);
+        const float *p = f->pixels + 3 * ((size_t)(y - f->y0) * width + (size_t)(x0 - f->x0));
         size_t k = 0;
         for (; k + 8 <= row; k += 8) {
             floats8 v;
@@ -77,5 +75,6 @@ bool film_has_nan(const film *f, int x0, int y0, int x1, int y1)
 void film_clear(film *f, int x0, int y0, int x1, int y1)
 {
     for (int y = y0; y < y1; y++)
-        memset(f->pixels + 3 * ((size_t)y * f->width + (size_t)x0), 0, 3 * sizeof(float) * (size_t)(x1 - x0));
+        memset(f->pixels + 3 * ((size_t)(y - f->y0) * f->width + (size_t)(x0 - f->x0)), 0,
+               3 * sizeof(float) * (size_t)(x1 - x0));
 }

@@ -35,6 +35,8 @@ typedef struct film {
     float *pixels;            /* width x height pixels of 3 floats, rows from the top; glint_render
                                  hands them to its image, else film_free frees them */
     int width, height;
+    int x0, y0;               /* the image's pixel that pixels[0] is: 0, 0 for an image, a tile's
+                                 corner for a film that holds one tile */
     int samples;              /* samples per pixel */
 } film;
 
@@ -83,7 +85,8 @@ static inline void film_block_add(film_block *b, const bool active[RAY8], const 
     }
 }
 
-/* Writes each active lane's pixel (px[i], py[i]): its sum over the
+/* Writes each active lane's pixel (px[i], py[i]), in the image's
+ * coordinates: its sum over the
  * f->samples samples less those left out, or black when every one was.
  * Inline: as a call into film.c, the pixel positions it is given escaped,
  * and GCC read and converted them again at every sample of the block (seed
@@ -99,7 +102,7 @@ static inline void film_block_put(film *f, const film_block *b, const int px[RAY
         int bad = b->bad[i];
         double k = bad == 0 ? share : bad < samples ? 1.0 / (samples - bad) : 0;
         color avg = rgb_scale(b->sum[i], k);
-        float *p = f->pixels + 3 * ((size_t)py[i] * f->width + px[i]);
+        float *p = f->pixels + 3 * ((size_t)(py[i] - f->y0) * f->width + (px[i] - f->x0));
         p[0] = (float)avg.r;
         p[1] = (float)avg.g;
         p[2] = (float)avg.b;
@@ -110,10 +113,11 @@ static inline void film_block_put(film *f, const film_block *b, const int px[RAY
 uint64_t film_block_nan_samples(const film_block *b);
 
 /* Whether any float of the pixels from x0 to x1 (excluded) on the rows from
- * y0 to y1 is NaN: a whole tile is checked at once, eight floats a step. */
+ * y0 to y1, in the image's coordinates, is NaN: a whole tile is checked at once, eight floats a step. */
 bool film_has_nan(const film *f, int x0, int y0, int x1, int y1);
 
-/* Blackens the pixels from x0 to x1 (excluded) on the rows from y0 to y1:
+/* Blackens the pixels from x0 to x1 (excluded) on the rows from y0 to y1,
+ * in the image's coordinates:
  * a cancelled render's unfinished tiles. */
 void film_clear(film *f, int x0, int y0, int x1, int y1);
 

@@ -36,6 +36,7 @@ typedef struct job {
 
 typedef struct worker {
     job *job;
+    float *tile_pixels;           /* a tile's pixels, when the feed keeps no image */
     int tiles_done;
     uint64_t pixels_done;         /* in the tiles it finished */
     uint64_t rays;
@@ -112,14 +113,14 @@ __attribute__((always_inline)) static inline void trace_samples(tracer *t, const
 
 /* Renders the pixels of the block at (x0, y0) that lie in the image: every
  * sample of the grid as one packet over the block. */
-static void render_block(tracer *t, job *j, int x0, int y0)
+static void render_block(tracer *t, job *j, film *f, int x0, int y0)
 {
     bool active[ACCEL_PACKET];
     int px[ACCEL_PACKET], py[ACCEL_PACKET];
     film_block b;
     block_lanes(j, x0, y0, px, py, active);
     trace_samples(t, j, px, py, active, false, &b);
-    film_block_put(&j->film, &b, px, py, active);
+    film_block_put(f, &b, px, py, active);
 }
 
 /* render_block for a block with a NaN pixel: traced again, the same rays
@@ -129,7 +130,7 @@ static void render_block(tracer *t, job *j, int x0, int y0)
  * `careful` for both cost the common path 1% of the seed room's
  * instructions and 2% of the bunny's, the profile-guided build inlining
  * otherwise; hence the two.) */
-__attribute__((noinline, cold)) static void render_block_leaving_nan(tracer *t, job *j, int x0, int y0,
+__attribute__((noinline, cold)) static void render_block_leaving_nan(tracer *t, job *j, film *f, int x0, int y0,
                                                                      uint64_t *nan_samples)
 {
     bool active[ACCEL_PACKET];
@@ -138,7 +139,7 @@ __attribute__((noinline, cold)) static void render_block_leaving_nan(tracer *t, 
     uint64_t rays = t->rays;
     block_lanes(j, x0, y0, px, py, active);
     trace_samples(t, j, px, py, active, true, &b);
-    film_block_put(&j->film, &b, px, py, active);
+    film_block_put(f, &b, px, py, active);
     t->rays = rays;
     *nan_samples += film_block_nan_samples(&b);
 }
@@ -171,7 +172,8 @@ glint_status render_layout_for(const glint_scene *scene, int tile_size, render_l
     return GLINT_OK;
 }
 
-/* Renders a tile; false if the render was cancelled before it was whole.
+/* Renders a tile into film f; false if the render was cancelled before it
+ * was whole.
  * Tiles are whole blocks: tile_size is a multiple of BLOCK_W and BLOCK_H.
  * The tracer reads the cancel flag at every packet of rays, and a tile it
  * saw the flag in is not whole: what it traced since is black. Here the
@@ -180,7 +182,7 @@ glint_status render_layout_for(const glint_scene *scene, int tile_size, render_l
  *
  * A NaN colour never reaches a pixel (film.h's rule): a tile that shows one
  * renders its blocks that show one again, leaving it out. */
-static bool render_tile(tracer *t, job *j, int tile, uint64_t *nan_samples)
+static bool render_tile(tracer *t, job *j, film *f, int tile, uint64_t *nan_samples)
 {
     int x0, y0, x1, y1;
     render_tile_bounds(&j->layout, tile, &x0, &y0, &x1, &y1);
@@ -188,18 +190,18 @@ static bool render_tile(tracer *t, job *j, int tile, uint64_t *nan_samples)
         for (int x = x0; x < x1; x += BLOCK_W) {
             if (cancelled(j))
                 return false;
-            render_block(t, j, x, y);
+            render_block(t, j, f, x, y);
         }
     }
     if (t->stopped)
         return false;
-    if (!film_has_nan(&j->film, x0, y0, x1, y1))
+    if (!film_has_nan(f, x0, y0, x1, y1))
         return true;
     for (int y = y0; y < y1; y += BLOCK_H) {
         for (int x = x0; x < x1; x += BLOCK_W) {
             int bx = x + BLOCK_W < x1 ? x + BLOCK_W : x1, by = y + BLOCK_H < y1 ? y + BLOCK_H : y1;
-            if (film_has_nan(&j->film, x, y, bx, by))
-                render_block_leaving_nan(t, j, x, y, nan_samples);
+            if (film_has_nan(f, x, y, bx, by))
+                render_block_leaving_nan(t, j, f, x, y, nan_samples);
         }
     }
     return true;
@@ -218,16 +220,22 @@ static void *worker_run(void *arg)
             break;
         int x0, y0, x1, y1;
         render_tile_bounds(l, tile, &x0, &y0, &x1, &y1);
-        if (!render_tile(&t, j, tile, &w->nan_samples)) {
+        film *into = &j->film, own;
+        if (w->tile_pixels) {
+            own = (film){.pixels = w->tile_pixels, .width = x1 - x0, .height = y1 - y0, .x0 = x0, .y0 = y0,
+                         .samples = j->film.samples};
+            into = &own;
+        }
+        if (!render_tile(&t, j, into, tile, &w->nan_samples)) {
             /* What a cancelled tile traced is not its image. */
-            film_clear(&j->film, x0, y0, x1, y1);
+            film_clear(into, x0, y0, x1, y1);
             break;
         }
         w->tiles_done++;
         w->pixels_done += (uint64_t)(x1 - x0) * (uint64_t)(y1 - y0);
         if (f->done)
-            f->done(f->user, tile, j->film.pixels + 3 * ((size_t)y0 * (size_t)l->width + (size_t)x0),
-                    3 * (size_t)l->width);
+            f->done(f->user, tile, into->pixels + 3 * ((size_t)(y0 - into->y0) * (size_t)into->width + (size_t)(x0 - into->x0)),
+                    3 * (size_t)into->width);
         if (j->opts->progress) {
             /* The lock keeps the calls one at a time and their counts in order. */
             pthread_mutex_lock(&j->progress_lock);
@@ -253,17 +261,24 @@ static glint_status run_workers(job *j, int count, worker *sum, glint_error *err
     worker *ws = calloc((size_t)count, sizeof *ws);
     if (!ws)
         return error_set(err, GLINT_ERR_NOMEM, "out of memory starting threads");
-    for (int i = 0; i < count; i++)
+    size_t tile_floats = 3 * (size_t)j->layout.tile_size * (size_t)j->layout.tile_size;
+    bool fits = true;
+    for (int i = 0; i < count; i++) {
         ws[i].job = j;
-    parallel_run(count, worker_run, ws, sizeof *ws);
+        if (j->feed->tiles_only)
+            fits = fits && (ws[i].tile_pixels = malloc(tile_floats * sizeof(float))) != NULL;
+    }
+    if (fits)
+        parallel_run(count, worker_run, ws, sizeof *ws);
     for (int i = 0; i < count; i++) {
         sum->tiles_done += ws[i].tiles_done;
         sum->pixels_done += ws[i].pixels_done;
         sum->rays += ws[i].rays;
         sum->nan_samples += ws[i].nan_samples;
+        free(ws[i].tile_pixels);
     }
     free(ws);
-    return GLINT_OK;
+    return fits ? GLINT_OK : error_set(err, GLINT_ERR_NOMEM, "out of memory for the threads' tiles");
 }
 
 /* Frees the film unless it is the caller's. */
@@ -292,7 +307,7 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
     j.grid = 1;
     while (j.grid * j.grid < s->samples_per_pixel)
         j.grid++;
-    if (feed->pixels) {
+    if (feed->pixels || feed->tiles_only) {
         j.film = (film){.pixels = feed->pixels, .width = s->width, .height = s->height, .samples = j.grid * j.grid};
     } else if (!film_init(&j.film, s->width, s->height, j.grid * j.grid)) {
         return error_set(err, GLINT_ERR_NOMEM, "out of memory for a %dx%d image", s->width, s->height);
@@ -347,10 +362,10 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
         return st;
     }
     /* A cancelled render keeping its finished tiles: the others, rendered
-     * in part (made black again) or not at all, are black. */
-    out->width = s->width;
-    out->height = s->height;
-    out->pixels = j.film.pixels;
+     * in part (made black again) or not at all, are black. A feed of tiles
+     * alone gets no image. */
+    if (j.film.pixels)
+        *out = (glint_image){.width = s->width, .height = s->height, .pixels = j.film.pixels};
     if (stats) {
         stats->seconds = now_seconds() - start;
         stats->samples = sum.pixels_done * (uint64_t)(j.grid * j.grid);

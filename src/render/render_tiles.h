@@ -39,11 +39,13 @@ typedef struct render_feed {
      * and the thread ends. Called by every render thread, concurrently, so
      * it must be thread-safe; it may wait until a tile is there. */
     int (*next)(void *user);
-    /* Tile `tile` is finished: `pixels` is its top-left pixel in the image
-     * (3 floats a pixel, linear RGB), its rows `stride` floats apart, as
-     * render_tile_bounds gives its size. They are final: nothing writes
-     * them again. Called by the thread that finished the tile, concurrently
-     * with other threads' calls; NULL when nobody needs to know. */
+    /* Tile `tile` is finished: `pixels` is its top-left pixel (3 floats a
+     * pixel, linear RGB), its rows `stride` floats apart, as
+     * render_tile_bounds gives its size. In an image, they are final:
+     * nothing writes them again; with tiles_only, they are the thread's
+     * next tile's once done returns. Called by the thread that finished the
+     * tile, concurrently with other threads' calls; NULL when nobody needs
+     * to know. */
     void (*done)(void *user, int tile, const float *pixels, size_t stride);
     void *user;
     /* The image to render into, the caller's: width x height pixels of 3
@@ -51,6 +53,12 @@ typedef struct render_feed {
      * it and gives it back in *out. NULL: the render allocates the image,
      * as glint_render does. */
     float *pixels;
+    /* With pixels NULL: no image at all. Each thread renders its tiles
+     * into a tile-sized buffer of its own, and *out is left empty: a
+     * process that sends its tiles elsewhere holds no image (nor faults
+     * one in: 25 MB and 6,000 page faults at 1920x1080 on a glint-mpi
+     * worker that rendered half the tiles). */
+    bool tiles_only;
 } render_feed;
 
 /* Renders the tiles feed->next gives into *out, as glint_render does

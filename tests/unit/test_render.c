@@ -1,6 +1,7 @@
 /* test_render.c - whole-image properties of small renders through the public
  * API: silhouettes, shadows (opaque and tinted), mirrors, refraction, and
- * identical bytes whatever the thread count. */
+ * identical bytes whatever the thread count, or when the render keeps no
+ * image and hands each tile out as it is finished (render_tiles.h). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -9,7 +10,11 @@
 #include <math.h>
 #include <stdbool.h>
 #include <string.h>
+#include <pthread.h>
+#include <stdatomic.h>
+#include <stdlib.h>
 #include "glint.h"
+#include "render/render_tiles.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -737,6 +742,63 @@ static void test_nan_samples_never_reach_a_pixel(void **state)
     glint_scene_free(s);
 }
 
+/* A render feed of every tile in order, copying each finished tile into
+ * an image of its own. */
+typedef struct tile_copier {
+    atomic_int next;
+    render_layout layout;
+    float *pixels;
+} tile_copier;
+
+static int copier_next(void *user)
+{
+    return atomic_fetch_add(&((tile_copier *)user)->next, 1);
+}
+
+static void copier_done(void *user, int tile, const float *pixels, size_t stride)
+{
+    tile_copier *c = user;
+    int x0, y0, x1, y1;
+    render_tile_bounds(&c->layout, tile, &x0, &y0, &x1, &y1);
+    for (int y = y0; y < y1; y++)
+        memcpy(c->pixels + 3 * ((size_t)y * c->layout.width + x0), pixels + stride * (size_t)(y - y0),
+               3 * sizeof(float) * (size_t)(x1 - x0));
+}
+
+/* Rendered tile by tile into the threads' own buffers (glint-mpi's workers
+ * do), the pixels handed out are glint_render's to the byte, NaN samples
+ * left out alike, and no image is returned. */
+static void test_tiles_alone_give_the_image_bytes(void **state)
+{
+    glint_error err;
+    glint_scene *scenes[] = {glint_scene_seed_room(&err), nan_scene(true)};
+    glint_settings st = glint_scene_get_settings(scenes[0]);
+    st.width = 90; /* edge tiles narrower and shorter than the rest */
+    st.height = 70;
+    assert_int_equal(glint_scene_set_settings(scenes[0], &st, NULL), GLINT_OK);
+    for (int i = 0; i < 2; i++) {
+        glint_render_options o = {.threads = 3, .tile_size = 12};
+        glint_image whole, alone;
+        glint_render_stats whole_stats, alone_stats;
+        assert_int_equal(glint_render(scenes[i], &o, &whole, &whole_stats, NULL), GLINT_OK);
+        tile_copier c = {.pixels = calloc((size_t)whole.width * whole.height * 3, sizeof(float))};
+        assert_non_null(c.pixels);
+        atomic_init(&c.next, 0);
+        assert_int_equal(render_layout_for(scenes[i], o.tile_size, &c.layout, NULL), GLINT_OK);
+        render_feed feed = {.next = copier_next, .done = copier_done, .user = &c, .tiles_only = true};
+        assert_int_equal(render_tiles(scenes[i], &o, &feed, &alone, &alone_stats, NULL), GLINT_OK);
+        assert_null(alone.pixels);
+        assert_int_equal(alone.width, 0);
+        assert_memory_equal(c.pixels, whole.pixels, (size_t)whole.width * whole.height * 3 * sizeof(float));
+        assert_int_equal(alone_stats.nan_samples, whole_stats.nan_samples);
+        assert_int_equal(alone_stats.rays, whole_stats.rays);
+        assert_int_equal(alone_stats.tiles_done, c.layout.tiles_total);
+        free(c.pixels);
+        glint_image_free(&whole);
+        glint_scene_free(scenes[i]);
+    }
+}
+
 /* An image is refused above GLINT_MAX_PIXELS in all, before anything is
  * allocated, and the settings stay as they were; the limit itself passes. */
 static void test_image_size_limit(void **state)
@@ -777,6 +839,7 @@ int main(void)
         cmocka_unit_test(test_fog_hides_unshaded),
         cmocka_unit_test(test_fog_end_bounds_the_search),
         cmocka_unit_test(test_identical_bytes_for_any_thread_count),
+        cmocka_unit_test(test_tiles_alone_give_the_image_bytes),
         cmocka_unit_test(test_progress_reports_every_tile_in_order),
         cmocka_unit_test(test_cancel_flag_stops_the_render),
         cmocka_unit_test(test_cancel_keeps_finished_tiles),
