@@ -4,11 +4,12 @@
 # ranks of 1 thread (mpirun binds each to a core), every image compared
 # byte for byte with glint's. The issue's target: 2 ranks within 5% of 2
 # threads. Prints, per scene, the median render time (each program's own
-# summary: the render, not the start-up), the median wall time, and the
-# bytes crossing between the ranks (the pixels of the tiles rank 1
-# rendered, 12 bytes each, and the scene's files sent to it).
+# summary: the render, not the start-up), the median wall time, the median
+# of the rounds' ratios of 2 ranks to 2 threads (the three run in turn in
+# each round), and the bytes crossing between the ranks (the pixels of the
+# tiles rank 1 rendered, 12 bytes each, and the scene's files sent to it).
 #
-#   bench/mpi.sh                     glint and glint-mpi from build/, 5 runs
+#   bench/mpi.sh                     glint and glint-mpi from build/, 5 rounds
 #   BENCH_RUNS=3 GLINT_BIN=/path/to/glint bench/mpi.sh
 #
 # See bench/README.md ("glint-mpi on one machine").
@@ -29,32 +30,45 @@ trap 'rm -rf "$tmp"' EXIT
 
 median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
-# run LABEL OUT COMMAND...: RUNS runs; prints the label, the median render
-# seconds (from the summary line) and wall seconds; the last run's stderr
-# stays in $tmp/last.err.
-run() {
-    local label=$1 out=$2 renders=() walls=() start end
-    shift 2
-    for ((r = 0; r < RUNS; r++)); do
-        start=$(date +%s.%N)
-        "$@" -o "$tmp/$out" 2>"$tmp/last.err" >/dev/null || die "$label failed: $(cat "$tmp/last.err")"
-        end=$(date +%s.%N)
-        renders+=("$(grep -oE ': [0-9.]+ s,' "$tmp/last.err" | grep -oE '[0-9.]+')")
-        walls+=("$(echo "$end - $start" | bc)")
-    done
-    printf '%-34s render %6.3f s   wall %6.3f s\n' "$label" "$(printf '%s\n' "${renders[@]}" | median)" \
-        "$(printf '%s\n' "${walls[@]}" | median)"
+# once OUT COMMAND...: one run; appends its render seconds (from the
+# summary line) and wall seconds to $tmp/OUT.times; its stderr stays in
+# $tmp/last.err.
+once() {
+    local out=$1 start end
+    shift
+    start=$(date +%s.%N)
+    "$@" -o "$tmp/$out" 2>"$tmp/last.err" >/dev/null || die "$* failed: $(cat "$tmp/last.err")"
+    end=$(date +%s.%N)
+    echo "$(grep -oE ': [0-9.]+ s,' "$tmp/last.err" | grep -oE '[0-9.]+') $(echo "$end - $start" | bc)" \
+        >>"$tmp/$out.times"
 }
 
-# scene NAME FILE-OR-EMPTY FILES-BYTES ARGS...: the four runs of one scene.
+# show LABEL OUT: the median render and wall seconds of OUT's runs.
+show() {
+    printf '%-34s render %6.3f s   wall %6.3f s\n' "$1" "$(cut -d' ' -f1 "$tmp/$2.times" | median)" \
+        "$(cut -d' ' -f2 "$tmp/$2.times" | median)"
+}
+
+# scene NAME FILE-OR-EMPTY FILES-BYTES ARGS...: RUNS rounds of one scene,
+# each running glint with 1 and 2 threads and glint-mpi with 2 ranks of 1
+# in turn: the machine's speed drifts by 20% within minutes, so the ratio
+# that matters is taken within each round, and its median reported.
 scene() {
     local name=$1 file=$2 file_bytes=$3
     shift 3
     echo "$name:"
-    run "glint --threads 1" one.png "$GLINT" $file "$@" --threads 1
-    run "glint --threads 2" two.png "$GLINT" $file "$@" --threads 2
-    run "mpirun -np 2 glint-mpi --threads 1" mpi.png mpirun -np 2 "$GLINT_MPI" $file "$@" --threads 1
-    cmp -s "$tmp/two.png" "$tmp/mpi.png" || die "$name: glint-mpi's image differs from glint's"
+    rm -f "$tmp"/*.times
+    for ((r = 0; r < RUNS; r++)); do
+        once one.png "$GLINT" $file "$@" --threads 1
+        once two.png "$GLINT" $file "$@" --threads 2
+        once mpi.png mpirun -np 2 "$GLINT_MPI" $file "$@" --threads 1
+        cmp -s "$tmp/two.png" "$tmp/mpi.png" || die "$name: glint-mpi's image differs from glint's"
+    done
+    show "glint --threads 1" one.png
+    show "glint --threads 2" two.png
+    show "mpirun -np 2 glint-mpi --threads 1" mpi.png
+    echo "  2 ranks / 2 threads, render time: median of the rounds' ratios" \
+        "$(paste -d' ' "$tmp/two.png.times" "$tmp/mpi.png.times" | awk '{ printf "%.4f\n", $3 / $1 }' | median)"
     local size tiles1
     size=$(grep -oE 'glint-mpi: [0-9]+x[0-9]+' "$tmp/last.err" | grep -oE '[0-9]+x[0-9]+')
     tiles1=$(grep -oE 'rank 1 [0-9]+% \([0-9]+' "$tmp/last.err" | grep -oE '[0-9]+$')
