@@ -13,8 +13,9 @@
  *   hand of tiles covering HOLD of rendering at the pace of its tiles so
  *   far (at least 4 x threads, at most MAX_BATCH), and again only for what
  *   its hand should grow by. Rank 0 answers an ASK with at most
- *   min(want, max(1, left / (2 x ranks))) and each PIXELS with one more
- *   tile; once none are left, a worker is sent an empty TILES, once.
+ *   min(want, max(1, left / (2 x ranks))) and a PIXELS of k tiles with
+ *   min(k, max(1, left / (2 x ranks))) more, so that the worker's hand
+ *   stays full; once none are left, a worker is sent an empty TILES, once.
  *   static (Tachyon's): rank r renders tiles r, r + N, r + 2N, ... of N
  *   ranks; no message but the finished tiles and DONE.
  *   steal: rank r starts with the r-th of N contiguous blocks of tiles. A
@@ -24,18 +25,32 @@
  *   the tiles it has not begun (none if it has none left by then, and the
  *   thief asks again). A rank that finds no tile left anywhere is done,
  *   and its MPI thread goes on answering asks (with none) until the end.
+ * - A worker's finished tiles (tile_outbox.c): its render thread packs
+ *   each into the one PIXELS message being filled, and its MPI thread
+ *   sends all those packed so far as one message at each turn that finds
+ *   any, in every schedule (in static and steal, whose MPI threads wake on
+ *   backoff.h's sleeps alone, what was finished since the last turn).
  * - Every rank's MPI thread loop, one message taken a turn, with the idle
- *   sleeps of src/mpi/backoff.h (20 us doubling to 1 ms, short again only
- *   while a thief awaits its answer), but a pull worker's: it sleeps until
- *   a render thread finishes a tile, or 100 us when its hand is empty,
- *   else 2 ms. Each message it
- *   sends or takes costs it --message-us, and a tile's pixels are copied
- *   at --copy-gbs (twice on rank 0: out of MPI into the image; once on a
- *   worker, into the message).
+ *   sleeps of src/mpi/backoff.h (20 us doubling to 1 ms while its rank
+ *   renders, to 50 us once its render threads have all ended; short again
+ *   only while a thief awaits its answer), but a pull worker's while it
+ *   renders: it sleeps until the message being filled holds half its hand
+ *   (the tiles it asked for in all, at least 1), 2 ms at most, or, when it
+ *   has no tile left to begin or rank 0 has no more, until it holds one,
+ *   100 us at most: one message for half a hand rather than one a tile.
+ *   Half a hand that takes longer than 2 ms (a one-thread worker's hand is
+ *   its least, 4 tiles, once they take over 1 ms each) goes as it is
+ *   finished, a tile or so a message. A worker whose render has ended sends
+ *   the rest, waits (backoff.h's sleeps) until its sends are complete, then
+ *   sends DONE. Each message an MPI thread sends or takes costs it
+ *   --message-us, and pixels are copied at --copy-gbs (twice on rank 0: out
+ *   of MPI, then into the image; once on a worker, by the render thread
+ *   that finished the tile, into the message).
  * - Messages over links of --latency-us and --gbits: each rank sends and
  *   receives one message at a time at the link's bandwidth, so the tiles
- *   of all workers queue at rank 0's link. A tile travels as an 8-byte
- *   header and 3 floats a pixel.
+ *   of all workers queue at rank 0's link. A send is complete once its
+ *   last byte has left the rank's link (MPI's eager sends). A PIXELS
+ *   message is its tiles, each an 8-byte header and 3 floats a pixel.
  * - The start-up (--startup broadcast, the default): rank 0 sends the
  *   scene's files (--file-bytes) down a binomial tree as its load opens
  *   them (at its start, for a scene of one model: the load waits while
@@ -51,7 +66,7 @@
  *   same start-up.
  *
  * Not simulated: mpirun's launch, writing the image, MPI's rendezvous for
- * large messages and its 16 sends in flight per worker, and the MPI
+ * large messages, a worker's limit of 16 messages in flight, and the MPI
  * threads' time taken from the render threads (a rank is taken to have a
  * spare hardware thread for it); every rank's cores are as fast as the
  * measuring machine's.
@@ -78,8 +93,9 @@
 #define MAX_BATCH 256            /* src/mpi/protocol.h */
 #define BACKOFF_MIN 20e-6        /* src/mpi/backoff.h */
 #define BACKOFF_MAX 1e-3
+#define BACKOFF_IDLE 50e-6       /* backoff.h: the longest sleep once a rank's render is over */
 #define HOLD (4 * BACKOFF_MAX)   /* src/mpi/follow.c: the rendering a worker's hand covers */
-#define WAIT_SHORT 100e-6        /* follow.c: a worker's wait for a finished tile */
+#define WAIT_SHORT 100e-6        /* follow.c: a worker's wait for finished tiles */
 #define WAIT_LONG 2e-3
 #define TILE_HEADER_BYTES 8      /* tile_header */
 #define TARGET_RANKS 64          /* the target: 90% at 64 ranks */
@@ -115,11 +131,11 @@ typedef struct assumptions {
 
 enum message_kind { ASK, TILES, PIXELS, DONE };
 
-/* A message on its way or waiting to be taken. `count`: tiles wanted
- * (ASK, to rank 0 or, in work stealing, to any rank), given (TILES, from
- * `first` on), or the tile (PIXELS). */
+/* A message on its way or waiting to be taken, of `bytes`. `count`: tiles
+ * wanted (ASK, to rank 0 or, in work stealing, to any rank), given (TILES,
+ * from `first` on), or brought back (PIXELS). */
 typedef struct message {
-    double arrival;
+    double arrival, bytes;
     enum message_kind kind;
     int from, count, first;
 } message;
@@ -134,13 +150,15 @@ typedef struct fifo {
 typedef struct rank_state {
     fifo inbox;                  /* messages, in the order they arrive */
     fifo queue;                  /* its tiles given and not begun (not rank 0's in the pull queue) */
-    fifo outbox;                 /* a worker's finished tiles not yet sent */
+    int packed;                  /* a worker's finished tiles in the message being filled */
+    double packed_bytes;         /* and that message's bytes */
     bool asked, closed;          /* an ASK unanswered; no more tiles will come */
     bool told_none;              /* rank 0 sent it the empty TILES (pull queue) */
     int hand;                    /* a pull worker's tiles asked for in all */
     int rendered;                /* tiles its threads finished */
     double rendering;            /* seconds its threads spent on them */
-    bool on_tiles;               /* a pull worker's MPI thread waits for a finished tile */
+    bool on_tiles;               /* a pull worker's MPI thread waits for packed tiles, */
+    int wanted;                  /* this many */
     int turn;                    /* the MPI thread's turn to come: earlier ones are void */
     bool reported, finished;     /* a worker's DONE sent; the MPI loop ended */
     int waiting, ended;          /* render threads waiting for tiles; render threads ended */
@@ -283,7 +301,7 @@ static event next_event(simulation *s)
     return first;
 }
 
-/* The bytes of a tile's PIXELS message. */
+/* The bytes of a tile in a PIXELS message. */
 static double tile_bytes(const simulation *s, int tile)
 {
     return TILE_HEADER_BYTES + 12.0 * s->m->pixels[tile];
@@ -301,6 +319,7 @@ static void send_message(simulation *s, int from, int to, double time, double by
     double arrives = leaves + s->assumed->latency > dst->receive_free ? leaves + s->assumed->latency : dst->receive_free;
     dst->receive_free = arrives + wire;
     msg.arrival = dst->receive_free;
+    msg.bytes = bytes;
     msg.from = from;
     fifo_push(&dst->inbox, &msg);
 }
@@ -350,7 +369,7 @@ static void send_tiles(simulation *s, int rank, int to, int want, double *time)
 }
 
 /* The time a rank's render thread spends on `tile`; a worker's also packs
- * its pixels into a message (tile_outbox.c). */
+ * its pixels into the message being filled (tile_outbox.c). */
 static double render_time(const simulation *s, int rank, int tile)
 {
     double t = s->m->seconds[tile] * s->assumed->tile_scale;
@@ -372,9 +391,9 @@ static int next_tile(simulation *s, int rank)
 }
 
 /* A render thread of `rank` is free at `time`, having finished `tile`
- * (-1: none yet): the tile goes to rank 0's image or the worker's outbox
- * (waking its MPI thread if it waits for one), and the thread takes the
- * next tile, waits for one, or ends. */
+ * (-1: none yet): the tile goes to rank 0's image or into the worker's
+ * message being filled (waking its MPI thread when that holds the tiles it
+ * waits for), and the thread takes the next tile, waits for one, or ends. */
 static void thread_free(simulation *s, int rank, int tile, double time)
 {
     rank_state *r = &s->r[rank];
@@ -382,11 +401,13 @@ static void thread_free(simulation *s, int rank, int tile, double time)
         r->rendered++;
         r->rendering += render_time(s, rank, tile);
     }
-    if (tile >= 0 && rank)
-        fifo_push(&r->outbox, &tile);
-    else if (tile >= 0)
+    if (tile >= 0 && rank) {
+        r->packed++;
+        r->packed_bytes += tile_bytes(s, tile);
+    } else if (tile >= 0) {
         s->lead_tiles++;
-    if (tile >= 0 && r->on_tiles) {
+    }
+    if (r->on_tiles && r->packed >= r->wanted) {
         r->on_tiles = false;
         turn_at(s, rank, time);
     }
@@ -399,17 +420,20 @@ static void thread_free(simulation *s, int rank, int tile, double time)
         r->waiting++;
 }
 
-/* backoff.h's backoff_after: the time of the MPI thread's next turn, at
- * once when `busy`; the sleeps start short again only while an answer is
- * awaited (a thief's, in work stealing: backoff.h's `urgent`). */
-static double after_turn(rank_state *r, double time, bool busy)
+/* backoff.h's backoff_after: the time of `rank`'s MPI thread's next turn,
+ * at once when `busy`; the sleeps double up to 1 ms while its render runs,
+ * to 50 us once its render threads have all ended (lead.c's serve and
+ * follow.c's send_rest), and start short again only while an answer is
+ * awaited (a thief's, in work stealing). */
+static double after_turn(simulation *s, int rank, double time, bool busy)
 {
-    if (r->asked || r->sleep < BACKOFF_MIN)
-        r->sleep = BACKOFF_MIN;
+    rank_state *r = &s->r[rank];
+    double most = r->ended == s->assumed->threads ? BACKOFF_IDLE : BACKOFF_MAX;
+    r->sleep = r->asked || r->sleep < BACKOFF_MIN ? BACKOFF_MIN : r->sleep > most ? most : r->sleep;
     if (busy)
         return time;
     double wake = time + r->sleep;
-    r->sleep = r->sleep * 2 < BACKOFF_MAX ? r->sleep * 2 : BACKOFF_MAX;
+    r->sleep = r->sleep * 2 < most ? r->sleep * 2 : most;
     return wake;
 }
 
@@ -503,8 +527,8 @@ static double ask(simulation *s, int rank, double time)
 
 /* Takes the first message of `rank`'s inbox if it is there by *time, the
  * MPI thread's work added to *time: an ASK answered, TILES queued, PIXELS
- * copied into rank 0's image (in the pull queue, a tile sent back for it),
- * a DONE counted. Whether one was taken. */
+ * copied into rank 0's image (in the pull queue, a tile sent back for each
+ * of its tiles), a DONE counted. Whether one was taken. */
 static bool take_message(simulation *s, int rank, double *time)
 {
     const assumptions *a = s->assumed;
@@ -519,9 +543,9 @@ static bool take_message(simulation *s, int rank, double *time)
     } else if (m.kind == TILES) {
         take_tiles(s, rank, &m, *time);
     } else if (m.kind == PIXELS) {
-        *time += 2 * tile_bytes(s, m.count) / a->copy_speed;
+        *time += 2 * m.bytes / a->copy_speed;
         if (a->plan == SCHEDULE_PULL)
-            send_tiles(s, rank, m.from, 1, time);
+            send_tiles(s, rank, m.from, m.count, time);
     } else {
         s->reported++;
     }
@@ -542,26 +566,39 @@ static void lead_turn(simulation *s, double time)
     double t = ask(s, 0, time);
     bool taken = take_message(s, 0, &t);
     r->busy += t - time;
-    turn_at(s, 0, after_turn(r, t, taken));
+    turn_at(s, 0, after_turn(s, 0, t, taken));
 }
 
-/* A turn of follow.c's loop at `time`: finished tiles sent, DONE once the
- * render has returned (the loop then ended, but in work stealing, where it
- * goes on answering asks), an ASK when the rank wants tiles and one
- * message taken when it is there; then the next turn at once, or after
- * follow.c's wait for a tile (pull queue) or backoff.h's sleep. */
+/* follow.c's send_finished: the worker's tiles packed so far, if any,
+ * sent at *time as one PIXELS message, its work added to *time; whether
+ * there were any. */
+static bool send_packed(simulation *s, int rank, double *time)
+{
+    rank_state *r = &s->r[rank];
+    if (!r->packed)
+        return false;
+    *time += s->assumed->message_cost;
+    send_message(s, rank, 0, *time, r->packed_bytes, (message){.kind = PIXELS, .count = r->packed});
+    r->packed = 0;
+    r->packed_bytes = 0;
+    return true;
+}
+
+/* A turn of follow.c's loop at `time`: the packed tiles sent; once the
+ * render has returned, DONE when the sends are complete (send_rest; the
+ * loop then ended, but in work stealing, where it goes on answering asks);
+ * an ASK when the rank wants tiles and one message taken when it is
+ * there. Then the next turn at once when it sent or took one, else after
+ * follow.c's wait for packed tiles (a pull worker rendering) or
+ * backoff.h's sleep. */
 static void follow_turn(simulation *s, int rank, double time)
 {
     rank_state *r = &s->r[rank];
     const assumptions *a = s->assumed;
     double t = time;
-    bool sent = r->outbox.count > 0;
-    while (r->outbox.count) {
-        int tile = pop_tile(&r->outbox);
-        t += a->message_cost;
-        send_message(s, rank, 0, t, tile_bytes(s, tile), (message){.kind = PIXELS, .count = tile});
-    }
-    if (r->ended == a->threads && !r->reported) {
+    bool sent = send_packed(s, rank, &t);
+    bool over = r->ended == a->threads;
+    if (over && !r->reported && r->send_free <= t) {
         t += a->message_cost;
         send_message(s, rank, 0, t, REPORT_BYTES, (message){.kind = DONE});
         r->reported = true;
@@ -570,12 +607,17 @@ static void follow_turn(simulation *s, int rank, double time)
     t = ask(s, rank, t);
     bool taken = !r->finished && take_message(s, rank, &t);
     r->busy += t - time;
-    r->on_tiles = !r->finished && !sent && !taken && a->plan == SCHEDULE_PULL;
-    bool soon = r->queue.count == 0;
-    if (r->on_tiles)
-        turn_at(s, rank, t + (soon ? WAIT_SHORT : WAIT_LONG));
-    else if (!r->finished)
-        turn_at(s, rank, after_turn(r, t, sent || taken));
+    if (r->finished)
+        return;
+    r->on_tiles = a->plan == SCHEDULE_PULL && !over && !sent && !taken;
+    if (!r->on_tiles) {
+        turn_at(s, rank, after_turn(s, rank, t, sent || taken));
+        return;
+    }
+    /* Half its hand, or one tile soon when it has none left to begin. */
+    bool soon = r->closed || r->queue.count == 0;
+    r->wanted = soon || r->hand / 2 < 1 ? 1 : r->hand / 2;
+    turn_at(s, rank, t + (soon ? WAIT_SHORT : WAIT_LONG));
 }
 
 /* Each rank's tiles at the start: none in the pull queue (they are asked
@@ -617,8 +659,7 @@ static result simulate(const measured *m, const assumptions *a, int ranks)
     simulation s = {.m = m, .assumed = a, .ranks = ranks};
     s.r = grow(NULL, (size_t)ranks * sizeof *s.r);
     for (int i = 0; i < ranks; i++)
-        s.r[i] = (rank_state){.inbox.item_size = sizeof(message), .queue.item_size = sizeof(int),
-                              .outbox.item_size = sizeof(int)};
+        s.r[i] = (rank_state){.inbox.item_size = sizeof(message), .queue.item_size = sizeof(int)};
     deal_tiles(&s);
     double ready[MAX_RANKS];     /* when each rank's MPI loop starts: its load done */
     double load = a->start == START_BROADCAST ? a->load : 0, setup = a->start == START_NONE ? 0 : a->setup;
@@ -662,7 +703,6 @@ static result simulate(const measured *m, const assumptions *a, int ranks)
     for (int i = 0; i < ranks; i++) {
         free(s.r[i].inbox.items);
         free(s.r[i].queue.items);
-        free(s.r[i].outbox.items);
     }
     free(s.r);
     free(s.heap);
