@@ -43,6 +43,7 @@ typedef struct follower {
     MPI_Request sends[SENDS_IN_FLIGHT];
     unsigned char *sending[SENDS_IN_FLIGHT]; /* NULL: a free slot */
     int in_flight;
+    int given;                /* tiles rank 0 sent */
     int finished;             /* tiles taken from the outbox to send */
     volatile int stop;        /* the render's cancel flag */
     MPI_Comm comm;
@@ -121,6 +122,8 @@ static void take_tiles(follower *f, const MPI_Status *st)
     }
     if (n == 0 || !tile_queue_put(&f->queue, tiles, n))
         tile_queue_close(&f->queue);
+    else
+        f->given += n;
 }
 
 /* How many tiles to hold: enough for `threads` threads to render for
@@ -190,7 +193,11 @@ rank_report follow_render(MPI_Comm comm, const glint_scene *scene, const glint_r
             } else if (f.queue.closed || tile_queue_count(&f.queue) == 0) {
                 tile_outbox_wait(&f.outbox, 1, WAIT_SHORT_NS);
             } else {
-                tile_outbox_wait(&f.outbox, hand / 2 > 1 ? hand / 2 : 1, WAIT_LONG_NS);
+                /* Half the hand, or every tile it still has once rank 0
+                 * sends no more (the last of them then go at once). */
+                int unsent = f.given - f.finished, half = hand / 2;
+                tile_outbox_wait(&f.outbox, half < unsent ? (half > 1 ? half : 1) : (unsent > 1 ? unsent : 1),
+                                 WAIT_LONG_NS);
             }
         }
         local_render_join(&own);
