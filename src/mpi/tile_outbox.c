@@ -23,7 +23,7 @@ void tile_outbox_free(tile_outbox *b)
 }
 
 /* Room for `more` bytes at the end of the batch, a new one made for
- * `tiles` such tiles; false when memory ran out. */
+ * `tiles` such tiles if memory allows; false when memory ran out. */
 static bool make_room(tile_batch *t, size_t more, int tiles)
 {
     if (t->capacity - t->size >= more)
@@ -32,6 +32,8 @@ static bool make_room(tile_batch *t, size_t more, int tiles)
     while (capacity - t->size < more)
         capacity *= 2;
     unsigned char *bytes = realloc(t->bytes, capacity);
+    if (!bytes) /* huge tiles: room for this one is enough */
+        bytes = realloc(t->bytes, capacity = t->size + more);
     if (!bytes)
         return false;
     t->bytes = bytes;

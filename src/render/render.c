@@ -261,7 +261,9 @@ static glint_status run_workers(job *j, int count, worker *sum, glint_error *err
     worker *ws = calloc((size_t)count, sizeof *ws);
     if (!ws)
         return error_set(err, GLINT_ERR_NOMEM, "out of memory starting threads");
-    size_t tile_floats = 3 * (size_t)j->layout.tile_size * (size_t)j->layout.tile_size;
+    const render_layout *l = &j->layout;
+    size_t tile_floats = 3 * (size_t)(l->tile_size < l->width ? l->tile_size : l->width) *
+                         (size_t)(l->tile_size < l->height ? l->tile_size : l->height);
     bool fits = true;
     for (int i = 0; i < count; i++) {
         ws[i].job = j;

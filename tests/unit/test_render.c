@@ -776,17 +776,19 @@ static void test_tiles_alone_give_the_image_bytes(void **state)
     st.width = 90; /* edge tiles narrower and shorter than the rest */
     st.height = 70;
     assert_int_equal(glint_scene_set_settings(scenes[0], &st, NULL), GLINT_OK);
-    for (int i = 0; i < 2; i++) {
-        glint_render_options o = {.threads = 3, .tile_size = 12};
+    for (int i = 0; i < 4; i++) {
+        /* Tiles smaller than the image, and one tile larger than it. */
+        glint_render_options o = {.threads = 3, .tile_size = i < 2 ? 12 : 4000};
         glint_image whole, alone;
         glint_render_stats whole_stats, alone_stats;
-        assert_int_equal(glint_render(scenes[i], &o, &whole, &whole_stats, NULL), GLINT_OK);
+        glint_scene *scene = scenes[i % 2];
+        assert_int_equal(glint_render(scene, &o, &whole, &whole_stats, NULL), GLINT_OK);
         tile_copier c = {.pixels = calloc((size_t)whole.width * whole.height * 3, sizeof(float))};
         assert_non_null(c.pixels);
         atomic_init(&c.next, 0);
-        assert_int_equal(render_layout_for(scenes[i], o.tile_size, &c.layout, NULL), GLINT_OK);
+        assert_int_equal(render_layout_for(scene, o.tile_size, &c.layout, NULL), GLINT_OK);
         render_feed feed = {.next = copier_next, .done = copier_done, .user = &c, .tiles_only = true};
-        assert_int_equal(render_tiles(scenes[i], &o, &feed, &alone, &alone_stats, NULL), GLINT_OK);
+        assert_int_equal(render_tiles(scene, &o, &feed, &alone, &alone_stats, NULL), GLINT_OK);
         assert_null(alone.pixels);
         assert_int_equal(alone.width, 0);
         assert_memory_equal(c.pixels, whole.pixels, (size_t)whole.width * whole.height * 3 * sizeof(float));
@@ -795,8 +797,9 @@ static void test_tiles_alone_give_the_image_bytes(void **state)
         assert_int_equal(alone_stats.tiles_done, c.layout.tiles_total);
         free(c.pixels);
         glint_image_free(&whole);
-        glint_scene_free(scenes[i]);
     }
+    glint_scene_free(scenes[0]);
+    glint_scene_free(scenes[1]);
 }
 
 /* An image is refused above GLINT_MAX_PIXELS in all, before anything is
