@@ -549,6 +549,15 @@ typedef struct glint_render_stats {
  * the last call reports tiles_done == tiles_total. */
 typedef void (*glint_progress_fn)(void *user, int tiles_done, int tiles_total);
 
+/* Called as each tile is finished, with its pixels: columns x0 to x1 and
+ * rows y0 to y1 of the image (the ends excluded), `pixels` its top-left
+ * pixel (3 floats, linear RGB, as the image holds them), its rows `stride`
+ * floats apart; they are final, and valid only during the call. Called
+ * from whichever thread finished the tile, while others may be in it too:
+ * it must be thread-safe, and quick (a copy, say), as the thread renders
+ * nothing meanwhile. For showing an image as it comes in. */
+typedef void (*glint_tile_fn)(void *user, int x0, int y0, int x1, int y1, const float *pixels, size_t stride);
+
 typedef struct glint_render_options {
     int threads;              /* 0 means one per core */
     int tile_size;            /* 0 means 32; rounded up to a multiple of 4 */
@@ -558,6 +567,8 @@ typedef struct glint_render_options {
                                    thread reads it at every packet of 8 rays it traces */
     int keep_partial;         /* non-zero: a cancelled render still fills *out, with its
                                  finished tiles and every other pixel black */
+    glint_tile_fn tile_done;  /* NULL, or told of each finished tile's pixels */
+    void *tile_user;
 } glint_render_options;
 
 /* Renders the scene into *out (allocated here; free with glint_image_free).

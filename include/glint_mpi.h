@@ -60,7 +60,9 @@ typedef struct glint_mpi_rank_stats {
  * options (NULL for the defaults) are each rank's own: threads (0: one per
  * processor the rank may run on), cancel (a flag, set by a signal handler
  * say, that stops every rank's render when set on any), keep_partial (rank
- * 0's); progress is called on rank 0 alone, counting every rank's tiles.
+ * 0's); progress is called on rank 0 alone, counting every rank's tiles,
+ * and tile_done on rank 0 alone, for every rank's tiles (from rank 0's
+ * render threads and from the thread that called this, as they arrive).
  * The tile size must be the same on every rank (a rank with another fails
  * the render). A rank whose own scene could not be built may call it with
  * NULL: the render then fails on every rank, naming it. No rank waits for

@@ -165,6 +165,7 @@ rank_report follow_render(MPI_Comm comm, const glint_scene *scene, const glint_r
                  tile_queue_init(&f.queue, 2 * threads + MAX_BATCH);
     render_feed feed = {.next = follow_next, .done = follow_done, .user = &f, .tiles_only = true};
     own_options.cancel = &f.stop;
+    own_options.tile_done = NULL; /* rank 0's to call, for every rank's tiles */
     if (ready && local_render_start(&own, scene, &own_options, &feed)) {
         int hand = 0; /* the tiles asked for in all: what rank 0 keeps in this rank's hand */
         for (;;) {

@@ -30,6 +30,7 @@ typedef struct lead {
     int remote_done;          /* tiles received from the other ranks */
     volatile int stop;        /* rank 0's render's cancel flag */
     const volatile int *interrupt; /* set when a signal asks the job to stop */
+    const glint_render_options *options; /* the caller's: its tile_done told of the others' tiles */
     MPI_Request *stops;       /* the STOP sent to each rank, once stopping */
     bool *closed_for;         /* the ranks told there are no more tiles */
     bool *reported;           /* which ranks sent their DONE */
@@ -130,8 +131,12 @@ static int put_tiles(lead *l, const unsigned char *bytes, size_t size)
         size_t row = 3 * (size_t)(x1 - x0) * sizeof(float);
         if ((size - at) / row < (size_t)(y1 - y0))
             return -1;
+        size_t stride = 3 * (size_t)l->layout.width;
+        float *first = l->pixels + stride * (size_t)y0 + 3 * (size_t)x0;
         for (int y = y0; y < y1; y++, at += row)
-            memcpy(l->pixels + 3 * ((size_t)y * (size_t)l->layout.width + (size_t)x0), bytes + at, row);
+            memcpy(first + stride * (size_t)(y - y0), bytes + at, row);
+        if (l->options->tile_done)
+            l->options->tile_done(l->options->tile_user, x0, y0, x1, y1, first, stride);
     }
     return tiles;
 }
@@ -223,7 +228,8 @@ glint_status lead_render(MPI_Comm comm, const glint_scene *scene, const glint_re
     static const volatile int never = 0;
     double start = MPI_Wtime();
     *out = (glint_image){0};
-    lead l = {.comm = comm, .ranks = ranks, .interrupt = options->cancel ? options->cancel : &never};
+    lead l = {.comm = comm, .ranks = ranks, .interrupt = options->cancel ? options->cancel : &never,
+              .options = options};
     glint_status status = render_layout_for(scene, options->tile_size, &l.layout, err);
     l.stops = malloc((size_t)ranks * sizeof *l.stops);
     l.reported = calloc((size_t)ranks, sizeof *l.reported);

@@ -233,9 +233,12 @@ static void *worker_run(void *arg)
         }
         w->tiles_done++;
         w->pixels_done += (uint64_t)(x1 - x0) * (uint64_t)(y1 - y0);
+        size_t stride = 3 * (size_t)into->width;
+        const float *finished = into->pixels + stride * (size_t)(y0 - into->y0) + 3 * (size_t)(x0 - into->x0);
+        if (j->opts->tile_done)
+            j->opts->tile_done(j->opts->tile_user, x0, y0, x1, y1, finished, stride);
         if (f->done)
-            f->done(f->user, tile, into->pixels + 3 * ((size_t)(y0 - into->y0) * (size_t)into->width + (size_t)(x0 - into->x0)),
-                    3 * (size_t)into->width);
+            f->done(f->user, tile, finished, stride);
         if (j->opts->progress) {
             /* The lock keeps the calls one at a time and their counts in order. */
             pthread_mutex_lock(&j->progress_lock);

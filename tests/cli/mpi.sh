@@ -85,4 +85,9 @@ if [ "$full" -eq 1 ]; then
     expect_failure 2 2 "a bad flag" --threads -3 -q
 fi
 
+# Through the library: glint_mpi_render's tile_done, on rank 0 alone, once
+# for every rank's tiles, with the image's pixels (tests/mpi_tiles.c).
+timeout "$limit" mpirun --oversubscribe -np 3 "$(dirname "$GLINT")/mpi_tiles" >mpi.log 2>&1
+verdict $? "tile_done tells rank 0 of every rank's tiles once, with the image's pixels: $(head -c 300 mpi.log)"
+
 finish

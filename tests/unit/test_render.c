@@ -802,6 +802,57 @@ static void test_tiles_alone_give_the_image_bytes(void **state)
     glint_scene_free(scenes[1]);
 }
 
+/* What glint_render's tile_done was told: the tiles' pixels, copied, and
+ * how often each pixel was. */
+typedef struct tiles_told {
+    pthread_mutex_t lock;
+    int width, calls;
+    float *pixels;
+    int *told;
+} tiles_told;
+
+static void note_tile(void *user, int x0, int y0, int x1, int y1, const float *pixels, size_t stride)
+{
+    tiles_told *t = user;
+    pthread_mutex_lock(&t->lock);
+    t->calls++;
+    for (int y = y0; y < y1; y++) {
+        memcpy(t->pixels + 3 * ((size_t)y * t->width + x0), pixels + stride * (size_t)(y - y0),
+               3 * sizeof(float) * (size_t)(x1 - x0));
+        for (int x = x0; x < x1; x++)
+            t->told[y * t->width + x]++;
+    }
+    pthread_mutex_unlock(&t->lock);
+}
+
+/* tile_done is told of every tile once, from the render threads, with the
+ * pixels the image ends up with. */
+static void test_tile_done_tells_each_tile_once(void **state)
+{
+    glint_error err;
+    glint_scene *s = glint_scene_seed_room(&err);
+    glint_settings st = glint_scene_get_settings(s);
+    st.width = 90;
+    st.height = 70;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    tiles_told t = {.lock = PTHREAD_MUTEX_INITIALIZER, .width = st.width,
+                    .pixels = calloc((size_t)st.width * st.height * 3, sizeof(float)),
+                    .told = calloc((size_t)st.width * st.height, sizeof(int))};
+    assert_true(t.pixels && t.told);
+    glint_render_options o = {.threads = 3, .tile_size = 12, .tile_done = note_tile, .tile_user = &t};
+    glint_image img;
+    glint_render_stats stats;
+    assert_int_equal(glint_render(s, &o, &img, &stats, NULL), GLINT_OK);
+    assert_int_equal(t.calls, stats.tiles_total);
+    assert_memory_equal(t.pixels, img.pixels, (size_t)st.width * st.height * 3 * sizeof(float));
+    for (int i = 0; i < st.width * st.height; i++)
+        assert_int_equal(t.told[i], 1);
+    free(t.pixels);
+    free(t.told);
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
 /* An image is refused above GLINT_MAX_PIXELS in all, before anything is
  * allocated, and the settings stay as they were; the limit itself passes. */
 static void test_image_size_limit(void **state)
@@ -843,6 +894,7 @@ int main(void)
         cmocka_unit_test(test_fog_end_bounds_the_search),
         cmocka_unit_test(test_identical_bytes_for_any_thread_count),
         cmocka_unit_test(test_tiles_alone_give_the_image_bytes),
+        cmocka_unit_test(test_tile_done_tells_each_tile_once),
         cmocka_unit_test(test_progress_reports_every_tile_in_order),
         cmocka_unit_test(test_cancel_flag_stops_the_render),
         cmocka_unit_test(test_cancel_keeps_finished_tiles),
