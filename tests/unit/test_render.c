@@ -15,6 +15,7 @@
 #include <stdlib.h>
 #include "glint.h"
 #include "render/render_tiles.h"
+#include "tiles_told.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -802,29 +803,6 @@ static void test_tiles_alone_give_the_image_bytes(void **state)
     glint_scene_free(scenes[1]);
 }
 
-/* What glint_render's tile_done was told: the tiles' pixels, copied, and
- * how often each pixel was. */
-typedef struct tiles_told {
-    pthread_mutex_t lock;
-    int width, calls;
-    float *pixels;
-    int *told;
-} tiles_told;
-
-static void note_tile(void *user, int x0, int y0, int x1, int y1, const float *pixels, size_t stride)
-{
-    tiles_told *t = user;
-    pthread_mutex_lock(&t->lock);
-    t->calls++;
-    for (int y = y0; y < y1; y++) {
-        memcpy(t->pixels + 3 * ((size_t)y * t->width + x0), pixels + stride * (size_t)(y - y0),
-               3 * sizeof(float) * (size_t)(x1 - x0));
-        for (int x = x0; x < x1; x++)
-            t->told[y * t->width + x]++;
-    }
-    pthread_mutex_unlock(&t->lock);
-}
-
 /* tile_done is told of every tile once, from the render threads, with the
  * pixels the image ends up with. */
 static void test_tile_done_tells_each_tile_once(void **state)
@@ -835,20 +813,16 @@ static void test_tile_done_tells_each_tile_once(void **state)
     st.width = 90;
     st.height = 70;
     assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
-    tiles_told t = {.lock = PTHREAD_MUTEX_INITIALIZER, .width = st.width,
-                    .pixels = calloc((size_t)st.width * st.height * 3, sizeof(float)),
-                    .told = calloc((size_t)st.width * st.height, sizeof(int))};
-    assert_true(t.pixels && t.told);
-    glint_render_options o = {.threads = 3, .tile_size = 12, .tile_done = note_tile, .tile_user = &t};
+    tiles_told t;
+    assert_true(tiles_told_init(&t, st.width, st.height));
+    glint_render_options o = {.threads = 3, .tile_size = 12, .tile_done = tiles_told_note, .tile_user = &t};
     glint_image img;
     glint_render_stats stats;
     assert_int_equal(glint_render(s, &o, &img, &stats, NULL), GLINT_OK);
     assert_int_equal(t.calls, stats.tiles_total);
     assert_memory_equal(t.pixels, img.pixels, (size_t)st.width * st.height * 3 * sizeof(float));
-    for (int i = 0; i < st.width * st.height; i++)
-        assert_int_equal(t.told[i], 1);
-    free(t.pixels);
-    free(t.told);
+    assert_true(tiles_told_once_each(&t));
+    tiles_told_free(&t);
     glint_image_free(&img);
     glint_scene_free(s);
 }
