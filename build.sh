@@ -12,7 +12,8 @@ set -euo pipefail
 cd "$(dirname "$0")"
 
 PACKAGES=(gcc make cmake pkg-config libembree-dev zlib1g-dev libpng-dev libjpeg62-turbo-dev libyaml-dev libassimp-dev
-          libopenexr-dev libcmocka-dev clang libclang-rt-14-dev openexr openmpi-bin libopenmpi-dev)
+          libopenexr-dev libcmocka-dev clang libclang-rt-14-dev openexr openmpi-bin libopenmpi-dev
+          libsdl2-dev libx11-dev xvfb xdotool imagemagick)
 
 install_missing() {
     local missing=()

@@ -53,6 +53,9 @@ static const char USAGE[] =
     "                         room's is 'moon') with a PNG or JPEG file\n"
     "      --partial          when interrupted, write the finished tiles (the rest\n"
     "                         black) instead of nothing, and still exit 4\n"
+    "      --display          show the image in a window as it renders, and keep it\n"
+    "                         there until closed (Esc, q); s saves it (to the output\n"
+    "                         file, or glint.png); closing it early interrupts (exit 4)\n"
     "  -q, --quiet            no progress line and no summary on stderr\n"
     "  -h, --help             show this help and exit (-h alone, with no number)\n"
     "      --version          print the version and exit\n"
@@ -232,7 +235,7 @@ static int parse_format(cli_options *o, const char *v)
 static bool is_switch(const char *a)
 {
     static const char *const SWITCHES[] = {"--help", "--version", "-q", "--quiet", "--check", "--partial",
-                                             "--print-scene"};
+                                             "--print-scene", "--display"};
     for (size_t k = 0; k < sizeof SWITCHES / sizeof SWITCHES[0]; k++)
         if (strcmp(a, SWITCHES[k]) == 0)
             return true;
@@ -285,6 +288,10 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
         }
         if (strcmp(a, "--partial") == 0) {
             o->partial = true;
+            continue;
+        }
+        if (strcmp(a, "--display") == 0) {
+            o->display = true;
             continue;
         }
         if (a[0] != '-' || a[1] == '\0') {
@@ -343,6 +350,9 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
                             argv[2]);
     if (o->check && o->print_scene)
         return cli_complain(CLI_EXIT_USAGE, "--check and --print-scene do not go together: choose one");
+    if (o->display && (o->check || o->print_scene))
+        return cli_complain(CLI_EXIT_USAGE, "--display shows a render, and %s renders nothing",
+                            o->check ? "--check" : "--print-scene");
     if (o->view >= 0 && !o->scene)
         return cli_complain(CLI_EXIT_USAGE, "--view needs a model file");
     if (o->view >= 0 && !glint_is_model_path(o->scene))

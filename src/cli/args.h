@@ -39,6 +39,7 @@ typedef struct cli_options {
     int view;                                           /* -1: not given, else a glint_model_view */
     bool quiet;
     bool partial;
+    bool display;               /* show the image in a window as it renders (display.h) */
     const char *swap_name[CLI_MAX_TEXTURE_SWAPS], *swap_path[CLI_MAX_TEXTURE_SWAPS];
     char swap_buf[CLI_MAX_TEXTURE_SWAPS][256];
     int swaps;

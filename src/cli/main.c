@@ -1,7 +1,7 @@
 /* main.c - the glint command: reads its flags (args.c), renders the scene
  * (a file, standard input) or the built-in seed room through the public
- * API, shows progress and writes the image to a file or standard output;
- * or checks scene files. */
+ * API, shows progress (and with --display the image, display.c) and writes
+ * the image to a file or standard output; or checks scene files. */
 #include <errno.h>
 #include <signal.h>
 #include <stdio.h>
@@ -10,6 +10,7 @@
 #include <unistd.h>
 #include "glint.h"
 #include "cli/args.h"
+#include "cli/display.h"
 #include "cli/reports.h"
 #include "cli/setup.h"
 
@@ -48,6 +49,11 @@ static int run(const cli_options *o)
         return code;
     if (o->print_scene)
         return cli_print_scene(r.scene, o->output);
+    display *window = NULL;
+    if (o->display && !(window = display_open(o, &r, &interrupted, &code))) {
+        glint_scene_free(r.scene);
+        return code;
+    }
 
     /* From here on a signal cancels the render (its BVH build included),
      * which then writes nothing, or with --partial its finished tiles. */
@@ -60,6 +66,10 @@ static int run(const cli_options *o)
         ro.progress = cli_show_progress;
         ro.progress_user = &prog;
     }
+    if (window) {
+        ro.tile_done = display_tile;
+        ro.tile_user = window;
+    }
     glint_image image;
     glint_render_stats stats;
     glint_error err = {0};
@@ -67,6 +77,7 @@ static int run(const cli_options *o)
     if (ro.progress && st == GLINT_ERR_CANCELLED)
         fputs("\r\033[K", stderr); /* the progress line stopped short */
     if (st == GLINT_ERR_CANCELLED) {
+        display_close(window);
         code = cli_interrupted(o, &r, &image, stats.tiles_done, stats.tiles_total);
         glint_image_free(&image);
         glint_scene_free(r.scene);
@@ -76,6 +87,7 @@ static int run(const cli_options *o)
         st = cli_write_image(&r, &image, &err);
     glint_image_free(&image);
     if (st) {
+        display_close(window);
         glint_scene_free(r.scene);
         return cli_complain(cli_exit_code_of(st), "%s", err.message);
     }
@@ -87,6 +99,11 @@ static int run(const cli_options *o)
                 settings->width, settings->height, settings->samples_per_pixel, threads, threads == 1 ? "" : "s",
                 stats.seconds, (unsigned long long)stats.samples, (unsigned long long)stats.rays,
                 stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, r.dest.shown);
+    }
+    /* The image is written: the window stays until the user closes it. */
+    if (window) {
+        display_finished(window, stats.seconds);
+        display_wait(window);
     }
     glint_scene_free(r.scene); /* last: output may point into it */
     return CLI_EXIT_OK;

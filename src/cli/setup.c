@@ -82,11 +82,11 @@ glint_scene *cli_load_scene(const cli_options *o, const char *path, const char *
  * point into the scene. */
 static int choose_destination(const cli_options *o, const glint_scene *scene, cli_destination *d)
 {
+    /* Also where --display's s saves an image sent to standard output. */
+    snprintf(d->default_path, sizeof d->default_path, "glint%s", o->format ? o->format->extensions[0] : ".png");
     d->path = o->output ? o->output : glint_scene_get_output(scene);
-    if (!d->path) {
-        snprintf(d->default_path, sizeof d->default_path, "glint%s", o->format ? o->format->extensions[0] : ".png");
+    if (!d->path)
         d->path = d->default_path;
-    }
     glint_error err = {0};
     if (strcmp(d->path, "-") == 0) {
         d->format = o->format ? o->format : glint_image_format_named("png");

@@ -2,9 +2,9 @@
  * every rank; the scene loaded by rank 0, reporting its problems alone,
  * and by the others from the files it sends (load_everywhere.c); the
  * image rendered across the ranks (glint_mpi_render) and written by rank 0
- * alone, as glint writes it; signals handled as glint handles them; and
- * one exit code for every rank. --check and --print-scene are rank 0's
- * alone. */
+ * alone, as glint writes it, and with --display shown by rank 0
+ * (src/cli/display.c); signals handled as glint handles them; and one exit
+ * code for every rank. --check and --print-scene are rank 0's alone. */
 #include <fcntl.h>
 #include <mpi.h>
 #include <signal.h>
@@ -13,6 +13,7 @@
 #include <string.h>
 #include <unistd.h>
 #include "cli/args.h"
+#include "cli/display.h"
 #include "cli/reports.h"
 #include "cli/setup.h"
 #include "core/error.h"
@@ -112,9 +113,9 @@ static void print_summary(const cli_run *r, int ranks, const glint_render_stats 
     fputc('\n', stderr);
 }
 
-/* Renders and, on rank 0, writes the image; the exit code. Every rank has
- * loaded the scene into r. */
-static int render(const cli_options *o, cli_run *r, int rank, int ranks)
+/* Renders and, on rank 0, writes the image, shown in the window when there
+ * is one (rank 0's); the exit code. Every rank has loaded the scene into r. */
+static int render(const cli_options *o, cli_run *r, int rank, int ranks, display *window)
 {
     cli_progress prog = {.last_print = -1};
     clock_gettime(CLOCK_MONOTONIC, &prog.start);
@@ -124,6 +125,10 @@ static int render(const cli_options *o, cli_run *r, int rank, int ranks)
     if (rank == 0 && !o->quiet) {
         ro.progress = cli_show_progress;
         ro.progress_user = &prog;
+    }
+    if (window) {
+        ro.tile_done = display_tile;
+        ro.tile_user = window;
     }
     glint_mpi_rank_stats *each = rank == 0 ? calloc((size_t)ranks, sizeof *each) : NULL;
     if (rank == 0 && !each) {
@@ -149,6 +154,8 @@ static int render(const cli_options *o, cli_run *r, int rank, int ranks)
         cli_warn_nan(total.nan_samples);
         if (!o->quiet)
             print_summary(r, ranks, &total, each);
+        if (window)
+            display_finished(window, total.seconds);
     }
     glint_image_free(&image);
     free(each);
@@ -164,11 +171,14 @@ typedef struct flag_load {
     cli_run *run;
     int code;
     FILE *messages;
+    display *window;
 } flag_load;
 
 /* A scene_loader: the scene as the flags ask, its problems said (on rank
  * 0 alone; on another rank kept in l->messages, which its thread loads
- * while rank 0 does, until it is known whether the failure was its own). */
+ * while rank 0 does, until it is known whether the failure was its own);
+ * on rank 0, with --display, the window opened, a failure to open it
+ * failing the load, before any rank renders. */
 static glint_status load_flags_scene(void *user, bool rank0, glint_error *err)
 {
     flag_load *l = user;
@@ -177,6 +187,8 @@ static glint_status load_flags_scene(void *user, bool rank0, glint_error *err)
         l->code = cli_complain(CLI_EXIT_INTERNAL, "this rank was given other arguments than rank 0");
     else
         l->code = cli_prepare(l->o, rank0, l->run);
+    if (l->code < 0 && rank0 && l->o->display)
+        l->window = display_open(l->o, l->run, &interrupted, &l->code);
     cli_send_messages(NULL);
     /* Said already; the status only tells failure from success. */
     return l->code < 0 ? GLINT_OK
@@ -255,7 +267,7 @@ int main(int argc, char **argv)
     rendering = joins;
     if (joins) {
         int own = code;
-        code = render(&o, &r, rank, ranks);
+        code = render(&o, &r, rank, ranks, load.window);
         code = own >= 0 ? own : code;
     }
     rendered = rendering;
@@ -263,6 +275,10 @@ int main(int argc, char **argv)
     /* Every rank exits with the worst code: a rank that ran out of memory
      * loading the scene makes it 5, as it would be for glint. */
     agree_on_max(MPI_COMM_WORLD, &code);
+    if (code != CLI_EXIT_OK) {
+        display_close(load.window);
+        load.window = NULL;
+    }
     if (r.scene)
         glint_scene_free(r.scene);
     /* When mpirun signalled every rank (Ctrl-C, SIGTERM), they end without
@@ -272,5 +288,12 @@ int main(int argc, char **argv)
     agree_on_min(MPI_COMM_WORLD, &everyone_signalled);
     if (!everyone_signalled)
         MPI_Finalize();
+    /* Rank 0 keeps the written image on screen until the user closes it,
+     * with the other ranks gone rather than spinning in MPI meanwhile; a
+     * signal now closes the window, as in glint, rather than end the rank. */
+    if (load.window) {
+        rendering = 1;
+        display_wait(load.window);
+    }
     return code;
 }
