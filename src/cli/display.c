@@ -1,10 +1,15 @@
 /* display.c - the --display window (display.h). The render threads copy
  * each finished tile into the display's own float copy of the image and
- * queue its rectangle; the window's thread, the only one calling SDL, takes
- * the queue at most 30 times a second, encodes those rectangles to sRGB
- * bytes in a streaming texture and presents it, scaled to the window. The
- * float copy is what s saves: the finished tiles, black elsewhere, as
- * --partial writes them. */
+ * list its rectangle; the window's thread, the only one calling SDL, takes
+ * the new rectangles at most 30 times a second, draws them into the
+ * window's surface (sRGB, scaled to the window by averaging each window
+ * pixel's footprint) and sends the screen only those, so that a frame
+ * costs what its new tiles do, not the window's size. The float copy is
+ * what s saves: the finished tiles, black elsewhere, as --partial writes
+ * them. The window's thread runs at a lower priority than the render's:
+ * on a machine whose every core renders, the window may lag a moment
+ * behind the render rather than slow it. */
+#define _GNU_SOURCE /* gettid */
 #include <SDL.h>
 #include <pthread.h>
 #include <stdarg.h>
@@ -12,12 +17,19 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include <time.h>
+#include <sys/resource.h>
 #include <unistd.h>
 #include "cli/display.h"
 #include "image/srgb.h"
+#include "render/film.h"
 
 /* The shortest time between two frames of new tiles: 30 a second. */
 #define FRAME_MS 33
+/* The window thread's nice value: a tenth of a render thread's share of a
+ * busy core (measured: the render of a 0.16 s 1080p frame, which the
+ * window slowed by 15% at the render's priority, by 7% at this one). */
+#define WINDOW_NICE 10
 /* The placeholder: a checkerboard of squares this wide, in two dim greys. */
 #define CHECKER 16
 static const unsigned char CHECKER_GREYS[2] = {0x1c, 0x2c};
@@ -26,10 +38,18 @@ typedef struct tile_rect {
     int x0, y0, x1, y1;
 } tile_rect;
 
-/* STARTING until the window's thread has opened the window (SHOWING) or
- * failed to (FAILED); GONE once it has left its loop, after which no SDL
- * event may be pushed to it. */
-enum display_state { STARTING, SHOWING, FAILED, GONE };
+/* Which image pixels each window pixel along one axis shows: window pixel
+ * i averages image pixels lo[i] to hi[i] - 1 (one, the nearest, when the
+ * window is the larger). Both never decrease with i. */
+typedef struct axis_map {
+    int window, image;
+    int *lo, *hi;
+} axis_map;
+
+/* STARTING while the window's thread starts SDL; READY once it has, and
+ * waits for the image's size (width > 0) to open the window; SHOWING once
+ * it has; FAILED when either failed. */
+enum display_state { STARTING, READY, SHOWING, FAILED };
 
 struct display {
     int width, height;
@@ -38,26 +58,26 @@ struct display {
     glint_image_write_options write_options;
     volatile sig_atomic_t *cancel;
     pthread_t thread;
-    Uint32 wake_event;                /* an SDL event type of ours, to wake the window's thread */
 
     pthread_mutex_t lock;
-    pthread_cond_t started;           /* the state left STARTING */
+    pthread_cond_t news;              /* the state changed, the size was given, or stop was set */
     /* Under the lock: */
     enum display_state state;
     char why[256];                    /* why the window did not open */
     float *pixels;                    /* the finished tiles, black elsewhere */
-    tile_rect *fresh;                 /* tiles copied in since the window last took them */
-    size_t fresh_count, rect_capacity;
+    tile_rect *rects;                 /* every finished tile, in the order finished */
+    size_t rect_count, rect_capacity;
     long long pixels_done;
     bool finished, stop;
     double seconds;
 
     /* The window's thread alone: */
-    tile_rect *taken;                 /* swapped with fresh: the tiles to show at this frame */
     SDL_Window *window;
-    SDL_Renderer *renderer;
-    SDL_Texture *texture;
-    unsigned char *rows;              /* sRGB bytes of a rectangle on its way to the texture */
+    SDL_Surface *surface;             /* the window's pixels, SDL's */
+    axis_map across, down;
+    tile_rect *taken;                 /* rects[0 .. shown) copied: the tiles drawn */
+    size_t shown, taken_capacity;
+    SDL_Rect *changed;                /* the window rectangles drawn at this frame */
 };
 
 /* Records why the window did not open; false. */
@@ -71,30 +91,131 @@ static bool failed(display *d, const char *fmt, ...)
     return false;
 }
 
-/* Fills the texture with the placeholder, CHECKER rows at a time. */
-static void show_placeholder(display *d)
+/* Fills m for a window `window` pixels long showing an image `image` long:
+ * window pixel i starts at image pixel floor(i * image / window). False
+ * when memory runs out. */
+static bool map_axis(axis_map *m, int window, int image)
 {
-    int pitch = 3 * d->width;
-    for (int y0 = 0; y0 < d->height; y0 += CHECKER) {
-        int rows = d->height - y0 < CHECKER ? d->height - y0 : CHECKER;
-        for (int y = 0; y < rows; y++)
-            for (int x = 0; x < d->width; x++)
-                memset(d->rows + (size_t)y * pitch + 3 * x, CHECKER_GREYS[(x / CHECKER + (y0 + y) / CHECKER) & 1], 3);
-        SDL_UpdateTexture(d->texture, &(SDL_Rect){0, y0, d->width, rows}, d->rows, pitch);
+    free(m->lo);
+    free(m->hi);
+    m->window = window;
+    m->image = image;
+    m->lo = malloc((size_t)window * sizeof(int));
+    m->hi = malloc((size_t)window * sizeof(int));
+    if (!m->lo || !m->hi)
+        return false;
+    for (int i = 0; i < window; i++) {
+        m->lo[i] = (int)((long long)i * image / window);
+        int next = (int)((long long)(i + 1) * image / window);
+        m->hi[i] = next > m->lo[i] ? next : m->lo[i] + 1;
     }
+    return true;
 }
 
-/* SDL started, and the window, its renderer and its texture made, on this
- * thread; the placeholder shown. False with d->why set otherwise. */
-static bool open_window(display *d)
+/* The first i in [0, n) with v[i] >= value, else n (v never decreasing). */
+static int first_at_least(const int *v, int n, int value)
 {
-    /* glint catches the signals itself; the software renderer needs no
-     * GPU driver (and leaves no driver's allocations behind at exit); the
-     * screensaver is left alone, which keeps SDL off the session bus. */
+    int lo = 0, hi = n;
+    while (lo < hi) {
+        int mid = lo + (hi - lo) / 2;
+        if (v[mid] >= value)
+            hi = mid;
+        else
+            lo = mid + 1;
+    }
+    return lo;
+}
+
+/* The window pixels along m that show any of image pixels [a0, a1): [*w0, *w1). */
+static void window_span(const axis_map *m, int a0, int a1, int *w0, int *w1)
+{
+    *w0 = first_at_least(m->hi, m->window, a0 + 1);
+    *w1 = first_at_least(m->lo, m->window, a1);
+}
+
+/* Draws the window pixels that show any of the image's rectangle t, each
+ * the average of its footprint's pixels within `within` (t itself while
+ * other tiles may still be written; the whole image once all are final),
+ * into the surface; *out, the window rectangle drawn. */
+static void draw_rect(display *d, const tile_rect *t, const tile_rect *within, SDL_Rect *out)
+{
+    int wx0, wx1, wy0, wy1;
+    window_span(&d->across, t->x0, t->x1, &wx0, &wx1);
+    window_span(&d->down, t->y0, t->y1, &wy0, &wy1);
+    SDL_Surface *s = d->surface;
+    const SDL_PixelFormat *f = s->format;
+    int bytes = f->BytesPerPixel;
+    for (int wy = wy0; wy < wy1; wy++) {
+        int y0 = d->down.lo[wy] > within->y0 ? d->down.lo[wy] : within->y0;
+        int y1 = d->down.hi[wy] < within->y1 ? d->down.hi[wy] : within->y1;
+        unsigned char *row = (unsigned char *)s->pixels + (size_t)wy * s->pitch;
+        for (int wx = wx0; wx < wx1; wx++) {
+            int x0 = d->across.lo[wx] > within->x0 ? d->across.lo[wx] : within->x0;
+            int x1 = d->across.hi[wx] < within->x1 ? d->across.hi[wx] : within->x1;
+            const float *p = d->pixels + 3 * ((size_t)y0 * d->width + x0);
+            float rgb[3] = {p[0], p[1], p[2]};
+            if (x1 - x0 > 1 || y1 - y0 > 1) {
+                rgb[0] = rgb[1] = rgb[2] = 0;
+                for (int y = y0; y < y1; y++)
+                    for (int x = x0; x < x1; x++)
+                        for (int c = 0; c < 3; c++)
+                            rgb[c] += d->pixels[3 * ((size_t)y * d->width + x) + c];
+                for (int c = 0; c < 3; c++)
+                    rgb[c] /= (float)((x1 - x0) * (y1 - y0));
+            }
+            Uint8 r = srgb_byte(rgb[0]), g = srgb_byte(rgb[1]), b = srgb_byte(rgb[2]);
+            /* SDL_MapRGB's own formula, inline, but for palettes. */
+            Uint32 v = f->palette ? SDL_MapRGB(f, r, g, b)
+                                  : (Uint32)(r >> f->Rloss) << f->Rshift | (Uint32)(g >> f->Gloss) << f->Gshift |
+                                        (Uint32)(b >> f->Bloss) << f->Bshift | f->Amask;
+            memcpy(row + (size_t)wx * bytes, &v, (size_t)bytes); /* little-endian: the low bytes */
+        }
+    }
+    *out = (SDL_Rect){wx0, wy0, wx1 - wx0, wy1 - wy0};
+}
+
+/* Fills the whole surface with the placeholder. */
+static void draw_placeholder(display *d)
+{
+    SDL_Surface *s = d->surface;
+    Uint32 grey[2];
+    for (int k = 0; k < 2; k++)
+        grey[k] = SDL_MapRGB(s->format, CHECKER_GREYS[k], CHECKER_GREYS[k], CHECKER_GREYS[k]);
+    for (int y = 0; y < s->h; y += CHECKER)
+        for (int x = 0; x < s->w; x += CHECKER)
+            SDL_FillRect(s, &(SDL_Rect){x, y, CHECKER, CHECKER}, grey[(x / CHECKER + y / CHECKER) & 1]);
+}
+
+/* The window's surface taken again (it is SDL's, and changes with the
+ * window's size) and drawn whole: the placeholder, and the tiles drawn so
+ * far, or, once the render is over, the image. False when memory runs out. */
+static bool draw_all(display *d, bool finished)
+{
+    d->surface = SDL_GetWindowSurface(d->window);
+    if (!d->surface || !map_axis(&d->across, d->surface->w, d->width) ||
+        !map_axis(&d->down, d->surface->h, d->height))
+        return false;
+    SDL_Rect ignored;
+    if (finished) {
+        tile_rect all = {0, 0, d->width, d->height};
+        draw_rect(d, &all, &all, &ignored);
+    } else {
+        draw_placeholder(d);
+        for (size_t i = 0; i < d->shown; i++)
+            draw_rect(d, &d->taken[i], &d->taken[i], &ignored);
+    }
+    return true;
+}
+
+/* SDL started on this thread; false with d->why set otherwise. */
+static bool start_sdl(display *d)
+{
+    /* glint catches the signals itself; the window's pixels are SDL's
+     * surface, never a GPU driver's (none is needed, and none leaves its
+     * allocations behind at exit); the screensaver is left alone, which
+     * keeps SDL off the session bus. */
     SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
-    SDL_SetHint(SDL_HINT_RENDER_DRIVER, "software");
     SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
-    SDL_SetHint(SDL_HINT_RENDER_SCALE_QUALITY, "linear");
     SDL_SetHint(SDL_HINT_VIDEO_ALLOW_SCREENSAVER, "1");
     if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0)
         return failed(d, "%s", SDL_GetError());
@@ -102,53 +223,51 @@ static bool open_window(display *d)
     const char *driver = SDL_GetCurrentVideoDriver();
     if (!driver || strcmp(driver, "offscreen") == 0 || strcmp(driver, "dummy") == 0)
         return failed(d, "SDL found no screen to show it on (its video driver is '%s')", driver ? driver : "none");
-    d->wake_event = SDL_RegisterEvents(1);
-    if (d->wake_event == (Uint32)-1)
-        return failed(d, "%s", SDL_GetError());
+    return true;
+}
+
+/* The window made, sized to the image or scaled down to fit the screen,
+ * and the placeholder shown; false with d->why set otherwise. */
+static bool open_window(display *d)
+{
     /* SDL never shrinks a window to the screen: scaled here, keeping the aspect. */
     int w = d->width, h = d->height;
     SDL_Rect usable;
     if (SDL_GetDisplayUsableBounds(0, &usable) == 0 && usable.w > 0 && usable.h > 0 &&
         (w > usable.w || h > usable.h)) {
-        double sx = (double)usable.w / w, sy = (double)usable.h / h, s = sx < sy ? sx : sy;
-        w = (int)(w * s) > 0 ? (int)(w * s) : 1;
-        h = (int)(h * s) > 0 ? (int)(h * s) : 1;
+        double sx = (double)usable.w / w, sy = (double)usable.h / h, scale = sx < sy ? sx : sy;
+        w = (int)(w * scale) > 0 ? (int)(w * scale) : 1;
+        h = (int)(h * scale) > 0 ? (int)(h * scale) : 1;
     }
-    d->window = SDL_CreateWindow(d->title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, w, h, SDL_WINDOW_RESIZABLE);
+    d->window = SDL_CreateWindow(d->title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, w, h, 0);
     if (!d->window)
         return failed(d, "%s", SDL_GetError());
-    d->renderer = SDL_CreateRenderer(d->window, -1, 0);
-    if (!d->renderer)
-        return failed(d, "%s", SDL_GetError());
-    /* The image fills the window however it is sized, letterboxed to its aspect. */
-    if (SDL_RenderSetLogicalSize(d->renderer, d->width, d->height) != 0)
-        return failed(d, "%s", SDL_GetError());
-    d->texture = SDL_CreateTexture(d->renderer, SDL_PIXELFORMAT_RGB24, SDL_TEXTUREACCESS_STREAMING, d->width, d->height);
-    if (!d->texture)
-        return failed(d, "%s", SDL_GetError());
-    d->rows = malloc((size_t)3 * d->width * CHECKER);
-    if (!d->rows)
-        return failed(d, "out of memory");
-    show_placeholder(d);
-    SDL_RenderClear(d->renderer);
-    SDL_RenderCopy(d->renderer, d->texture, NULL, NULL);
-    SDL_RenderPresent(d->renderer);
+    if (!draw_all(d, false))
+        return failed(d, "%s", d->surface ? "out of memory" : SDL_GetError());
+    SDL_UpdateWindowSurface(d->window);
     return true;
 }
 
-/* Puts a finished rectangle's pixels into the texture, CHECKER rows at a
- * time (the rows buffer is image-wide). Its pixels are final, so they are
- * read without the lock. */
-static void show_rect(display *d, const tile_rect *t)
+/* Copies the tiles finished since the last frame into d->taken, under the
+ * lock; their count. 0, taking none, when memory runs out (they are taken
+ * at a later frame, or drawn with the whole image at the end). */
+static size_t take_new_tiles_locked(display *d)
 {
-    int w = t->x1 - t->x0;
-    for (int y0 = t->y0; y0 < t->y1; y0 += CHECKER) {
-        int rows = t->y1 - y0 < CHECKER ? t->y1 - y0 : CHECKER;
-        for (int y = 0; y < rows; y++)
-            srgb_encode(d->rows + (size_t)y * 3 * w, d->pixels + 3 * ((size_t)(y0 + y) * d->width + t->x0),
-                        (size_t)3 * w);
-        SDL_UpdateTexture(d->texture, &(SDL_Rect){t->x0, y0, w, rows}, d->rows, 3 * w);
+    size_t fresh = d->rect_count - d->shown;
+    if (d->rect_count > d->taken_capacity) {
+        tile_rect *taken = realloc(d->taken, d->rect_capacity * sizeof *taken);
+        SDL_Rect *changed = realloc(d->changed, d->rect_capacity * sizeof *changed);
+        if (taken)
+            d->taken = taken;
+        if (changed)
+            d->changed = changed;
+        if (!taken || !changed)
+            return 0;
+        d->taken_capacity = d->rect_capacity;
     }
+    if (fresh > 0)
+        memcpy(d->taken + d->shown, d->rects + d->shown, fresh * sizeof *d->taken);
+    return fresh;
 }
 
 /* Clears an unfinished progress line on a terminal before a message. */
@@ -162,15 +281,21 @@ static void clear_progress_line(void)
  * where on stderr. */
 static void save_image(display *d)
 {
-    size_t values = (size_t)3 * d->width * d->height;
-    glint_image shot = {d->width, d->height, malloc(values * sizeof(float))};
+    glint_image shot = {d->width, d->height, film_pixels_alloc(d->width, d->height)};
     clear_progress_line();
     if (!shot.pixels) {
         cli_complain(CLI_EXIT_INTERNAL, "s: out of memory for a copy of the image to save");
         return;
     }
+    /* The listed tiles alone: others may be being copied in. */
     pthread_mutex_lock(&d->lock);
-    memcpy(shot.pixels, d->pixels, values * sizeof(float));
+    for (size_t i = 0; i < d->rect_count; i++) {
+        const tile_rect *t = &d->rects[i];
+        for (int y = t->y0; y < t->y1; y++) {
+            size_t at = 3 * ((size_t)y * d->width + t->x0);
+            memcpy(shot.pixels + at, d->pixels + at, (size_t)3 * (t->x1 - t->x0) * sizeof(float));
+        }
+    }
     long long done = d->pixels_done;
     pthread_mutex_unlock(&d->lock);
     glint_error err = {0};
@@ -184,73 +309,90 @@ static void save_image(display *d)
 
 /* What the user did since the last look at the window's events. */
 typedef struct user_events {
-    bool closed, save, exposed;
+    bool closed, save, exposed, resized;
 } user_events;
 
-/* Waits up to timeout_ms for events (or a wake-up), then takes all there are. */
-static user_events take_events(int timeout_ms)
+/* Takes all the events there are. */
+static user_events take_events(void)
 {
     user_events u = {0};
     SDL_Event ev;
-    if (!SDL_WaitEventTimeout(&ev, timeout_ms))
-        return u;
-    do {
+    while (SDL_PollEvent(&ev)) {
         if (ev.type == SDL_QUIT || (ev.type == SDL_WINDOWEVENT && ev.window.event == SDL_WINDOWEVENT_CLOSE))
             u.closed = true;
         else if (ev.type == SDL_KEYDOWN && (ev.key.keysym.sym == SDLK_ESCAPE || ev.key.keysym.sym == SDLK_q))
             u.closed = true;
         else if (ev.type == SDL_KEYDOWN && ev.key.keysym.sym == SDLK_s && !ev.key.repeat)
             u.save = true;
-        /* Nothing keeps an uncovered window's pixels: it is drawn again. */
-        else if (ev.type == SDL_WINDOWEVENT &&
-                 (ev.window.event == SDL_WINDOWEVENT_EXPOSED || ev.window.event == SDL_WINDOWEVENT_SIZE_CHANGED))
+        /* Nothing keeps an uncovered window's pixels: they are sent again. */
+        else if (ev.type == SDL_WINDOWEVENT && ev.window.event == SDL_WINDOWEVENT_EXPOSED)
             u.exposed = true;
-    } while (SDL_PollEvent(&ev));
+        /* A window manager may resize it: it is drawn again, to the new size. */
+        else if (ev.type == SDL_WINDOWEVENT && ev.window.event == SDL_WINDOWEVENT_SIZE_CHANGED)
+            u.resized = true;
+    }
     return u;
 }
 
+/* Waits, under the lock, until the next frame is due or there is news (the
+ * render over, a stop). SDL's own wait is not used: in SDL 2.26 waking it
+ * from another thread can send an event to a window already destroyed,
+ * which Xlib makes fatal; this way no other thread calls SDL at all. */
+static void wait_for_frame_locked(display *d, bool finished_shown)
+{
+    struct timespec until;
+    clock_gettime(CLOCK_MONOTONIC, &until);
+    until.tv_nsec += FRAME_MS * 1000000L;
+    if (until.tv_nsec >= 1000000000L) {
+        until.tv_sec++;
+        until.tv_nsec -= 1000000000L;
+    }
+    while (!d->stop && !*d->cancel && d->finished == finished_shown &&
+           pthread_cond_timedwait(&d->news, &d->lock, &until) == 0) {
+    }
+}
+
 /* The window's loop, until the user closes it, a signal sets *cancel, or
- * display_close asks it to stop. */
+ * display_close asks it to stop: once a frame (30 a second at most), or
+ * at once when the render is over. */
 static void show_until_closed(display *d)
 {
-    Uint64 last_frame = SDL_GetTicks64();
     int shown_percent = -1;
     bool shown_finished = false;
     for (;;) {
-        Uint64 since = SDL_GetTicks64() - last_frame;
-        user_events u = take_events(since >= FRAME_MS ? 1 : (int)(FRAME_MS - since));
+        user_events u = take_events();
         if (u.save)
             save_image(d);
-        bool frame_due = SDL_GetTicks64() - last_frame >= FRAME_MS;
         pthread_mutex_lock(&d->lock);
         if (u.closed && !d->finished)
             *d->cancel = 1;
         bool leave = u.closed || d->stop || *d->cancel;
-        size_t taken = 0;
-        if (frame_due && !leave) {
-            tile_rect *swap = d->taken;
-            d->taken = d->fresh;
-            d->fresh = swap;
-            taken = d->fresh_count;
-            d->fresh_count = 0;
-        }
+        size_t fresh = leave ? 0 : take_new_tiles_locked(d);
         int percent = (int)(d->pixels_done * 100 / ((long long)d->width * d->height));
         bool finished = d->finished;
         double seconds = d->seconds;
-        if (leave)
-            d->state = GONE;
         pthread_mutex_unlock(&d->lock);
         if (leave)
             return;
-        for (size_t i = 0; i < taken; i++)
-            show_rect(d, &d->taken[i]);
-        if (taken > 0 || u.exposed) {
-            SDL_RenderClear(d->renderer);
-            SDL_RenderCopy(d->renderer, d->texture, NULL, NULL);
-            SDL_RenderPresent(d->renderer);
+        /* Once the render is over every pixel is final: the whole image
+         * is drawn, each window pixel from its whole footprint. */
+        if (u.resized || (finished && !shown_finished)) {
+            d->shown += fresh;
+            if (!draw_all(d, finished)) {
+                clear_progress_line();
+                cli_complain(CLI_EXIT_INTERNAL, "--display: the window closed, out of memory to draw it");
+                return;
+            }
+            SDL_UpdateWindowSurface(d->window);
+        } else {
+            for (size_t i = 0; i < fresh; i++)
+                draw_rect(d, &d->taken[d->shown + i], &d->taken[d->shown + i], &d->changed[i]);
+            d->shown += fresh;
+            if (u.exposed)
+                SDL_UpdateWindowSurface(d->window);
+            else if (fresh > 0)
+                SDL_UpdateWindowSurfaceRects(d->window, d->changed, (int)fresh);
         }
-        if (frame_due)
-            last_frame = SDL_GetTicks64();
         /* Set after the frame it describes is on screen. */
         if (percent != shown_percent || finished != shown_finished) {
             char title[sizeof d->title + 48];
@@ -262,44 +404,58 @@ static void show_until_closed(display *d)
             shown_percent = percent;
             shown_finished = finished;
         }
+        pthread_mutex_lock(&d->lock);
+        wait_for_frame_locked(d, shown_finished);
+        pthread_mutex_unlock(&d->lock);
     }
 }
 
-/* The window's thread: opens the window, says whether it did, shows it
+/* Sets the state and says so, under the lock. */
+static void set_state_locked(display *d, enum display_state state)
+{
+    d->state = state;
+    pthread_cond_broadcast(&d->news);
+}
+
+/* The window's thread: starts SDL (while the scene loads), opens the
+ * window once it knows the image's size, says whether it did, shows it
  * until it is closed, and then leaves SDL. */
 static void *window_thread(void *arg)
 {
     display *d = arg;
-    bool opened = open_window(d);
+    /* Linux's nice is per thread; no matter if it is refused. */
+    setpriority(PRIO_PROCESS, (id_t)gettid(), WINDOW_NICE);
+    bool ok = start_sdl(d);
     pthread_mutex_lock(&d->lock);
-    d->state = opened ? SHOWING : FAILED;
-    pthread_cond_broadcast(&d->started);
+    set_state_locked(d, ok ? READY : FAILED);
+    while (ok && d->width == 0 && !d->stop)
+        pthread_cond_wait(&d->news, &d->lock);
+    ok = ok && !d->stop;
     pthread_mutex_unlock(&d->lock);
-    if (opened)
+    if (ok) {
+        ok = open_window(d);
+        pthread_mutex_lock(&d->lock);
+        set_state_locked(d, ok ? SHOWING : FAILED);
+        pthread_mutex_unlock(&d->lock);
+    }
+    if (ok)
         show_until_closed(d);
-    if (d->texture)
-        SDL_DestroyTexture(d->texture);
-    if (d->renderer)
-        SDL_DestroyRenderer(d->renderer);
     if (d->window)
         SDL_DestroyWindow(d->window);
     SDL_Quit();
     return NULL;
 }
 
-/* Wakes the window's thread from its wait for events, while it has one. */
-static void wake_locked(display *d)
-{
-    if (d->state == SHOWING)
-        SDL_PushEvent(&(SDL_Event){.type = d->wake_event});
-}
-
 static void free_display(display *d)
 {
     free(d->pixels);
-    free(d->fresh);
+    free(d->rects);
     free(d->taken);
-    free(d->rows);
+    free(d->changed);
+    free(d->across.lo);
+    free(d->across.hi);
+    free(d->down.lo);
+    free(d->down.hi);
     free(d->save_path);
     free(d);
 }
@@ -320,7 +476,7 @@ static void make_title(char *title, size_t size, const char *scene)
             title[i] = '?';
 }
 
-display *display_open(const cli_options *o, const cli_run *r, volatile sig_atomic_t *cancel, int *code)
+display *display_start(volatile sig_atomic_t *cancel, int *code)
 {
     const char *x11 = getenv("DISPLAY"), *wayland = getenv("WAYLAND_DISPLAY");
     if ((!x11 || !*x11) && (!wayland || !*wayland)) {
@@ -328,25 +484,17 @@ display *display_open(const cli_options *o, const cli_run *r, volatile sig_atomi
         return NULL;
     }
     display *d = calloc(1, sizeof *d);
-    int w = r->settings.width, h = r->settings.height;
-    if (d) {
-        *d = (display){.width = w, .height = h, .cancel = cancel, .write_options = r->write_options};
-        /* Tiles begin on multiples of 4 pixels: at most this many. */
-        d->rect_capacity = (size_t)((w + 3) / 4) * (size_t)((h + 3) / 4);
-        d->pixels = calloc((size_t)3 * w * h, sizeof(float));
-        d->fresh = malloc(d->rect_capacity * sizeof(tile_rect));
-        d->taken = malloc(d->rect_capacity * sizeof(tile_rect));
-        d->save_path = strdup(strcmp(r->dest.path, "-") == 0 ? r->dest.default_path : r->dest.path);
-    }
-    if (!d || !d->pixels || !d->fresh || !d->taken || !d->save_path) {
-        if (d)
-            free_display(d);
-        *code = cli_complain(CLI_EXIT_INTERNAL, "out of memory for the window's copy of the image");
+    if (!d) {
+        *code = cli_complain(CLI_EXIT_INTERNAL, "out of memory for the window");
         return NULL;
     }
-    make_title(d->title, sizeof d->title, o->scene);
+    d->cancel = cancel;
     pthread_mutex_init(&d->lock, NULL);
-    pthread_cond_init(&d->started, NULL);
+    pthread_condattr_t monotonic;
+    pthread_condattr_init(&monotonic);
+    pthread_condattr_setclock(&monotonic, CLOCK_MONOTONIC);
+    pthread_cond_init(&d->news, &monotonic);
+    pthread_condattr_destroy(&monotonic);
     /* Signals go to the render's threads, which act on them, not to the window's. */
     sigset_t all, before;
     sigfillset(&all);
@@ -354,35 +502,72 @@ display *display_open(const cli_options *o, const cli_run *r, volatile sig_atomi
     int err = pthread_create(&d->thread, NULL, window_thread, d);
     pthread_sigmask(SIG_SETMASK, &before, NULL);
     if (err) {
-        free_display(d);
+        pthread_mutex_destroy(&d->lock);
+        pthread_cond_destroy(&d->news);
+        free(d);
         *code = cli_complain(CLI_EXIT_INTERNAL, "--display: no thread for the window: %s", strerror(err));
         return NULL;
     }
+    return d;
+}
+
+bool display_show(display *d, const cli_options *o, const cli_run *r, int *code)
+{
+    int w = r->settings.width, h = r->settings.height;
+    float *pixels = film_pixels_alloc(w, h);
+    char *save_path = strdup(strcmp(r->dest.path, "-") == 0 ? r->dest.default_path : r->dest.path);
+    if (!pixels || !save_path) {
+        free(pixels);
+        free(save_path);
+        display_close(d);
+        *code = cli_complain(CLI_EXIT_INTERNAL, "out of memory for the window's copy of the image");
+        return false;
+    }
     pthread_mutex_lock(&d->lock);
-    while (d->state == STARTING)
-        pthread_cond_wait(&d->started, &d->lock);
+    d->pixels = pixels;
+    d->save_path = save_path;
+    d->write_options = r->write_options;
+    make_title(d->title, sizeof d->title, o->scene);
+    d->width = w;
+    d->height = h;
+    pthread_cond_broadcast(&d->news);
+    pthread_mutex_unlock(&d->lock);
+    /* While the window opens, the copy's pages are made ready, which the
+     * render threads would otherwise wait for. */
+    for (size_t at = 0; at < (size_t)12 * w * h; at += 4096)
+        ((volatile char *)pixels)[at] = 0;
+    pthread_mutex_lock(&d->lock);
+    while (d->state == STARTING || d->state == READY)
+        pthread_cond_wait(&d->news, &d->lock);
     bool opened = d->state == SHOWING;
     pthread_mutex_unlock(&d->lock);
     if (!opened) {
-        pthread_join(d->thread, NULL);
         *code = cli_complain(CLI_EXIT_USAGE, "--display: the window could not open: %s", d->why);
-        free_display(d);
-        return NULL;
+        display_close(d);
     }
-    return d;
+    return opened;
 }
 
 void display_tile(void *user, int x0, int y0, int x1, int y1, const float *pixels, size_t stride)
 {
     display *d = user;
     size_t row = (size_t)3 * (x1 - x0) * sizeof(float);
-    pthread_mutex_lock(&d->lock);
+    /* Outside the lock: no one reads a tile's pixels before it is listed. */
     for (int y = y0; y < y1; y++)
         memcpy(d->pixels + 3 * ((size_t)y * d->width + x0), pixels + (size_t)(y - y0) * stride, row);
-    /* Never full (tiles begin on multiples of 4); a tile past it would
-     * only miss the window, never the saved image. */
-    if (d->fresh_count < d->rect_capacity)
-        d->fresh[d->fresh_count++] = (tile_rect){x0, y0, x1, y1};
+    pthread_mutex_lock(&d->lock);
+    /* Without memory for a longer list, the tile misses the window, and
+     * what s saves, until the render is over. */
+    if (d->rect_count == d->rect_capacity) {
+        size_t capacity = d->rect_capacity ? 2 * d->rect_capacity : 256;
+        tile_rect *rects = realloc(d->rects, capacity * sizeof *rects);
+        if (rects) {
+            d->rects = rects;
+            d->rect_capacity = capacity;
+        }
+    }
+    if (d->rect_count < d->rect_capacity)
+        d->rects[d->rect_count++] = (tile_rect){x0, y0, x1, y1};
     d->pixels_done += (long long)(x1 - x0) * (y1 - y0);
     pthread_mutex_unlock(&d->lock);
 }
@@ -392,7 +577,7 @@ void display_finished(display *d, double seconds)
     pthread_mutex_lock(&d->lock);
     d->finished = true;
     d->seconds = seconds;
-    wake_locked(d);
+    pthread_cond_broadcast(&d->news);
     pthread_mutex_unlock(&d->lock);
 }
 
@@ -401,7 +586,7 @@ static void join_and_free(display *d)
 {
     pthread_join(d->thread, NULL);
     pthread_mutex_destroy(&d->lock);
-    pthread_cond_destroy(&d->started);
+    pthread_cond_destroy(&d->news);
     free_display(d);
 }
 
@@ -416,7 +601,7 @@ void display_close(display *d)
         return;
     pthread_mutex_lock(&d->lock);
     d->stop = true;
-    wake_locked(d);
+    pthread_cond_broadcast(&d->news);
     pthread_mutex_unlock(&d->lock);
     join_and_free(d);
 }

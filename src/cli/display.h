@@ -8,22 +8,30 @@
 #define GLINT_CLI_DISPLAY_H
 
 #include <signal.h>
+#include <stdbool.h>
 #include <stddef.h>
 #include "cli/args.h"
 #include "cli/setup.h"
 
 typedef struct display display;
 
-/* Opens the window for the run's image: its size, scaled down to fit the
- * screen keeping the aspect, titled with the scene's name (o->scene, or the
- * seed room), and shows the placeholder. Until display_finished, closing
- * the window sets *cancel to 1 (the render then stops, as on SIGINT); s
- * saves to the run's output file, or to its default name (glint.png) when
- * the image goes to standard output. Returns NULL after saying why on
+/* Starts the window's thread, which starts SDL while the caller loads the
+ * scene. Until display_finished, closing the window sets *cancel to 1 (the
+ * render then stops, as on SIGINT). Returns NULL after saying why on
  * stderr, with *code the exit code: CLI_EXIT_USAGE when there is no display
- * (neither DISPLAY nor WAYLAND_DISPLAY set) or the window cannot open,
+ * (neither DISPLAY nor WAYLAND_DISPLAY set), CLI_EXIT_INTERNAL when memory
+ * or threads run out. */
+display *display_start(volatile sig_atomic_t *cancel, int *code);
+
+/* Opens the window for the run's image, once it is loaded: the image's
+ * size, scaled down to fit the screen keeping the aspect, titled with the
+ * scene's name (o->scene, or the seed room), showing the placeholder; s
+ * will save to the run's output file, or to its default name (glint.png)
+ * when the image goes to standard output. Returns false after saying why on
+ * stderr and closing the display, with *code the exit code: CLI_EXIT_USAGE
+ * when the window cannot open (SDL, or the display, refused it),
  * CLI_EXIT_INTERNAL when memory for the window's copy of the image runs out. */
-display *display_open(const cli_options *o, const cli_run *r, volatile sig_atomic_t *cancel, int *code);
+bool display_show(display *d, const cli_options *o, const cli_run *r, int *code);
 
 /* A glint_tile_fn, user the display: copies the finished tile in, for the
  * window's thread to show at its next frame (30 a second at most). */

@@ -43,14 +43,20 @@ static int run(const cli_options *o)
         return cli_complain(CLI_EXIT_USAGE, "will not write a%s %s image to a terminal; redirect stdout or give -o FILE",
                             o->format && strchr("AEIOU", o->format->name[0]) ? "n" : "",
                             o->format ? o->format->name : "PNG");
-    cli_run r;
-    int code = cli_prepare(o, true, &r);
-    if (code >= 0)
+    /* The window's SDL starts while the scene loads. */
+    int code;
+    display *window = NULL;
+    if (o->display && !(window = display_start(&interrupted, &code)))
         return code;
+    cli_run r;
+    code = cli_prepare(o, true, &r);
+    if (code >= 0) {
+        display_close(window);
+        return code;
+    }
     if (o->print_scene)
         return cli_print_scene(r.scene, o->output);
-    display *window = NULL;
-    if (o->display && !(window = display_open(o, &r, &interrupted, &code))) {
+    if (window && !display_show(window, o, &r, &code)) {
         glint_scene_free(r.scene);
         return code;
     }

@@ -177,18 +177,24 @@ typedef struct flag_load {
 /* A scene_loader: the scene as the flags ask, its problems said (on rank
  * 0 alone; on another rank kept in l->messages, which its thread loads
  * while rank 0 does, until it is known whether the failure was its own);
- * on rank 0, with --display, the window opened, a failure to open it
- * failing the load, before any rank renders. */
+ * on rank 0, with --display, the window's SDL started before the load and
+ * the window opened after it, a failure to open it failing the load,
+ * before any rank renders. */
 static glint_status load_flags_scene(void *user, bool rank0, glint_error *err)
 {
     flag_load *l = user;
     cli_send_messages(l->messages);
     if (l->other_flags)
         l->code = cli_complain(CLI_EXIT_INTERNAL, "this rank was given other arguments than rank 0");
-    else
+    else if (rank0 && l->o->display && !(l->window = display_start(&interrupted, &l->code)))
+        ; /* said */
+    else {
         l->code = cli_prepare(l->o, rank0, l->run);
-    if (l->code < 0 && rank0 && l->o->display)
-        l->window = display_open(l->o, l->run, &interrupted, &l->code);
+        if (l->code >= 0)
+            display_close(l->window);
+        if (l->code >= 0 || (l->window && !display_show(l->window, l->o, l->run, &l->code)))
+            l->window = NULL;
+    }
     cli_send_messages(NULL);
     /* Said already; the status only tells failure from success. */
     return l->code < 0 ? GLINT_OK
