@@ -12,12 +12,7 @@
 # bench/README.md ("Huge scenes").
 set -euo pipefail
 
-REPO=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-GLINT=${GLINT_BIN:-$REPO/build/glint}
-RUNS=${BENCH_RUNS:-3}
-die() { echo "bench/huge.sh: $*" >&2; exit 1; }
-[[ -x "$GLINT" ]] || die "no glint at $GLINT: build it (./build.sh) or set GLINT_BIN"
-[[ "$RUNS" =~ ^[1-9][0-9]*$ ]] || die "BENCH_RUNS must be a positive integer, not '$RUNS'"
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh" huge.sh 3
 /usr/bin/time -f %e true 2>/dev/null || die "needs GNU time (/usr/bin/time; Debian package 'time')"
 
 tmp=$(mktemp -d)

@@ -15,20 +15,15 @@
 # See bench/README.md ("glint-mpi on one machine").
 set -euo pipefail
 
-REPO=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
-GLINT=${GLINT_BIN:-$REPO/build/glint}
+source "$(dirname "${BASH_SOURCE[0]}")/common.sh" mpi.sh 5
 GLINT_MPI=$(dirname "$GLINT")/glint-mpi
-RUNS=${BENCH_RUNS:-5}
-die() { echo "bench/mpi.sh: $*" >&2; exit 1; }
-[[ -x "$GLINT" && -x "$GLINT_MPI" ]] || die "no glint and glint-mpi in $(dirname "$GLINT"): build them (./build.sh)"
-[[ "$RUNS" =~ ^[1-9][0-9]*$ ]] || die "BENCH_RUNS must be a positive integer, not '$RUNS'"
+[[ -x "$GLINT_MPI" ]] || die "no glint and glint-mpi in $(dirname "$GLINT"): build them (./build.sh)"
 command -v mpirun >/dev/null || die "no mpirun (Debian: openmpi-bin)"
 export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
 
 tmp=$(mktemp -d)
 trap 'rm -rf "$tmp"' EXIT
 
-median() { sort -g | awk '{ v[NR] = $1 } END { print (NR % 2) ? v[(NR + 1) / 2] : (v[NR / 2] + v[NR / 2 + 1]) / 2 }'; }
 
 # once OUT COMMAND...: one run; appends its render seconds (from the
 # summary line) and wall seconds to $tmp/OUT.times; its stderr stays in
