@@ -123,16 +123,28 @@ glint_status glint_scene_set_settings(glint_scene *scene, const glint_settings *
 /* Returns the scene's current settings. */
 glint_settings glint_scene_get_settings(const glint_scene *scene);
 
-/* Pinhole camera. */
+/* The kinds of camera. */
+typedef enum glint_camera_kind {
+    GLINT_CAMERA_PINHOLE = 0,  /* every ray from the eye: everything in focus */
+    GLINT_CAMERA_THIN_LENS     /* rays from a round lens focused at one distance: depth of field */
+} glint_camera_kind;
+
+/* A camera: a pinhole unless `kind` says otherwise. */
 typedef struct glint_camera {
     glint_vec3 position;
     glint_vec3 look_at;
     glint_vec3 up;
     double vfov_degrees;       /* vertical field of view, in (0, 180) */
+    glint_camera_kind kind;
+    double aperture;           /* thin lens: the lens's radius in scene units, >= 0 (0 is
+                                  a pinhole); 0 for the pinhole */
+    double focus_distance;     /* thin lens: the distance along the view direction that is
+                                  sharp, >= 0 (0: the distance to look_at); 0 for the pinhole */
 } glint_camera;
 
 /* Replaces the camera after checking it (distinct position and look_at, up
- * not parallel to the view direction, field of view in range). */
+ * not parallel to the view direction, field of view in range, a lens's
+ * values only for the thin lens). */
 glint_status glint_scene_set_camera(glint_scene *scene, const glint_camera *cam, glint_error *err);
 
 /* Returns the scene's current camera. */

@@ -74,5 +74,5 @@ glint_camera view_frame_box(vec3 lo, vec3 hi, vec3 forward, vec3 up, double vfov
     double back = fmax(fmax(back_to_fit(k.x, k.z, kx), back_to_fit(k.y, k.z, ky)), -nearest + 1e-3 * size + 1e-9);
     double across = shift_to_centre(k.x, k.z, back), upward = shift_to_centre(k.y, k.z, back);
     vec3 position = v3_madd(v3_madd(v3_madd(centre, r, across), u, upward), f, -back);
-    return (glint_camera){position, v3_madd(position, f, back), up, vfov};
+    return (glint_camera){.position = position, .look_at = v3_madd(position, f, back), .up = up, .vfov_degrees = vfov};
 }

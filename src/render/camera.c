@@ -1,11 +1,13 @@
 /* camera.c - the list of camera kinds, one line per kind; the calls that go
  * to a camera's kind; and the lens sample and time that callers without
  * those samples pass. */
+#include <math.h>
 #include <string.h>
 #include "render/camera_kind.h"
 
 static const camera_kind *const KINDS[] = {
     &pinhole_camera,
+    &thin_lens_camera,
 };
 
 #define KIND_COUNT ((int)(sizeof KINDS / sizeof KINDS[0]))
@@ -25,14 +27,30 @@ const camera_kind *camera_kind_named(const char *name)
 
 const camera_kind *camera_kind_for(const glint_camera *desc)
 {
-    (void)desc; /* names no kind yet */
-    return camera_kind_named("pinhole");
+    for (int i = 0; i < KIND_COUNT; i++)
+        if (KINDS[i]->id == desc->kind)
+            return KINDS[i];
+    return &pinhole_camera; /* camera_validate lets no other kind through */
+}
+
+void camera_frame_init(camera *c, const glint_camera *d, int width, int height)
+{
+    c->position = d->position;
+    c->forward = v3_normalize(v3_sub(d->look_at, d->position));
+    c->right = v3_normalize(v3_cross(c->forward, d->up));
+    c->up = v3_cross(c->right, c->forward);
+    double half_height = tan(d->vfov_degrees * M_PI / 360.0);
+    c->width = width;
+    c->height = height;
+    c->per_x = half_height * width / height / width;
+    c->per_y = half_height / height;
 }
 
 void camera_init(camera *c, const glint_camera *desc, int width, int height)
 {
     c->kind = camera_kind_for(desc);
     c->kind->init(c, desc, width, height);
+    c->uses_lens = c->kind->uses_lens;
 }
 
 void camera_rays8(const camera *c, const double x[RAY8], const double y[RAY8], const camera_lens8 *lens,

@@ -6,6 +6,7 @@
 #ifndef GLINT_RENDER_CAMERA_H
 #define GLINT_RENDER_CAMERA_H
 
+#include <stdbool.h>
 #include "core/vec.h"
 
 typedef struct camera_kind camera_kind;
@@ -21,11 +22,13 @@ typedef struct camera_lens8 {
  * lens's aperture and focal distance, adds them here). */
 typedef struct camera {
     const camera_kind *kind;
+    bool uses_lens;                      /* its kind's rays depend on the lens sample */
     vec3 position, forward, right, up;   /* orthonormal frame */
     int width, height;
     /* Half the image plane's width (at distance 1) over the image width,
      * and likewise its height: a pixel is twice these across. */
     double per_x, per_y;
+    double lens_radius, focus_distance;  /* a thin lens's */
 } camera;
 
 /* Sets c up, as the kind the scene's camera asks for (camera_kind_for),

@@ -3,15 +3,17 @@
  *
  * A kind is one file (pinhole_camera.c, ...) that exports one camera_kind:
  * its name and its two operations. Adding a kind: write its file, add a
- * line to camera.c's list, and have camera_kind_for choose it from the
- * scene's camera (glint_camera, in the public API, names no kind yet). */
+ * line to camera.c's list, and a glint_camera_kind for it in glint.h. */
 #ifndef GLINT_RENDER_CAMERA_KIND_H
 #define GLINT_RENDER_CAMERA_KIND_H
 
+#include "core/lanes.h"
 #include "render/camera.h"
 
 struct camera_kind {
     const char *name;
+    glint_camera_kind id;
+    bool uses_lens;           /* its rays depend on the lens sample: the renderer makes them */
     /* Fills c's values (all but c->kind) from the scene's camera, which
      * has passed camera_validate, for an image of width x height pixels. */
     void (*init)(camera *c, const glint_camera *desc, int width, int height);
@@ -25,11 +27,39 @@ struct camera_kind {
  * and the time are ignored. */
 extern const camera_kind pinhole_camera;
 
+/* A thin lens: rays start on a disk of radius desc->aperture about the
+ * camera's position, across the view, and meet where the pinhole's ray
+ * through the same image position crosses the plane of focus. */
+extern const camera_kind thin_lens_camera;
+
+/* What every kind that looks through an image plane shares: c's frame
+ * (forward, right, up), size and per_x, per_y from the scene's camera. */
+void camera_frame_init(camera *c, const glint_camera *desc, int width, int height);
+
+/* The unit directions through the image positions (x[k], y[k]) of four
+ * rays from the camera's position: no division but the normalisation's,
+ * and the image centre and every pixel edge there map exactly onto the
+ * view axis. Each lane is what the same steps in scalar code would give. */
+static inline void camera_plane_directions(const camera *c, quad_f64 x, quad_f64 y, quad_f64 *dx, quad_f64 *dy,
+                                           quad_f64 *dz)
+{
+    vec3 f = c->forward, r = c->right, u = c->up;
+    quad_f64 sx = (quad_splat(2) * x - quad_splat(c->width)) * quad_splat(c->per_x);
+    quad_f64 sy = (quad_splat(c->height) - quad_splat(2) * y) * quad_splat(c->per_y);
+    quad_f64 ex = quad_splat(f.x) + (quad_splat(r.x) * sx + quad_splat(u.x) * sy);
+    quad_f64 ey = quad_splat(f.y) + (quad_splat(r.y) * sx + quad_splat(u.y) * sy);
+    quad_f64 ez = quad_splat(f.z) + (quad_splat(r.z) * sx + quad_splat(u.z) * sy);
+    quad_f64 l = quad_sqrt(ex * ex + ey * ey + ez * ez);
+    quad_f64 inv = quad_select(l > 0, quad_splat(1) / l, quad_splat(1));
+    *dx = ex * inv;
+    *dy = ey * inv;
+    *dz = ez * inv;
+}
+
 /* The kind with that name, or NULL. */
 const camera_kind *camera_kind_named(const char *name);
 
-/* The kind the scene's camera asks for: always the pinhole, until
- * glint_camera names a kind. */
+/* The kind the scene's camera asks for (desc->kind). */
 const camera_kind *camera_kind_for(const glint_camera *desc);
 
 #endif

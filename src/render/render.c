@@ -62,6 +62,19 @@ static void sample_offset(const glint_settings *s, int n, int px, int py, int sx
     }
 }
 
+/* Where sample (sx, sy) of the n x n grid of each lane's pixel passes the
+ * lens: a hash of the pixel, the sample and the seed, apart from the
+ * jittered sampler's. */
+static void lens_samples(const glint_settings *s, int n, const int px[RAY8], const int py[RAY8], int sx, int sy,
+                         camera_lens8 *lens)
+{
+    for (int i = 0; i < RAY8; i++) {
+        uint32_t h = hash4((uint32_t)px[i], (uint32_t)py[i], (uint32_t)(sy * n + sx), s->seed ^ 0x4c454e53U);
+        lens->u[i] = hash_unit(h);
+        lens->v[i] = hash_unit(hash_u32(h ^ 0x9e3779b9U));
+    }
+}
+
 /* The lanes of the block at (x0, y0): their pixels, and which lie in the image. */
 static void block_lanes(const job *j, int x0, int y0, int px[ACCEL_PACKET], int py[ACCEL_PACKET],
                         bool active[ACCEL_PACKET])
@@ -102,9 +115,13 @@ __attribute__((always_inline)) static inline void trace_samples(tracer *t, const
                 x[i] = px[i] + ox;
                 y[i] = py[i] + oy;
             }
-            /* The sampler makes image positions only: every ray passes the
-             * lens's centre at the shutter's middle. */
-            camera_rays8(&j->cam, x, y, &camera_lens_centre, camera_shutter_middle, &rays);
+            /* A lens sample only for a camera that uses one; every ray
+             * is at the shutter's middle. */
+            camera_lens8 lens;
+            if (j->cam.uses_lens)
+                lens_samples(s, n, px, py, sx, sy, &lens);
+            camera_rays8(&j->cam, x, y, j->cam.uses_lens ? &lens : &camera_lens_centre, camera_shutter_middle,
+                         &rays);
             tracer_trace8(t, &rays, active, c);
             film_block_add(b, active, c, careful);
         }

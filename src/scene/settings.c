@@ -2,6 +2,7 @@
  * keys, defaults and ranges in one table each, and the checks of the C API
  * (glint_scene_set_settings, glint_scene_set_camera), which the scene-file
  * loader reads the same tables for. */
+#include <float.h>
 #include <math.h>
 #include <stddef.h>
 #include <string.h>
@@ -29,7 +30,7 @@ static const param SETTINGS_PARAMS[] = {
     {.key = "sampler", .type = PARAM_CHOICE, SETTING(sampler), .words = SAMPLERS, .word_count = 2,
      .meaning = "regular: the centres of the N x N cells; jittered: one random point in each cell"},
     {.key = "seed", .type = PARAM_UINT32, SETTING(seed), .lo = 0, .hi = 4294967295.0,
-     .meaning = "changes the jittered pattern only"},
+     .meaning = "changes the jittered pattern and a thin lens's samples only"},
     {.key = "depth", .type = PARAM_INTEGER, SETTING(max_depth), .def = {5}, .lo = 0, .hi = 64,
      .meaning = "recursion limit for reflected, refracted and see-through rays (0: none); fainter than 1/8192, or past 4096 a sample, they are not traced"},
     {.key = "background", .type = PARAM_COLOR, SETTING(background), .lo = 0, .hi = DBL_MAX,
@@ -40,6 +41,8 @@ static const param SETTINGS_PARAMS[] = {
 
 #define CAMERA(name) .offset = offsetof(glint_camera, name)
 
+static const char *const CAMERA_KINDS[] = {"pinhole", "thin_lens"};
+
 static const param CAMERA_PARAMS[] = {
     {.key = "position", .type = PARAM_VEC3, CAMERA(position), .meaning = "where the eye is"},
     {.key = "look_at", .type = PARAM_VEC3, CAMERA(look_at), .def = {0, 0, -1},
@@ -48,6 +51,14 @@ static const param CAMERA_PARAMS[] = {
      .meaning = "which way is up in the image; must not be parallel to the view direction"},
     {.key = "fov", .type = PARAM_NUMBER, CAMERA(vfov_degrees), .def = {45}, .lo = 0, .hi = 180,
      .bounds = PARAM_OPEN_BOTH, .unit = "degrees", .meaning = "vertical field of view"},
+    {.key = "type", .type = PARAM_CHOICE, CAMERA(kind), .words = CAMERA_KINDS, .word_count = 2,
+     .meaning = "pinhole: every ray from position, all in focus; thin_lens: rays from a round lens "
+                "about position, sharp at focus_distance only (depth of field)"},
+    {.key = "aperture", .type = PARAM_NUMBER, CAMERA(aperture), .lo = 0, .hi = DBL_MAX, .unit = "scene units",
+     .meaning = "thin_lens: the lens's radius (0: as sharp as the pinhole); larger blurs more"},
+    {.key = "focus_distance", .type = PARAM_NUMBER, CAMERA(focus_distance), .lo = 0, .hi = DBL_MAX,
+     .unit = "scene units",
+     .meaning = "thin_lens: the distance along the view direction that is in focus (0: to look_at)"},
 };
 
 #define IMPORT(name) .offset = offsetof(glint_import_options, name)
@@ -125,5 +136,9 @@ glint_status camera_validate(const glint_camera *c, glint_error *err)
         return error_set(err, GLINT_ERR_INVALID, "camera position and look_at must differ");
     if (v3_length(v3_cross(v3_normalize(view), v3_normalize(c->up))) < 1e-9)
         return error_set(err, GLINT_ERR_INVALID, "camera up must not be parallel to the view direction");
+    /* A lens given to a pinhole is a forgotten type, not a wish for none. */
+    if (c->kind != GLINT_CAMERA_THIN_LENS && (c->aperture != 0 || c->focus_distance != 0))
+        return error_set(err, GLINT_ERR_INVALID, "camera %s is for type thin_lens, and this camera is a pinhole",
+                         c->aperture != 0 ? "aperture" : "focus_distance");
     return GLINT_OK;
 }

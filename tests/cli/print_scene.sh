@@ -137,6 +137,9 @@ camera:
   look_at: [0, 0.5, 0]
   up: [0, 1, 0]
   fov: 45
+  type: pinhole
+  aperture: 0
+  focus_distance: 0
 materials:
   "red: bright": {color: [1, 0, 0], specular: 0}
   glow: {color: {linear: [2, 0.5, 0.25]}}

@@ -24,7 +24,7 @@ static glint_scene *new_scene(int w, int h, double fov)
     st.width = w;
     st.height = h;
     assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
-    glint_camera cam = {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, fov};
+    glint_camera cam = {.position = {0, 0, 0}, .look_at = {0, 0, -1}, .up = {0, 1, 0}, .vfov_degrees = fov};
     assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
     return s;
 }
@@ -365,7 +365,7 @@ static void test_smooth_normals_and_per_triangle_materials(void **state)
 static void shadows_of_quads(bool instanced, const glint_material *a, const glint_material *b, double out[3])
 {
     glint_scene *s = new_scene(64, 64, 60);
-    glint_camera cam = {{0, 10, 0}, {0, 0, 0}, {0, 0, -1}, 60};
+    glint_camera cam = {.position = {0, 10, 0}, .look_at = {0, 0, 0}, .up = {0, 0, -1}, .vfov_degrees = 60};
     assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
     glint_material white = glint_material_default();
     white.specular = 0;

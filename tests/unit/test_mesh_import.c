@@ -402,7 +402,7 @@ static void test_bunny_renders_inside_its_bounds(void **state)
     glint_scene *s = new_scene();
     const mesh *m = import_shared(s, "stanford-bunny.obj");
     vec3 lo = m->lo, hi = m->hi, c = v3_scale(v3_add(lo, hi), 0.5);
-    glint_camera cam = {{c.x, c.y, c.z + 0.5}, {c.x, c.y, c.z}, {0, 1, 0}, 30};
+    glint_camera cam = {.position = {c.x, c.y, c.z + 0.5}, .look_at = {c.x, c.y, c.z}, .up = {0, 1, 0}, .vfov_degrees = 30};
     const int w = 200, h = 200;
     glint_image img = render_imported(s, w, h, cam, cam.position);
     /* The box's corners through the pinhole: x, y in pixels. */
@@ -439,7 +439,7 @@ static void test_cornell_box_renders_red_and_green_walls(void **state)
 {
     glint_scene *s = new_scene();
     import_shared(s, "CornellBox-Original.obj");
-    glint_camera cam = {{0, 1, 3.9}, {0, 1, 0}, {0, 1, 0}, 37};
+    glint_camera cam = {.position = {0, 1, 3.9}, .look_at = {0, 1, 0}, .up = {0, 1, 0}, .vfov_degrees = 37};
     glint_image img = render_imported(s, 64, 64, cam, (glint_vec3){0, 1.9, 0});
     const float *left = img.pixels + 3 * (32 * 64 + 3), *right = img.pixels + 3 * (32 * 64 + 60);
     assert_true(left[0] > 0.05f && left[0] > 3 * left[1] && left[0] > 3 * left[2]);
@@ -639,7 +639,7 @@ static void expect_red_over_blue(glint_scene *s, int mesh_index, glint_vec3 eye)
     glint_settings st = glint_settings_default();
     st.width = st.height = 4;
     assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
-    glint_camera cam = {eye, {eye.x, eye.y, eye.z - 1}, {0, 1, 0}, 40};
+    glint_camera cam = {.position = eye, .look_at = {eye.x, eye.y, eye.z - 1}, .up = {0, 1, 0}, .vfov_degrees = 40};
     assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
     glint_error err = {0};
     assert_true(glint_scene_add_instance(s, mesh_index, -1, NULL, &err) >= 0);

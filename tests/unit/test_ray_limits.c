@@ -22,7 +22,7 @@ static glint_scene *deep_scene(void)
     st.width = st.height = st.samples_per_pixel = 1;
     st.max_depth = 64;
     assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
-    glint_camera cam = {{0, 0, 0}, {0, 0, -1}, {0, 1, 0}, 30};
+    glint_camera cam = {.position = {0, 0, 0}, .look_at = {0, 0, -1}, .up = {0, 1, 0}, .vfov_degrees = 30};
     assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
     return s;
 }

@@ -33,7 +33,7 @@ static glint_scene *new_scene(int w, int h, glint_vec3 eye, glint_vec3 at, glint
     /* One sample, at each pixel's centre, where the analytic values hold. */
     st.samples_per_pixel = 1;
     assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
-    glint_camera cam = {eye, at, up, fov};
+    glint_camera cam = {.position = eye, .look_at = at, .up = up, .vfov_degrees = fov};
     assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
     return s;
 }
@@ -850,12 +850,93 @@ static void test_image_size_limit(void **state)
     glint_scene_free(s);
 }
 
+/* The spread of a small white sphere's light across the image: the
+ * variance of x about its mean, in pixels squared, weighted by brightness. */
+static double spread_x(const glint_image *im)
+{
+    double sum = 0, sx = 0, sxx = 0;
+    for (int y = 0; y < im->height; y++)
+        for (int x = 0; x < im->width; x++) {
+            double v = im->pixels[3 * ((size_t)y * im->width + x)];
+            sum += v;
+            sx += v * (x + 0.5);
+            sxx += v * (x + 0.5) * (x + 0.5);
+        }
+    double mean = sx / sum;
+    return sxx / sum - mean * mean;
+}
+
+/* A small sphere seen through a camera at the origin looking down -z
+ * (10 degrees of view over 101 x 101 pixels, 16 x 16 samples): its spread. */
+static double sphere_spread(glint_camera_kind kind, double aperture, double focus, double depth, double radius)
+{
+    glint_scene *s = new_scene(101, 101, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 10);
+    glint_settings st = glint_scene_get_settings(s);
+    st.samples_per_pixel = 256;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_camera cam = glint_scene_get_camera(s);
+    cam.kind = kind;
+    cam.aperture = aperture;
+    cam.focus_distance = focus;
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    add_sphere(s, 0, 0, -depth, radius, flat(s, 1, 1, 1));
+    glint_image im;
+    glint_render_options ro = {.threads = 2};
+    assert_int_equal(glint_render(s, &ro, &im, NULL, NULL), GLINT_OK);
+    double spread = spread_x(&im);
+    glint_image_free(&im);
+    glint_scene_free(s);
+    return spread;
+}
+
+/* Depth of field: a sphere 2 units behind the plane of focus (4 units
+ * away) blurs into the thin lens's circle of confusion, whose diameter on
+ * the image plane at distance 1 is 2 * aperture * (1/4 - 1/6): measured
+ * from the light's spread (a disk of radius R spreads R^2 / 4 along x,
+ * added to the sharp sphere's own) within 10%. On the plane of focus the
+ * sphere is as sharp as through the pinhole. */
+static void test_thin_lens_circle_of_confusion(void **state)
+{
+    (void)state;
+    double aperture = 0.1, pixel = 2 * tan(5 * M_PI / 180) / 101;
+    double expected = 2 * aperture * (1.0 / 4 - 1.0 / 6) / pixel; /* 9.6 pixels across */
+    double sharp = sphere_spread(GLINT_CAMERA_PINHOLE, 0, 0, 6, 0.02);
+    double blurred = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 4, 6, 0.02);
+    double diameter = 4 * sqrt(blurred - sharp);
+    assert_true(fabs(diameter - expected) <= 0.1 * expected);
+    double focused = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 6, 6, 0.02);
+    assert_near(focused, sharp, 0.05 * sharp);
+    /* Focus 0 is look_at's distance: 1 here, so the sphere at 6 blurs by 2 * 0.1 * (1 - 1/6). */
+    double to_look_at = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 0, 6, 0.02);
+    double near_expected = 2 * aperture * (1.0 - 1.0 / 6) / pixel;
+    assert_true(fabs(4 * sqrt(to_look_at - sharp) - near_expected) <= 0.1 * near_expected);
+}
+
+/* A lens given to a pinhole is refused, as are negative lens values. */
+static void test_thin_lens_values_checked(void **state)
+{
+    (void)state;
+    glint_scene *s = new_scene(8, 8, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 40);
+    glint_camera cam = glint_scene_get_camera(s);
+    cam.aperture = 0.1;
+    glint_error err = {0};
+    assert_int_equal(glint_scene_set_camera(s, &cam, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "camera aperture is for type thin_lens, and this camera is a pinhole");
+    cam.kind = GLINT_CAMERA_THIN_LENS;
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    cam.focus_distance = -1;
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_ERR_INVALID);
+    glint_scene_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_image_size_limit),
         cmocka_unit_test(test_nan_samples_never_reach_a_pixel),
         cmocka_unit_test(test_sphere_silhouette_area),
+        cmocka_unit_test(test_thin_lens_circle_of_confusion),
+        cmocka_unit_test(test_thin_lens_values_checked),
         cmocka_unit_test(test_shadow_ratio),
         cmocka_unit_test(test_spherical_mapping_follows_the_sphere),
         cmocka_unit_test(test_tinted_shadows_match_what_the_camera_sees),

@@ -86,7 +86,7 @@ static void test_numbers_and_transforms(void **state)
     box.min = (glint_vec3){-1e-9, -2, -3};
     box.max = (glint_vec3){123456789.125, 2, 3};
     assert_true(glint_scene_add_shape(s, &box, m, NULL, &err) >= 0);
-    glint_camera cam = {{0.7, 1.1, 9.9}, {0, 0.5, 0}, {0, 1, 0}, 33.3};
+    glint_camera cam = {.position = {0.7, 1.1, 9.9}, .look_at = {0, 0.5, 0}, .up = {0, 1, 0}, .vfov_degrees = 33.3};
     assert_int_equal(glint_scene_set_camera(s, &cam, &err), GLINT_OK);
 
     glint_scene *back = round_trip(s);

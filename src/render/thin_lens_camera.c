@@ -1,0 +1,77 @@
+/* thin_lens_camera.c - the thin lens: depth of field. The pinhole's ray
+ * through an image position crosses the plane of focus (focus_distance
+ * along the view direction) at one point; the thin lens's ray for a lens
+ * sample starts at that sample's point on a disk of radius `aperture`
+ * about the camera's position, across the view, and goes to that point.
+ * Points on the plane of focus are sharp; a point at depth d blurs into a
+ * disk 2 * aperture * |1/focus - 1/d| across on the image plane at
+ * distance 1. The lens sample is spread over the disk by the concentric
+ * map (Shirley and Chiu 1997), which keeps a stratified sample stratified. */
+#include <math.h>
+#include "render/camera_kind.h"
+
+static void thin_lens_init(camera *c, const glint_camera *d, int width, int height)
+{
+    camera_frame_init(c, d, width, height);
+    c->lens_radius = d->aperture;
+    /* 0: focused on look_at, at its depth along the view. */
+    c->focus_distance = d->focus_distance > 0 ? d->focus_distance : v3_length(v3_sub(d->look_at, d->position));
+}
+
+/* The point of the unit disk for (u, v) in [0, 1)^2: squares about the
+ * centre go to circles, so that neighbouring samples stay neighbours. */
+static void concentric_disk(double u, double v, double *x, double *y)
+{
+    double a = 2 * u - 1, b = 2 * v - 1;
+    if (a == 0 && b == 0) {
+        *x = *y = 0;
+        return;
+    }
+    double r, phi;
+    if (fabs(a) > fabs(b)) {
+        r = a;
+        phi = M_PI / 4 * (b / a);
+    } else {
+        r = b;
+        phi = M_PI / 2 - M_PI / 4 * (a / b);
+    }
+    *x = r * cos(phi);
+    *y = r * sin(phi);
+}
+
+static void thin_lens_rays8(const camera *c, const double x[RAY8], const double y[RAY8], const camera_lens8 *lens,
+                            const double time[RAY8], ray8 *out)
+{
+    (void)time;
+    for (int i = 0; i < RAY8; i += QUAD) {
+        quad_f64 dx, dy, dz;
+        camera_plane_directions(c, quad_load(x + i), quad_load(y + i), &dx, &dy, &dz);
+        double ex[QUAD], ey[QUAD], ez[QUAD];
+        quad_store(ex, dx);
+        quad_store(ey, dy);
+        quad_store(ez, dz);
+        for (int k = 0; k < QUAD; k++) {
+            vec3 d = {ex[k], ey[k], ez[k]};
+            vec3 focus = v3_add(c->position, v3_scale(d, c->focus_distance / v3_dot(d, c->forward)));
+            double lx, ly;
+            concentric_disk(lens->u[i + k], lens->v[i + k], &lx, &ly);
+            vec3 from = v3_add(c->position, v3_add(v3_scale(c->right, c->lens_radius * lx),
+                                                   v3_scale(c->up, c->lens_radius * ly)));
+            vec3 dir = v3_normalize(v3_sub(focus, from));
+            out->ox[i + k] = from.x;
+            out->oy[i + k] = from.y;
+            out->oz[i + k] = from.z;
+            out->dx[i + k] = dir.x;
+            out->dy[i + k] = dir.y;
+            out->dz[i + k] = dir.z;
+        }
+    }
+}
+
+const camera_kind thin_lens_camera = {
+    .name = "thin_lens",
+    .id = GLINT_CAMERA_THIN_LENS,
+    .uses_lens = true,
+    .init = thin_lens_init,
+    .rays8 = thin_lens_rays8,
+};
