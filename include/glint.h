@@ -125,8 +125,11 @@ glint_settings glint_scene_get_settings(const glint_scene *scene);
 
 /* The kinds of camera. */
 typedef enum glint_camera_kind {
-    GLINT_CAMERA_PINHOLE = 0,  /* every ray from the eye: everything in focus */
-    GLINT_CAMERA_THIN_LENS     /* rays from a round lens focused at one distance: depth of field */
+    GLINT_CAMERA_PINHOLE = 0,    /* every ray from the eye: everything in focus */
+    GLINT_CAMERA_THIN_LENS,      /* rays from a round lens focused at one distance: depth of field */
+    GLINT_CAMERA_ORTHOGRAPHIC,   /* parallel rays from a rectangle across the view: no perspective */
+    GLINT_CAMERA_EQUIRECTANGULAR,/* every direction: longitude across, latitude down (a 360 panorama) */
+    GLINT_CAMERA_FISHEYE         /* equidistant: angle from the view axis grows with distance from the centre */
 } glint_camera_kind;
 
 /* A camera: a pinhole unless `kind` says otherwise. */
@@ -134,12 +137,15 @@ typedef struct glint_camera {
     glint_vec3 position;
     glint_vec3 look_at;
     glint_vec3 up;
-    double vfov_degrees;       /* vertical field of view, in (0, 180) */
+    double vfov_degrees;       /* vertical field of view, in (0, 180); fisheye: across the
+                                  image's width, in (0, 360]; unused by the equirectangular */
     glint_camera_kind kind;
     double aperture;           /* thin lens: the lens's radius in scene units, >= 0 (0 is
                                   a pinhole); 0 for the pinhole */
     double focus_distance;     /* thin lens: the distance along the view direction that is
                                   sharp, >= 0 (0: the distance to look_at); 0 for the pinhole */
+    double view_width;         /* orthographic: the view's width in scene units, >= 0 (0:
+                                  the pinhole's at look_at's distance); 0 for other kinds */
 } glint_camera;
 
 /* Replaces the camera after checking it (distinct position and look_at, up

@@ -8,6 +8,9 @@
 static const camera_kind *const KINDS[] = {
     &pinhole_camera,
     &thin_lens_camera,
+    &orthographic_camera,
+    &equirectangular_camera,
+    &fisheye_camera,
 };
 
 #define KIND_COUNT ((int)(sizeof KINDS / sizeof KINDS[0]))

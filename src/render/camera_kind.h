@@ -32,6 +32,22 @@ extern const camera_kind pinhole_camera;
  * through the same image position crosses the plane of focus. */
 extern const camera_kind thin_lens_camera;
 
+/* Parallel rays from a rectangle across the view (orthographic_camera.c),
+ * every direction as a panorama (equirectangular_camera.c), and the
+ * equidistant fisheye (fisheye_camera.c); none uses the lens sample. */
+extern const camera_kind orthographic_camera, equirectangular_camera, fisheye_camera;
+
+/* Puts the ray from `from` along unit `dir` into lane i of *out. */
+static inline void camera_ray_put(ray8 *out, int i, vec3 from, vec3 dir)
+{
+    out->ox[i] = from.x;
+    out->oy[i] = from.y;
+    out->oz[i] = from.z;
+    out->dx[i] = dir.x;
+    out->dy[i] = dir.y;
+    out->dz[i] = dir.z;
+}
+
 /* What every kind that looks through an image plane shares: c's frame
  * (forward, right, up), size and per_x, per_y from the scene's camera. */
 void camera_frame_init(camera *c, const glint_camera *desc, int width, int height);

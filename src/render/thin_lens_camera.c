@@ -58,12 +58,7 @@ static void thin_lens_rays8(const camera *c, const double x[RAY8], const double 
             vec3 from = v3_add(c->position, v3_add(v3_scale(c->right, c->lens_radius * lx),
                                                    v3_scale(c->up, c->lens_radius * ly)));
             vec3 dir = v3_normalize(v3_sub(focus, from));
-            out->ox[i + k] = from.x;
-            out->oy[i + k] = from.y;
-            out->oz[i + k] = from.z;
-            out->dx[i + k] = dir.x;
-            out->dy[i + k] = dir.y;
-            out->dz[i + k] = dir.z;
+            camera_ray_put(out, i + k, from, dir);
         }
     }
 }

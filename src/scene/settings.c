@@ -41,7 +41,7 @@ static const param SETTINGS_PARAMS[] = {
 
 #define CAMERA(name) .offset = offsetof(glint_camera, name)
 
-static const char *const CAMERA_KINDS[] = {"pinhole", "thin_lens"};
+static const char *const CAMERA_KINDS[] = {"pinhole", "thin_lens", "orthographic", "equirectangular", "fisheye"};
 
 static const param CAMERA_PARAMS[] = {
     {.key = "position", .type = PARAM_VEC3, CAMERA(position), .meaning = "where the eye is"},
@@ -49,16 +49,21 @@ static const param CAMERA_PARAMS[] = {
      .meaning = "a point in the middle of the view; must differ from position"},
     {.key = "up", .type = PARAM_DIRECTION, CAMERA(up), .def = {0, 1, 0},
      .meaning = "which way is up in the image; must not be parallel to the view direction"},
-    {.key = "fov", .type = PARAM_NUMBER, CAMERA(vfov_degrees), .def = {45}, .lo = 0, .hi = 180,
-     .bounds = PARAM_OPEN_BOTH, .unit = "degrees", .meaning = "vertical field of view"},
-    {.key = "type", .type = PARAM_CHOICE, CAMERA(kind), .words = CAMERA_KINDS, .word_count = 2,
+    {.key = "fov", .type = PARAM_NUMBER, CAMERA(vfov_degrees), .def = {45}, .lo = 0, .hi = 360,
+     .bounds = PARAM_OPEN_LOW, .unit = "degrees",
+     .meaning = "vertical field of view, less than 180; fisheye: across the image's width; equirectangular: unused"},
+    {.key = "type", .type = PARAM_CHOICE, CAMERA(kind), .words = CAMERA_KINDS, .word_count = 5,
      .meaning = "pinhole: every ray from position, all in focus; thin_lens: rays from a round lens "
-                "about position, sharp at focus_distance only (depth of field)"},
+                "about position, sharp at focus_distance only (depth of field); orthographic: parallel "
+                "rays, view_width across; equirectangular: every direction, longitude across and latitude "
+                "down (a 360-degree panorama); fisheye: the angle from the view grows evenly from the centre"},
     {.key = "aperture", .type = PARAM_NUMBER, CAMERA(aperture), .lo = 0, .hi = DBL_MAX, .unit = "scene units",
      .meaning = "thin_lens: the lens's radius (0: as sharp as the pinhole); larger blurs more"},
     {.key = "focus_distance", .type = PARAM_NUMBER, CAMERA(focus_distance), .lo = 0, .hi = DBL_MAX,
      .unit = "scene units",
      .meaning = "thin_lens: the distance along the view direction that is in focus (0: to look_at)"},
+    {.key = "view_width", .type = PARAM_NUMBER, CAMERA(view_width), .lo = 0, .hi = DBL_MAX, .unit = "scene units",
+     .meaning = "orthographic: the view's width (0: the pinhole's, with fov, at look_at's distance)"},
 };
 
 #define IMPORT(name) .offset = offsetof(glint_import_options, name)
@@ -116,6 +121,12 @@ glint_status settings_validate(const glint_settings *s, glint_error *err)
     return GLINT_OK;
 }
 
+/* "an" before a word that starts with a vowel, else "a". */
+static const char *a_or_an(const char *word)
+{
+    return strchr("aeiou", word[0]) ? "an" : "a";
+}
+
 glint_status camera_validate(const glint_camera *c, glint_error *err)
 {
     glint_status st = params_check(camera_params(), c, "camera", err);
@@ -136,9 +147,19 @@ glint_status camera_validate(const glint_camera *c, glint_error *err)
         return error_set(err, GLINT_ERR_INVALID, "camera position and look_at must differ");
     if (v3_length(v3_cross(v3_normalize(view), v3_normalize(c->up))) < 1e-9)
         return error_set(err, GLINT_ERR_INVALID, "camera up must not be parallel to the view direction");
-    /* A lens given to a pinhole is a forgotten type, not a wish for none. */
+    /* A key of another kind is a forgotten type, not a wish for its default. */
+    const char *kind = CAMERA_KINDS[c->kind];
     if (c->kind != GLINT_CAMERA_THIN_LENS && (c->aperture != 0 || c->focus_distance != 0))
-        return error_set(err, GLINT_ERR_INVALID, "camera %s is for type thin_lens, and this camera is a pinhole",
-                         c->aperture != 0 ? "aperture" : "focus_distance");
+        return error_set(err, GLINT_ERR_INVALID, "camera %s is for type thin_lens, and this camera is %s %s",
+                         c->aperture != 0 ? "aperture" : "focus_distance", a_or_an(kind), kind);
+    if (c->kind != GLINT_CAMERA_ORTHOGRAPHIC && c->view_width != 0)
+        return error_set(err, GLINT_ERR_INVALID, "camera view_width is for type orthographic, and this camera is %s %s",
+                         a_or_an(kind), kind);
+    /* A perspective view of 180 degrees or more has no image plane. */
+    if ((c->kind == GLINT_CAMERA_PINHOLE || c->kind == GLINT_CAMERA_THIN_LENS ||
+         c->kind == GLINT_CAMERA_ORTHOGRAPHIC) && c->vfov_degrees >= 180)
+        return error_set(err, GLINT_ERR_INVALID,
+                         "camera fov must be less than 180 degrees for %s %s (got %g; a fisheye takes up to 360)",
+                         a_or_an(kind), kind, c->vfov_degrees);
     return GLINT_OK;
 }

@@ -140,6 +140,7 @@ camera:
   type: pinhole
   aperture: 0
   focus_distance: 0
+  view_width: 0
 materials:
   "red: bright": {color: [1, 0, 0], specular: 0}
   glow: {color: {linear: [2, 0.5, 0.25]}}

@@ -53,8 +53,12 @@ static ray pinhole_formula(const glint_camera *d, int width, int height, double 
 static void test_registry(void **state)
 {
     assert_ptr_equal(camera_kind_named("pinhole"), &pinhole_camera);
-    assert_null(camera_kind_named("fisheye"));
+    assert_ptr_equal(camera_kind_named("fisheye"), &fisheye_camera);
+    assert_null(camera_kind_named("stereo"));
     assert_ptr_equal(camera_kind_for(&DESC), &pinhole_camera);
+    glint_camera lens = DESC;
+    lens.kind = GLINT_CAMERA_THIN_LENS;
+    assert_ptr_equal(camera_kind_for(&lens), &thin_lens_camera);
     camera c = make(&DESC, 20, 10);
     assert_ptr_equal(c.kind, &pinhole_camera);
 }

@@ -117,7 +117,7 @@ static void test_scene_problem_keeps_the_reason(void **state)
     glint_error err;
     assert_null(glint_scene_load_memory(yaml, strlen(yaml), name, NULL, &err));
     assert_int_equal(err.status, GLINT_ERR_INVALID);
-    const char *end = "/scene.yaml:2:8: 'fov' must be more than 0 and less than 180 degrees, got 0";
+    const char *end = "/scene.yaml:2:8: 'fov' must be more than 0 and at most 360 degrees, got 0";
     assert_true(strlen(err.message) > strlen(end));
     assert_string_equal(err.message + strlen(err.message) - strlen(end), end);
     assert_non_null(strstr(err.message, "..."));

@@ -541,6 +541,18 @@ static void test_identical_bytes_for_any_thread_count(void **state)
     glint_image_free(&two);
     glint_image_free(&seven);
     glint_image_free(&tiled);
+    /* Every camera kind, the thin lens's samples included, with the jittered sampler. */
+    for (int kind = GLINT_CAMERA_THIN_LENS; kind <= GLINT_CAMERA_FISHEYE; kind++) {
+        glint_camera cam = glint_scene_get_camera(s);
+        cam.kind = (glint_camera_kind)kind;
+        cam.aperture = kind == GLINT_CAMERA_THIN_LENS ? 0.3 : 0;
+        assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+        glint_image k1 = render(s, 1), k7 = render(s, 7);
+        assert_memory_equal(k1.pixels, k7.pixels, bytes);
+        assert_memory_not_equal(k1.pixels, j1.pixels, bytes);
+        glint_image_free(&k1);
+        glint_image_free(&k7);
+    }
     glint_image_free(&j1);
     glint_image_free(&j2);
     glint_scene_free(s);
@@ -929,6 +941,123 @@ static void test_thin_lens_values_checked(void **state)
     glint_scene_free(s);
 }
 
+/* The brightness-weighted centre of an image, in pixels, and the count of
+ * pixels brighter than half. */
+static void image_centre(const glint_image *im, double *cx, double *cy, int *lit)
+{
+    double sum = 0, sx = 0, sy = 0;
+    *lit = 0;
+    for (int y = 0; y < im->height; y++)
+        for (int x = 0; x < im->width; x++) {
+            double v = im->pixels[3 * ((size_t)y * im->width + x)];
+            sum += v;
+            sx += v * (x + 0.5);
+            sy += v * (y + 0.5);
+            *lit += v > 0.5;
+        }
+    *cx = sx / sum;
+    *cy = sy / sum;
+}
+
+/* A white sphere of radius r at (x, y, z) seen by a camera of that kind at
+ * the origin looking down -z, over w x h pixels: its centre and lit pixels. */
+static void seen_sphere(glint_camera_kind kind, double fov, double view_width, int w, int h, double x, double y,
+                        double z, double r, double *cx, double *cy, int *lit)
+{
+    glint_scene *s = new_scene(w, h, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 40);
+    glint_camera cam = glint_scene_get_camera(s);
+    cam.kind = kind;
+    cam.vfov_degrees = fov;
+    cam.view_width = view_width;
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    add_sphere(s, x, y, z, r, flat(s, 1, 1, 1));
+    glint_image im;
+    glint_render_options ro = {.threads = 2};
+    assert_int_equal(glint_render(s, &ro, &im, NULL, NULL), GLINT_OK);
+    image_centre(&im, cx, cy, lit);
+    glint_image_free(&im);
+    glint_scene_free(s);
+}
+
+/* The orthographic camera has no perspective: a sphere of radius 1 under a
+ * view 4 units wide over 100 pixels is a disc 50 pixels across (1963
+ * pixels of area) whether 5 or 50 units away, centred where its offset
+ * puts it. */
+static void test_orthographic_camera_keeps_sizes(void **state)
+{
+    (void)state;
+    double cx, cy;
+    int near_lit, far_lit;
+    seen_sphere(GLINT_CAMERA_ORTHOGRAPHIC, 40, 4, 100, 100, 0, 0, -5, 1, &cx, &cy, &near_lit);
+    assert_near(cx, 50, 0.01);
+    assert_near(cy, 50, 0.01);
+    seen_sphere(GLINT_CAMERA_ORTHOGRAPHIC, 40, 4, 100, 100, 0.8, 0, -50, 1, &cx, &cy, &far_lit);
+    assert_near(cx, 70, 0.01); /* 0.8 units right: 20 pixels */
+    assert_near(near_lit, M_PI * 25 * 25, 20);
+    assert_near(far_lit, near_lit, 4);
+}
+
+/* The panorama: longitude across, latitude down. A sphere to the right
+ * (+x) is a quarter of the width right of the centre, one to the left a
+ * quarter left of it, one overhead along the top row. */
+static void test_equirectangular_camera_sees_every_direction(void **state)
+{
+    (void)state;
+    double cx, cy;
+    int lit;
+    seen_sphere(GLINT_CAMERA_EQUIRECTANGULAR, 40, 0, 200, 100, 10, 0, 0, 1, &cx, &cy, &lit);
+    assert_near(cx, 150, 0.5);
+    assert_near(cy, 50, 0.5);
+    assert_true(lit > 0);
+    seen_sphere(GLINT_CAMERA_EQUIRECTANGULAR, 40, 0, 200, 100, -10, 0, 0, 1, &cx, &cy, &lit);
+    assert_near(cx, 50, 0.5);
+    seen_sphere(GLINT_CAMERA_EQUIRECTANGULAR, 40, 0, 200, 100, 0, 10, 0, 1, &cx, &cy, &lit);
+    assert_true(cy < 5);
+}
+
+/* The equidistant fisheye: with 360 degrees across the width, a sphere
+ * 90 degrees to the right is halfway from the centre to the right edge,
+ * one 45 degrees up a quarter of the way from the centre to the top. */
+static void test_fisheye_camera_spreads_angles_evenly(void **state)
+{
+    (void)state;
+    double cx, cy;
+    int lit;
+    seen_sphere(GLINT_CAMERA_FISHEYE, 360, 0, 200, 200, 10, 0, 0, 0.5, &cx, &cy, &lit);
+    assert_near(cx, 150, 0.5);
+    assert_near(cy, 100, 0.5);
+    seen_sphere(GLINT_CAMERA_FISHEYE, 360, 0, 200, 200, 0, 10, -10, 0.5, &cx, &cy, &lit);
+    assert_near(cx, 100, 0.5);
+    assert_near(cy, 75, 0.5);
+}
+
+/* A key of another kind of camera is refused, as is a perspective view of
+ * 180 degrees or more; a fisheye takes up to 360. */
+static void test_camera_kinds_keys_checked(void **state)
+{
+    (void)state;
+    glint_scene *s = new_scene(8, 8, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 40);
+    glint_camera cam = glint_scene_get_camera(s);
+    glint_error err = {0};
+    cam.view_width = 2;
+    assert_int_equal(glint_scene_set_camera(s, &cam, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "camera view_width is for type orthographic, and this camera is a pinhole");
+    cam.view_width = 0;
+    cam.kind = GLINT_CAMERA_EQUIRECTANGULAR;
+    cam.aperture = 1;
+    assert_int_equal(glint_scene_set_camera(s, &cam, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "camera aperture is for type thin_lens, and this camera is an equirectangular");
+    cam.aperture = 0;
+    cam.kind = GLINT_CAMERA_PINHOLE;
+    cam.vfov_degrees = 200;
+    assert_int_equal(glint_scene_set_camera(s, &cam, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message,
+                        "camera fov must be less than 180 degrees for a pinhole (got 200; a fisheye takes up to 360)");
+    cam.kind = GLINT_CAMERA_FISHEYE;
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    glint_scene_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -937,6 +1066,10 @@ int main(void)
         cmocka_unit_test(test_sphere_silhouette_area),
         cmocka_unit_test(test_thin_lens_circle_of_confusion),
         cmocka_unit_test(test_thin_lens_values_checked),
+        cmocka_unit_test(test_orthographic_camera_keeps_sizes),
+        cmocka_unit_test(test_equirectangular_camera_sees_every_direction),
+        cmocka_unit_test(test_fisheye_camera_spreads_angles_evenly),
+        cmocka_unit_test(test_camera_kinds_keys_checked),
         cmocka_unit_test(test_shadow_ratio),
         cmocka_unit_test(test_spherical_mapping_follows_the_sphere),
         cmocka_unit_test(test_tinted_shadows_match_what_the_camera_sees),

@@ -1518,11 +1518,11 @@ static const bad_scene BAD[] = {
     {"fov_0",
      "camera:\n"
      "  fov: 0\n",
-     "bad.yaml:2:8: 'fov' must be more than 0 and less than 180 degrees, got 0", 1},
+     "bad.yaml:2:8: 'fov' must be more than 0 and at most 360 degrees, got 0", 1},
     {"fov_180",
      "camera:\n"
      "  fov: 180\n",
-     "bad.yaml:2:8: 'fov' must be more than 0 and less than 180 degrees, got 180", 1},
+     "bad.yaml:2:3: camera fov must be less than 180 degrees for a pinhole (got 180; a fisheye takes up to 360)", 1},
     {"camera_looks_at_itself",
      "camera:\n"
      "  position: [1, 2, 3]\n"
@@ -1813,7 +1813,7 @@ static const bad_scene BAD[] = {
      "settings:\n"
      "  depth: 100\n"
      "camera:\n"
-     "  fov: 200\n"
+     "  fov: 400\n"
      "materials:\n"
      "  m: {ambient: 7}\n",
      "bad.yaml:2:10: 'depth' must be a whole number from 0 to 64, got '100'", 3},
@@ -2032,7 +2032,7 @@ static void test_every_problem_in_order(void **state)
              0, &log, &err);
     assert_string_equal(log.all, "bad.yaml:2:10: 'width' must be a whole number from 1 to 65536, got '0'\n"
                                  "bad.yaml:3:12: 'sampler' must be regular or jittered, got 'jitterd' (did you mean 'jittered'?)\n"
-                                 "bad.yaml:4:15: 'fov' must be more than 0 and less than 180 degrees, got 0\n"
+                                 "bad.yaml:4:15: 'fov' must be more than 0 and at most 360 degrees, got 0\n"
                                  "bad.yaml:6:19: unknown key 'colour' in material 'm' (did you mean 'color'?)\n"
                                  "bad.yaml:6:16: 'ambient' must be from 0 to 1, got 2\n"
                                  "bad.yaml:8:5: a spot light needs 'position'\n"
