@@ -111,6 +111,8 @@ typedef struct glint_settings {
     glint_color background;    /* colour of rays that hit nothing */
     glint_color ambient_light; /* multiplies each material's ambient term */
     uint32_t seed;             /* seed of the jittered sampler */
+    double exposure;           /* in stops, -64..64: every pixel's light is multiplied by
+                                  2^exposure before it is stored (0: as rendered) */
 } glint_settings;
 
 /* Returns the settings of a new scene: 640x480, 1 spp, regular, depth 5,

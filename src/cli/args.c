@@ -46,6 +46,8 @@ static const char USAGE[] =
     "      --depth N          reflection and refraction recursion limit, 0..64\n"
     "                         (defaults: seed room 1000 x 1000, scene file 640 x 480,\n"
     "                         model 800 x 600; 4 samples, regular, depth 5)\n"
+    "      --exposure STOPS   brighten (or, below 0, darken) the image by 2^STOPS,\n"
+    "                         -64..64, as the scene's exposure setting\n"
     "      --threads N        render threads, 0..1024 (0, the default: one per core);\n"
     "                         the image is the same for any count\n"
     "      --texture NAME=FILE\n"
@@ -153,6 +155,21 @@ static bool parse_number_flag(const number_flag *nf, const char *v, long long *o
     else
         snprintf(what, size, "a whole number from %lld to %lld", lo, hi);
     return parse_int(v, lo, hi, out) && (!p || param_in_range(p, (double)*out));
+}
+
+/* --exposure: a number of stops in the setting's range. */
+static int parse_exposure(cli_options *o, const char *v)
+{
+    const param *p = params_find(settings_params(), "exposure");
+    char *end;
+    errno = 0;
+    double stops = strtod(v, &end);
+    if (errno || end == v || *end != '\0' || !param_in_range(p, stops))
+        return cli_complain(CLI_EXIT_USAGE, "--exposure needs a number of stops from %g to %g, got '%s'", p->lo, p->hi,
+                            v);
+    o->exposure = stops;
+    o->exposure_given = true;
+    return 0;
 }
 
 /* A flag whose value is one of a few words, each setting the flag's field
@@ -311,7 +328,7 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
             if (strcmp(a, WORD_FLAGS[k].name) == 0)
                 wf = &WORD_FLAGS[k];
         bool takes_value = nf || wf || strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0 ||
-                           strcmp(a, "--texture") == 0 || strcmp(a, "--format") == 0;
+                           strcmp(a, "--texture") == 0 || strcmp(a, "--format") == 0 || strcmp(a, "--exposure") == 0;
         if (!takes_value)
             return cli_complain(CLI_EXIT_USAGE, "unknown option '%s' (try 'glint --help')", a);
         if (!attached && i + 1 >= argc)
@@ -326,8 +343,10 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
             char what[160];
             if (!parse_word_flag(wf, v, (int *)((char *)o + wf->field), what, sizeof what))
                 return cli_complain(CLI_EXIT_USAGE, "%s needs %s, got '%s'", wf->name, what, v);
-        } else if (strcmp(a, "--texture") == 0 || strcmp(a, "--format") == 0) {
-            int code = strcmp(a, "--texture") == 0 ? parse_texture_swap(o, v) : parse_format(o, v);
+        } else if (strcmp(a, "--texture") == 0 || strcmp(a, "--format") == 0 || strcmp(a, "--exposure") == 0) {
+            int code = strcmp(a, "--texture") == 0  ? parse_texture_swap(o, v)
+                       : strcmp(a, "--format") == 0 ? parse_format(o, v)
+                                                    : parse_exposure(o, v);
             if (code)
                 return code;
         } else {

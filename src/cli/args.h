@@ -37,6 +37,8 @@ typedef struct cli_options {
     int sampler;                                        /* -1: the scene's own, else a glint_sampler */
     int exr_pixel;                                      /* -1: not given, else a glint_exr_pixel */
     int view;                                           /* -1: not given, else a glint_model_view */
+    bool exposure_given;
+    double exposure;                                    /* --exposure, in stops, when given */
     bool quiet;
     bool partial;
     bool display;               /* show the image in a window as it renders (display.h) */

@@ -26,6 +26,7 @@ static void apply_overrides(const cli_options *o, glint_settings *s)
     if (o->spp >= 0) s->samples_per_pixel = (int)o->spp;
     if (o->depth >= 0) s->max_depth = (int)o->depth;
     if (o->seed >= 0) s->seed = (uint32_t)o->seed;
+    if (o->exposure_given) s->exposure = o->exposure;
     if (o->sampler >= 0) s->sampler = (glint_sampler)o->sampler;
 }
 

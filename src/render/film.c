@@ -30,7 +30,7 @@ float *film_pixels_alloc(int width, int height)
 
 bool film_init(film *f, int width, int height, int samples)
 {
-    *f = (film){.width = width, .height = height, .samples = samples};
+    *f = (film){.width = width, .height = height, .samples = samples, .exposure_scale = 1};
     f->pixels = film_pixels_alloc(width, height);
     return f->pixels != NULL;
 }

@@ -38,6 +38,7 @@ typedef struct film {
     int x0, y0;               /* the image's pixel that pixels[0] is: 0, 0 for an image, a tile's
                                  corner for a film that holds one tile */
     int samples;              /* samples per pixel */
+    double exposure_scale;    /* each pixel's average times this: 2^exposure (film_init: 1) */
 } film;
 
 /* A block's pixels while their samples are traced: lane i's pixel gets
@@ -100,7 +101,7 @@ static inline void film_block_put(film *f, const film_block *b, const int px[RAY
         if (!active[i])
             continue;
         int bad = b->bad[i];
-        double k = bad == 0 ? share : bad < samples ? 1.0 / (samples - bad) : 0;
+        double k = (bad == 0 ? share : bad < samples ? 1.0 / (samples - bad) : 0) * f->exposure_scale;
         color avg = rgb_scale(b->sum[i], k);
         float *p = f->pixels + 3 * ((size_t)(py[i] - f->y0) * f->width + (px[i] - f->x0));
         p[0] = (float)avg.r;

@@ -240,7 +240,7 @@ static void *worker_run(void *arg)
         film *into = &j->film, own;
         if (w->tile_pixels) {
             own = (film){.pixels = w->tile_pixels, .width = x1 - x0, .height = y1 - y0, .x0 = x0, .y0 = y0,
-                         .samples = j->film.samples};
+                         .samples = j->film.samples, .exposure_scale = j->film.exposure_scale};
             into = &own;
         }
         if (!render_tile(&t, j, into, tile, &w->nan_samples)) {
@@ -334,6 +334,7 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
     } else if (!film_init(&j.film, s->width, s->height, j.grid * j.grid)) {
         return error_set(err, GLINT_ERR_NOMEM, "out of memory for a %dx%d image", s->width, s->height);
     }
+    j.film.exposure_scale = exp2(s->exposure);
     camera_init(&j.cam, &scene->camera, s->width, s->height);
     /* Embree builds with every thread asked for; tracing needs no more
      * threads than tiles. */

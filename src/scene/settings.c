@@ -37,6 +37,8 @@ static const param SETTINGS_PARAMS[] = {
      .meaning = "what rays that hit nothing show"},
     {.key = "ambient", .type = PARAM_COLOR, SETTING(ambient_light), .def = {1, 1, 1}, .lo = 0, .hi = DBL_MAX,
      .meaning = "ambient light; multiplies each material's ambient term"},
+    {.key = "exposure", .type = PARAM_NUMBER, SETTING(exposure), .lo = -64, .hi = 64, .unit = "stops",
+     .meaning = "every pixel's light times 2^exposure before it is written: 1 is twice as bright, -1 half"},
 };
 
 #define CAMERA(name) .offset = offsetof(glint_camera, name)

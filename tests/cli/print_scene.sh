@@ -60,7 +60,7 @@ fi
 
 # The flags that change settings are in what is printed: the settings list
 # every key, in the order of the docs, and -o becomes the output.
-"$GLINT" --print-scene -w 33 -h 21 --spp 9 --sampler jittered --seed 7 --depth 3 -o x.exr >"$work/flags.yaml"
+"$GLINT" --print-scene -w 33 -h 21 --spp 9 --sampler jittered --seed 7 --depth 3 --exposure -1.5 -o x.exr >"$work/flags.yaml"
 sed -n '/^settings:/,/^camera:/p' "$work/flags.yaml" >"$work/settings.txt"
 cat >"$work/settings.want" <<'EOF'
 settings:
@@ -72,6 +72,7 @@ settings:
   depth: 3
   background: [0, 0, 0]
   ambient: [1, 1, 1]
+  exposure: -1.5
   output: x.exr
 camera:
 EOF
@@ -131,6 +132,7 @@ settings:
   depth: 5
   background: [0, 0, 0]
   ambient: [1, 1, 1]
+  exposure: 0
   output: out.png
 camera:
   position: [0, 1, 5]

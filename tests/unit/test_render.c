@@ -513,15 +513,23 @@ static void test_fog_end_bounds_the_search(void **state)
     }
 }
 
-static void test_identical_bytes_for_any_thread_count(void **state)
+/* The seed room at width x height. */
+static glint_scene *small_seed_room(int width, int height)
 {
     glint_error err;
     glint_scene *s = glint_scene_seed_room(&err);
     assert_non_null(s);
     glint_settings st = glint_scene_get_settings(s);
-    st.width = 96;
-    st.height = 80;
+    st.width = width;
+    st.height = height;
     assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    return s;
+}
+
+static void test_identical_bytes_for_any_thread_count(void **state)
+{
+    glint_scene *s = small_seed_room(96, 80);
+    glint_settings st = glint_scene_get_settings(s);
     glint_image one = render(s, 1), two = render(s, 2), seven = render(s, 7);
     size_t bytes = (size_t)st.width * st.height * 3 * sizeof(float);
     assert_memory_equal(one.pixels, two.pixels, bytes);
@@ -924,6 +932,28 @@ static void test_thin_lens_circle_of_confusion(void **state)
     assert_true(fabs(4 * sqrt(to_look_at - sharp) - near_expected) <= 0.1 * near_expected);
 }
 
+/* Exposure in stops: +1 doubles every pixel exactly, -1 halves it; 0 is
+ * the image as rendered. */
+static void test_exposure_scales_every_pixel(void **state)
+{
+    (void)state;
+    glint_scene *s = small_seed_room(40, 30);
+    glint_settings st = glint_scene_get_settings(s);
+    glint_image plain = render(s, 2);
+    for (int stops = -1; stops <= 1; stops += 2) {
+        st.exposure = stops;
+        assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+        glint_image exposed = render(s, 2);
+        for (size_t i = 0; i < (size_t)3 * st.width * st.height; i++)
+            assert_true(exposed.pixels[i] == plain.pixels[i] * (stops > 0 ? 2.0f : 0.5f));
+        glint_image_free(&exposed);
+    }
+    st.exposure = 65;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_ERR_INVALID);
+    glint_image_free(&plain);
+    glint_scene_free(s);
+}
+
 /* A lens given to a pinhole is refused, as are negative lens values. */
 static void test_thin_lens_values_checked(void **state)
 {
@@ -1066,6 +1096,7 @@ int main(void)
         cmocka_unit_test(test_sphere_silhouette_area),
         cmocka_unit_test(test_thin_lens_circle_of_confusion),
         cmocka_unit_test(test_thin_lens_values_checked),
+        cmocka_unit_test(test_exposure_scales_every_pixel),
         cmocka_unit_test(test_orthographic_camera_keeps_sizes),
         cmocka_unit_test(test_equirectangular_camera_sees_every_direction),
         cmocka_unit_test(test_fisheye_camera_spreads_angles_evenly),
