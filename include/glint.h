@@ -346,6 +346,13 @@ typedef enum glint_light_kind {
     GLINT_LIGHT_DIRECTIONAL
 } glint_light_kind;
 
+/* How the light of a point or spot light weakens with the distance d from it. */
+typedef enum glint_falloff {
+    GLINT_FALLOFF_NONE = 0,       /* not at all: the default, as in the COSC363 scene */
+    GLINT_FALLOFF_INVERSE_SQUARE, /* color / d^2: physical, color arriving at distance 1 */
+    GLINT_FALLOFF_FADE            /* POV-Ray's fade: color * 2 / (1 + (d / fade_distance)^fade_power) */
+} glint_falloff;
+
 typedef struct glint_light {
     glint_light_kind kind;
     glint_vec3 position;      /* point, spot */
@@ -353,6 +360,9 @@ typedef struct glint_light {
     glint_color color;        /* intensity per channel */
     double cone_angle;        /* spot: half-angle of the cone, degrees, (0, 90] */
     double falloff_angle;     /* spot: width of the soft edge inside the cone, degrees; 0 = hard */
+    glint_falloff falloff;    /* point, spot; a directional light's must be none */
+    double fade_distance;     /* fade: > 0, where the light is its colour (brighter nearer) */
+    double fade_power;        /* fade: > 0, how fast it fades beyond (2: as the square) */
 } glint_light;
 
 /* Adds a light; returns its index or -1 and fills err. */

@@ -22,6 +22,29 @@ light_spec light_spec_default(glint_light_kind id)
     return s;
 }
 
+const char *const LIGHT_FALLOFF_WORDS[3] = {"none", "inverse_square", "fade"};
+
+double light_falloff(const light *l, double d)
+{
+    if (l->desc.falloff == GLINT_FALLOFF_INVERSE_SQUARE)
+        return 1 / (d * d);
+    return 2 / (1 + pow(d / l->desc.fade_distance, l->desc.fade_power));
+}
+
+glint_status light_falloff_check(const light *l, glint_error *err)
+{
+    const glint_light *d = &l->desc;
+    if (d->falloff == GLINT_FALLOFF_NONE)
+        return GLINT_OK;
+    if (l->at_infinity)
+        return error_set(err, GLINT_ERR_INVALID, "a %s light is at infinity: its falloff_mode must be none",
+                         l->kind->name);
+    if (d->falloff == GLINT_FALLOFF_FADE && !(d->fade_distance > 0 && d->fade_power > 0))
+        return error_set(err, GLINT_ERR_INVALID, "%s light falloff_mode fade needs fade_distance and fade_power "
+                         "above 0, got %g and %g", l->kind->name, d->fade_distance, d->fade_power);
+    return GLINT_OK;
+}
+
 double spot_factor(const light *l, double cos_angle)
 {
     if (cos_angle < l->cos_outer)
@@ -51,5 +74,7 @@ glint_status light_init(light *l, const glint_light *d, glint_error *err)
     glint_status s = params_check(l->kind->params, &spec, what, err);
     if (s == GLINT_OK && l->kind->init)
         s = l->kind->init(l, err);
+    if (s == GLINT_OK)
+        s = light_falloff_check(l, err);
     return s;
 }

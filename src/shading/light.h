@@ -101,6 +101,10 @@ static inline bool light_outside_cone(const light *l, vec3 d)
     return along * along < l->cos_outer * l->cos_outer * v3_dot(d, d) * (1 - 1e-9);
 }
 
+/* The share of its light that light l (not at infinity) gives at
+ * distance d, by its falloff: 1 for none. */
+double light_falloff(const light *l, double d);
+
 /* The sample of a delta light at p: its position, or its direction when at
  * infinity, and its colour, scaled inside a cone by spot_factor. */
 static inline bool light_delta_sample(const light *l, vec3 p, light_sample *out)
@@ -120,6 +124,8 @@ static inline bool light_delta_sample(const light *l, vec3 p, light_sample *out)
         out->to_light = v3_scale(d, 1.0 / out->distance);
         if (l->has_cone)
             factor = spot_factor(l, -v3_dot(out->to_light, l->dir));
+        if (l->desc.falloff != GLINT_FALLOFF_NONE)
+            factor *= light_falloff(l, out->distance);
     }
     out->radiance = rgb_scale(l->desc.color, factor);
     return factor > 0;
@@ -136,6 +142,24 @@ static inline bool light_sample_at(const light *l, vec3 p, double u1, double u2,
         return light_delta_sample(l, p, out);
     return l->kind->sample(l, p, u1, u2, out);
 }
+
+/* The words of falloff_mode, in glint_falloff's order. */
+extern const char *const LIGHT_FALLOFF_WORDS[3];
+
+/* The parameters of a light at a point: how its light weakens with distance. */
+#define LIGHT_FALLOFF_PARAMS                                                                                   \
+    {.key = "falloff_mode", .type = PARAM_CHOICE, .offset = offsetof(light_spec, light.falloff),             \
+     .words = LIGHT_FALLOFF_WORDS, .word_count = 3,                                                          \
+     .meaning = "how the light weakens with distance d: none; inverse_square (color / d^2, color arriving "  \
+                "at distance 1); fade (POV-Ray's: color * 2 / (1 + (d / fade_distance)^fade_power))"},      \
+    {.key = "fade_distance", .type = PARAM_NUMBER, .offset = offsetof(light_spec, light.fade_distance),     \
+     .lo = 0, .hi = DBL_MAX, .meaning = "fade: where the light is its colour, brighter nearer; more than 0"}, \
+    {.key = "fade_power", .type = PARAM_NUMBER, .offset = offsetof(light_spec, light.fade_power), .lo = 0,     \
+     .hi = 1000, .meaning = "fade: how fast it fades beyond fade_distance (2: as the square); more than 0"}
+
+/* Checks a light's falloff values across keys: fade needs fade_distance
+ * and fade_power above 0, and a light at infinity has none. */
+glint_status light_falloff_check(const light *l, glint_error *err);
 
 /* The parameters every light has: its colour and intensity. */
 #define LIGHT_COLOR_PARAMS                                                                                     \

@@ -7,6 +7,7 @@ static const param POINT_PARAMS[] = {
     {.key = "position", .type = PARAM_VEC3, .offset = offsetof(light_spec, light.position), .required = true,
      .meaning = "where the light is"},
     LIGHT_COLOR_PARAMS,
+    LIGHT_FALLOFF_PARAMS,
 };
 
 const light_kind point_light = {

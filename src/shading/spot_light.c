@@ -24,6 +24,7 @@ static const param SPOT_PARAMS[] = {
     {.key = "direction", .type = PARAM_DIRECTION, .offset = offsetof(light_spec, light.direction),
      .required = true, .meaning = "where the cone's axis points"},
     LIGHT_COLOR_PARAMS,
+    LIGHT_FALLOFF_PARAMS,
     {.key = "angle", .type = PARAM_NUMBER, .offset = offsetof(light_spec, light.cone_angle), .required = true,
      .lo = 0, .hi = 90, .bounds = PARAM_OPEN_LOW, .unit = "degrees", .meaning = "half-angle of the cone"},
     {.key = "falloff", .type = PARAM_NUMBER, .offset = offsetof(light_spec, light.falloff_angle), .lo = 0,

@@ -954,6 +954,65 @@ static void test_exposure_scales_every_pixel(void **state)
     glint_scene_free(s);
 }
 
+/* The centre pixel of a matte white floor seen from straight above, lit
+ * only by light l straight above it at height h: the light arriving there. */
+static double floor_under_light(glint_light l, double h)
+{
+    glint_scene *s = new_scene(11, 11, (glint_vec3){0, 20, 0}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, 10);
+    glint_material m = glint_material_default();
+    m.ambient = 0;
+    m.specular = 0;
+    int white = glint_scene_add_material(s, NULL, &m, NULL);
+    glint_shape floor = {.kind = GLINT_SHAPE_PLANE, .center = {0, 0, 0}, .normal = {0, 1, 0}};
+    assert_true(glint_scene_add_shape(s, &floor, white, NULL, NULL) >= 0);
+    l.position = (glint_vec3){0, h, 0};
+    l.color = (glint_color){1, 1, 1};
+    assert_true(glint_scene_add_light(s, &l, NULL) >= 0);
+    glint_image im;
+    glint_render_options ro = {.threads = 1};
+    assert_int_equal(glint_render(s, &ro, &im, NULL, NULL), GLINT_OK);
+    double v = pixel(&im, 5, 5)[0];
+    glint_image_free(&im);
+    glint_scene_free(s);
+    return v;
+}
+
+/* Distance falloff: none keeps the light whatever the height; the inverse
+ * square gives 1/h^2; POV-Ray's fade gives 2 / (1 + (h / fade_distance)^
+ * fade_power): the colour at fade_distance, up to twice it nearer. */
+static void test_light_falloff_modes(void **state)
+{
+    (void)state;
+    glint_light l = {.kind = GLINT_LIGHT_POINT};
+    assert_near(floor_under_light(l, 2), 1, 1e-6);
+    assert_near(floor_under_light(l, 4), 1, 1e-6);
+    l.falloff = GLINT_FALLOFF_INVERSE_SQUARE;
+    assert_near(floor_under_light(l, 2), 0.25, 1e-6);
+    assert_near(floor_under_light(l, 4), 0.0625, 1e-6);
+    l.falloff = GLINT_FALLOFF_FADE;
+    l.fade_distance = 2;
+    l.fade_power = 3;
+    assert_near(floor_under_light(l, 2), 1, 1e-6);
+    assert_near(floor_under_light(l, 4), 2.0 / 9, 1e-6);
+    assert_near(floor_under_light(l, 1), 2.0 / 1.125, 1e-6);
+    /* A spot light weakens alike; a directional one cannot, nor a fade without its distance. */
+    glint_scene *s = glint_scene_new();
+    glint_error err = {0};
+    glint_light sun = {.kind = GLINT_LIGHT_DIRECTIONAL, .direction = {0, -1, 0}, .color = {1, 1, 1},
+                       .falloff = GLINT_FALLOFF_INVERSE_SQUARE};
+    assert_int_equal(glint_scene_add_light(s, &sun, &err), -1);
+    assert_string_equal(err.message, "a directional light is at infinity: its falloff_mode must be none");
+    l.fade_distance = 0;
+    l.position = (glint_vec3){0, 1, 0};
+    assert_int_equal(glint_scene_add_light(s, &l, &err), -1);
+    assert_string_equal(err.message,
+                        "point light falloff_mode fade needs fade_distance and fade_power above 0, got 0 and 3");
+    glint_scene_free(s);
+    glint_light spot = {.kind = GLINT_LIGHT_SPOT, .direction = {0, -1, 0}, .cone_angle = 30,
+                        .falloff = GLINT_FALLOFF_INVERSE_SQUARE};
+    assert_near(floor_under_light(spot, 2), 0.25, 1e-6);
+}
+
 /* A lens given to a pinhole is refused, as are negative lens values. */
 static void test_thin_lens_values_checked(void **state)
 {
@@ -1097,6 +1156,7 @@ int main(void)
         cmocka_unit_test(test_thin_lens_circle_of_confusion),
         cmocka_unit_test(test_thin_lens_values_checked),
         cmocka_unit_test(test_exposure_scales_every_pixel),
+        cmocka_unit_test(test_light_falloff_modes),
         cmocka_unit_test(test_orthographic_camera_keeps_sizes),
         cmocka_unit_test(test_equirectangular_camera_sees_every_direction),
         cmocka_unit_test(test_fisheye_camera_spreads_angles_evenly),
