@@ -146,6 +146,8 @@ typedef struct glint_camera {
                                   a pinhole); 0 for the pinhole */
     double focus_distance;     /* thin lens: the distance along the view direction that is
                                   sharp, >= 0 (0: the distance to look_at); 0 for the pinhole */
+    int blades;                /* thin lens: 0, a round aperture, or 3..64 blades: a regular
+                                  polygon of radius `aperture` (polygonal bokeh) */
     double view_width;         /* orthographic: the view's width in scene units, >= 0 (0:
                                   the pinhole's at look_at's distance); 0 for other kinds */
 } glint_camera;

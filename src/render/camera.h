@@ -29,6 +29,7 @@ typedef struct camera {
      * and likewise its height: a pixel is twice these across. */
     double per_x, per_y;
     double lens_radius, focus_distance;  /* a thin lens's */
+    int blades;                          /* a thin lens's: 0 round, else a regular polygon */
 } camera;
 
 /* Sets c up, as the kind the scene's camera asks for (camera_kind_for),

@@ -62,16 +62,40 @@ static void sample_offset(const glint_settings *s, int n, int px, int py, int sx
     }
 }
 
+static uint32_t gcd(uint32_t x, uint32_t y)
+{
+    while (y) {
+        uint32_t r = x % y;
+        x = y;
+        y = r;
+    }
+    return x;
+}
+
+/* A permutation of 0 .. count - 1 chosen by h: k -> (a k + b) mod count,
+ * with a coprime to count. */
+static int permute(int k, int count, uint32_t h)
+{
+    uint32_t n = (uint32_t)count, a = 1 + hash_u32(h) % n, b = h % n;
+    while (gcd(a, n) != 1)
+        a++;
+    return (int)(((uint64_t)a * (uint32_t)k + b) % n);
+}
+
 /* Where sample (sx, sy) of the n x n grid of each lane's pixel passes the
- * lens: a hash of the pixel, the sample and the seed, apart from the
- * jittered sampler's. */
+ * lens: stratified as the image positions are, one sample in each of the
+ * lens's n x n cells, the cells shuffled by a hash of the pixel and the
+ * seed so that a sample's lens cell does not follow its image cell, and a
+ * hashed point within the cell. */
 static void lens_samples(const glint_settings *s, int n, const int px[RAY8], const int py[RAY8], int sx, int sy,
                          camera_lens8 *lens)
 {
     for (int i = 0; i < RAY8; i++) {
-        uint32_t h = hash4((uint32_t)px[i], (uint32_t)py[i], (uint32_t)(sy * n + sx), s->seed ^ 0x4c454e53U);
-        lens->u[i] = hash_unit(h);
-        lens->v[i] = hash_unit(hash_u32(h ^ 0x9e3779b9U));
+        uint32_t pixel = hash4((uint32_t)px[i], (uint32_t)py[i], 0, s->seed ^ 0x4c454e53U);
+        int cell = permute(sy * n + sx, n * n, pixel);
+        uint32_t h = hash_u32(pixel ^ (uint32_t)(cell + 1) * 0x9e3779b9U);
+        lens->u[i] = (cell % n + hash_unit(h)) / n;
+        lens->v[i] = (cell / n + hash_unit(hash_u32(h ^ 0x85ebca6bU))) / n;
     }
 }
 

@@ -6,7 +6,9 @@
  * Points on the plane of focus are sharp; a point at depth d blurs into a
  * disk 2 * aperture * |1/focus - 1/d| across on the image plane at
  * distance 1. The lens sample is spread over the disk by the concentric
- * map (Shirley and Chiu 1997), which keeps a stratified sample stratified. */
+ * map (Shirley and Chiu 1997), which keeps a stratified sample stratified,
+ * or with `blades` over a regular polygon of that radius, one vertex up:
+ * the shape out-of-focus highlights take (bokeh). */
 #include <math.h>
 #include "render/camera_kind.h"
 
@@ -14,6 +16,7 @@ static void thin_lens_init(camera *c, const glint_camera *d, int width, int heig
 {
     camera_frame_init(c, d, width, height);
     c->lens_radius = d->aperture;
+    c->blades = d->blades;
     /* 0: focused on look_at, at its depth along the view. */
     c->focus_distance = d->focus_distance > 0 ? d->focus_distance : v3_length(v3_sub(d->look_at, d->position));
 }
@@ -39,6 +42,18 @@ static void concentric_disk(double u, double v, double *x, double *y)
     *y = r * sin(phi);
 }
 
+/* The point of the regular polygon of `blades` sides inscribed in the unit
+ * circle, one vertex up, for (u, v) in [0, 1)^2, uniform over its area: u
+ * picks the triangle between the centre and one side (and, rescaled, the
+ * distance from the centre), v the place along the side. */
+static void polygon_point(int blades, double u, double v, double *x, double *y)
+{
+    double side = floor(u * blades), t = u * blades - side;
+    double a0 = M_PI / 2 + 2 * M_PI * side / blades, a1 = a0 + 2 * M_PI / blades, r = sqrt(t);
+    *x = r * ((1 - v) * cos(a0) + v * cos(a1));
+    *y = r * ((1 - v) * sin(a0) + v * sin(a1));
+}
+
 static void thin_lens_rays8(const camera *c, const double x[RAY8], const double y[RAY8], const camera_lens8 *lens,
                             const double time[RAY8], ray8 *out)
 {
@@ -54,7 +69,10 @@ static void thin_lens_rays8(const camera *c, const double x[RAY8], const double 
             vec3 d = {ex[k], ey[k], ez[k]};
             vec3 focus = v3_add(c->position, v3_scale(d, c->focus_distance / v3_dot(d, c->forward)));
             double lx, ly;
-            concentric_disk(lens->u[i + k], lens->v[i + k], &lx, &ly);
+            if (c->blades)
+                polygon_point(c->blades, lens->u[i + k], lens->v[i + k], &lx, &ly);
+            else
+                concentric_disk(lens->u[i + k], lens->v[i + k], &lx, &ly);
             vec3 from = v3_add(c->position, v3_add(v3_scale(c->right, c->lens_radius * lx),
                                                    v3_scale(c->up, c->lens_radius * ly)));
             vec3 dir = v3_normalize(v3_sub(focus, from));

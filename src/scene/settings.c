@@ -43,6 +43,12 @@ static const param SETTINGS_PARAMS[] = {
 
 #define CAMERA(name) .offset = offsetof(glint_camera, name)
 
+/* An aperture of 1 or 2 blades has no area. */
+static bool no_two_blades(double v)
+{
+    return v == 0 || v >= 3;
+}
+
 static const char *const CAMERA_KINDS[] = {"pinhole", "thin_lens", "orthographic", "equirectangular", "fisheye"};
 
 static const param CAMERA_PARAMS[] = {
@@ -64,6 +70,9 @@ static const param CAMERA_PARAMS[] = {
     {.key = "focus_distance", .type = PARAM_NUMBER, CAMERA(focus_distance), .lo = 0, .hi = DBL_MAX,
      .unit = "scene units",
      .meaning = "thin_lens: the distance along the view direction that is in focus (0: to look_at)"},
+    {.key = "blades", .type = PARAM_INTEGER, CAMERA(blades), .lo = 0, .hi = 64, .rule = no_two_blades,
+     .rule_text = "0 (round) or from 3 to 64",
+     .meaning = "thin_lens: the aperture's blades: out-of-focus points blur into that regular polygon (0: a disk)"},
     {.key = "view_width", .type = PARAM_NUMBER, CAMERA(view_width), .lo = 0, .hi = DBL_MAX, .unit = "scene units",
      .meaning = "orthographic: the view's width (0: the pinhole's, with fov, at look_at's distance)"},
 };
@@ -151,9 +160,10 @@ glint_status camera_validate(const glint_camera *c, glint_error *err)
         return error_set(err, GLINT_ERR_INVALID, "camera up must not be parallel to the view direction");
     /* A key of another kind is a forgotten type, not a wish for its default. */
     const char *kind = CAMERA_KINDS[c->kind];
-    if (c->kind != GLINT_CAMERA_THIN_LENS && (c->aperture != 0 || c->focus_distance != 0))
+    if (c->kind != GLINT_CAMERA_THIN_LENS && (c->aperture != 0 || c->focus_distance != 0 || c->blades != 0))
         return error_set(err, GLINT_ERR_INVALID, "camera %s is for type thin_lens, and this camera is %s %s",
-                         c->aperture != 0 ? "aperture" : "focus_distance", a_or_an(kind), kind);
+                         c->aperture != 0 ? "aperture" : c->focus_distance != 0 ? "focus_distance" : "blades",
+                         a_or_an(kind), kind);
     if (c->kind != GLINT_CAMERA_ORTHOGRAPHIC && c->view_width != 0)
         return error_set(err, GLINT_ERR_INVALID, "camera view_width is for type orthographic, and this camera is %s %s",
                          a_or_an(kind), kind);

@@ -142,6 +142,7 @@ camera:
   type: pinhole
   aperture: 0
   focus_distance: 0
+  blades: 0
   view_width: 0
 materials:
   "red: bright": {color: [1, 0, 0], specular: 0}

@@ -888,7 +888,8 @@ static double spread_x(const glint_image *im)
 
 /* A small sphere seen through a camera at the origin looking down -z
  * (10 degrees of view over 101 x 101 pixels, 16 x 16 samples): its spread. */
-static double sphere_spread(glint_camera_kind kind, double aperture, double focus, double depth, double radius)
+static double sphere_spread(glint_camera_kind kind, double aperture, double focus, double depth, double radius,
+                            int blades)
 {
     glint_scene *s = new_scene(101, 101, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 10);
     glint_settings st = glint_scene_get_settings(s);
@@ -898,6 +899,7 @@ static double sphere_spread(glint_camera_kind kind, double aperture, double focu
     cam.kind = kind;
     cam.aperture = aperture;
     cam.focus_distance = focus;
+    cam.blades = blades;
     assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
     add_sphere(s, 0, 0, -depth, radius, flat(s, 1, 1, 1));
     glint_image im;
@@ -920,16 +922,20 @@ static void test_thin_lens_circle_of_confusion(void **state)
     (void)state;
     double aperture = 0.1, pixel = 2 * tan(5 * M_PI / 180) / 101;
     double expected = 2 * aperture * (1.0 / 4 - 1.0 / 6) / pixel; /* 9.6 pixels across */
-    double sharp = sphere_spread(GLINT_CAMERA_PINHOLE, 0, 0, 6, 0.02);
-    double blurred = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 4, 6, 0.02);
+    double sharp = sphere_spread(GLINT_CAMERA_PINHOLE, 0, 0, 6, 0.02, 0);
+    double blurred = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 4, 6, 0.02, 0);
     double diameter = 4 * sqrt(blurred - sharp);
     assert_true(fabs(diameter - expected) <= 0.1 * expected);
-    double focused = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 6, 6, 0.02);
+    double focused = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 6, 6, 0.02, 0);
     assert_near(focused, sharp, 0.05 * sharp);
     /* Focus 0 is look_at's distance: 1 here, so the sphere at 6 blurs by 2 * 0.1 * (1 - 1/6). */
-    double to_look_at = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 0, 6, 0.02);
+    double to_look_at = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 0, 6, 0.02, 0);
     double near_expected = 2 * aperture * (1.0 - 1.0 / 6) / pixel;
     assert_true(fabs(4 * sqrt(to_look_at - sharp) - near_expected) <= 0.1 * near_expected);
+    /* Six blades: a regular hexagon of the disk's radius spreads 5/24 of
+     * its radius squared along x where the disk spreads 6/24. */
+    double hexagon = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 4, 6, 0.02, 6);
+    assert_true(fabs((hexagon - sharp) / (blurred - sharp) - 5.0 / 6) <= 0.05 * 5 / 6);
 }
 
 /* Exposure in stops: +1 doubles every pixel exactly, -1 halves it; 0 is
