@@ -197,8 +197,8 @@ rank_report follow_render(MPI_Comm comm, const glint_scene *scene, const glint_r
                 /* Half the hand, or every tile it still has once rank 0
                  * sends no more (the last of them then go at once). */
                 int unsent = f.given - f.finished, half = hand / 2;
-                tile_outbox_wait(&f.outbox, half < unsent ? (half > 1 ? half : 1) : (unsent > 1 ? unsent : 1),
-                                 WAIT_LONG_NS);
+                int wanted = half < unsent ? half : unsent;
+                tile_outbox_wait(&f.outbox, wanted > 1 ? wanted : 1, WAIT_LONG_NS);
             }
         }
         local_render_join(&own);
