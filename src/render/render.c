@@ -72,28 +72,38 @@ static uint32_t gcd(uint32_t x, uint32_t y)
     return x;
 }
 
-/* A permutation of 0 .. count - 1 chosen by h: k -> (a k + b) mod count,
- * with a coprime to count. */
-static int permute(int k, int count, uint32_t h)
+/* How each lane's pixel shuffles its lens cells: cell k of the n x n
+ * grid goes to (a k + b) mod n^2, a coprime to n^2, chosen by a hash of
+ * the pixel and the seed, once per block rather than once per sample. */
+typedef struct lens_shuffle {
+    uint32_t pixel[RAY8], a[RAY8], b[RAY8];
+} lens_shuffle;
+
+static void lens_shuffle_init(const glint_settings *s, int n, const int px[RAY8], const int py[RAY8],
+                              lens_shuffle *sh)
 {
-    uint32_t n = (uint32_t)count, a = 1 + hash_u32(h) % n, b = h % n;
-    while (gcd(a, n) != 1)
-        a++;
-    return (int)(((uint64_t)a * (uint32_t)k + b) % n);
+    uint32_t cells = (uint32_t)(n * n);
+    for (int i = 0; i < RAY8; i++) {
+        uint32_t h = hash4((uint32_t)px[i], (uint32_t)py[i], 0, s->seed ^ 0x4c454e53U);
+        sh->pixel[i] = h;
+        sh->a[i] = 1 + hash_u32(h) % cells;
+        sh->b[i] = h % cells;
+        while (gcd(sh->a[i], cells) != 1)
+            sh->a[i]++;
+    }
 }
 
 /* Where sample (sx, sy) of the n x n grid of each lane's pixel passes the
  * lens: stratified as the image positions are, one sample in each of the
- * lens's n x n cells, the cells shuffled by a hash of the pixel and the
- * seed so that a sample's lens cell does not follow its image cell, and a
- * hashed point within the cell. */
-static void lens_samples(const glint_settings *s, int n, const int px[RAY8], const int py[RAY8], int sx, int sy,
-                         camera_lens8 *lens)
+ * lens's n x n cells, the cells shuffled per pixel (sh) so that a sample's
+ * lens cell does not follow its image cell, and a hashed point within the
+ * cell. */
+static void lens_samples(const lens_shuffle *sh, int n, int sx, int sy, camera_lens8 *lens)
 {
+    uint32_t cells = (uint32_t)(n * n), k = (uint32_t)(sy * n + sx);
     for (int i = 0; i < RAY8; i++) {
-        uint32_t pixel = hash4((uint32_t)px[i], (uint32_t)py[i], 0, s->seed ^ 0x4c454e53U);
-        int cell = permute(sy * n + sx, n * n, pixel);
-        uint32_t h = hash_u32(pixel ^ (uint32_t)(cell + 1) * 0x9e3779b9U);
+        int cell = (int)(((uint64_t)sh->a[i] * k + sh->b[i]) % cells);
+        uint32_t h = hash_u32(sh->pixel[i] ^ (uint32_t)(cell + 1) * 0x9e3779b9U);
         lens->u[i] = (cell % n + hash_unit(h)) / n;
         lens->v[i] = (cell / n + hash_unit(hash_u32(h ^ 0x85ebca6bU))) / n;
     }
@@ -126,6 +136,9 @@ __attribute__((always_inline)) static inline void trace_samples(tracer *t, const
     bool jittered = s->sampler == GLINT_SAMPLER_JITTERED;
     ray8 rays;
     color c[ACCEL_PACKET];
+    lens_shuffle shuffle;
+    if (j->cam.uses_lens)
+        lens_shuffle_init(s, n, px, py, &shuffle);
     film_block_start(b);
     for (int sy = 0; sy < n; sy++) {
         for (int sx = 0; sx < n; sx++) {
@@ -143,7 +156,7 @@ __attribute__((always_inline)) static inline void trace_samples(tracer *t, const
              * is at the shutter's middle. */
             camera_lens8 lens;
             if (j->cam.uses_lens)
-                lens_samples(s, n, px, py, sx, sy, &lens);
+                lens_samples(&shuffle, n, sx, sy, &lens);
             camera_rays8(&j->cam, x, y, j->cam.uses_lens ? &lens : &camera_lens_centre, camera_shutter_middle,
                          &rays);
             tracer_trace8(t, &rays, active, c);
