@@ -40,7 +40,12 @@ unset WAYLAND_DISPLAY
 start() {
     "$@" 2>err.txt &
     pid=$!
-    wid=$(timeout $((10 * scale)) xdotool search --sync --onlyvisible --name '^glint - ' 2>/dev/null | head -n 1)
+    local i=0
+    wid=
+    while [ -z "$wid" ] && ((i++ < 100 * scale)) && kill -0 "$pid" 2>/dev/null; do
+        wid=$(xdotool search --onlyvisible --name '^glint - ' 2>/dev/null | head -n 1)
+        [ -n "$wid" ] || sleep 0.1
+    done
 }
 
 # shot FILE: a screenshot of the window (none when it never showed: import
@@ -198,10 +203,10 @@ check "closed while rendering, --partial: a whole image written" test "$(identif
 
 # A signal once the image is written closes the window: the run succeeded.
 start "$GLINT" --display -w 64 -h 48 -q -o out.png
-wait_title "glint - seed room - done in * s"
+check "SIGINT with the image written: the window shows, done" wait_title "glint - seed room - done in * s"
 kill -INT "$pid"
 ended
-check "SIGINT with the image written: exit $status, expected 0" test "$status" -eq 0
+check "SIGINT with the image written: exit $status, expected 0 (stderr: $(cat err.txt))" test "$status" -eq 0
 
 # glint-mpi: rank 0 shows the window, with the image written.
 GLINT_MPI=$(dirname "$GLINT")/glint-mpi
