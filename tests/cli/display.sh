@@ -34,13 +34,19 @@ done
 export DISPLAY=":$(head -n 1 display.txt)"
 unset WAYLAND_DISPLAY
 
-# start PROGRAM ARGS...: runs PROGRAM ARGS in the background, its stderr in
-# err.txt, and sets pid and wid (its window, once it shows; empty if it
-# never does).
+# start PROGRAM ARGS...: once no earlier glint window is left, runs
+# PROGRAM ARGS in the background, its stderr in err.txt, and sets pid and
+# wid (its window, once it shows; empty if it never does or it ends first).
 start() {
+    local i=0
+    # The last run's window may outlive its process a moment in the
+    # server: it must not be taken for this one's.
+    while [ -n "$(xdotool search --name '^glint - ' 2>/dev/null)" ] && ((i++ < 100 * scale)); do
+        sleep 0.1
+    done
     "$@" 2>err.txt &
     pid=$!
-    local i=0
+    i=0
     wid=
     while [ -z "$wid" ] && ((i++ < 100 * scale)) && kill -0 "$pid" 2>/dev/null; do
         wid=$(xdotool search --onlyvisible --name '^glint - ' 2>/dev/null | head -n 1)
