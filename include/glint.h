@@ -345,7 +345,10 @@ int glint_scene_add_shape(glint_scene *scene, const glint_shape *shape, int mate
 typedef enum glint_light_kind {
     GLINT_LIGHT_POINT = 0,
     GLINT_LIGHT_SPOT,
-    GLINT_LIGHT_DIRECTIONAL
+    GLINT_LIGHT_DIRECTIONAL,
+    GLINT_LIGHT_SPHERE,     /* area lights: a glowing ball, */
+    GLINT_LIGHT_RECTANGLE,  /* a glowing parallelogram, lit on one side, */
+    GLINT_LIGHT_DISK        /* a glowing disc, lit on one side */
 } glint_light_kind;
 
 /* How the light of a point or spot light weakens with the distance d from it. */
@@ -357,15 +360,26 @@ typedef enum glint_falloff {
 
 typedef struct glint_light {
     glint_light_kind kind;
-    glint_vec3 position;      /* point, spot */
-    glint_vec3 direction;     /* spot: where it points; directional: where light travels */
-    glint_color color;        /* intensity per channel */
+    glint_vec3 position;      /* point, spot; sphere and disk: centre; rectangle: a corner */
+    glint_vec3 direction;     /* spot, disk: where it points; directional: where light travels */
+    glint_color color;        /* intensity per channel; an area light's radiance: far from it,
+                                 it lights as a point light with inverse-square falloff
+                                 whose colour is this times its area facing the point / pi */
+    double radius;            /* sphere, disk: > 0 */
+    glint_vec3 edge1, edge2;  /* rectangle: its sides from the corner, lit on the side of
+                                 edge1 x edge2 */
+    int samples;              /* area lights: shadow rays per shading point, 1..4096 */
     double cone_angle;        /* spot: half-angle of the cone, degrees, (0, 90] */
     double falloff_angle;     /* spot: width of the soft edge inside the cone, degrees; 0 = hard */
     glint_falloff falloff;    /* point, spot; a directional light's must be none */
     double fade_distance;     /* fade: > 0, where the light is its colour (brighter nearer) */
     double fade_power;        /* fade: > 0, how fast it fades beyond (2: as the square) */
 } glint_light;
+
+/* Returns a description of the given kind with every field at its default
+ * (docs/scene-format.md): colour white, 16 samples for an area light, and
+ * the positions, directions and sizes still to be set. */
+glint_light glint_light_default(glint_light_kind kind);
 
 /* Adds a light; returns its index or -1 and fills err. */
 int glint_scene_add_light(glint_scene *scene, const glint_light *light, glint_error *err);

@@ -3,6 +3,7 @@
  * transparency, refraction with optional Fresnel, and fog per segment. */
 #include <math.h>
 #include <string.h>
+#include "core/hash.h"
 #include "render/hit.h"
 #include "render/integrator.h"
 #include "shading/fog.h"
@@ -65,15 +66,14 @@ static void shade_begin(const glint_scene *scene, const ray *r, const accel_hit 
     sp->base = hit_color(scene, &sp->hit, sp->m, &sp->s);
 }
 
-/* The light sample every shading point takes: the lights glint has so far
- * each shine from one point or one direction and ignore it. */
-#define LIGHT_SAMPLE_U 0.5
-
-/* The shadow segment from sp, seen along ray r, towards light l, when l
- * lights sp's front and its light there is not black before any shadow. */
-static bool shadow_segment(const light *l, const ray *r, const shade_point *sp, light_sample *ls, ray *shadow)
+/* The shadow segment from sp, seen along ray r, towards light l sampled
+ * with (u1, u2), when l lights sp's front and its light there is not black
+ * before any shadow. */
+__attribute__((always_inline)) static inline bool shadow_segment(const light *l, const ray *r, const shade_point *sp, double u1, double u2,
+                           light_sample *ls, ray *shadow)
 {
-    if (!light_sample_at(l, sp->s.p, LIGHT_SAMPLE_U, LIGHT_SAMPLE_U, ls) || v3_dot(sp->n, ls->to_light) <= 0 || v3_dot(sp->ns, ls->to_light) <= 0 ||
+    if (!light_sample_at(l, sp->s.p, u1, u2, ls) || v3_dot(sp->n, ls->to_light) <= 0 ||
+        v3_dot(sp->ns, ls->to_light) <= 0 ||
         !phong_reaches(sp->m, sp->base, sp->ns, ls->to_light, v3_neg(r->d), ls->radiance))
         return false;
     *shadow = (ray){sp->origin, ls->to_light};
@@ -81,7 +81,7 @@ static bool shadow_segment(const light *l, const ray *r, const shade_point *sp, 
 }
 
 /* Light l's share at sp, given what passes the shadow segment. */
-static color light_share(const shade_point *sp, const light_sample *ls, color through, vec3 to_eye)
+__attribute__((always_inline)) static inline color light_share(const shade_point *sp, const light_sample *ls, color through, vec3 to_eye)
 {
     if (!(rgb_max(through) > 0))
         return rgb(0, 0, 0);
@@ -182,52 +182,150 @@ static color miss(const glint_scene *scene)
     return fog_apply(&scene->fog, scene->settings.background, INFINITY);
 }
 
+/* The light sample (u1, u2) a delta light is given: it has no use for one. */
+#define DELTA_SAMPLE_U 0.5
+
+/* Adds to direct[i] the light of light l that reaches the hit sp[i] of
+ * each lane found[i] through one sample of it, u[i] (NULL for a delta
+ * light), weighed by `share`: one packet of shadow segments over the lanes
+ * it lights, for hits of rays at recursion depth `depth`. */
+__attribute__((always_inline)) static inline void light_packet(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET], const shade_point sp[ACCEL_PACKET],
+                         int depth, const light *l, const double (*u)[2], double share, color direct[ACCEL_PACKET])
+{
+    const glint_scene *scene = t->scene;
+    light_sample ls[ACCEL_PACKET];
+    /* A lane without a segment keeps its own ray. Copied only once some
+     * lane has one: a spotlight lights few packets. */
+    ray8 shadow;
+    double dist[ACCEL_PACKET] = {0};
+    int skip[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
+    bool lit[ACCEL_PACKET] = {false}, any = false;
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        if (!found[i])
+            continue;
+        ray ri = ray8_get(r, i), si;
+        if (!shadow_segment(l, &ri, &sp[i], u ? u[i][0] : DELTA_SAMPLE_U, u ? u[i][1] : DELTA_SAMPLE_U, &ls[i], &si))
+            continue;
+        if (!any)
+            shadow = *r;
+        lit[i] = any = true;
+        dist[i] = ls[i].distance;
+        skip[i] = hit_left_behind(scene, &sp[i].hit, sp[i].s.n, ls[i].to_light);
+        ray8_set(&shadow, i, si);
+        t->rays++;
+    }
+    if (!any)
+        return;
+    color through[ACCEL_PACKET];
+    accel_transmission8(t->acc, &shadow, dist, skip, depth == 0, lit, shadow_filter, t, through);
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        if (!lit[i])
+            continue;
+        if (u)
+            ls[i].radiance = rgb_scale(ls[i].radiance, share);
+        direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i], v3(-r->dx[i], -r->dy[i], -r->dz[i])));
+    }
+}
+
+/* The radical inverse of i in base 2: i's bits mirrored about the point. */
+static double radical_inverse2(uint32_t i)
+{
+    i = (i << 16) | (i >> 16);
+    i = ((i & 0x00ff00ffU) << 8) | ((i & 0xff00ff00U) >> 8);
+    i = ((i & 0x0f0f0f0fU) << 4) | ((i & 0xf0f0f0f0U) >> 4);
+    i = ((i & 0x33333333U) << 2) | ((i & 0xccccccccU) >> 2);
+    i = ((i & 0x55555555U) << 1) | ((i & 0xaaaaaaaaU) >> 1);
+    return i * (1.0 / 4294967296.0);
+}
+
+/* The samples of an area light with n of them at each lane's shading
+ * point, sample j: Hammersley's points (j / n, radical inverse of j), well
+ * spread for any n, shifted modulo 1 by each lane's own hash, rot[i], so
+ * that every point has its own pattern and the sum stays unbiased. */
+static void area_samples(const uint32_t rot[ACCEL_PACKET], int j, int n, double u[ACCEL_PACKET][2])
+{
+    double a = (double)j / n, b = radical_inverse2((uint32_t)j);
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        u[i][0] = a + hash_unit(rot[i]);
+        u[i][1] = b + hash_unit(hash_u32(rot[i] ^ 0x68e31da4U));
+        u[i][0] -= u[i][0] >= 1;
+        u[i][1] -= u[i][1] >= 1;
+    }
+}
+
+/* Adds to direct[i] the light of area light l (the scene's light number
+ * `index`) that reaches the hit sp[i] of each lane found[i], whose random
+ * numbers come from key[i]: one packet of shadow segments per sample. Out
+ * of line, so that the delta lights' packet stays inlined in
+ * direct_light8 (the seed room's every shading point) as it was. */
+__attribute__((noinline)) static void area_light_packets(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
+                                                         const shade_point sp[ACCEL_PACKET], int depth,
+                                                         const light *l, int index, const uint32_t key[ACCEL_PACKET],
+                                                         color direct[ACCEL_PACKET])
+{
+    uint32_t rot[ACCEL_PACKET];
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        rot[i] = hash_u32(key[i] ^ hash_u32((uint32_t)index + 1));
+    int n = l->desc.samples;
+    for (int j = 0; j < n && !stopping(t); j++) {
+        double u[ACCEL_PACKET][2];
+        area_samples(rot, j, n, u);
+        light_packet(t, r, found, sp, depth, l, u, 1.0 / n, direct);
+    }
+}
+
 /* Adds to direct[i] the light of every light source that reaches the hit
- * sp[i] of each lane found[i]: one packet of shadow segments per light,
- * over the lanes it lights, for hits of rays at recursion depth `depth`. */
+ * sp[i] of each lane found[i], whose random numbers come from key[i]:
+ * one packet of shadow segments per light (per sample of an area light). */
 static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
-                          const shade_point sp[ACCEL_PACKET], int depth, color direct[ACCEL_PACKET])
+                          const shade_point sp[ACCEL_PACKET], int depth, const uint32_t key[ACCEL_PACKET],
+                          color direct[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
     for (int l = 0; l < scene->light_count && !stopping(t); l++) {
-        light_sample ls[ACCEL_PACKET];
-        /* A lane without a segment keeps its own ray. Copied only once some
-         * lane has one: a spotlight lights few packets. */
-        ray8 shadow;
-        double dist[ACCEL_PACKET] = {0};
-        int skip[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
-        bool lit[ACCEL_PACKET] = {false}, any = false;
-        for (int i = 0; i < ACCEL_PACKET; i++) {
-            if (!found[i])
-                continue;
-            ray ri = ray8_get(r, i), si;
-            if (!shadow_segment(&scene->lights[l], &ri, &sp[i], &ls[i], &si))
-                continue;
-            if (!any)
-                shadow = *r;
-            lit[i] = any = true;
-            dist[i] = ls[i].distance;
-            skip[i] = hit_left_behind(scene, &sp[i].hit, sp[i].s.n, ls[i].to_light);
-            ray8_set(&shadow, i, si);
-            t->rays++;
-        }
-        if (!any)
+        const light *li = &scene->lights[l];
+        if (li->kind->delta)
+            light_packet(t, r, found, sp, depth, li, NULL, 1, direct);
+        else
+            area_light_packets(t, r, found, sp, depth, li, l, key, direct);
+    }
+}
+
+/* Which area light, if any, each active lane of r sees before what it hit
+ * (found[i], at sp[i].hit.t) or, having hit nothing, before `reach`: then
+ * glows[i], and the lane looks like a hit of colour local[i] at
+ * sp[i].hit.t, found[i] false until its shading is done. (A hit hidden by
+ * fog is not found, and a light behind it is as hidden.) */
+__attribute__((noinline)) static void area_lights_seen(const tracer *t, const ray8 *r, const bool active[ACCEL_PACKET],
+                                                       bool found[ACCEL_PACKET], shade_point sp[ACCEL_PACKET],
+                                                       bool glows[ACCEL_PACKET], color local[ACCEL_PACKET])
+{
+    const glint_scene *scene = t->scene;
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        if (!active[i])
             continue;
-        color through[ACCEL_PACKET];
-        accel_transmission8(t->acc, &shadow, dist, skip, depth == 0, lit, shadow_filter, t, through);
-        for (int i = 0; i < ACCEL_PACKET; i++)
-            if (lit[i])
-                direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i],
-                                                           v3(-r->dx[i], -r->dy[i], -r->dz[i])));
+        ray ri = ray8_get(r, i);
+        double nearest = found[i] ? sp[i].hit.t : t->reach, at;
+        for (int l = 0; l < scene->light_count; l++) {
+            const light *li = &scene->lights[l];
+            if (!li->kind->delta && light_seen(li, &ri, nearest, &at)) {
+                nearest = sp[i].hit.t = at;
+                glows[i] = true;
+                found[i] = false;
+                local[i] = li->desc.color;
+            }
+        }
     }
 }
 
 /* The colours of up to ACCEL_PACKET rays at recursion depth `depth`, of
- * weights `weight` in their samples. The rays each hit sends on are traced
- * as packets too, one per kind of branch, over the lanes that send one and
- * have budget left (tracer_trace8). */
+ * weights `weight` in their samples, whose random numbers come from
+ * key[i]. The rays each hit sends on are traced as packets too, one per
+ * kind of branch, over the lanes that send one and have budget left
+ * (tracer_trace8), each with a key of its own made from its ray's. */
 static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET],
-                   int depth, const color weight[ACCEL_PACKET], color out[ACCEL_PACKET])
+                   int depth, const color weight[ACCEL_PACKET], const uint32_t key[ACCEL_PACKET],
+                   color out[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
     if (stopping(t)) {
@@ -267,7 +365,10 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
         else
             local[i] = ambient(scene, &sp[i]);
     }
-    direct_light8(t, r, found, sp, depth, local);
+    bool glows[ACCEL_PACKET] = {false};
+    if (scene->area_light_count > 0)
+        area_lights_seen(t, r, active, found, sp, glows, local);
+    direct_light8(t, r, found, sp, depth, key, local);
     unsigned sent = 0; /* bit k: some lane sends a ray of kind k */
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (found[i]) {
@@ -281,6 +382,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
             continue;
         ray8 next;
         int next_skip[ACCEL_PACKET];
+        uint32_t next_key[ACCEL_PACKET];
         bool on[ACCEL_PACKET], any = false;
         color next_weight[ACCEL_PACKET];
         /* Each lane's budget is spent as its own branches are met, depth
@@ -296,13 +398,17 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
             ray8_set(&next, i, on[i] ? b[i].r[k] : ray8_get(r, i));
             next_skip[i] = on[i] ? b[i].skip[k] : -1;
             next_weight[i] = on[i] ? b[i].weight[k] : weight[i];
+            next_key[i] = hash_u32(key[i] ^ (uint32_t)(k + 1) * 0x9e3779b9U);
         }
         color c[ACCEL_PACKET];
-        trace8(t, &next, next_skip, on, depth + 1, next_weight, c);
+        trace8(t, &next, next_skip, on, depth + 1, next_weight, next_key, c);
         for (int i = 0; i < ACCEL_PACKET; i++)
             if (on[i])
                 local[i] = rgb_add(local[i], rgb_scale(rgb_mul(b[i].filter[k], c[i]), b[i].scale[k]));
     }
+    if (scene->area_light_count > 0)
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            found[i] |= glows[i];
     /* Inactive lanes get the sky too, which nothing reads. Without fog,
      * fog_apply would give a hit's colour back as it is. */
     color sky = miss(scene);
@@ -312,6 +418,11 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     else
         for (int i = 0; i < ACCEL_PACKET; i++)
             out[i] = found[i] ? local[i] : sky;
+}
+
+bool tracer_needs_keys(const glint_scene *scene)
+{
+    return scene->area_light_count > 0;
 }
 
 double tracer_reach(const glint_scene *scene)
@@ -324,7 +435,7 @@ double tracer_reach(const glint_scene *scene)
     return reach > 0 ? reach : 0;
 }
 
-void tracer_trace8(tracer *t, const ray8 *r, const bool active[ACCEL_PACKET],
+void tracer_trace8(tracer *t, const ray8 *r, const bool active[ACCEL_PACKET], const uint32_t key[ACCEL_PACKET],
                    color out[ACCEL_PACKET])
 {
     static const int none[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
@@ -333,5 +444,5 @@ void tracer_trace8(tracer *t, const ray8 *r, const bool active[ACCEL_PACKET],
         whole[i] = rgb(1, 1, 1);
         t->budget[i] = TRACER_MAX_BRANCH_RAYS;
     }
-    trace8(t, r, none, active, 0, whole, out);
+    trace8(t, r, none, active, 0, whole, key, out);
 }

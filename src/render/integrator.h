@@ -41,15 +41,22 @@ typedef struct tracer {
  * found or not. INFINITY without such fog. */
 double tracer_reach(const glint_scene *scene);
 
+/* Whether tracing the scene uses random numbers, so the keys passed to
+ * tracer_trace8: with area lights. Without, every key may be 0. */
+bool tracer_needs_keys(const glint_scene *scene);
+
 /* The colours seen along up to ACCEL_PACKET unit-direction camera rays, the
- * lanes of *r (recursion depth 0): out[i] for each active[i]. The rays, their shadow
+ * lanes of *r (recursion depth 0): out[i] for each active[i]. Every random
+ * number lane i uses (an area light's samples, at every surface its rays
+ * meet) is a hash of key[i], which the caller makes from the pixel, the
+ * sample and the seed. The rays, their shadow
  * rays and the reflected, refracted and transmitted rays they lead to are
  * all traced as packets; coherent rays (a block of neighbouring pixels)
  * gain most. Branches lighter than TRACER_MIN_WEIGHT are not traced, and
  * each lane traces at most TRACER_MAX_BRANCH_RAYS of them. Once *t->cancel
  * is set, every packet still to trace returns at once with meaningless
  * colours (the caller drops them): a stop never waits for a deep tree. */
-void tracer_trace8(tracer *t, const ray8 *r, const bool active[ACCEL_PACKET],
+void tracer_trace8(tracer *t, const ray8 *r, const bool active[ACCEL_PACKET], const uint32_t key[ACCEL_PACKET],
                    color out[ACCEL_PACKET]);
 
 #endif

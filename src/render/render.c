@@ -30,6 +30,7 @@ typedef struct job {
     film film;
     render_layout layout;
     int grid;
+    bool keys;                    /* tracing uses the samples' keys: tracer_needs_keys */
     int tiles_done;               /* under progress_lock */
     pthread_mutex_t progress_lock;
 } job;
@@ -159,7 +160,12 @@ __attribute__((always_inline)) static inline void trace_samples(tracer *t, const
                 lens_samples(&shuffle, n, sx, sy, &lens);
             camera_rays8(&j->cam, x, y, j->cam.uses_lens ? &lens : &camera_lens_centre, camera_shutter_middle,
                          &rays);
-            tracer_trace8(t, &rays, active, c);
+            /* What every other random number of the sample is hashed from. */
+            uint32_t key[ACCEL_PACKET] = {0};
+            if (j->keys)
+                for (int i = 0; i < ACCEL_PACKET; i++)
+                    key[i] = hash4((uint32_t)px[i], (uint32_t)py[i], (uint32_t)(sy * n + sx), s->seed ^ 0x4b455953U);
+            tracer_trace8(t, &rays, active, key, c);
             film_block_add(b, active, c, careful);
         }
     }
@@ -372,6 +378,7 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
         return error_set(err, GLINT_ERR_NOMEM, "out of memory for a %dx%d image", s->width, s->height);
     }
     j.film.exposure_scale = exp2(s->exposure);
+    j.keys = tracer_needs_keys(scene);
     camera_init(&j.cam, &scene->camera, s->width, s->height);
     /* Embree builds with every thread asked for; tracing needs no more
      * threads than tiles. */

@@ -10,6 +10,7 @@
  * or with `blades` over a regular polygon of that radius, one vertex up:
  * the shape out-of-focus highlights take (bokeh). */
 #include <math.h>
+#include "core/square_maps.h"
 #include "render/camera_kind.h"
 
 static void thin_lens_init(camera *c, const glint_camera *d, int width, int height)
@@ -19,27 +20,6 @@ static void thin_lens_init(camera *c, const glint_camera *d, int width, int heig
     c->blades = d->blades;
     /* 0: focused on look_at, at its depth along the view. */
     c->focus_distance = d->focus_distance > 0 ? d->focus_distance : v3_length(v3_sub(d->look_at, d->position));
-}
-
-/* The point of the unit disk for (u, v) in [0, 1)^2: squares about the
- * centre go to circles, so that neighbouring samples stay neighbours. */
-static void concentric_disk(double u, double v, double *x, double *y)
-{
-    double a = 2 * u - 1, b = 2 * v - 1;
-    if (a == 0 && b == 0) {
-        *x = *y = 0;
-        return;
-    }
-    double r, phi;
-    if (fabs(a) > fabs(b)) {
-        r = a;
-        phi = M_PI / 4 * (b / a);
-    } else {
-        r = b;
-        phi = M_PI / 2 - M_PI / 4 * (a / b);
-    }
-    *x = r * cos(phi);
-    *y = r * sin(phi);
 }
 
 /* The point of the regular polygon of `blades` sides inscribed in the unit

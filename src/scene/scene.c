@@ -310,6 +310,7 @@ int glint_scene_add_light(glint_scene *scene, const glint_light *desc, glint_err
     if (grow((void **)&scene->lights, &scene->light_cap, scene->light_count, sizeof(light), "lights", err) ||
         light_init(&scene->lights[scene->light_count], desc, err))
         return -1;
+    scene->area_light_count += !scene->lights[scene->light_count].kind->delta;
     return scene->light_count++;
 }
 

@@ -31,6 +31,7 @@ struct glint_scene {
     light *lights;
     int light_count;
     size_t light_cap;
+    int area_light_count;     /* lights that are not delta lights: camera rays can see them */
     mesh *meshes;
     int mesh_count;
     size_t mesh_cap;

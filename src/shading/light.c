@@ -7,7 +7,8 @@
 #include "core/registry.h"
 #include "shading/light.h"
 
-static const light_kind *const KINDS[] = {&point_light, &spot_light, &directional_light};
+static const light_kind *const KINDS[] = {&point_light,  &spot_light,      &directional_light,
+                                          &sphere_light, &rectangle_light, &disk_light};
 
 REGISTRY_LOOKUPS(light_kind, light_kind, glint_light_kind, KINDS)
 
@@ -36,6 +37,9 @@ glint_status light_falloff_check(const light *l, glint_error *err)
     const glint_light *d = &l->desc;
     if (d->falloff == GLINT_FALLOFF_NONE)
         return GLINT_OK;
+    if (!l->kind->delta)
+        return error_set(err, GLINT_ERR_INVALID, "a %s light weakens with distance by its size: its falloff_mode "
+                         "must be none", l->kind->name);
     if (l->at_infinity)
         return error_set(err, GLINT_ERR_INVALID, "a %s light is at infinity: its falloff_mode must be none",
                          l->kind->name);
@@ -58,6 +62,47 @@ double spot_factor(const light *l, double cos_angle)
 bool light_delta_sample_fn(const light *l, vec3 p, double u1, double u2, light_sample *out)
 {
     return light_delta_sample(l, p, out);
+}
+
+glint_status light_area_init(light *l, const glint_shape *glow, double area, glint_error *err)
+{
+    l->area = area;
+    return shape_init(&l->glow, glow, NULL, -1, err);
+}
+
+bool light_area_point(const light *l, vec3 p, vec3 q, light_sample *out)
+{
+    vec3 d = v3_sub(q, p);
+    double d2 = v3_dot(d, d);
+    if (!(d2 > 0))
+        return false;
+    out->distance = sqrt(d2);
+    out->to_light = v3_scale(d, 1 / out->distance);
+    double cos_light = -v3_dot(out->to_light, l->normal);
+    if (!(cos_light > 0))
+        return false;
+    /* Uniform by area: density d^2 / (cos area) among directions. */
+    out->pdf = d2 / (cos_light * l->area);
+    out->radiance = rgb_scale(l->desc.color, 1 / (M_PI * out->pdf));
+    return true;
+}
+
+bool light_seen(const light *l, const ray *r, double tmax, double *t)
+{
+    shape_hit h;
+    if (!shape_intersect(&l->glow, r, 0, tmax, &h))
+        return false;
+    if (l->kind->one_sided && !(v3_dot(r->d, l->normal) < 0))
+        return false;
+    *t = h.t;
+    return true;
+}
+
+glint_light glint_light_default(glint_light_kind kind)
+{
+    light_spec s = light_spec_default(kind);
+    s.light.color = rgb_scale(s.light.color, s.intensity);
+    return s.light;
 }
 
 glint_status light_init(light *l, const glint_light *d, glint_error *err)

@@ -1,20 +1,24 @@
 /* light.h - lights: where a light is seen from a point and how much of it
  * arrives there before shadowing.
  *
- * Each kind of light is one file (point_light.c, spot_light.c, ...) that
+ * Each kind of light is one file (point_light.c, sphere_light.c, ...) that
  * exports one light_kind record: its scene-file name, its parameter table
- * and its operations; light_registry.c lists them. A light is sampled at a
- * point with a 2-D random sample in [0, 1)^2 and gives a direction, a
- * distance, the radiance arriving and the probability density of that
- * direction: lights of one direction (point, spot, directional) ignore the
- * sample and give density 1.
+ * and its operations; light.c lists them. A light is sampled at a point
+ * with a 2-D random sample in [0, 1)^2 and gives a direction, a distance,
+ * the radiance arriving and the probability density of that direction.
  *
- * Those are delta lights: a point (or a direction, at infinity), optionally
- * limited to a cone. Their kinds set up that description in their init and
- * the integrator samples them all with one inlined rule (light_sample_at),
- * as a call through the record for every shading point and light cost the
- * seed room 2.6% of its instructions; other kinds (area lights) sample
- * through their record. Adding a kind: docs/architecture.md. */
+ * Delta lights shine from one point (or one direction, at infinity),
+ * optionally limited to a cone: they ignore the sample and give density 1.
+ * Their kinds set up that description in their init and the integrator
+ * samples them all with one inlined rule (light_sample_at), as a call
+ * through the record for every shading point and light cost the seed room
+ * 2.6% of its instructions.
+ *
+ * Area lights (sphere, rectangle, disk) glow over a surface of radiance
+ * desc.color and sample it through their record, desc.samples times at
+ * each shading point. Each has the exact shape it glows over, which camera,
+ * reflected and refracted rays see (light_seen) but which casts no shadow.
+ * Adding a kind: docs/architecture.md. */
 #ifndef GLINT_SHADING_LIGHT_H
 #define GLINT_SHADING_LIGHT_H
 
@@ -22,6 +26,7 @@
 #include "core/color.h"
 #include "core/params.h"
 #include "core/vec.h"
+#include "geometry/shape.h"
 
 typedef struct light_kind light_kind;
 
@@ -34,13 +39,18 @@ typedef struct light {
     bool has_cone;            /* a delta light limited to the cone about dir: */
     double cos_outer;         /* the cosine of the cone half-angle */
     double cos_inner;         /* the cosine of the half-angle where falloff begins */
+    shape glow;               /* an area light: the surface it glows over, */
+    vec3 normal;              /* its lit side's unit normal when it is flat, */
+    double area;              /* and its area */
 } light;
 
 /* What a light offers to point p for one sample. */
 typedef struct light_sample {
     vec3 to_light;            /* unit direction from p towards the light */
     double distance;          /* to the light; INFINITY for directional lights */
-    color radiance;           /* arriving light before shadows, divided by pdf's share */
+    color radiance;           /* arriving light before shadows, as the colour of a point
+                                 light in to_light (phong_light's radiance): for an area
+                                 light, its radiance / (pi pdf) (docs/scene-format.md) */
     double pdf;               /* density of to_light among the light's directions; 1 for a
                                  light of one direction */
 } light_sample;
@@ -63,12 +73,14 @@ struct light_kind {
     glint_status (*init)(light *l, glint_error *err);
     /* Shines from one point or one direction: sampled by light_delta_sample. */
     bool delta;
+    /* An area light whose surface is flat and glows on the side of normal only. */
+    bool one_sided;
     /* Samples the light from point p with (u1, u2) in [0, 1)^2: false when
      * it gives p nothing. light_delta_sample for delta kinds. */
     bool (*sample)(const light *l, vec3 p, double u1, double u2, light_sample *out);
 };
 
-extern const light_kind point_light, spot_light, directional_light;
+extern const light_kind point_light, spot_light, directional_light, sphere_light, rectangle_light, disk_light;
 
 /* The kind with that public id, or NULL. */
 const light_kind *light_kind_of(glint_light_kind id);
@@ -161,11 +173,32 @@ extern const char *const LIGHT_FALLOFF_WORDS[3];
  * and fade_power above 0, and a light at infinity has none. */
 glint_status light_falloff_check(const light *l, glint_error *err);
 
+/* Sets up area light l to glow over the shape `glow` of area `area` (for a
+ * one-sided kind, on the side of l->normal, which its init sets). */
+glint_status light_area_init(light *l, const glint_shape *glow, double area, glint_error *err);
+
+/* The sample of one-sided area light l at p through the point q on it,
+ * sampled uniformly by area: false when p is behind it. */
+bool light_area_point(const light *l, vec3 p, vec3 q, light_sample *out);
+
+/* Whether ray r meets area light l's glowing side before tmax, and where:
+ * *t. A camera, reflected or refracted ray that does sees desc.color. */
+bool light_seen(const light *l, const ray *r, double tmax, double *t);
+
 /* The parameters every light has: its colour and intensity. */
 #define LIGHT_COLOR_PARAMS                                                                                     \
     {.key = "color", .type = PARAM_COLOR, .offset = offsetof(light_spec, light.color), .def = {1, 1, 1},     \
      .lo = 0, .hi = DBL_MAX, .meaning = "the light's colour"},                                                \
     {.key = "intensity", .type = PARAM_NUMBER, .offset = offsetof(light_spec, intensity), .def = {1},        \
      .lo = 0, .hi = 1e300, .meaning = "multiplies color"}
+
+/* The colour, intensity and sample count of an area light. */
+#define AREA_LIGHT_PARAMS                                                                                      \
+    {.key = "color", .type = PARAM_COLOR, .offset = offsetof(light_spec, light.color), .def = {1, 1, 1},     \
+     .lo = 0, .hi = DBL_MAX, .meaning = "the radiance of its surface: what a camera sees of it"},             \
+    {.key = "intensity", .type = PARAM_NUMBER, .offset = offsetof(light_spec, intensity), .def = {1},        \
+     .lo = 0, .hi = 1e300, .meaning = "multiplies color"},                                                    \
+    {.key = "samples", .type = PARAM_INTEGER, .offset = offsetof(light_spec, light.samples), .def = {16},    \
+     .lo = 1, .hi = 4096, .meaning = "shadow rays towards it from each point it lights: more is smoother"}
 
 #endif

@@ -742,6 +742,36 @@ static void test_lights(void **state)
     glint_scene_free(s);
 }
 
+/* Area lights: their shapes, their radiance and their sample counts. */
+static void test_area_lights(void **state)
+{
+    glint_scene *s = load_good("lights:\n"
+                               "  - {type: sphere, position: [1, 2, 3], radius: 0.5, intensity: 4}\n"
+                               "  - {type: rectangle, corner: [-1, 5, -1], edge1: [2, 0, 0], edge2: [0, 0, 2],"
+                               " color: [1, 0.5, 0], samples: 9}\n"
+                               "  - {type: disk, position: [0, 3, 0], direction: [0, -1, 0], radius: 2, samples: 1}\n");
+    assert_int_equal(glint_scene_get_counts(s).lights, 3);
+    const glint_light *l = &s->lights[0].desc;
+    assert_int_equal(l->kind, GLINT_LIGHT_SPHERE);
+    assert_vec(l->position, 1, 2, 3, 0);
+    assert_exact(l->radius, 0.5);
+    assert_rgb(l->color, 4, 4, 4, 0);
+    assert_int_equal(l->samples, 16);
+    l = &s->lights[1].desc;
+    assert_int_equal(l->kind, GLINT_LIGHT_RECTANGLE);
+    assert_vec(l->position, -1, 5, -1, 0);
+    assert_vec(l->edge1, 2, 0, 0, 0);
+    assert_vec(l->edge2, 0, 0, 2, 0);
+    assert_rgb(l->color, 1, lin(0.5), 0, 1e-15);
+    assert_int_equal(l->samples, 9);
+    assert_vec(s->lights[1].normal, 0, -1, 0, 0);
+    l = &s->lights[2].desc;
+    assert_int_equal(l->kind, GLINT_LIGHT_DISK);
+    assert_exact(l->radius, 2);
+    assert_int_equal(l->samples, 1);
+    glint_scene_free(s);
+}
+
 /* --------------------------------------------------------------- shapes */
 
 static const char *const MATS = "materials:\n  m: {}\n  n: {color: [0, 1, 0]}\n";
@@ -1607,10 +1637,22 @@ static const bad_scene BAD[] = {
      "objects:\n"
      "  - {type: torus, material: m, radius: 1}\n",
      "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, group or mesh, got 'torus'", 1},
+    {"rectangle_light_flat",
+     "lights:\n"
+     "  - {type: rectangle, corner: [0, 1, 0], edge1: [1, 0, 0], edge2: [2, 0, 0]}\n",
+     "bad.yaml:2:5: rectangle light edge1 and edge2 must be of finite length and not parallel", 1},
+    {"sphere_light_no_falloff",
+     "lights:\n"
+     "  - {type: sphere, position: [0, 1, 0], radius: 1, falloff_mode: inverse_square}\n",
+     "bad.yaml:2:52: unknown key 'falloff_mode' in a sphere light", 1},
+    {"disk_light_samples",
+     "lights:\n"
+     "  - {type: disk, position: [0, 1, 0], direction: [0, -1, 0], radius: 1, samples: 0.5}\n",
+     "bad.yaml:2:82: 'samples' must be a whole number from 1 to 4096, got '0.5'", 1},
     {"light_type_no_hint",
      "lights:\n"
      "  - {type: area}\n",
-     "bad.yaml:2:12: 'type' must be point, spot or directional, got 'area'", 1},
+     "bad.yaml:2:12: 'type' must be point, spot, directional, sphere, rectangle or disk, got 'area'", 1},
     {"texture_type_no_hint",
      "textures:\n"
      "  t: {type: noise}\n",
@@ -2653,6 +2695,7 @@ int main(void)
         cmocka_unit_test(test_image_texture_from_a_file),
         cmocka_unit_test(test_material_every_key),
         cmocka_unit_test(test_lights),
+        cmocka_unit_test(test_area_lights),
         cmocka_unit_test(test_sphere_and_plane),
         cmocka_unit_test(test_polygons),
         cmocka_unit_test(test_box_cylinder_cone),

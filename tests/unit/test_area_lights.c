@@ -1,0 +1,365 @@
+/* test_area_lights.c - sphere, rectangle and disk lights against their
+ * analytic answers: the light arriving under them (irradiance by the form
+ * factor), the umbra and penumbra a ball casts, what camera and mirror rays
+ * see of them, their checks, and the same bytes for any thread count. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <math.h>
+#include <stdbool.h>
+#include <stdlib.h>
+#include <string.h>
+#include "glint.h"
+
+#ifndef M_PI
+#define M_PI 3.14159265358979323846
+#endif
+
+#define assert_near(a, b, eps) assert_true(fabs((double)(a) - (double)(b)) <= (eps))
+#define assert_within(a, b, rel) assert_true(fabs((double)(a) - (double)(b)) <= (rel) * fabs((double)(b)))
+
+/* A w x h scene of one sample a pixel, no ambient light, seen by an
+ * orthographic camera `view` units wide looking from `eye` at the origin
+ * (from straight above, (0, 20, 0), image x is world x), with a matte
+ * white floor (diffuse 1, no highlight) at y = 0. */
+static glint_scene *floor_seen(int w, int h, double view, glint_vec3 eye)
+{
+    glint_scene *s = glint_scene_new();
+    assert_non_null(s);
+    glint_settings st = glint_settings_default();
+    st.width = w;
+    st.height = h;
+    st.samples_per_pixel = 1;
+    st.ambient_light = (glint_color){0, 0, 0};
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_camera cam = {.kind = GLINT_CAMERA_ORTHOGRAPHIC, .position = eye, .look_at = {0, 0, 0},
+                        .up = {0, 0, -1}, .vfov_degrees = 40, .view_width = view};
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    glint_material m = glint_material_default();
+    m.specular = 0;
+    int white = glint_scene_add_material(s, NULL, &m, NULL);
+    glint_shape floor = {.kind = GLINT_SHAPE_PLANE, .center = {0, 0, 0}, .normal = {0, 1, 0}};
+    assert_true(glint_scene_add_shape(s, &floor, white, NULL, NULL) >= 0);
+    return s;
+}
+
+static glint_image render(const glint_scene *s, int threads)
+{
+    glint_image img;
+    glint_render_options o = {.threads = threads};
+    glint_error err;
+    if (glint_render(s, &o, &img, NULL, &err))
+        fail_msg("render failed: %s", err.message);
+    return img;
+}
+
+static double red_at(const glint_image *im, int x, int y)
+{
+    return im->pixels[3 * ((size_t)y * im->width + x)];
+}
+
+static glint_scene *floor_from_above(int w, int h, double view)
+{
+    return floor_seen(w, h, view, (glint_vec3){0, 20, 0});
+}
+
+/* The floor point at the origin lit only by light l: what it shows, which
+ * for a white diffuse floor is E / pi, E the irradiance. The camera looks
+ * from the side, at 45 degrees, clear of the lights above the point. */
+static double under(glint_light l)
+{
+    glint_scene *s = floor_seen(1, 1, 0.1, (glint_vec3){20, 20, 0});
+    glint_error err;
+    if (glint_scene_add_light(s, &l, &err) < 0)
+        fail_msg("%s", err.message);
+    glint_image im = render(s, 1);
+    double v = red_at(&im, 0, 0);
+    glint_image_free(&im);
+    glint_scene_free(s);
+    return v;
+}
+
+/* The form factor from a point to an a x b rectangle parallel to it at
+ * height c, one corner straight above the point. */
+static double corner_form_factor(double a, double b, double c)
+{
+    double x = a / c, y = b / c, sx = sqrt(1 + x * x), sy = sqrt(1 + y * y);
+    return (x / sx * atan(y / sx) + y / sy * atan(x / sy)) / (2 * M_PI);
+}
+
+/* E = pi L sin^2(theta) under a disc of radiance L, theta the half-angle
+ * it subtends; under a ball, E = pi L (r / d)^2, so four times further is
+ * sixteen times darker; under a square, four corner form factors. */
+static void test_irradiance_under_area_lights(void **state)
+{
+    (void)state;
+    glint_light disk = glint_light_default(GLINT_LIGHT_DISK);
+    disk.position = (glint_vec3){0, 2, 0};
+    disk.direction = (glint_vec3){0, -1, 0};
+    disk.radius = 1;
+    disk.color = (glint_color){3, 3, 3};
+    disk.samples = 256;
+    assert_within(under(disk), 3 * 1.0 / (1 + 4), 0.02);
+    /* Facing away, it lights nothing. */
+    disk.direction = (glint_vec3){0, 1, 0};
+    assert_near(under(disk), 0, 0);
+
+    glint_light ball = glint_light_default(GLINT_LIGHT_SPHERE);
+    ball.radius = 0.5;
+    ball.samples = 64;
+    ball.position = (glint_vec3){0, 2, 0};
+    double near = under(ball);
+    assert_within(near, 0.25 * 0.25, 0.02);
+    ball.position = (glint_vec3){0, 8, 0};
+    double far = under(ball);
+    assert_within(far, 0.0625 * 0.0625, 0.02);
+    assert_within(near / far, 16, 0.02);
+
+    glint_light square = glint_light_default(GLINT_LIGHT_RECTANGLE);
+    square.position = (glint_vec3){-1, 1.5, -1};
+    square.edge1 = (glint_vec3){2, 0, 0};
+    square.edge2 = (glint_vec3){0, 0, 2}; /* x then z: it faces down */
+    square.samples = 256;
+    assert_within(under(square), 4 * corner_form_factor(1, 1, 1.5), 0.02);
+}
+
+/* Where a line from light point (lx, ly) tangent to the circle of radius
+ * a about (0, cy), on its side towards +x, meets y = 0. */
+static double tangent_on_floor(double lx, double ly, double a, double cy)
+{
+    double vx = -lx, vy = cy - ly, d = hypot(vx, vy), along = atan2(vy, vx), turn = asin(a / d);
+    double best = -INFINITY;
+    for (int side = -1; side <= 1; side += 2) {
+        double dx = cos(along + side * turn), dy = sin(along + side * turn);
+        best = fmax(best, lx + dx * (ly / -dy));
+    }
+    return best;
+}
+
+/* A ball of radius 1 at height 2 under a disc light of radius 0.5 at
+ * height 6: the floor is dark out to the umbra's radius and fully lit
+ * from the penumbra's, the lines from the disc's rim tangent to the ball,
+ * measured in the image within 2 pixels (50 pixels a unit). */
+static void test_penumbra_of_a_ball(void **state)
+{
+    (void)state;
+    const double R = 0.5, H = 6, a = 1, h = 2, px_per_unit = 50;
+    glint_light disk = glint_light_default(GLINT_LIGHT_DISK);
+    disk.position = (glint_vec3){0, H, 0};
+    disk.direction = (glint_vec3){0, -1, 0};
+    disk.radius = R;
+    disk.samples = 1024;
+    glint_image shadowed, open;
+    for (int with_ball = 0; with_ball < 2; with_ball++) {
+        glint_scene *s = floor_from_above(400, 2, 400 / px_per_unit);
+        assert_true(glint_scene_add_light(s, &disk, NULL) >= 0);
+        if (with_ball) {
+            glint_shape ball = {.kind = GLINT_SHAPE_SPHERE, .center = {0, h, 0}, .radius = a};
+            assert_true(glint_scene_add_shape(s, &ball, 0, NULL, NULL) >= 0);
+        }
+        *(with_ball ? &shadowed : &open) = render(s, 2);
+        glint_scene_free(s);
+    }
+    double umbra = tangent_on_floor(R, H, a, h), penumbra = tangent_on_floor(-R, H, a, h);
+    assert_true(umbra > a + 0.2); /* seen beyond the ball itself */
+    for (int dir = -1; dir <= 1; dir += 2) {
+        double first_light = -1, first_full = -1;
+        for (int step = 0; step < 200; step++) {
+            int x = dir < 0 ? 199 - step : 200 + step;
+            double ratio = red_at(&shadowed, x, 0) / red_at(&open, x, 0);
+            double r = fabs(x + 0.5 - 200) / px_per_unit;
+            if (r <= a)
+                continue; /* the ball itself, seen from above */
+            if (first_light < 0 && ratio > 0.003)
+                first_light = r;
+            if (first_full < 0 && ratio > 0.997)
+                first_full = r;
+        }
+        assert_near(first_light * px_per_unit, umbra * px_per_unit, 2);
+        assert_near(first_full * px_per_unit, penumbra * px_per_unit, 2);
+    }
+    glint_image_free(&shadowed);
+    glint_image_free(&open);
+}
+
+/* A camera looking along -z at the origin, one sample a pixel, no ambient. */
+static glint_scene *looking_down_z(int w, int h)
+{
+    glint_scene *s = glint_scene_new();
+    glint_settings st = glint_settings_default();
+    st.width = w;
+    st.height = h;
+    st.samples_per_pixel = 1;
+    st.ambient_light = (glint_color){0, 0, 0};
+    st.background = (glint_color){0.25, 0.25, 0.25};
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_camera cam = {.position = {0, 0, 10}, .look_at = {0, 0, 0}, .up = {0, 1, 0}, .vfov_degrees = 30};
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    return s;
+}
+
+/* A camera sees a light's glowing side as its colour and looks through
+ * its back; a mirror shows it; it casts no shadow of another light. */
+static void test_lights_are_seen_but_cast_no_shadow(void **state)
+{
+    (void)state;
+    glint_light panel = glint_light_default(GLINT_LIGHT_RECTANGLE);
+    panel.position = (glint_vec3){-1, -1, 0};
+    panel.edge1 = (glint_vec3){2, 0, 0};
+    panel.edge2 = (glint_vec3){0, 2, 0}; /* x then y: it faces +z, the camera */
+    panel.color = (glint_color){0.5, 2, 7};
+    glint_scene *s = looking_down_z(11, 11);
+    assert_true(glint_scene_add_light(s, &panel, NULL) >= 0);
+    glint_image im = render(s, 1);
+    assert_near(im.pixels[3 * 60 + 0], 0.5, 0);
+    assert_near(im.pixels[3 * 60 + 1], 2, 0);
+    assert_near(im.pixels[3 * 60 + 2], 7, 0);
+    assert_near(im.pixels[0], 0.25, 0); /* the corner pixel misses it */
+    glint_image_free(&im);
+    glint_scene_free(s);
+
+    panel.edge1 = (glint_vec3){0, 2, 0};
+    panel.edge2 = (glint_vec3){2, 0, 0}; /* now it faces away */
+    s = looking_down_z(11, 11);
+    assert_true(glint_scene_add_light(s, &panel, NULL) >= 0);
+    im = render(s, 1);
+    assert_near(im.pixels[3 * 60], 0.25, 0);
+    glint_image_free(&im);
+    glint_scene_free(s);
+
+    /* A perfect mirror facing the camera at z = -5 shows a ball light
+     * beside the view's axis, at the ball's colour, as the camera sees the
+     * ball itself; the centre shows the mirrored background. */
+    s = looking_down_z(41, 41);
+    glint_material mirror = glint_material_default();
+    mirror.diffuse = 0;
+    mirror.specular = 0;
+    mirror.ambient = 0;
+    mirror.reflectivity = 1;
+    int m = glint_scene_add_material(s, NULL, &mirror, NULL);
+    glint_shape wall = {.kind = GLINT_SHAPE_PLANE, .center = {0, 0, -5}, .normal = {0, 0, 1}};
+    assert_true(glint_scene_add_shape(s, &wall, m, NULL, NULL) >= 0);
+    glint_light ball = glint_light_default(GLINT_LIGHT_SPHERE);
+    ball.position = (glint_vec3){1.5, 0, 0};
+    ball.radius = 0.3;
+    ball.color = (glint_color){4, 4, 4};
+    assert_true(glint_scene_add_light(s, &ball, NULL) >= 0);
+    im = render(s, 1);
+    /* The camera sees the ball directly at x = 1.5 (its centre column),
+     * and its reflection: the mirror image at (1.5, 0, -10) seen from z =
+     * 10 is at x = 1.5 * 10 / 20 in the plane z = 0, nearer the centre. */
+    double px_per_unit = 41 / (2 * 10 * tan(15 * M_PI / 180));
+    int direct = 20 + (int)lround(1.5 * px_per_unit), mirrored = 20 + (int)lround(0.75 * px_per_unit);
+    assert_near(red_at(&im, direct, 20), 4, 0);
+    assert_near(red_at(&im, mirrored, 20), 4, 0);
+    assert_near(red_at(&im, 20, 20), 0.25, 0); /* the mirrored background */
+    glint_image_free(&im);
+    glint_scene_free(s);
+
+    /* A square light between a point light and the floor shadows nothing. */
+    s = floor_from_above(11, 11, 0.1);
+    glint_light lamp = {.kind = GLINT_LIGHT_POINT, .position = {0, 4, 0}, .color = {1, 1, 1}};
+    assert_true(glint_scene_add_light(s, &lamp, NULL) >= 0);
+    glint_light square = glint_light_default(GLINT_LIGHT_RECTANGLE);
+    square.position = (glint_vec3){-1, 2, -1};
+    square.edge1 = (glint_vec3){0, 0, 2};
+    square.edge2 = (glint_vec3){2, 0, 0}; /* facing up: it lights nothing below */
+    assert_true(glint_scene_add_light(s, &square, NULL) >= 0);
+    im = render(s, 1);
+    assert_near(red_at(&im, 5, 5), 1, 1e-9);
+    glint_image_free(&im);
+    glint_scene_free(s);
+}
+
+/* What a light's values must be, in the C API's words. */
+static void test_area_light_values_checked(void **state)
+{
+    (void)state;
+    glint_scene *s = glint_scene_new();
+    glint_error err;
+    glint_light l = glint_light_default(GLINT_LIGHT_RECTANGLE);
+    l.edge1 = (glint_vec3){1, 0, 0};
+    l.edge2 = (glint_vec3){-2, 0, 0};
+    assert_int_equal(glint_scene_add_light(s, &l, &err), -1);
+    assert_string_equal(err.message, "rectangle light edge1 and edge2 must be of finite length and not parallel");
+    l.edge2 = (glint_vec3){0, 0, 1};
+    l.samples = 0;
+    assert_int_equal(glint_scene_add_light(s, &l, &err), -1);
+    assert_string_equal(err.message, "rectangle light samples must be from 1 to 4096, got 0");
+    glint_light ball = glint_light_default(GLINT_LIGHT_SPHERE);
+    assert_int_equal(glint_scene_add_light(s, &ball, &err), -1);
+    assert_string_equal(err.message, "sphere light radius must be positive, got 0");
+    ball.radius = 1;
+    ball.falloff = GLINT_FALLOFF_INVERSE_SQUARE;
+    assert_int_equal(glint_scene_add_light(s, &ball, &err), -1);
+    assert_string_equal(err.message, "a sphere light weakens with distance by its size: its falloff_mode must be none");
+    glint_light disk = glint_light_default(GLINT_LIGHT_DISK);
+    disk.radius = 1;
+    assert_int_equal(glint_scene_add_light(s, &disk, &err), -1);
+    assert_string_equal(err.message, "disk light direction must not be zero");
+    disk.direction = (glint_vec3){0, -1, 0};
+    assert_true(glint_scene_add_light(s, &disk, &err) >= 0);
+    glint_scene_free(s);
+}
+
+/* Soft shadows are the same bytes for 1, 2 and 7 threads and any tile
+ * size; another seed gives other samples. */
+static void test_area_light_bytes_independent_of_threads(void **state)
+{
+    (void)state;
+    glint_scene *s = looking_down_z(64, 48);
+    glint_camera cam = glint_scene_get_camera(s);
+    cam.position = (glint_vec3){0, 6, 8};
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    glint_material m = glint_material_default();
+    int white = glint_scene_add_material(s, NULL, &m, NULL);
+    glint_shape floor = {.kind = GLINT_SHAPE_PLANE, .center = {0, -1, 0}, .normal = {0, 1, 0}};
+    assert_true(glint_scene_add_shape(s, &floor, white, NULL, NULL) >= 0);
+    glint_shape ball = {.kind = GLINT_SHAPE_SPHERE, .center = {0, 0, 0}, .radius = 1};
+    assert_true(glint_scene_add_shape(s, &ball, white, NULL, NULL) >= 0);
+    glint_light lights[3] = {glint_light_default(GLINT_LIGHT_SPHERE), glint_light_default(GLINT_LIGHT_RECTANGLE),
+                             glint_light_default(GLINT_LIGHT_DISK)};
+    lights[0].position = (glint_vec3){2, 3, 0};
+    lights[0].radius = 0.5;
+    lights[1].position = (glint_vec3){-3, 4, -1};
+    lights[1].edge1 = (glint_vec3){1, 0, 0};
+    lights[1].edge2 = (glint_vec3){0, 0, 1};
+    lights[1].samples = 7;
+    lights[2].position = (glint_vec3){0, 5, 2};
+    lights[2].direction = (glint_vec3){0, -1, -0.3};
+    lights[2].radius = 1;
+    for (int i = 0; i < 3; i++)
+        assert_true(glint_scene_add_light(s, &lights[i], NULL) >= 0);
+    size_t bytes = 64 * 48 * 3 * sizeof(float);
+    glint_image one = render(s, 1), two = render(s, 2), seven = render(s, 7), tiled;
+    assert_memory_equal(one.pixels, two.pixels, bytes);
+    assert_memory_equal(one.pixels, seven.pixels, bytes);
+    glint_render_options o = {.threads = 3, .tile_size = 12};
+    assert_int_equal(glint_render(s, &o, &tiled, NULL, NULL), GLINT_OK);
+    assert_memory_equal(one.pixels, tiled.pixels, bytes);
+    glint_settings st = glint_scene_get_settings(s);
+    st.seed = 7;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_image seeded = render(s, 2);
+    assert_memory_not_equal(one.pixels, seeded.pixels, bytes);
+    glint_image_free(&one);
+    glint_image_free(&two);
+    glint_image_free(&seven);
+    glint_image_free(&tiled);
+    glint_image_free(&seeded);
+    glint_scene_free(s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_irradiance_under_area_lights),
+        cmocka_unit_test(test_penumbra_of_a_ball),
+        cmocka_unit_test(test_lights_are_seen_but_cast_no_shadow),
+        cmocka_unit_test(test_area_light_values_checked),
+        cmocka_unit_test(test_area_light_bytes_independent_of_threads),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
