@@ -113,6 +113,8 @@ typedef struct glint_settings {
     uint32_t seed;             /* seed of the jittered sampler */
     double exposure;           /* in stops, -64..64: every pixel's light is multiplied by
                                   2^exposure before it is stored (0: as rendered) */
+    int emission_samples;      /* shadow rays from each shading point towards each emissive
+                                  shape or mesh, 1..4096 */
 } glint_settings;
 
 /* Returns the settings of a new scene: 640x480, 1 spp, regular, depth 5,
@@ -286,10 +288,13 @@ typedef struct glint_material {
     double ior;               /* index of refraction, > 0 */
     double tint;              /* 0..1, how much colour filters transmitted light */
     bool fresnel;
+    glint_color emission;     /* light the surface gives off from its front, times */
+    double emission_strength; /* this: its radiance; an emissive shape or mesh lights the scene */
 } glint_material;
 
 /* Returns a matte white material: ambient 0.2, diffuse 1, specular 1,
- * shininess 50, nothing else; ior 1.5, tint 1, no texture. */
+ * shininess 50, nothing else; ior 1.5, tint 1, no texture, no emission
+ * (emission black, emission_strength 1). */
 glint_material glint_material_default(void);
 
 /* Adds a material; returns its index or -1 and fills err. Its texture's

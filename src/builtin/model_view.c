@@ -83,7 +83,9 @@ static bool add_lights(glint_scene *s, vec3 lo, vec3 hi, int side, view_dir v, g
     return glint_scene_add_light(s, &inside, err) >= 0;
 }
 
-/* Sets the camera, lights and settings for looking at mesh m. */
+/* Sets the camera, lights and settings for looking at mesh m: a model
+ * with lamps of its own (emissive triangles, the Cornell box's ceiling
+ * light) is lit by them alone, as its author lit it. */
 static bool look(glint_scene *s, const mesh *m, const glint_model_view_options *o, glint_error *err)
 {
     glint_settings st = glint_settings_default();
@@ -97,7 +99,7 @@ static bool look(glint_scene *s, const mesh *m, const glint_model_view_options *
     view_dir v = side >= 0 ? into_opening(side) : named_view(o->view);
     glint_camera cam = view_frame_box(m->lo, m->hi, v3_neg(v.from), v.up, VIEW_FOV, (double)st.width / st.height,
                                       VIEW_SHARE);
-    return !glint_scene_set_camera(s, &cam, err) && add_lights(s, m->lo, m->hi, side, v, err);
+    return !glint_scene_set_camera(s, &cam, err) && (s->emitter_count > 0 || add_lights(s, m->lo, m->hi, side, v, err));
 }
 
 glint_scene *glint_scene_for_model_ex(const char *path, const glint_model_view_options *options, glint_error *err)

@@ -90,8 +90,23 @@ static const param BOX_PARAMS[] = {
      .meaning = "the opposite corner, above min on every axis"},
 };
 
+/* Faces 1 to 6 (parts: -x, +x, -y, +y, -z, +z), each by its area. */
+static double box_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n)
+{
+    vec3 lo = s->desc.min, hi = s->desc.max, size = v3_sub(hi, lo);
+    double side[3] = {size.y * size.z, size.x * size.z, size.x * size.y};
+    double area[6] = {side[0], side[0], side[1], side[1], side[2], side[2]}, total;
+    int face = pick_by_area(area, 6, &u1, &total), axis = face / 2;
+    double t[3], uv[2] = {u1, u2};
+    for (int a = 0, k = 0; a < 3; a++)
+        t[a] = a == axis ? face % 2 : uv[k++];
+    *p = v3(lo.x + t[0] * size.x, lo.y + t[1] * size.y, lo.z + t[2] * size.z);
+    *n = face_normal(face + 1);
+    return total;
+}
+
 const shape_kind box_kind = {
     .name = "box", .id = GLINT_SHAPE_BOX, .params = PARAM_TABLE(BOX_PARAMS), .max_crossings = 2,
     .init = box_init, .intersect = box_intersect, .surface = box_surface,
-    .uv = box_uv, .bounds = box_bounds, .center = shape_bounds_middle,
+    .uv = box_uv, .bounds = box_bounds, .center = shape_bounds_middle, .sample = box_sample,
 };

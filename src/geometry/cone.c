@@ -95,8 +95,28 @@ static const param CONE_PARAMS[] = {
      .meaning = "whether it has the base cap"},
 };
 
+/* The side, then the base cap when it has one, by area. A point of the
+ * side at fraction t of the way down from the apex lies on a circle of
+ * radius t r, so t goes as the square root to be uniform by area. */
+static double cone_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n)
+{
+    const glint_shape *d = &s->desc;
+    double r = d->radius, h = d->height, slant = sqrt(r * r + h * h), total;
+    double area[2] = {M_PI * r * slant, d->capped ? M_PI * r * r : 0};
+    int part = pick_by_area(area, 2, &u1, &total);
+    double phi = 2 * M_PI * u2, c = cos(phi), sn = sin(phi), t = sqrt(u1);
+    if (part == 0) {
+        *n = v3_scale(v3(h * c, r, h * sn), 1 / slant);
+        *p = v3_add(d->center, v3(t * r * c, (1 - t) * h, t * r * sn));
+    } else {
+        *n = v3(0, -1, 0);
+        *p = v3_add(d->center, v3(t * r * c, 0, t * r * sn));
+    }
+    return total;
+}
+
 const shape_kind cone_kind = {
     .name = "cone", .id = GLINT_SHAPE_CONE, .params = PARAM_TABLE(CONE_PARAMS), .max_crossings = 2,
     .intersect = cone_intersect, .surface = cone_surface, .uv = cone_uv,
-    .bounds = cone_bounds,
+    .bounds = cone_bounds, .sample = cone_sample,
 };

@@ -78,8 +78,27 @@ static const param CYLINDER_PARAMS[] = {
      .meaning = "whether it has both caps"},
 };
 
+/* The side, then the bottom and top caps when it has them, by area. */
+static double cylinder_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n)
+{
+    const glint_shape *d = &s->desc;
+    double cap = d->capped ? M_PI * d->radius * d->radius : 0, total;
+    double area[3] = {2 * M_PI * d->radius * d->height, cap, cap};
+    int part = pick_by_area(area, 3, &u1, &total);
+    double phi = 2 * M_PI * u2, c = cos(phi), sn = sin(phi);
+    if (part == 0) {
+        *n = v3(c, 0, sn);
+        *p = v3_add(d->center, v3(d->radius * c, u1 * d->height, d->radius * sn));
+    } else {
+        double r = d->radius * sqrt(u1);
+        *n = v3(0, part == 1 ? -1 : 1, 0);
+        *p = v3_add(d->center, v3(r * c, part == 1 ? 0 : d->height, r * sn));
+    }
+    return total;
+}
+
 const shape_kind cylinder_kind = {
     .name = "cylinder", .id = GLINT_SHAPE_CYLINDER, .params = PARAM_TABLE(CYLINDER_PARAMS), .max_crossings = 2,
     .intersect = cylinder_intersect, .surface = cylinder_surface, .uv = cylinder_uv,
-    .bounds = cylinder_bounds,
+    .bounds = cylinder_bounds, .sample = cylinder_sample,
 };

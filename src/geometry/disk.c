@@ -93,8 +93,18 @@ static const param DISK_PARAMS[] = {
      .hi = DBL_MAX, .meaning = "the radius of the hole, below radius: 0 for a full disc, more for a ring"},
 };
 
+static double disk_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n)
+{
+    const glint_shape *d = &s->desc;
+    double inner2 = d->inner_radius * d->inner_radius, outer2 = d->radius * d->radius;
+    double r = sqrt(inner2 + u1 * (outer2 - inner2)), phi = 2 * M_PI * u2;
+    *p = v3_add(d->center, v3_add(v3_scale(s->plane_u, r * cos(phi)), v3_scale(s->plane_v, r * sin(phi))));
+    *n = d->normal;
+    return M_PI * (outer2 - inner2);
+}
+
 const shape_kind disk_kind = {
     .name = "disk", .id = GLINT_SHAPE_DISK, .params = PARAM_TABLE(DISK_PARAMS), .max_crossings = 1, .flat = true,
     .init = disk_init, .intersect = disk_intersect, .intersect4 = disk_intersect4, .surface = disk_surface,
-    .uv = disk_uv, .bounds = disk_bounds,
+    .uv = disk_uv, .bounds = disk_bounds, .sample = disk_sample,
 };

@@ -127,8 +127,21 @@ static const param POLYGON_PARAMS[] = {
      .meaning = "3 or 4 corners of a convex planar polygon, anticlockwise seen from its front"},
 };
 
+static double polygon_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n)
+{
+    const vec3 *q = s->desc.points;
+    double area[2] = {v3_length(v3_cross(v3_sub(q[1], q[0]), v3_sub(q[2], q[0]))) / 2, 0}, total;
+    if (s->desc.point_count == 4)
+        area[1] = v3_length(v3_cross(v3_sub(q[2], q[0]), v3_sub(q[3], q[0]))) / 2;
+    int half = pick_by_area(area, 2, &u1, &total);
+    *p = triangle_point(q[0], q[1 + half], q[2 + half], u1, u2);
+    *n = s->poly_normal;
+    return total;
+}
+
 const shape_kind polygon_kind = {
     .name = "polygon", .id = GLINT_SHAPE_POLYGON, .params = PARAM_TABLE(POLYGON_PARAMS), .max_crossings = 1,
     .flat = true, .init = polygon_init, .intersect = polygon_intersect, .intersect4 = polygon_intersect4,
     .surface = polygon_surface, .uv = polygon_uv, .bounds = polygon_bounds, .center = shape_bounds_middle,
+    .sample = polygon_sample,
 };

@@ -138,6 +138,29 @@ bool shape_is_left_behind(const shape *s, vec3 n, vec3 d)
     return s->kind->flat || (s->kind->max_crossings <= 2 && v3_dot(n, d) > 0);
 }
 
+double shape_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n)
+{
+    if (!s->kind->sample)
+        return 0;
+    vec3 p_obj, n_obj;
+    double area = s->kind->sample(s, u1, u2, &p_obj, &n_obj);
+    if (!s->has_transform) {
+        *p = p_obj;
+        *n = n_obj;
+        return 1 / area;
+    }
+    /* An affine map M stretches area at a point of unit normal n by
+     * |det M| |M^-T n|, which xf_normal's length is. */
+    const double (*m)[4] = s->to_world.m;
+    double det = m[0][0] * (m[1][1] * m[2][2] - m[1][2] * m[2][1]) - m[0][1] * (m[1][0] * m[2][2] - m[1][2] * m[2][0]) +
+                 m[0][2] * (m[1][0] * m[2][1] - m[1][1] * m[2][0]);
+    vec3 world_n = xf_normal(&s->to_object, n_obj);
+    double stretch = v3_length(world_n);
+    *p = xf_point(&s->to_world, p_obj);
+    *n = v3_scale(world_n, 1 / stretch);
+    return 1 / (area * fabs(det) * stretch);
+}
+
 vec3 shape_bounds_middle(const shape *s)
 {
     vec3 lo, hi;

@@ -127,6 +127,13 @@ int shape_max_crossings(const shape *s);
  * and s is convex (no line crosses it more than twice). */
 bool shape_is_left_behind(const shape *s, vec3 n, vec3 d);
 
+/* A point of s's surface in world space for (u1, u2) in [0, 1)^2, *n its
+ * unit outward (front) normal; returns the density of such points per
+ * unit of world area (the same everywhere for a shape without a transform
+ * or with a rigid or uniformly scaling one), or 0 for a surface of no
+ * finite area (a plane), which fills neither. */
+double shape_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n);
+
 /* The centre of s in object space (its kind's `center`): where spherical
  * and cylindrical mappings are centred unless they give their own. */
 static inline vec3 shape_center(const shape *s)

@@ -48,6 +48,10 @@ struct shape_kind {
      * `center` (a sphere's or disk's centre, a cylinder's or cone's base
      * centre, a plane's point). */
     vec3 (*center)(const shape *s);
+    /* A point of the surface, uniform by area, for (u1, u2) in [0, 1)^2,
+     * in object space, *n its unit outward (front) normal; returns the
+     * surface's whole area. NULL: the surface has no finite area (a plane). */
+    double (*sample)(const shape *s, double u1, double u2, vec3 *p, vec3 *n);
 };
 
 extern const shape_kind sphere_kind, plane_kind, polygon_kind, box_kind, cylinder_kind, cone_kind, disk_kind;

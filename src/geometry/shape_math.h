@@ -38,6 +38,14 @@ static inline vec3 max3(vec3 a, vec3 b) { return v3(fmax(a.x, b.x), fmax(a.y, b.
 
 static inline bool within(double t, double lo, double hi) { return t >= lo && t <= hi; }
 
+/* Which of n parts of areas area[0..n) the sample *u in [0, 1) falls in,
+ * each chosen in proportion to its area, *u stretched back over [0, 1)
+ * within it, so that strata of u stay strata; *total gets the sum. */
+int pick_by_area(const double *area, int n, double *u, double *total);
+
+/* The point of triangle (a, b, c) for (u1, u2) in [0, 1)^2, uniform by area. */
+vec3 triangle_point(vec3 a, vec3 b, vec3 c, double u1, double u2);
+
 /* The real roots t0 <= t1 of a t^2 + b t + c = 0, in the form that avoids
  * cancellation between b and the square root. A double root counts, so a
  * ray tangent to a surface hits it. With a == 0 (a ray parallel to a cone's

@@ -72,8 +72,17 @@ static const param SPHERE_PARAMS[] = {
      PARAM_POSITIVE, .meaning = "the radius"},
 };
 
+static double sphere_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n)
+{
+    const glint_shape *d = &s->desc;
+    double z = 1 - 2 * u1, ring = sqrt(fmax(0, 1 - z * z)), phi = 2 * M_PI * u2;
+    *n = v3(ring * cos(phi), z, ring * sin(phi));
+    *p = v3_madd(d->center, *n, d->radius);
+    return 4 * M_PI * d->radius * d->radius;
+}
+
 const shape_kind sphere_kind = {
     .name = "sphere", .id = GLINT_SHAPE_SPHERE, .params = PARAM_TABLE(SPHERE_PARAMS), .max_crossings = 2,
     .intersect = sphere_intersect, .intersect4 = sphere_intersect4,
-    .surface = sphere_surface, .uv = sphere_uv, .bounds = sphere_bounds,
+    .surface = sphere_surface, .uv = sphere_uv, .bounds = sphere_bounds, .sample = sphere_sample,
 };

@@ -50,7 +50,8 @@ static bool is_made_up(const struct aiScene *ai, unsigned i, const model_format 
 }
 
 /* glTF metallic-roughness: base colour is linear already; metals mirror,
- * roughness widens and dims the highlight, transmission refracts. */
+ * roughness widens and dims the highlight, transmission refracts, the
+ * emissive factor glows. */
 static glint_material from_gltf(const struct aiMaterial *a)
 {
     glint_material m = glint_material_default();
@@ -69,6 +70,7 @@ static glint_material from_gltf(const struct aiMaterial *a)
     m.shininess = r4 > 0 ? model_clamp(2 / r4 - 2, 0, MODEL_MAX_SHININESS) : MODEL_MAX_SHININESS;
     m.refraction = model_clamp(get_float(a, AI_MATKEY_TRANSMISSION_FACTOR, 0), 0, 1);
     m.fresnel = m.refraction > 0;
+    get_color(a, AI_MATKEY_COLOR_EMISSIVE, &m.emission); /* emissiveFactor, linear */
     double ior = get_float(a, AI_MATKEY_REFRACTI, 1.5);
     m.ior = ior > 0 ? ior : 1.5;
     struct aiString mode;

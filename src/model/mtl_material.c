@@ -1,6 +1,6 @@
 /* mtl_material.c - an MTL material as glint's, by the table of
- * docs/meshes.md: Kd is a display (sRGB) colour; Ks, Ns, d and Ni are used
- * as they are; illum picks mirror (3, 5) or refracting (4, 6, 7; 7 with
+ * docs/meshes.md: Kd is a display (sRGB) colour; Ks, Ns, d, Ni and Ke (the
+ * emission) are used as they are; illum picks mirror (3, 5) or refracting (4, 6, 7; 7 with
  * Fresnel) behaviour. */
 #include <math.h>
 #include "model/model_build.h"
@@ -23,6 +23,8 @@ glint_material mtl_to_glint(const mtl_material *a)
     glint_material m = glint_material_default();
     m.color = (glint_color){glint_srgb_to_linear(channel(a->kd[0])), glint_srgb_to_linear(channel(a->kd[1])),
                             glint_srgb_to_linear(channel(a->kd[2]))};
+    /* Ke is a radiance, linear and often above 1 (the Cornell box's 17 12 4). */
+    m.emission = (glint_color){channel(a->ke[0]), channel(a->ke[1]), channel(a->ke[2])};
     double ks_max = fmax(channel(a->ks[0]), fmax(channel(a->ks[1]), channel(a->ks[2])));
     m.specular = ks_max;
     m.shininess = model_clamp(finite_or(a->ns, 0), 0, MODEL_MAX_SHININESS);

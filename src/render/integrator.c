@@ -48,6 +48,7 @@ typedef struct shade_point {
     const glint_material *m;
     surface s;
     vec3 n, ns;               /* geometric and shading normals on the viewer's side */
+    bool front;               /* the viewer is on the surface's front (outside) */
     vec3 origin;              /* where shadow rays start: p moved off the surface along n */
     color base;               /* the surface colour */
 } shade_point;
@@ -59,7 +60,7 @@ static void shade_begin(const glint_scene *scene, const ray *r, const accel_hit 
     sp->hit = *h;
     sp->m = hit_material(scene, h);
     hit_surface(scene, r, &sp->hit, &sp->s);
-    bool front = v3_dot(r->d, sp->s.n) < 0;
+    bool front = sp->front = v3_dot(r->d, sp->s.n) < 0;
     sp->n = front ? sp->s.n : v3_neg(sp->s.n);
     sp->ns = front ? sp->s.shading_n : v3_neg(sp->s.shading_n);
     sp->origin = offset_point(sp->s.p, sp->n);
@@ -88,10 +89,11 @@ __attribute__((always_inline)) static inline color light_share(const shade_point
     return phong_light(sp->m, sp->base, sp->ns, ls->to_light, to_eye, rgb_mul(ls->radiance, through));
 }
 
-/* The ambient term at sp. */
+/* The ambient term at sp, and what sp gives off when seen from its front. */
 static color ambient(const glint_scene *scene, const shade_point *sp)
 {
-    return rgb_scale(rgb_mul(sp->base, scene->settings.ambient_light), sp->m->ambient);
+    color a = rgb_scale(rgb_mul(sp->base, scene->settings.ambient_light), sp->m->ambient);
+    return sp->front && sp->m->emission_strength > 0 ? rgb_add(a, material_emission(sp->m)) : a;
 }
 
 /* The rays a hit sends on, in the order their light is added: straight
@@ -254,19 +256,19 @@ static void area_samples(const uint32_t rot[ACCEL_PACKET], int j, int n, double 
 }
 
 /* Adds to direct[i] the light of area light l (the scene's light number
- * `index`) that reaches the hit sp[i] of each lane found[i], whose random
- * numbers come from key[i]: one packet of shadow segments per sample. Out
+ * `index`, emitters numbered after the lights) that reaches the hit sp[i]
+ * of each lane found[i], whose random numbers come from key[i]: one
+ * packet of shadow segments per sample, n of them. Out
  * of line, so that the delta lights' packet stays inlined in
  * direct_light8 (the seed room's every shading point) as it was. */
 __attribute__((noinline)) static void area_light_packets(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
                                                          const shade_point sp[ACCEL_PACKET], int depth,
-                                                         const light *l, int index, const uint32_t key[ACCEL_PACKET],
-                                                         color direct[ACCEL_PACKET])
+                                                         const light *l, int index, int n,
+                                                         const uint32_t key[ACCEL_PACKET], color direct[ACCEL_PACKET])
 {
     uint32_t rot[ACCEL_PACKET];
     for (int i = 0; i < ACCEL_PACKET; i++)
         rot[i] = hash_u32(key[i] ^ hash_u32((uint32_t)index + 1));
-    int n = l->desc.samples;
     for (int j = 0; j < n && !stopping(t); j++) {
         double u[ACCEL_PACKET][2];
         area_samples(rot, j, n, u);
@@ -274,20 +276,23 @@ __attribute__((noinline)) static void area_light_packets(tracer *t, const ray8 *
     }
 }
 
-/* Adds to direct[i] the light of every light source that reaches the hit
- * sp[i] of each lane found[i], whose random numbers come from key[i]:
- * one packet of shadow segments per light (per sample of an area light). */
+/* Adds to direct[i] the light of every light source, emissive shapes and
+ * meshes too, that reaches the hit sp[i] of each lane found[i], whose
+ * random numbers come from key[i]: one packet of shadow segments per light
+ * (per sample of an area light or emitter). */
 static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
                           const shade_point sp[ACCEL_PACKET], int depth, const uint32_t key[ACCEL_PACKET],
                           color direct[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
-    for (int l = 0; l < scene->light_count && !stopping(t); l++) {
-        const light *li = &scene->lights[l];
+    for (int l = 0; l < scene->light_count + scene->emitter_count && !stopping(t); l++) {
+        bool emitter = l >= scene->light_count;
+        const light *li = emitter ? &scene->emitters[l - scene->light_count] : &scene->lights[l];
         if (li->kind->delta)
             light_packet(t, r, found, sp, depth, li, NULL, 1, direct);
         else
-            area_light_packets(t, r, found, sp, depth, li, l, key, direct);
+            area_light_packets(t, r, found, sp, depth, li, l,
+                               emitter ? scene->settings.emission_samples : li->desc.samples, key, direct);
     }
 }
 
@@ -422,7 +427,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
 
 bool tracer_needs_keys(const glint_scene *scene)
 {
-    return scene->area_light_count > 0;
+    return scene->area_light_count > 0 || scene->emitter_count > 0;
 }
 
 double tracer_reach(const glint_scene *scene)

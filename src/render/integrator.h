@@ -42,7 +42,8 @@ typedef struct tracer {
 double tracer_reach(const glint_scene *scene);
 
 /* Whether tracing the scene uses random numbers, so the keys passed to
- * tracer_trace8: with area lights. Without, every key may be 0. */
+ * tracer_trace8: with area lights or emissive surfaces. Without, every
+ * key may be 0. */
 bool tracer_needs_keys(const glint_scene *scene);
 
 /* The colours seen along up to ACCEL_PACKET unit-direction camera rays, the

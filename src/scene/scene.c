@@ -5,6 +5,7 @@
 #include <string.h>
 #include "core/array.h"
 #include "core/error.h"
+#include "geometry/shape_kind.h"
 #include "scene/scene.h"
 #include "shading/fog.h"
 
@@ -42,6 +43,9 @@ void glint_scene_free(glint_scene *s)
     id_table_free(&s->material_names);
     free(s->shapes);
     free(s->lights);
+    for (int i = 0; i < s->emitter_count; i++)
+        light_release(&s->emitters[i]);
+    free(s->emitters);
     for (int i = 0; i < s->mesh_count; i++)
         mesh_release(&s->meshes[i]);
     free(s->meshes);
@@ -302,6 +306,21 @@ int glint_scene_add_shape(glint_scene *scene, const glint_shape *desc, int mat, 
     if (grow((void **)&scene->shapes, &scene->shape_cap, scene->shape_count, sizeof(shape), "shapes", err) ||
         shape_init(&scene->shapes[scene->shape_count], desc, xf, mat, err))
         return -1;
+    color glow = material_emission(&scene->materials[mat].m);
+    if (rgb_max(glow) > 0) {
+        light emitter;
+        const shape *s = &scene->shapes[scene->shape_count];
+        if (!emitter_for_shape(&emitter, s, glow)) {
+            if (scene_warn(scene, err, "an emissive %s glows but lights nothing: it has no end (a polygon or "
+                           "disk does)", s->kind->name))
+                return -1;
+        } else {
+            if (grow((void **)&scene->emitters, &scene->emitter_cap, scene->emitter_count, sizeof(light),
+                     "emissive shapes", err))
+                return -1;
+            scene->emitters[scene->emitter_count++] = emitter;
+        }
+    }
     return scene->shape_count++;
 }
 
@@ -365,8 +384,18 @@ int glint_scene_add_instance(glint_scene *scene, int mesh_index, int mat, const 
     }
     inst.has_transform = !xf_is_identity(&inst.to_world);
     if (grow((void **)&scene->instances, &scene->instance_cap, scene->instance_count, sizeof inst, "instances",
+             err) ||
+        grow((void **)&scene->emitters, &scene->emitter_cap, scene->emitter_count, sizeof(light), "emissive meshes",
              err))
         return -1;
+    bool out_of_memory;
+    if (emitter_for_instance(&scene->emitters[scene->emitter_count], &scene->meshes[mesh_index], &inst,
+                             scene->materials, &out_of_memory))
+        scene->emitter_count++;
+    else if (out_of_memory) {
+        error_set(err, GLINT_ERR_NOMEM, "out of memory adding an emissive mesh's triangles");
+        return -1;
+    }
     scene->instances[scene->instance_count] = inst;
     return scene->instance_count++;
 }

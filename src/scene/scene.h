@@ -32,6 +32,9 @@ struct glint_scene {
     int light_count;
     size_t light_cap;
     int area_light_count;     /* lights that are not delta lights: camera rays can see them */
+    light *emitters;          /* the emissive shapes and meshes as lights (light.h), */
+    int emitter_count;        /* made as they are added, apart from `lights` */
+    size_t emitter_cap;
     mesh *meshes;
     int mesh_count;
     size_t mesh_cap;

@@ -39,6 +39,8 @@ static const param SETTINGS_PARAMS[] = {
      .meaning = "ambient light; multiplies each material's ambient term"},
     {.key = "exposure", .type = PARAM_NUMBER, SETTING(exposure), .lo = -64, .hi = 64, .unit = "stops",
      .meaning = "every pixel's light times 2^exposure before it is written: 1 is twice as bright, -1 half"},
+    {.key = "emission_samples", .type = PARAM_INTEGER, SETTING(emission_samples), .def = {16}, .lo = 1, .hi = 4096,
+     .meaning = "shadow rays from each point lit towards each emissive shape or mesh: more is smoother"},
 };
 
 #define CAMERA(name) .offset = offsetof(glint_camera, name)

@@ -2,6 +2,7 @@
  * table, and the registry of kinds (one line each). */
 #include <math.h>
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 #include "core/error.h"
 #include "core/registry.h"
@@ -70,21 +71,41 @@ glint_status light_area_init(light *l, const glint_shape *glow, double area, gli
     return shape_init(&l->glow, glow, NULL, -1, err);
 }
 
-bool light_area_point(const light *l, vec3 p, vec3 q, light_sample *out)
+/* How much shorter than the distance to a surface in the scene its shadow
+ * segment is, so that Embree's single-precision hit on that surface is
+ * not taken for a blocker. */
+#define EMITTER_GAP 1e-4
+
+bool light_surface_point(vec3 p, vec3 q, vec3 n_q, double density, color radiance, bool in_scene,
+                         light_sample *out)
 {
     vec3 d = v3_sub(q, p);
     double d2 = v3_dot(d, d);
-    if (!(d2 > 0))
+    if (!(d2 > 0) || !(density > 0))
         return false;
-    out->distance = sqrt(d2);
-    out->to_light = v3_scale(d, 1 / out->distance);
-    double cos_light = -v3_dot(out->to_light, l->normal);
+    double distance = sqrt(d2);
+    out->to_light = v3_scale(d, 1 / distance);
+    double cos_light = -v3_dot(out->to_light, n_q);
     if (!(cos_light > 0))
         return false;
-    /* Uniform by area: density d^2 / (cos area) among directions. */
-    out->pdf = d2 / (cos_light * l->area);
-    out->radiance = rgb_scale(l->desc.color, 1 / (M_PI * out->pdf));
+    out->distance = in_scene ? distance * (1 - EMITTER_GAP) : distance;
+    /* By area: density d^2 / cos times that among directions. */
+    out->pdf = density * d2 / cos_light;
+    out->radiance = rgb_scale(radiance, 1 / (M_PI * out->pdf));
     return true;
+}
+
+bool light_area_point(const light *l, vec3 p, vec3 q, light_sample *out)
+{
+    return light_surface_point(p, q, l->normal, 1 / l->area, l->desc.color, false, out);
+}
+
+void light_release(light *l)
+{
+    free(l->triangles);
+    free(l->cumulative);
+    l->triangles = NULL;
+    l->cumulative = NULL;
 }
 
 bool light_seen(const light *l, const ray *r, double tmax, double *t)

@@ -18,7 +18,11 @@
  * desc.color and sample it through their record, desc.samples times at
  * each shading point. Each has the exact shape it glows over, which camera,
  * reflected and refracted rays see (light_seen) but which casts no shadow.
- * Adding a kind: docs/architecture.md. */
+ * Emissive shapes and meshes are lights too (emitters: shape_emitter.c,
+ * mesh_emitter.c), which the scene makes when one is added and keeps apart
+ * from the lights it was given: they sample the surface that glows, which
+ * is in the scene and so needs no light_seen, and their shadow rays stop
+ * just short of it. Adding a kind: docs/architecture.md. */
 #ifndef GLINT_SHADING_LIGHT_H
 #define GLINT_SHADING_LIGHT_H
 
@@ -26,9 +30,18 @@
 #include "core/color.h"
 #include "core/params.h"
 #include "core/vec.h"
+#include "geometry/mesh.h"
 #include "geometry/shape.h"
+#include "shading/material.h"
 
 typedef struct light_kind light_kind;
+
+/* A triangle of an emissive mesh, in world space. */
+typedef struct emitter_triangle {
+    vec3 a, b, c;
+    vec3 normal;              /* unit, on the side it glows: by the winding */
+    color radiance;
+} emitter_triangle;
 
 /* A light with its derived values precomputed. */
 typedef struct light {
@@ -42,6 +55,9 @@ typedef struct light {
     shape glow;               /* an area light: the surface it glows over, */
     vec3 normal;              /* its lit side's unit normal when it is flat, */
     double area;              /* and its area */
+    emitter_triangle *triangles; /* an emissive mesh's triangles that glow, */
+    double *cumulative;       /* the sum of their powers up to each, the last 1, */
+    int triangle_count;       /* and their number */
 } light;
 
 /* What a light offers to point p for one sample. */
@@ -184,6 +200,28 @@ bool light_area_point(const light *l, vec3 p, vec3 q, light_sample *out);
 /* Whether ray r meets area light l's glowing side before tmax, and where:
  * *t. A camera, reflected or refracted ray that does sees desc.color. */
 bool light_seen(const light *l, const ray *r, double tmax, double *t);
+
+/* The sample of a light at p through the point q of a surface that glows
+ * with `radiance` towards unit normal n_q, q chosen with `density` per unit
+ * area: false when p is behind it. `in_scene`: the surface is in the scene,
+ * so the shadow segment stops just short of it. */
+bool light_surface_point(vec3 p, vec3 q, vec3 n_q, double density, color radiance, bool in_scene,
+                         light_sample *out);
+
+/* The light of shape s glowing with `radiance` from its front (an emitter):
+ * false, and *l untouched, for a shape of no finite area (a plane). */
+bool emitter_for_shape(light *l, const shape *s, color radiance);
+
+/* The light of the triangles of mesh m placed by inst whose materials
+ * (materials[i].m) emit: false when none does, or when out of memory
+ * (*out_of_memory set). */
+bool emitter_for_instance(light *l, const mesh *m, const instance *inst, const material *materials,
+                          bool *out_of_memory);
+
+/* Frees what an emitter owns. */
+void light_release(light *l);
+
+extern const light_kind shape_emitter, mesh_emitter;
 
 /* The parameters every light has: its colour and intensity. */
 #define LIGHT_COLOR_PARAMS                                                                                     \

@@ -36,6 +36,11 @@ static const param MATERIAL_PARAMS[] = {
      .meaning = "how much the base colour filters transmitted light and shadows"},
     {.key = "fresnel", .type = PARAM_BOOL, FIELD(fresnel),
      .meaning = "split the refraction share between refraction and reflection by the Fresnel equations"},
+    {.key = "emission", .type = PARAM_COLOR, FIELD(emission), .lo = 0, .hi = DBL_MAX,
+     .meaning = "light the surface gives off from its front side (black: none); an emissive shape or mesh "
+                "lights the scene as an area light"},
+    {.key = "emission_strength", .type = PARAM_NUMBER, FIELD(emission_strength), .def = {1}, STRENGTH,
+     .meaning = "multiplies emission: their product is the surface's radiance"},
 };
 
 param_table material_params(void)
@@ -63,6 +68,11 @@ glint_status material_validate(const glint_material *m, int texture_count, glint
         return error_set(err, GLINT_ERR_INVALID, "material transparency + refraction must not exceed 1, got %g",
                          m->transparency + m->refraction);
     return GLINT_OK;
+}
+
+color material_emission(const glint_material *m)
+{
+    return rgb_scale(m->emission, m->emission_strength);
 }
 
 bool material_is_opaque(const glint_material *m)

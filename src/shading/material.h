@@ -20,6 +20,10 @@ param_table material_params(void);
  * bad value. */
 glint_status material_validate(const glint_material *m, int texture_count, glint_error *err);
 
+/* The radiance the material gives off from a surface's front: emission
+ * times emission_strength (black for most). */
+color material_emission(const glint_material *m);
+
 /* True when no light passes the material: no transparency, no refraction. */
 bool material_is_opaque(const glint_material *m);
 

@@ -73,6 +73,7 @@ settings:
   background: [0, 0, 0]
   ambient: [1, 1, 1]
   exposure: -1.5
+  emission_samples: 16
   output: x.exr
 camera:
 EOF
@@ -133,6 +134,7 @@ settings:
   background: [0, 0, 0]
   ambient: [1, 1, 1]
   exposure: 0
+  emission_samples: 16
   output: out.png
 camera:
   position: [0, 1, 5]

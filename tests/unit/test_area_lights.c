@@ -1,7 +1,8 @@
-/* test_area_lights.c - sphere, rectangle and disk lights against their
- * analytic answers: the light arriving under them (irradiance by the form
- * factor), the umbra and penumbra a ball casts, what camera and mirror rays
- * see of them, their checks, and the same bytes for any thread count. */
+/* test_area_lights.c - sphere, rectangle and disk lights, and emissive
+ * shapes and meshes, against their analytic answers: the light arriving
+ * under them (irradiance by the form factor), the umbra and penumbra a
+ * ball casts, what camera and mirror rays see of them, their checks, the
+ * Cornell box's own lamp, and the same bytes for any thread count. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -9,9 +10,11 @@
 #include <cmocka.h>
 #include <math.h>
 #include <stdbool.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "glint.h"
+#include "scene/scene.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -65,6 +68,16 @@ static glint_scene *floor_from_above(int w, int h, double view)
     return floor_seen(w, h, view, (glint_vec3){0, 20, 0});
 }
 
+/* What the one pixel of a floor_seen scene shows; frees the scene. */
+static double origin_seen(glint_scene *s)
+{
+    glint_image im = render(s, 1);
+    double v = red_at(&im, 0, 0);
+    glint_image_free(&im);
+    glint_scene_free(s);
+    return v;
+}
+
 /* The floor point at the origin lit only by light l: what it shows, which
  * for a white diffuse floor is E / pi, E the irradiance. The camera looks
  * from the side, at 45 degrees, clear of the lights above the point. */
@@ -74,11 +87,7 @@ static double under(glint_light l)
     glint_error err;
     if (glint_scene_add_light(s, &l, &err) < 0)
         fail_msg("%s", err.message);
-    glint_image im = render(s, 1);
-    double v = red_at(&im, 0, 0);
-    glint_image_free(&im);
-    glint_scene_free(s);
-    return v;
+    return origin_seen(s);
 }
 
 /* The form factor from a point to an a x b rectangle parallel to it at
@@ -304,8 +313,21 @@ static void test_area_light_values_checked(void **state)
     glint_scene_free(s);
 }
 
-/* Soft shadows are the same bytes for 1, 2 and 7 threads and any tile
- * size; another seed gives other samples. */
+/* A material that gives off `glow` and reflects nothing. */
+static int glowing(glint_scene *s, double glow)
+{
+    glint_material m = glint_material_default();
+    m.diffuse = m.specular = m.ambient = 0;
+    m.emission = (glint_color){1, 1, 1};
+    m.emission_strength = glow;
+    int i = glint_scene_add_material(s, NULL, &m, NULL);
+    assert_true(i >= 0);
+    return i;
+}
+
+/* Soft shadows of area lights and of an emissive box are the same bytes
+ * for 1, 2 and 7 threads and any tile size; another seed gives other
+ * samples. */
 static void test_area_light_bytes_independent_of_threads(void **state)
 {
     (void)state;
@@ -332,6 +354,8 @@ static void test_area_light_bytes_independent_of_threads(void **state)
     lights[2].radius = 1;
     for (int i = 0; i < 3; i++)
         assert_true(glint_scene_add_light(s, &lights[i], NULL) >= 0);
+    glint_shape lamp = {.kind = GLINT_SHAPE_BOX, .min = {-3, 0, -2}, .max = {-2.5, 0.5, -1.5}};
+    assert_true(glint_scene_add_shape(s, &lamp, glowing(s, 3), NULL, NULL) >= 0);
     size_t bytes = 64 * 48 * 3 * sizeof(float);
     glint_image one = render(s, 1), two = render(s, 2), seven = render(s, 7), tiled;
     assert_memory_equal(one.pixels, two.pixels, bytes);
@@ -352,6 +376,131 @@ static void test_area_light_bytes_independent_of_threads(void **state)
     glint_scene_free(s);
 }
 
+/* The floor point at the origin lit only by shape sh of a material
+ * glowing at `glow` (placed by xf, NULL: as it is), its light sampled
+ * `samples` times at each point. */
+static double under_shape(glint_shape sh, const glint_transform *xf, double glow, int samples)
+{
+    glint_scene *s = floor_seen(1, 1, 0.1, (glint_vec3){20, 20, 0});
+    glint_settings st = glint_scene_get_settings(s);
+    st.emission_samples = samples;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_error err;
+    if (glint_scene_add_shape(s, &sh, glowing(s, glow), xf, &err) < 0)
+        fail_msg("%s", err.message);
+    return origin_seen(s);
+}
+
+/* An emissive shape lights as the area light of its shape does: a square
+ * by its form factor, a ball by (r / d)^2, scaled by a transform (the
+ * density of points it samples follows the stretch), a disc squashed into
+ * an ellipse far away by its area. */
+static void test_emissive_shapes_light_the_scene(void **state)
+{
+    (void)state;
+    glint_shape square = {.kind = GLINT_SHAPE_POLYGON, .point_count = 4,
+                          .points = {{-1, 1.5, -1}, {1, 1.5, -1}, {1, 1.5, 1}, {-1, 1.5, 1}}}; /* facing down */
+    assert_within(under_shape(square, NULL, 3, 256), 3 * 4 * corner_form_factor(1, 1, 1.5), 0.02);
+    glint_shape ball = glint_shape_default(GLINT_SHAPE_SPHERE);
+    ball.center = (glint_vec3){0, 2, 0};
+    ball.radius = 0.5;
+    assert_within(under_shape(ball, NULL, 1, 1024), 0.0625, 0.02);
+    glint_transform grow = {{{2, 0, 0, 0}, {0, 2, 0, 1}, {0, 0, 2, 0}}}; /* twice the size, 1 up */
+    ball.center = (glint_vec3){0, 0.5, 0};
+    ball.radius = 0.25;
+    assert_within(under_shape(ball, &grow, 1, 1024), 0.0625, 0.02);
+    glint_shape disc = glint_shape_default(GLINT_SHAPE_DISK);
+    disc.center = (glint_vec3){0, 40, 0};
+    disc.normal = (glint_vec3){0, -1, 0};
+    disc.radius = 1;
+    glint_transform wide = {{{2, 0, 0, 0}, {0, 1, 0, 0}, {0, 0, 1, 0}}}; /* an ellipse of area 2 pi */
+    assert_within(under_shape(disc, &wide, 100, 64), 100 * 2 / (40.0 * 40), 0.01);
+    /* A plane has no end to sample: it glows, lights nothing, and says so. */
+    glint_scene *s = glint_scene_new();
+    glint_shape plane = {.kind = GLINT_SHAPE_PLANE, .normal = {0, 1, 0}};
+    assert_true(glint_scene_add_shape(s, &plane, glowing(s, 1), NULL, NULL) >= 0);
+    assert_int_equal(glint_scene_warning_count(s), 1);
+    assert_string_equal(glint_scene_warning(s, 0),
+                        "an emissive plane glows but lights nothing: it has no end (a polygon or disk does)");
+    glint_scene_free(s);
+}
+
+/* A camera sees an emissive surface's front at its radiance, its back
+ * not glowing; the triangles of an emissive mesh light the floor by their
+ * form factor, wherever an instance puts them. */
+static void test_emissive_meshes(void **state)
+{
+    (void)state;
+    const float square[] = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1};
+    const uint32_t down[] = {0, 1, 2, 0, 2, 3}; /* clockwise seen from above: facing down */
+    for (int placed = 0; placed < 2; placed++) {
+        glint_scene *s = floor_seen(1, 1, 0.1, (glint_vec3){20, 20, 0});
+        glint_settings st = glint_scene_get_settings(s);
+        st.emission_samples = 256;
+        assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+        glint_mesh_data d = {.positions = square, .vertex_count = 4, .indices = down, .triangle_count = 2,
+                             .material = glowing(s, 2)};
+        int square_mesh = glint_scene_add_mesh(s, NULL, &d, NULL);
+        glint_transform up = {{{1, 0, 0, 0}, {0, 1, 0, placed ? 3 : 1.5}, {0, 0, 1, 0}}};
+        assert_true(glint_scene_add_instance(s, square_mesh, -1, &up, NULL) >= 0);
+        assert_int_equal(s->emitter_count, 1);
+        glint_image im = render(s, 2);
+        assert_within(red_at(&im, 0, 0), 2 * 4 * corner_form_factor(1, 1, placed ? 3 : 1.5), 0.02);
+        glint_image_free(&im);
+        glint_scene_free(s);
+    }
+    /* Seen from below, the glowing side; from above, the dark back. */
+    glint_scene *s = looking_down_z(5, 5);
+    glint_camera cam = glint_scene_get_camera(s);
+    for (int below = 0; below < 2; below++) {
+        cam.position = (glint_vec3){0, below ? -5 : 5, 0.001};
+        assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+        if (!below) {
+            glint_mesh_data d = {.positions = square, .vertex_count = 4, .indices = down, .triangle_count = 2,
+                                 .material = glowing(s, 2)};
+            assert_true(glint_scene_add_instance(s, glint_scene_add_mesh(s, NULL, &d, NULL), -1, NULL, NULL) >= 0);
+        }
+        glint_image im = render(s, 1);
+        assert_near(red_at(&im, 2, 2), below ? 2 : 0, 0);
+        glint_image_free(&im);
+    }
+    glint_scene_free(s);
+}
+
+/* glint CornellBox-Original.obj: lit by its own ceiling lamp (MTL Ke 17
+ * 12 4) alone, which the camera sees at that radiance (its ambient term,
+ * 0.2 of its Kd, on top). */
+static void test_cornell_box_lit_by_its_lamp(void **state)
+{
+    (void)state;
+    const char *data = getenv("GLINT_SHARED_DATA");
+    char path[4096];
+    snprintf(path, sizeof path, "%s/CornellBox-Original.obj", data ? data : ".");
+    FILE *f = fopen(path, "r");
+    if (!f)
+        skip();
+    fclose(f);
+    glint_error err;
+    glint_scene *s = glint_scene_for_model(path, &err);
+    if (!s)
+        fail_msg("%s", err.message);
+    assert_int_equal(glint_scene_get_counts(s).lights, 0);
+    assert_int_equal(s->emitter_count, 1);
+    assert_int_equal(s->emitters[0].triangle_count, 2);
+    glint_settings st = glint_scene_get_settings(s);
+    st.width = 80;
+    st.height = 60;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_image im = render(s, 2);
+    /* The lamp, at the top of the box: its Ke, and its own faint ambient term. */
+    const float *lamp = im.pixels + 3 * (10 * 80 + 40);
+    assert_near(lamp[0], 17 + 0.1, 0.1);
+    assert_near(lamp[1], 12 + 0.1, 0.1);
+    assert_near(lamp[2], 4 + 0.1, 0.1);
+    glint_image_free(&im);
+    glint_scene_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -360,6 +509,9 @@ int main(void)
         cmocka_unit_test(test_lights_are_seen_but_cast_no_shadow),
         cmocka_unit_test(test_area_light_values_checked),
         cmocka_unit_test(test_area_light_bytes_independent_of_threads),
+        cmocka_unit_test(test_emissive_shapes_light_the_scene),
+        cmocka_unit_test(test_emissive_meshes),
+        cmocka_unit_test(test_cornell_box_lit_by_its_lamp),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
