@@ -290,11 +290,15 @@ typedef struct glint_material {
     bool fresnel;
     glint_color emission;     /* light the surface gives off from its front, times */
     double emission_strength; /* this: its radiance; an emissive shape or mesh lights the scene */
+    double roughness;         /* 0..1: reflection and refraction blurred over a lobe (0: sharp) */
+    int glossy_samples;       /* 1..1024: rays a camera ray's blurred reflection or refraction
+                                 is spread over */
 } glint_material;
 
 /* Returns a matte white material: ambient 0.2, diffuse 1, specular 1,
  * shininess 50, nothing else; ior 1.5, tint 1, no texture, no emission
- * (emission black, emission_strength 1). */
+ * (emission black, emission_strength 1), roughness 0 with 16 glossy
+ * samples. */
 glint_material glint_material_default(void);
 
 /* Adds a material; returns its index or -1 and fills err. Its texture's

@@ -103,6 +103,7 @@ enum { BRANCH_PASS, BRANCH_REFRACT, BRANCH_MIRROR, BRANCHES };
 
 typedef struct branches {
     ray r[BRANCHES];
+    vec3 side[BRANCHES];      /* the side of the surface each leaves to (its offset normal) */
     int skip[BRANCHES];       /* the shape each cannot meet again, or -1 */
     color filter[BRANCHES];
     double scale[BRANCHES];
@@ -121,7 +122,8 @@ static void branch(const glint_scene *scene, const shade_point *sp, branches *b,
         return;
     b->weight[k] = w;
     vec3 n = sp->n;
-    b->r[k] = (ray){offset_point(sp->s.p, v3_dot(d, n) > 0 ? n : v3_neg(n)), d};
+    b->side[k] = v3_dot(d, n) > 0 ? n : v3_neg(n);
+    b->r[k] = (ray){offset_point(sp->s.p, b->side[k]), d};
     b->skip[k] = hit_left_behind(scene, &sp->hit, sp->s.n, d);
     b->filter[k] = filter;
     b->scale[k] = scale;
@@ -240,19 +242,23 @@ static double radical_inverse2(uint32_t i)
     return i * (1.0 / 4294967296.0);
 }
 
+/* Sample j of n of a 2-D pattern: Hammersley's points (j / n, radical
+ * inverse of j), well spread for any n, shifted modulo 1 by the hash rot,
+ * so that every point has its own pattern and the sum stays unbiased. */
+static void hammersley(uint32_t rot, int j, int n, double u[2])
+{
+    u[0] = (double)j / n + hash_unit(rot);
+    u[1] = radical_inverse2((uint32_t)j) + hash_unit(hash_u32(rot ^ 0x68e31da4U));
+    u[0] -= u[0] >= 1;
+    u[1] -= u[1] >= 1;
+}
+
 /* The samples of an area light with n of them at each lane's shading
- * point, sample j: Hammersley's points (j / n, radical inverse of j), well
- * spread for any n, shifted modulo 1 by each lane's own hash, rot[i], so
- * that every point has its own pattern and the sum stays unbiased. */
+ * point, sample j, each lane's pattern shifted by its own rot[i]. */
 static void area_samples(const uint32_t rot[ACCEL_PACKET], int j, int n, double u[ACCEL_PACKET][2])
 {
-    double a = (double)j / n, b = radical_inverse2((uint32_t)j);
-    for (int i = 0; i < ACCEL_PACKET; i++) {
-        u[i][0] = a + hash_unit(rot[i]);
-        u[i][1] = b + hash_unit(hash_u32(rot[i] ^ 0x68e31da4U));
-        u[i][0] -= u[i][0] >= 1;
-        u[i][1] -= u[i][1] >= 1;
-    }
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        hammersley(rot[i], j, n, u[i]);
 }
 
 /* Adds to direct[i] the light of area light l (the scene's light number
@@ -323,6 +329,60 @@ __attribute__((noinline)) static void area_lights_seen(const tracer *t, const ra
     }
 }
 
+static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET],
+                   int depth, const color weight[ACCEL_PACKET], const uint32_t key[ACCEL_PACKET],
+                   color out[ACCEL_PACKET]);
+
+/* Traces ray j of branch kind k of every lane that sends one (b[i], at
+ * the hit sp[i] of a lane found[i]) as one packet, adding what each brings
+ * back to local[i]. rays[i]: the rays lane i spreads the branch over, ray
+ * j in the lobe about the sharp direction when its material is rough;
+ * NULL: one sharp ray each, and no key is needed. */
+__attribute__((noinline)) static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
+                                                               const shade_point sp[ACCEL_PACKET],
+                                                               const branches b[ACCEL_PACKET], int k, int j,
+                                                               const int *rays, int depth,
+                                                               const color weight[ACCEL_PACKET],
+                                                               const uint32_t key[ACCEL_PACKET],
+                                                               color local[ACCEL_PACKET])
+{
+    ray8 next;
+    int next_skip[ACCEL_PACKET];
+    uint32_t next_key[ACCEL_PACKET] = {0};
+    bool on[ACCEL_PACKET], any = false;
+    color next_weight[ACCEL_PACKET];
+    /* Each lane's budget is spent as its own branches are met, depth first,
+     * so what it cuts does not depend on the other lanes. */
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        on[i] = found[i] && (b[i].on >> k & 1) && (!rays || j < rays[i]) && t->budget[i] > 0;
+        t->budget[i] -= on[i];
+        any |= on[i];
+    }
+    if (!any)
+        return;
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        ray ri = on[i] ? b[i].r[k] : ray8_get(r, i);
+        if (rays) {
+            uint32_t branch_key = hash_u32(key[i] ^ (uint32_t)(k + 1) * 0x9e3779b9U);
+            next_key[i] = j ? hash_u32(branch_key ^ (uint32_t)j * 0x85ebca6bU) : branch_key;
+            if (on[i] && k != BRANCH_PASS && sp[i].m->roughness > 0) {
+                double u[2];
+                hammersley(hash_u32(branch_key ^ 0x7a3c1f55U), j, rays[i], u);
+                ri.d = optics_lobe(ri.d, b[i].side[k], material_lobe_exponent(sp[i].m), u[0], u[1]);
+            }
+        }
+        ray8_set(&next, i, ri);
+        next_skip[i] = on[i] ? b[i].skip[k] : -1;
+        next_weight[i] = on[i] ? (rays ? rgb_scale(b[i].weight[k], 1.0 / rays[i]) : b[i].weight[k]) : weight[i];
+    }
+    color c[ACCEL_PACKET];
+    trace8(t, &next, next_skip, on, depth + 1, next_weight, next_key, c);
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        if (on[i])
+            local[i] = rgb_add(local[i], rgb_scale(rgb_mul(b[i].filter[k], c[i]),
+                                                   rays ? b[i].scale[k] / rays[i] : b[i].scale[k]));
+}
+
 /* The colours of up to ACCEL_PACKET rays at recursion depth `depth`, of
  * weights `weight` in their samples, whose random numbers come from
  * key[i]. The rays each hit sends on are traced as packets too, one per
@@ -385,31 +445,23 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     for (int k = 0; k < BRANCHES; k++) {
         if (!(sent >> k & 1))
             continue;
-        ray8 next;
-        int next_skip[ACCEL_PACKET];
-        uint32_t next_key[ACCEL_PACKET];
-        bool on[ACCEL_PACKET], any = false;
-        color next_weight[ACCEL_PACKET];
-        /* Each lane's budget is spent as its own branches are met, depth
-         * first, so what it cuts does not depend on the other lanes. */
-        for (int i = 0; i < ACCEL_PACKET; i++) {
-            on[i] = found[i] && (b[i].on >> k & 1) && t->budget[i] > 0;
-            t->budget[i] -= on[i];
-            any |= on[i];
-        }
-        if (!any)
+        if (!t->keys) {
+            trace_branch(t, r, found, sp, b, k, 0, NULL, depth, weight, key, local);
             continue;
-        for (int i = 0; i < ACCEL_PACKET; i++) {
-            ray8_set(&next, i, on[i] ? b[i].r[k] : ray8_get(r, i));
-            next_skip[i] = on[i] ? b[i].skip[k] : -1;
-            next_weight[i] = on[i] ? b[i].weight[k] : weight[i];
-            next_key[i] = hash_u32(key[i] ^ (uint32_t)(k + 1) * 0x9e3779b9U);
         }
-        color c[ACCEL_PACKET];
-        trace8(t, &next, next_skip, on, depth + 1, next_weight, next_key, c);
-        for (int i = 0; i < ACCEL_PACKET; i++)
-            if (on[i])
-                local[i] = rgb_add(local[i], rgb_scale(rgb_mul(b[i].filter[k], c[i]), b[i].scale[k]));
+        /* A rough surface spreads its reflected and refracted rays over a
+         * lobe: as many as the material's glossy_samples for a ray of
+         * weight 1, fewer for a ray of less, at least 1. */
+        int rays[ACCEL_PACKET] = {1, 1, 1, 1, 1, 1, 1, 1}, most = 1;
+        for (int i = 0; i < ACCEL_PACKET; i++) {
+            if (found[i] && k != BRANCH_PASS && sp[i].m->roughness > 0) {
+                double n = ceil(sp[i].m->glossy_samples * rgb_max(weight[i]));
+                rays[i] = n < 1 ? 1 : n > sp[i].m->glossy_samples ? sp[i].m->glossy_samples : (int)n;
+                most = rays[i] > most ? rays[i] : most;
+            }
+        }
+        for (int j = 0; j < most && !stopping(t); j++)
+            trace_branch(t, r, found, sp, b, k, j, rays, depth, weight, key, local);
     }
     if (scene->area_light_count > 0)
         for (int i = 0; i < ACCEL_PACKET; i++)
@@ -427,7 +479,12 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
 
 bool tracer_needs_keys(const glint_scene *scene)
 {
-    return scene->area_light_count > 0 || scene->emitter_count > 0;
+    if (scene->area_light_count > 0 || scene->emitter_count > 0)
+        return true;
+    for (int i = 0; i < scene->material_count; i++)
+        if (scene->materials[i].m.roughness > 0)
+            return true;
+    return false;
 }
 
 double tracer_reach(const glint_scene *scene)

@@ -32,6 +32,7 @@ typedef struct tracer {
     double reach;             /* how far along a ray hits are looked for: tracer_reach */
     const volatile int *cancel; /* when non-NULL and set, tracing stops at the next packet */
     bool stopped;             /* the flag was seen set: every colour since is meaningless */
+    bool keys;                /* tracer_needs_keys: without, no key is hashed, no ray spread */
     int budget[ACCEL_PACKET]; /* each lane's branch rays left in its sample */
 } tracer;
 
@@ -42,8 +43,8 @@ typedef struct tracer {
 double tracer_reach(const glint_scene *scene);
 
 /* Whether tracing the scene uses random numbers, so the keys passed to
- * tracer_trace8: with area lights or emissive surfaces. Without, every
- * key may be 0. */
+ * tracer_trace8: with area lights, emissive surfaces or rough materials.
+ * Without, every key may be 0. */
 bool tracer_needs_keys(const glint_scene *scene);
 
 /* The colours seen along up to ACCEL_PACKET unit-direction camera rays, the

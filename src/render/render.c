@@ -271,7 +271,8 @@ static void *worker_run(void *arg)
 {
     worker *w = arg;
     job *j = w->job;
-    tracer t = {.scene = j->scene, .acc = j->acc, .reach = tracer_reach(j->scene), .cancel = j->opts->cancel};
+    tracer t = {.scene = j->scene, .acc = j->acc, .reach = tracer_reach(j->scene), .cancel = j->opts->cancel,
+                .keys = j->keys};
     const render_feed *f = j->feed;
     const render_layout *l = &j->layout;
     int tile;

@@ -41,6 +41,12 @@ static const param MATERIAL_PARAMS[] = {
                 "lights the scene as an area light"},
     {.key = "emission_strength", .type = PARAM_NUMBER, FIELD(emission_strength), .def = {1}, STRENGTH,
      .meaning = "multiplies emission: their product is the surface's radiance"},
+    {.key = "roughness", .type = PARAM_NUMBER, FIELD(roughness), SHARE,
+     .meaning = "blurs reflection and refraction: 0 is a sharp mirror or clear glass, more spreads the rays "
+                "over a lobe about the sharp direction (a Phong lobe of exponent 2 / roughness^4 - 2)"},
+    {.key = "glossy_samples", .type = PARAM_INTEGER, FIELD(glossy_samples), .def = {16}, .lo = 1, .hi = 1024,
+     .meaning = "rough reflection or refraction: the rays a camera ray's is spread over (a ray of less weight, "
+                "seen in another, fewer)"},
 };
 
 param_table material_params(void)
@@ -68,6 +74,12 @@ glint_status material_validate(const glint_material *m, int texture_count, glint
         return error_set(err, GLINT_ERR_INVALID, "material transparency + refraction must not exceed 1, got %g",
                          m->transparency + m->refraction);
     return GLINT_OK;
+}
+
+double material_lobe_exponent(const glint_material *m)
+{
+    double r4 = m->roughness * m->roughness * m->roughness * m->roughness;
+    return 2 / r4 - 2;
 }
 
 color material_emission(const glint_material *m)

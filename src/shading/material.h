@@ -20,6 +20,13 @@ param_table material_params(void);
  * bad value. */
 glint_status material_validate(const glint_material *m, int texture_count, glint_error *err);
 
+/* The Phong exponent of the lobe a rough (roughness > 0) material spreads
+ * its reflected and refracted rays over: 2 / roughness^4 - 2, whose lobe
+ * matches a microfacet (Beckmann) roughness alpha = roughness^2, as glTF
+ * roughness is read (docs/meshes.md): 0.5 gives 30, 1 gives 0 (a whole
+ * hemisphere). */
+double material_lobe_exponent(const glint_material *m);
+
 /* The radiance the material gives off from a surface's front: emission
  * times emission_strength (black for most). */
 color material_emission(const glint_material *m);

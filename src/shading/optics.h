@@ -18,4 +18,10 @@ bool optics_refract(vec3 d, vec3 n, double eta, vec3 *out);
  * on total internal reflection. */
 double optics_fresnel(double cos_i, double eta);
 
+/* A direction about unit direction d for (u1, u2) in [0, 1)^2, with
+ * density proportional to cos^exponent of its angle to d (a Phong lobe),
+ * kept on the side of a surface that unit normal `side` points to: a
+ * direction the lobe puts behind the surface is mirrored across it. */
+vec3 optics_lobe(vec3 d, vec3 side, double exponent, double u1, double u2);
+
 #endif
