@@ -115,6 +115,10 @@ typedef struct glint_settings {
                                   2^exposure before it is stored (0: as rendered) */
     int emission_samples;      /* shadow rays from each shading point towards each emissive
                                   shape or mesh, 1..4096 */
+    int occlusion_samples;     /* 0: the ambient term is flat; 1..4096: ambient occlusion, the
+                                  ambient term times the share of these rays, spread over the
+                                  hemisphere as the cosine, that nothing blocks */
+    double occlusion_distance; /* how far those rays look, > 0; 0: as far as the scene goes */
 } glint_settings;
 
 /* Returns the settings of a new scene: 640x480, 1 spp, regular, depth 5,

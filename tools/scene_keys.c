@@ -29,6 +29,7 @@ static int sections(section *out, int room)
         }                                                                                                          \
     } while (0)
     ADD("settings", settings_params());
+    ADD("ambient_occlusion", occlusion_params());
     ADD("camera", camera_params());
     ADD("fog", fog_params());
     ADD("mapping", mapping_params());

@@ -4,6 +4,7 @@
 #include <math.h>
 #include <string.h>
 #include "core/hash.h"
+#include "core/square_maps.h"
 #include "render/hit.h"
 #include "render/integrator.h"
 #include "shading/fog.h"
@@ -89,11 +90,16 @@ __attribute__((always_inline)) static inline color light_share(const shade_point
     return phong_light(sp->m, sp->base, sp->ns, ls->to_light, to_eye, rgb_mul(ls->radiance, through));
 }
 
-/* The ambient term at sp, and what sp gives off when seen from its front. */
-static color ambient(const glint_scene *scene, const shade_point *sp)
+/* The ambient term at sp, before any occlusion. */
+static color ambient_term(const glint_scene *scene, const shade_point *sp)
 {
-    color a = rgb_scale(rgb_mul(sp->base, scene->settings.ambient_light), sp->m->ambient);
-    return sp->front && sp->m->emission_strength > 0 ? rgb_add(a, material_emission(sp->m)) : a;
+    return rgb_scale(rgb_mul(sp->base, scene->settings.ambient_light), sp->m->ambient);
+}
+
+/* What sp gives off towards a viewer on its front. */
+static color glow(const shade_point *sp)
+{
+    return sp->front && sp->m->emission_strength > 0 ? material_emission(sp->m) : rgb(0, 0, 0);
 }
 
 /* The rays a hit sends on, in the order their light is added: straight
@@ -302,6 +308,71 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
     }
 }
 
+/* Adds to local[i] the ambient term of the hit sp[i] of each lane found[i]
+ * times the share of the sky it sees (ambient occlusion): rays spread over
+ * the hemisphere about its shading normal as the cosine, looking as far as
+ * occlusion_distance, each bringing back what passes the surfaces it
+ * crosses (shadow_filter). A ray of weight 1 sends occlusion_samples of
+ * them, one of less weight fewer, at least 1; random numbers from key[i]. */
+__attribute__((noinline)) static void ambient_occlusion8(tracer *t, const bool found[ACCEL_PACKET],
+                                                         const shade_point sp[ACCEL_PACKET], int depth,
+                                                         const color weight[ACCEL_PACKET],
+                                                         const uint32_t key[ACCEL_PACKET], color local[ACCEL_PACKET])
+{
+    const glint_scene *scene = t->scene;
+    const glint_settings *st = &scene->settings;
+    double reach = st->occlusion_distance > 0 ? st->occlusion_distance : INFINITY;
+    int rays[ACCEL_PACKET] = {0}, most = 0;
+    uint32_t rot[ACCEL_PACKET];
+    color seen[ACCEL_PACKET];
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        seen[i] = rgb(0, 0, 0);
+        if (!found[i])
+            continue;
+        double n = ceil(st->occlusion_samples * rgb_max(weight[i]));
+        rays[i] = n < 1 ? 1 : n > st->occlusion_samples ? st->occlusion_samples : (int)n;
+        most = rays[i] > most ? rays[i] : most;
+        rot[i] = hash_u32(key[i] ^ 0x41f3a9c7U);
+    }
+    for (int j = 0; j < most && !stopping(t); j++) {
+        ray8 shadow;
+        double dist[ACCEL_PACKET] = {0};
+        int skip[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
+        bool lit[ACCEL_PACKET] = {false}, any = false;
+        for (int i = 0; i < ACCEL_PACKET; i++) {
+            if (j >= rays[i])
+                continue;
+            double u[2], x, y;
+            hammersley(rot[i], j, rays[i], u);
+            concentric_disk(u[0], u[1], &x, &y);
+            vec3 a = fabs(sp[i].ns.x) > 0.9 ? v3(0, 1, 0) : v3(1, 0, 0);
+            vec3 e1 = v3_normalize(v3_cross(a, sp[i].ns)), e2 = v3_cross(sp[i].ns, e1);
+            vec3 d = v3_add(v3_scale(sp[i].ns, sqrt(fmax(0, 1 - x * x - y * y))),
+                            v3_add(v3_scale(e1, x), v3_scale(e2, y)));
+            if (!(v3_dot(d, sp[i].n) > 0))
+                continue; /* into the surface: blocked */
+            if (!any)
+                for (int k = 0; k < ACCEL_PACKET; k++)
+                    ray8_set(&shadow, k, (ray){sp[i].origin, d});
+            ray8_set(&shadow, i, (ray){sp[i].origin, d});
+            lit[i] = any = true;
+            dist[i] = reach;
+            skip[i] = hit_left_behind(scene, &sp[i].hit, sp[i].s.n, d);
+            t->rays++;
+        }
+        if (!any)
+            continue;
+        color through[ACCEL_PACKET];
+        accel_transmission8(t->acc, &shadow, dist, skip, depth == 0, lit, shadow_filter, t, through);
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            if (lit[i])
+                seen[i] = rgb_add(seen[i], rgb_scale(through[i], 1.0 / rays[i]));
+    }
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        if (found[i])
+            local[i] = rgb_add(local[i], rgb_mul(ambient_term(scene, &sp[i]), seen[i]));
+}
+
 /* Which area light, if any, each active lane of r sees before what it hit
  * (found[i], at sp[i].hit.t) or, having hit nothing, before `reach`: then
  * glows[i], and the lane looks like a hit of colour local[i] at
@@ -414,7 +485,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
      * exactly (fog_apply gives it at factor 1 whatever the light), so it
      * is not shaded further. Its distance is exact only once described (a
      * mesh hit's is refined). */
-    bool fog = scene->fog.kind != GLINT_FOG_NONE;
+    bool fog = scene->fog.kind != GLINT_FOG_NONE, occlusion = scene->settings.occlusion_samples > 0;
     /* bools are bytes of 0 or 1: their bits counted are the active lanes. */
     uint64_t lanes;
     _Static_assert(sizeof lanes == ACCEL_PACKET * sizeof active[0], "a packet's flags are eight bytes");
@@ -427,12 +498,16 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
         shade_begin(scene, &ri, &hits[i], &sp[i]);
         if (fog && fog_hides(&scene->fog, sp[i].hit.t))
             found[i] = false;
+        else if (occlusion)
+            local[i] = glow(&sp[i]);
         else
-            local[i] = ambient(scene, &sp[i]);
+            local[i] = rgb_add(ambient_term(scene, &sp[i]), glow(&sp[i]));
     }
     bool glows[ACCEL_PACKET] = {false};
     if (scene->area_light_count > 0)
         area_lights_seen(t, r, active, found, sp, glows, local);
+    if (occlusion)
+        ambient_occlusion8(t, found, sp, depth, weight, key, local);
     direct_light8(t, r, found, sp, depth, key, local);
     unsigned sent = 0; /* bit k: some lane sends a ray of kind k */
     for (int i = 0; i < ACCEL_PACKET; i++) {
@@ -479,7 +554,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
 
 bool tracer_needs_keys(const glint_scene *scene)
 {
-    if (scene->area_light_count > 0 || scene->emitter_count > 0)
+    if (scene->area_light_count > 0 || scene->emitter_count > 0 || scene->settings.occlusion_samples > 0)
         return true;
     for (int i = 0; i < scene->material_count; i++)
         if (scene->materials[i].m.roughness > 0)

@@ -43,7 +43,8 @@ typedef struct tracer {
 double tracer_reach(const glint_scene *scene);
 
 /* Whether tracing the scene uses random numbers, so the keys passed to
- * tracer_trace8: with area lights, emissive surfaces or rough materials.
+ * tracer_trace8: with area lights, emissive surfaces, rough materials or
+ * ambient occlusion.
  * Without, every key may be 0. */
 bool tracer_needs_keys(const glint_scene *scene);
 

@@ -113,6 +113,10 @@ glint_status scene_set_mesh_origin(glint_scene *scene, int mesh, const char *fil
 param_table settings_params(void);
 param_table camera_params(void);
 
+/* The keys of settings.ambient_occlusion (offsets into glint_settings),
+ * with the defaults it has when given: 16 samples, no distance limit. */
+param_table occlusion_params(void);
+
 /* The keys of a scene file's mesh object that are import options (offsets
  * into glint_import_options): the crease angle. */
 param_table import_params(void);

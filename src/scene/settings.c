@@ -79,6 +79,19 @@ static const param CAMERA_PARAMS[] = {
      .meaning = "orthographic: the view's width (0: the pinhole's, with fov, at look_at's distance)"},
 };
 
+/* settings.ambient_occlusion, a map of its own in a scene file. */
+static const param OCCLUSION_PARAMS[] = {
+    {.key = "samples", .type = PARAM_INTEGER, SETTING(occlusion_samples), .def = {16}, .lo = 1, .hi = 4096,
+     .meaning = "rays from each point shaded, spread over its hemisphere as the cosine: more is smoother"},
+    {.key = "distance", .type = PARAM_NUMBER, SETTING(occlusion_distance), .lo = 0, .hi = DBL_MAX,
+     .unit = "scene units", .meaning = "how far they look for what blocks the sky (0: as far as the scene goes)"},
+};
+
+param_table occlusion_params(void)
+{
+    return PARAM_TABLE(OCCLUSION_PARAMS);
+}
+
 #define IMPORT(name) .offset = offsetof(glint_import_options, name)
 
 /* A scene file's mesh object reads its model's import options here. */
@@ -121,6 +134,8 @@ glint_camera camera_default(void)
 glint_status settings_validate(const glint_settings *s, glint_error *err)
 {
     glint_status st = params_check(settings_params(), s, "settings", err);
+    if (!st && s->occlusion_samples != 0)
+        st = params_check(occlusion_params(), s, "ambient_occlusion", err);
     if (st)
         return st;
     /* Refused before anything is allocated: the render's float image takes

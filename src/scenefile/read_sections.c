@@ -6,14 +6,22 @@
 
 void read_settings(loader *l, const ynode *n)
 {
-    static const char *const output_key[] = {"output"};
+    static const char *const extra_keys[] = {"output", "ambient_occlusion"};
     if (!yr_is_map(&l->r, n, "settings"))
         return;
     l->settings_node = n;
-    const char *keys[16];
-    int count = param_keys(settings_params(), output_key, COUNT(output_key), keys, COUNT(keys));
+    const char *keys[24];
+    int count = param_keys(settings_params(), extra_keys, COUNT(extra_keys), keys, COUNT(keys));
     yr_check_keys(&l->r, n, "settings", keys, count);
     read_params(l, n, settings_params(), "settings", &l->settings);
+    const ynode *occlusion = yr_get(&l->r, n, "ambient_occlusion");
+    if (occlusion && yr_is_map(&l->r, occlusion, "'ambient_occlusion'")) {
+        param_table t = occlusion_params();
+        count = param_keys(t, NULL, 0, keys, COUNT(keys));
+        yr_check_keys(&l->r, occlusion, "ambient_occlusion", keys, count);
+        params_defaults(t, &l->settings);
+        read_params(l, occlusion, t, "ambient_occlusion", &l->settings);
+    }
     const ynode *out = yr_get(&l->r, n, "output");
     const char *path;
     if (out && yr_text(&l->r, out, "output", &path)) {

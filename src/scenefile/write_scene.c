@@ -164,6 +164,12 @@ static void write_settings(const plan *p)
     fputs("settings:\n  ", p->f);
     ymap m = ymap_begin(p->f, false, 2);
     yw_params(&m, settings_params(), &s->settings, true);
+    if (s->settings.occlusion_samples > 0) {
+        ymap_key(&m, "ambient_occlusion");
+        ymap occlusion = ymap_begin(p->f, true, 0);
+        yw_params(&occlusion, occlusion_params(), &s->settings, true);
+        ymap_end(&occlusion);
+    }
     if (s->output) {
         ymap_key(&m, "output");
         yw_text(p->f, s->output);

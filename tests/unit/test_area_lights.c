@@ -501,6 +501,48 @@ static void test_cornell_box_lit_by_its_lamp(void **state)
     glint_scene_free(s);
 }
 
+/* The floor point at the origin under a ball of radius 1 at height 2, lit
+ * by the ambient light alone with ambient occlusion of `samples` rays
+ * looking `distance` far: the ball hides a cap of half-angle 30 degrees
+ * from it, a share sin^2(30) = 1/4 of the cosine-weighted sky, so the
+ * floor (ambient 1, white) shows 3/4 when the rays reach the ball, 1 when
+ * they stop short of it. */
+static double occluded_floor(int samples, double distance)
+{
+    glint_scene *s = floor_seen(1, 1, 0.1, (glint_vec3){20, 20, 0});
+    glint_settings st = glint_scene_get_settings(s);
+    st.ambient_light = (glint_color){1, 1, 1};
+    st.occlusion_samples = samples;
+    st.occlusion_distance = distance;
+    glint_error err;
+    if (glint_scene_set_settings(s, &st, &err))
+        fail_msg("%s", err.message);
+    glint_material m = glint_material_default();
+    m.ambient = 1;
+    m.diffuse = m.specular = 0;
+    int flat = glint_scene_add_material(s, NULL, &m, NULL);
+    s->shapes[0].material = flat; /* the floor, ambient only */
+    glint_shape ball = {.kind = GLINT_SHAPE_SPHERE, .center = {0, 2, 0}, .radius = 1};
+    assert_true(glint_scene_add_shape(s, &ball, flat, NULL, NULL) >= 0);
+    return origin_seen(s);
+}
+
+static void test_ambient_occlusion_under_a_ball(void **state)
+{
+    (void)state;
+    assert_near(occluded_floor(0, 0), 1, 0);          /* flat ambient */
+    assert_near(occluded_floor(1024, 0), 0.75, 0.01);  /* the ball, as far as the scene goes */
+    assert_near(occluded_floor(1024, 5), 0.75, 0.01);
+    assert_near(occluded_floor(1024, 0.9), 1, 1e-9);   /* the ball is 1 away */
+    glint_scene *s = glint_scene_new();
+    glint_settings st = glint_settings_default();
+    st.occlusion_samples = 5000;
+    glint_error err;
+    assert_int_equal(glint_scene_set_settings(s, &st, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "ambient_occlusion samples must be from 1 to 4096, got 5000");
+    glint_scene_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -512,6 +554,7 @@ int main(void)
         cmocka_unit_test(test_emissive_shapes_light_the_scene),
         cmocka_unit_test(test_emissive_meshes),
         cmocka_unit_test(test_cornell_box_lit_by_its_lamp),
+        cmocka_unit_test(test_ambient_occlusion_under_a_ball),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

@@ -330,6 +330,23 @@ static void test_settings_every_key(void **state)
     glint_scene_free(s);
 }
 
+/* settings.ambient_occlusion: off unless given; given, 16 samples and no
+ * limit unless it says. */
+static void test_settings_ambient_occlusion(void **state)
+{
+    glint_scene *s = load_good("settings: {width: 8}\n");
+    assert_int_equal(glint_scene_get_settings(s).occlusion_samples, 0);
+    glint_scene_free(s);
+    s = load_good("settings:\n  ambient_occlusion: {}\n");
+    assert_int_equal(glint_scene_get_settings(s).occlusion_samples, 16);
+    assert_exact(glint_scene_get_settings(s).occlusion_distance, 0);
+    glint_scene_free(s);
+    s = load_good("settings:\n  ambient_occlusion: {samples: 9, distance: 2.5}\n");
+    assert_int_equal(glint_scene_get_settings(s).occlusion_samples, 9);
+    assert_exact(glint_scene_get_settings(s).occlusion_distance, 2.5);
+    glint_scene_free(s);
+}
+
 static void test_settings_other_values(void **state)
 {
     glint_scene *s = load_good("settings:\n"
@@ -1649,6 +1666,14 @@ static const bad_scene BAD[] = {
      "lights:\n"
      "  - {type: disk, position: [0, 1, 0], direction: [0, -1, 0], radius: 1, samples: 0.5}\n",
      "bad.yaml:2:82: 'samples' must be a whole number from 1 to 4096, got '0.5'", 1},
+    {"occlusion_key",
+     "settings:\n"
+     "  ambient_occlusion: {sample: 3}\n",
+     "bad.yaml:2:23: unknown key 'sample' in ambient_occlusion (did you mean 'samples'?)", 1},
+    {"occlusion_not_a_map",
+     "settings:\n"
+     "  ambient_occlusion: 16\n",
+     "bad.yaml:2:22: 'ambient_occlusion' must be a map, got a number", 1},
     {"light_type_no_hint",
      "lights:\n"
      "  - {type: area}\n",
@@ -2694,6 +2719,7 @@ int main(void)
         cmocka_unit_test(test_mapping_as_a_map),
         cmocka_unit_test(test_image_texture_from_a_file),
         cmocka_unit_test(test_material_every_key),
+        cmocka_unit_test(test_settings_ambient_occlusion),
         cmocka_unit_test(test_lights),
         cmocka_unit_test(test_area_lights),
         cmocka_unit_test(test_sphere_and_plane),
