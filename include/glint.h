@@ -215,7 +215,7 @@ typedef struct glint_mapping {
 
 typedef enum glint_texture_kind {
     GLINT_TEXTURE_CHECKER = 0,  /* two colours in square cells */
-    GLINT_TEXTURE_IMAGE         /* a PNG or JPEG picture */
+    GLINT_TEXTURE_IMAGE         /* a PNG, JPEG or OpenEXR picture */
 } glint_texture_kind;
 
 /* A texture's description: each kind reads the fields named beside them
@@ -227,7 +227,8 @@ typedef struct glint_texture {
     glint_color colors[2];    /* checker: cells where floor(u/size) + floor(v/size) is even
                                  show colors[0], the others colors[1] */
     double size;              /* checker: cell size in texture units, > 0 */
-    const char *file;         /* image: a PNG or JPEG file (sRGB, converted to linear); u runs
+    const char *file;         /* image: a PNG or JPEG file (sRGB, converted to linear) or an
+                                 OpenEXR file (linear, high dynamic range); u runs
                                  left to right, v top to bottom, repeating in u, clamped in v */
 } glint_texture;
 
@@ -250,7 +251,8 @@ int glint_scene_add_texture(glint_scene *scene, const char *name, const glint_te
 int glint_scene_add_checker(glint_scene *scene, const char *name, glint_color a, glint_color b,
                             double cell, glint_mapping mapping, glint_error *err);
 
-/* Adds an image texture from a PNG or JPEG file (sRGB, converted to linear),
+/* Adds an image texture from a PNG or JPEG file (sRGB, converted to linear)
+ * or an OpenEXR file (linear floats, kept above 1: high dynamic range),
  * decoded when a material first uses it: a glint_scene_add_texture of an
  * image. u runs left to right, v
  * top to bottom, repeating in u and clamped in v. Returns the texture's
@@ -258,7 +260,7 @@ int glint_scene_add_checker(glint_scene *scene, const char *name, glint_color a,
 int glint_scene_add_image_file(glint_scene *scene, const char *name, const char *path,
                                glint_mapping mapping, glint_error *err);
 
-/* As glint_scene_add_image_file, from PNG or JPEG bytes in memory. */
+/* As glint_scene_add_image_file, from PNG, JPEG or OpenEXR bytes in memory. */
 int glint_scene_add_image_memory(glint_scene *scene, const char *name, const void *data,
                                  size_t size, glint_mapping mapping, glint_error *err);
 
@@ -393,6 +395,25 @@ typedef struct glint_light {
  * (docs/scene-format.md): colour white, 16 samples for an area light, and
  * the positions, directions and sizes still to be set. */
 glint_light glint_light_default(glint_light_kind kind);
+
+/* ------------------------------------------------------------ environment */
+
+/* What rays that hit nothing see: the background colour, or a texture
+ * wrapped around the scene as an equirectangular (latitude-longitude)
+ * image: the image's middle column is -z, its left and right edges +z, its
+ * top row +y and its bottom row -y. */
+typedef struct glint_environment {
+    int texture;              /* the texture seen, or -1: the background colour */
+    double intensity;         /* multiplies the texture's colour, >= 0 */
+    double rotation;          /* degrees, turns the image about +y (90: -z's column faces -x) */
+} glint_environment;
+
+/* Sets the scene's environment after checking it (a texture that exists,
+ * decoding its image now; a finite intensity >= 0 and rotation). */
+glint_status glint_scene_set_environment(glint_scene *scene, const glint_environment *env, glint_error *err);
+
+/* The scene's environment: texture -1, intensity 1, rotation 0 unless set. */
+glint_environment glint_scene_get_environment(const glint_scene *scene);
 
 /* Adds a light; returns its index or -1 and fills err. */
 int glint_scene_add_light(glint_scene *scene, const glint_light *light, glint_error *err);

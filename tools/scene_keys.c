@@ -7,6 +7,7 @@
 #include <string.h>
 #include "geometry/shape_kind.h"
 #include "scene/scene.h"
+#include "shading/environment.h"
 #include "shading/fog.h"
 #include "shading/light.h"
 #include "shading/texture.h"
@@ -32,6 +33,7 @@ static int sections(section *out, int room)
     ADD("ambient_occlusion", occlusion_params());
     ADD("camera", camera_params());
     ADD("fog", fog_params());
+    ADD("environment", environment_params());
     ADD("mapping", mapping_params());
     ADD("material", material_params());
     char label[48];

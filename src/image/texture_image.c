@@ -19,9 +19,9 @@
 
 /* The formats textures are read in, each decoded in a file of its own: the
  * first whose signature the bytes begin with decodes them. */
-extern const image_reader png_reader, jpeg_reader;
+extern const image_reader png_reader, jpeg_reader, exr_reader;
 
-static const image_reader *const readers[] = {&png_reader, &jpeg_reader};
+static const image_reader *const readers[] = {&png_reader, &jpeg_reader, &exr_reader};
 
 #define READER_COUNT ((int)(sizeof readers / sizeof readers[0]))
 

@@ -1,10 +1,13 @@
-/* texture_image.h - decoding PNG and JPEG images for image textures: kept
- * as the file's 8-bit sRGB values, 3 bytes a pixel, and made linear through
- * a table when looked up (a quarter of the memory of float RGB, and the
- * same linear values to the bit). */
+/* texture_image.h - decoding PNG, JPEG and OpenEXR images for image
+ * textures: PNG and JPEG kept as the file's 8-bit sRGB values, 3 bytes a
+ * pixel, and made linear through a table when looked up (a quarter of the
+ * memory of float RGB, and the same linear values to the bit); OpenEXR
+ * (high dynamic range: a sky a hundred times brighter than white) as
+ * linear floats. */
 #ifndef GLINT_IMAGE_TEXTURE_IMAGE_H
 #define GLINT_IMAGE_TEXTURE_IMAGE_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include "glint.h"
 
@@ -18,24 +21,47 @@
 #define TEXTURE_IMAGE_MAX_FILE (2ULL << 30)
 
 /* A decoded image: srgb[3 * (y * width + x) + c], top row first, each an
- * sRGB-encoded byte whose linear value is linear[byte]. The bytes are the
- * image's own (owned, freed with it) or borrowed from memory that outlives
- * it, such as pixels compiled into the program (owned NULL). */
+ * sRGB-encoded byte whose linear value is linear[byte]; or, for a high
+ * dynamic range image, hdr[3 * (y * width + x) + c], linear floats (srgb
+ * NULL). The pixels are the image's own (owned, freed with it) or borrowed
+ * from memory that outlives it, such as pixels compiled into the program
+ * or another image's (owned NULL). */
 typedef struct texture_image {
     int width, height;
     const unsigned char *srgb;
-    unsigned char *owned;     /* srgb when the image allocated it, else NULL */
+    const float *hdr;
+    void *owned;              /* srgb or hdr when the image allocated them, else NULL */
     const float *linear;      /* 256 entries, shared by every image */
 } texture_image;
 
-/* The linear value of byte i of img's pixels (channel i % 3 of pixel i / 3). */
+/* The linear value of channel i % 3 of pixel i / 3 of img. */
 static inline float texture_image_at(const texture_image *img, size_t i)
 {
-    return img->linear[img->srgb[i]];
+    return img->hdr ? img->hdr[i] : img->linear[img->srgb[i]];
 }
 
-/* Decodes the PNG or JPEG file at path, told apart by its first bytes, not
- * its name. Alpha is ignored. On failure *out is left empty and err names
+/* Whether img holds pixels (it has been decoded). */
+static inline bool texture_image_decoded(const texture_image *img)
+{
+    return img->srgb || img->hdr;
+}
+
+/* The bytes img's pixels take. */
+static inline unsigned long long texture_image_bytes(const texture_image *img)
+{
+    return (img->hdr ? 3 * sizeof(float) : 3ULL) * (unsigned long long)img->width * (unsigned long long)img->height;
+}
+
+/* img's pixels borrowed: the same image, which frees nothing. */
+static inline texture_image texture_image_share(const texture_image *img)
+{
+    texture_image shared = *img;
+    shared.owned = NULL;
+    return shared;
+}
+
+/* Decodes the PNG, JPEG or OpenEXR file at path, told apart by its first
+ * bytes, not its name. Alpha is ignored. On failure *out is left empty and err names
  * the file: GLINT_ERR_IO when it cannot be read, GLINT_ERR_INVALID when it
  * is not a PNG or JPEG, is corrupt or is too large, GLINT_ERR_NOMEM. */
 glint_status texture_image_load_file(texture_image *out, const char *path, glint_error *err);

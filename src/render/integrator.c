@@ -7,6 +7,7 @@
 #include "core/square_maps.h"
 #include "render/hit.h"
 #include "render/integrator.h"
+#include "shading/environment.h"
 #include "shading/fog.h"
 #include "shading/optics.h"
 
@@ -186,10 +187,26 @@ static bool stopping(tracer *t)
     return t->stopped;
 }
 
-/* What a ray that hits nothing brings back. */
+/* What a ray that hits nothing brings back without an environment. */
 static color miss(const glint_scene *scene)
 {
     return fog_apply(&scene->fog, scene->settings.background, INFINITY);
+}
+
+/* With an environment, each active lane of r that found nothing sees it
+ * along its ray: it becomes a hit at infinity of that colour, local[i],
+ * which fog then covers as it covers a miss. */
+static void environment_seen(const glint_scene *scene, const ray8 *r, const bool active[ACCEL_PACKET],
+                             bool found[ACCEL_PACKET], shade_point sp[ACCEL_PACKET], color local[ACCEL_PACKET])
+{
+    const glint_environment *env = &scene->environment;
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        if (found[i] || !active[i])
+            continue;
+        found[i] = true;
+        sp[i].hit.t = INFINITY;
+        local[i] = environment_color(env, &scene->textures[env->texture], v3(r->dx[i], r->dy[i], r->dz[i]));
+    }
 }
 
 /* The light sample (u1, u2) a delta light is given: it has no use for one. */
@@ -543,6 +560,8 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
             found[i] |= glows[i];
     /* Inactive lanes get the sky too, which nothing reads. Without fog,
      * fog_apply would give a hit's colour back as it is. */
+    if (scene->environment.texture >= 0)
+        environment_seen(scene, r, active, found, sp, local);
     color sky = miss(scene);
     if (fog)
         for (int i = 0; i < ACCEL_PACKET; i++)

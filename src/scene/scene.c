@@ -25,6 +25,7 @@ glint_scene *glint_scene_new(void)
     s->settings = glint_settings_default();
     s->camera = camera_default();
     s->fog.kind = GLINT_FOG_NONE;
+    s->environment = (glint_environment){.texture = -1, .intensity = 1};
     return s;
 }
 
@@ -103,6 +104,21 @@ glint_camera glint_scene_get_camera(const glint_scene *scene)
 glint_fog glint_scene_get_fog(const glint_scene *scene)
 {
     return scene->fog;
+}
+
+glint_environment glint_scene_get_environment(const glint_scene *scene)
+{
+    return scene->environment;
+}
+
+glint_status glint_scene_set_environment(glint_scene *scene, const glint_environment *env, glint_error *err)
+{
+    glint_status s = environment_validate(env, scene->texture_count, err);
+    if (s == GLINT_OK && env->texture >= 0)
+        s = scene_use_texture(scene, env->texture, err);
+    if (s == GLINT_OK)
+        scene->environment = *env;
+    return s;
 }
 
 glint_status glint_scene_set_fog(glint_scene *scene, const glint_fog *fog, glint_error *err)

@@ -7,6 +7,7 @@
 #include "core/params.h"
 #include "geometry/mesh.h"
 #include "geometry/shape.h"
+#include "shading/environment.h"
 #include "shading/light.h"
 #include "shading/material.h"
 #include "shading/texture.h"
@@ -17,6 +18,7 @@ struct glint_scene {
     glint_settings settings;
     glint_camera camera;
     glint_fog fog;
+    glint_environment environment;
     texture *textures;
     int texture_count;
     size_t texture_cap;

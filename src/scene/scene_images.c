@@ -19,8 +19,7 @@ glint_status scene_load_image(void *user, const char *path, texture_image *out, 
     bool known = file_stat(path, &st) == 0;
     long found = known ? file_set_find(&scene->image_files, st.st_dev, st.st_ino) : -1;
     if (found >= 0) {
-        const texture_image *shared = &scene->images[found];
-        *out = texture_image_borrow(shared->width, shared->height, shared->srgb);
+        *out = texture_image_share(&scene->images[found]);
         return GLINT_OK;
     }
     if (known && !array_reserve((void **)&scene->images, &scene->image_cap, scene->image_files.count + 1,
@@ -30,7 +29,7 @@ glint_status scene_load_image(void *user, const char *path, texture_image *out, 
     glint_status s = texture_image_load_file(&img, path, err);
     if (s)
         return s;
-    unsigned long long bytes = 3ULL * (unsigned long long)img.width * (unsigned long long)img.height;
+    unsigned long long bytes = texture_image_bytes(&img);
     if (bytes > SCENE_MAX_IMAGE_BYTES - scene->image_bytes) {
         texture_image_free(&img);
         return error_set(err, GLINT_ERR_INVALID,
@@ -50,7 +49,7 @@ glint_status scene_load_image(void *user, const char *path, texture_image *out, 
     }
     scene->image_bytes += bytes;
     scene->images[index] = img;
-    *out = texture_image_borrow(img.width, img.height, img.srgb);
+    *out = texture_image_share(&img);
     return GLINT_OK;
 }
 
@@ -64,7 +63,7 @@ glint_status scene_check_image(void *scene, const char *path, texture_image *out
 glint_status scene_use_texture(glint_scene *scene, int index, glint_error *err)
 {
     texture *t = &scene->textures[index];
-    if (t->kind != &image_texture || t->image.srgb)
+    if (t->kind != &image_texture || texture_image_decoded(&t->image))
         return GLINT_OK;
     return scene_load_image(scene, t->desc.file, &t->image, err);
 }

@@ -103,6 +103,10 @@ void read_settings(loader *l, const ynode *n);
 void read_camera(loader *l, const ynode *n);
 void read_fog(loader *l, const ynode *n);
 
+/* The root's `environment` map: a texture (by name) seen by rays that
+ * miss everything, its intensity and rotation. */
+void read_environment(loader *l, const ynode *n);
+
 /* The keys fog needs, checked once every file has had its say. */
 bool fog_complete(loader *l);
 

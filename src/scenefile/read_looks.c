@@ -112,6 +112,34 @@ static void unknown_name(loader *l, const ynode *n, bool is_texture, const char 
     free(names);
 }
 
+void read_environment(loader *l, const ynode *n)
+{
+    static const char *const texture_key[] = {"texture"};
+    if (!yr_is_map(&l->r, n, "'environment'"))
+        return;
+    const char *keys[8];
+    int count = param_keys(environment_params(), texture_key, COUNT(texture_key), keys, COUNT(keys));
+    yr_check_keys(&l->r, n, "environment", keys, count);
+    glint_environment env = glint_scene_get_environment(l->scene);
+    params_defaults(environment_params(), &env);
+    if (!read_params(l, n, environment_params(), "environment", &env))
+        return;
+    const ynode *tex = yr_get(&l->r, n, "texture");
+    const char *name;
+    if (!tex) {
+        diag_at(&l->d, n, "environment needs 'texture'");
+        return;
+    }
+    if (!yr_text(&l->r, tex, "texture", &name))
+        return;
+    env.texture = scene_find_texture(l->scene, name);
+    glint_error err;
+    if (env.texture < 0)
+        unknown_name(l, tex, true, name);
+    else if (glint_scene_set_environment(l->scene, &env, &err))
+        diag_error(&l->d, tex, &err);
+}
+
 /* Reads a material map's keys over *m (which holds the defaults). */
 static bool read_material_keys(loader *l, const ynode *n, const char *what, glint_material *m)
 {
@@ -119,7 +147,7 @@ static bool read_material_keys(loader *l, const ynode *n, const char *what, glin
     if (!yr_is_map(&l->r, n, what))
         return false;
     int before = l->d.count;
-    const char *keys[16];
+    const char *keys[32];
     int count = param_keys(material_params(), texture_key, COUNT(texture_key), keys, COUNT(keys));
     yr_check_keys(&l->r, n, what, keys, count);
     read_params(l, n, material_params(), what, m);

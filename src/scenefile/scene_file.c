@@ -85,8 +85,8 @@ static void read_named(loader *l, const ynode *section, const char *what,
  * reads, and nothing more is read. */
 static bool read_head(loader *l, const ynode *root)
 {
-    static const char *const keys[] = {"glint", "include", "settings", "camera", "fog",
-                                       "textures", "materials", "lights", "objects"};
+    static const char *const keys[] = {"glint",    "include",     "settings",  "camera", "fog",
+                                       "textures", "environment", "materials", "lights", "objects"};
     yr_check_keys(&l->r, root, "the scene", keys, COUNT(keys));
     const ynode *n;
     double version;
@@ -104,6 +104,8 @@ static bool read_head(loader *l, const ynode *root)
         read_fog(l, n);
     if ((n = yr_get(&l->r, root, "textures")))
         read_named(l, n, "'textures'", read_texture);
+    if ((n = yr_get(&l->r, root, "environment")))
+        read_environment(l, n);
     if ((n = yr_get(&l->r, root, "materials")))
         read_named(l, n, "'materials'", read_material);
     if ((n = yr_get(&l->r, root, "lights")) && yr_is_list(&l->r, n, "'lights'"))

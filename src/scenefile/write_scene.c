@@ -114,6 +114,8 @@ static glint_status plan_textures(plan *p, glint_error *err)
         if (!p->material_from_mesh[i] && t >= 0 && !p->texture_names[t])
             return error_set(err, GLINT_ERR_INVALID, "material %d uses a texture of a model's own", i);
     }
+    if (s->environment.texture >= 0 && !p->texture_names[s->environment.texture])
+        return error_set(err, GLINT_ERR_INVALID, "the environment is a texture of a model's own");
     return GLINT_OK;
 }
 
@@ -179,6 +181,21 @@ static void write_settings(const plan *p)
     m = ymap_begin(p->f, false, 2);
     yw_params(&m, camera_params(), &s->camera, true);
     ymap_end(&m);
+}
+
+/* The environment, after the textures it names. */
+static void write_environment(const plan *p)
+{
+    const glint_environment *env = &p->scene->environment;
+    if (env->texture < 0)
+        return;
+    fputs("environment: ", p->f);
+    ymap m = ymap_begin(p->f, true, 0);
+    ymap_key(&m, "texture");
+    yw_text(p->f, p->texture_names[env->texture]);
+    yw_params(&m, environment_params(), env, false);
+    ymap_end(&m);
+    fputc('\n', p->f);
 }
 
 static void write_fog(const plan *p)
@@ -370,6 +387,7 @@ glint_status glint_scene_write_yaml(const glint_scene *scene, FILE *out, glint_e
         write_settings(&p);
         write_fog(&p);
         write_textures(&p);
+        write_environment(&p);
         write_materials(&p);
         write_lights(&p);
         write_objects(&p);

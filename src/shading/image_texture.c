@@ -1,4 +1,4 @@
-/* image_texture.c - a PNG or JPEG picture, bilinearly filtered. */
+/* image_texture.c - a PNG, JPEG or OpenEXR picture, bilinearly filtered. */
 #include <stddef.h>
 #include "shading/texture.h"
 
@@ -14,7 +14,8 @@ static color image_at(const texture *t, double u, double v)
 
 static const param IMAGE_PARAMS[] = {
     {.key = "file", .type = PARAM_PATH, .offset = offsetof(glint_texture, file), .required = true,
-     .meaning = "a PNG or JPEG file, relative to the scene file"},
+     .meaning = "a PNG or JPEG file (sRGB), or an OpenEXR file (linear, high dynamic range), relative to the "
+                "scene file"},
 };
 
 const texture_kind image_texture = {

@@ -46,7 +46,7 @@ if [ "$(id -u)" -ne 0 ]; then
 fi
 expect 1 "glint: cannot open texture 'nope.jpg': No such file or directory" -- "${small[@]}" --texture moon=nope.jpg -o a.png
 echo "this is not an image" > not-an-image.jpg
-expect 1 "glint: texture 'not-an-image.jpg' is not a PNG or JPEG file" -- "${small[@]}" --texture moon=not-an-image.jpg -o a.png
+expect 1 "glint: texture 'not-an-image.jpg' is not a PNG, JPEG or OpenEXR file" -- "${small[@]}" --texture moon=not-an-image.jpg -o a.png
 expect 1 "glint: no image texture named 'sun'" -- "${small[@]}" --texture sun=not-an-image.jpg -o a.png
 
 # A model file larger than half the machine's memory is refused before it

@@ -1,9 +1,10 @@
 /* fuzz_texture.c - libFuzzer target for the texture decoder: feeds arbitrary
- * bytes to texture_image_load_memory (PNG or JPEG, told apart by their
- * magic bytes) and checks what the API promises. A refused image must come
- * with a message naming its source and leave the image empty; a decoded one
- * must have a size within the decoder's limits and all width x height x 3
- * bytes of its pixels, which ASan checks. A broken promise aborts, which
+ * bytes to texture_image_load_memory (PNG, JPEG or OpenEXR, told apart by
+ * their magic bytes) and checks what the API promises. A refused image must
+ * come with a message naming its source and leave the image empty; a
+ * decoded one must have a size within the decoder's limits and all of its
+ * width x height x 3 bytes (or floats, finite and not negative, for
+ * OpenEXR) of pixels, which ASan checks. A broken promise aborts, which
  * libFuzzer counts as a crash.
  *
  * libpng refuses a critical chunk whose CRC is wrong, which nearly every
@@ -25,7 +26,7 @@ static void check_refused(const texture_image *img, glint_status st, const glint
 {
     if ((st != GLINT_ERR_INVALID && st != GLINT_ERR_NOMEM) || !strstr(err->message, "'fuzz-texture'"))
         abort();
-    if (img->width != 0 || img->height != 0 || img->srgb || img->owned || img->linear)
+    if (img->width != 0 || img->height != 0 || img->srgb || img->hdr || img->owned || img->linear)
         abort();
 }
 
@@ -35,20 +36,23 @@ static void check_decoded(const texture_image *img)
         (unsigned long)img->height > TEXTURE_IMAGE_MAX_SIDE ||
         (unsigned long)img->width * (unsigned long)img->height > TEXTURE_IMAGE_MAX_PIXELS)
         abort();
-    if (!img->srgb || img->owned != img->srgb || !img->linear)
+    bool hdr = img->hdr != NULL;
+    if (hdr == (img->srgb != NULL) || img->owned != (hdr ? (const void *)img->hdr : (const void *)img->srgb) ||
+        !img->linear)
         abort();
     /* Every byte of the pixels must be there. ASan checks the whole buffer
      * at once: reading its bytes one by one would find the same short
      * buffer, but takes 4 to 9 s more for the largest image allowed (which a
      * valid arithmetic-coded JPEG of 300 bytes can be), past -timeout. */
     size_t n = 3 * (size_t)img->width * (size_t)img->height;
-    const volatile unsigned char *missing = __asan_region_is_poisoned((void *)img->srgb, n);
+    const volatile unsigned char *missing = __asan_region_is_poisoned(img->owned, n * (hdr ? sizeof(float) : 1));
     if (missing) {
         (void)*missing; /* ASan's report: where the buffer ends and who allocated it */
         abort();
     }
     float first = texture_image_at(img, 0), last = texture_image_at(img, n - 1);
-    if (!(first >= 0 && first <= 1 && last >= 0 && last <= 1))
+    float top = hdr ? 3.0e38f : 1;
+    if (!(first >= 0 && first <= top && last >= 0 && last <= top))
         abort();
 }
 

@@ -908,16 +908,16 @@ static void test_load_text_file(void **state)
     texture_image tex;
     tmp_path(path, "notes.png");
     write_bytes(path, "just some text\n", 15);
-    snprintf(want, sizeof want, "texture '%s' is not a PNG or JPEG file", path);
+    snprintf(want, sizeof want, "texture '%s' is not a PNG, JPEG or OpenEXR file", path);
     expect_error(texture_image_load_file(&tex, path, &err), &err, GLINT_ERR_INVALID, want);
 
     tmp_path(path, "empty.jpg");
     write_bytes(path, "", 0);
-    snprintf(want, sizeof want, "texture '%s' is not a PNG or JPEG file", path);
+    snprintf(want, sizeof want, "texture '%s' is not a PNG, JPEG or OpenEXR file", path);
     expect_error(texture_image_load_file(&tex, path, &err), &err, GLINT_ERR_INVALID, want);
 
     expect_error(texture_image_load_memory(&tex, "GIF89a", 6, NULL, &err), &err,
-                 GLINT_ERR_INVALID, "texture '(memory)' is not a PNG or JPEG file");
+                 GLINT_ERR_INVALID, "texture '(memory)' is not a PNG, JPEG or OpenEXR file");
 }
 
 static void test_load_truncated_png(void **state)
@@ -997,6 +997,29 @@ static void test_load_png_chunk_past_end(void **state)
     assert_int_equal(tex.width, 1);
     assert_int_equal(tex.srgb[0], 200);
     texture_image_free(&tex);
+}
+
+/* OpenEXR: a header that is not one, and (found by fuzz_texture,
+ * tests/fuzz/regressions/texture/) a chunk the file places outside its
+ * data window, which would have been decoded outside the pixels, are
+ * refused as corrupt, the image left empty. */
+static void test_load_exr_corrupt(void **state)
+{
+    (void)state;
+    glint_error err = {0};
+    texture_image tex;
+    static const unsigned char junk[] = {0x76, 0x2f, 0x31, 0x01, 'j', 'u', 'n', 'k'};
+    expect_error(texture_image_load_memory(&tex, junk, sizeof junk, "junk.exr", &err), &err, GLINT_ERR_INVALID,
+                 "texture 'junk.exr' is corrupt: File is not an OpenEXR file or has a bad header value");
+    assert_null(tex.hdr);
+    const char *src = getenv("GLINT_SOURCE_DIR");
+    char path[4096];
+    snprintf(path, sizeof path, "%s/tests/fuzz/regressions/texture/exr-chunk-outside-window.exr", src ? src : ".");
+    glint_status st = texture_image_load_file(&tex, path, &err);
+    assert_int_equal(st, GLINT_ERR_INVALID);
+    assert_non_null(strstr(err.message, "is corrupt: Corrupt data block data, unable to decode"));
+    assert_null(tex.hdr);
+    assert_null(tex.owned);
 }
 
 /* A material using a texture decodes its file (one no material uses is
@@ -1331,6 +1354,7 @@ int main(void)
         cmocka_unit_test(test_load_png_bad_crc),
         cmocka_unit_test(test_load_oversized_png),
         cmocka_unit_test(test_load_png_chunk_past_end),
+        cmocka_unit_test(test_load_exr_corrupt),
         cmocka_unit_test(test_load_grey_png),
         cmocka_unit_test(test_textures_share_decoded_file),
         cmocka_unit_test(test_textures_within_budget),

@@ -532,6 +532,19 @@ static void test_fog_exponential(void **state)
 
 /* ------------------------------------------------------------- textures */
 
+/* The environment names a texture; its intensity and rotation default to 1 and 0. */
+static void test_environment(void **state)
+{
+    glint_scene *s = load_good("textures:\n"
+                               "  sky: {type: checker, colors: [[0, 0, 1], [1, 1, 1]]}\n"
+                               "environment: {texture: sky, rotation: 30}\n");
+    glint_environment env = glint_scene_get_environment(s);
+    assert_int_equal(env.texture, 0);
+    assert_exact(env.intensity, 1);
+    assert_exact(env.rotation, 30);
+    glint_scene_free(s);
+}
+
 static void test_checker_texture(void **state)
 {
     glint_scene *s = load_good("textures:\n"
@@ -1541,7 +1554,7 @@ static const bad_scene BAD[] = {
     {"image_empty_file",
      "textures:\n"
      "  t: {type: image, file: @TMP@/empty.png}\n",
-     "bad.yaml:2:26: texture '@TMP@/empty.png' is not a PNG or JPEG file", 1},
+     "bad.yaml:2:26: texture '@TMP@/empty.png' is not a PNG, JPEG or OpenEXR file", 1},
     {"width_zero",
      "settings:\n"
      "  width: 0\n",
@@ -1674,6 +1687,13 @@ static const bad_scene BAD[] = {
      "settings:\n"
      "  ambient_occlusion: 16\n",
      "bad.yaml:2:22: 'ambient_occlusion' must be a map, got a number", 1},
+    {"environment_unknown_texture",
+     "textures: {sky: {type: checker}}\n"
+     "environment: {texture: skye}\n",
+     "bad.yaml:2:24: unknown texture 'skye' (did you mean 'sky'?)", 1},
+    {"environment_no_texture",
+     "environment: {intensity: 2}\n",
+     "bad.yaml:1:14: environment needs 'texture'", 1},
     {"light_type_no_hint",
      "lights:\n"
      "  - {type: area}\n",
@@ -2720,6 +2740,7 @@ int main(void)
         cmocka_unit_test(test_image_texture_from_a_file),
         cmocka_unit_test(test_material_every_key),
         cmocka_unit_test(test_settings_ambient_occlusion),
+        cmocka_unit_test(test_environment),
         cmocka_unit_test(test_lights),
         cmocka_unit_test(test_area_lights),
         cmocka_unit_test(test_sphere_and_plane),
