@@ -426,7 +426,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
  * back to local[i]. rays[i]: the rays lane i spreads the branch over, ray
  * j in the lobe about the sharp direction when its material is rough;
  * NULL: one sharp ray each, and no key is needed. */
-__attribute__((noinline)) static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
+static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
                                                                const shade_point sp[ACCEL_PACKET],
                                                                const branches b[ACCEL_PACKET], int k, int j,
                                                                const int *rays, int depth,
