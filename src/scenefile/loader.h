@@ -23,6 +23,8 @@ typedef struct loader {
     glint_camera camera;
     glint_fog fog;
     const ynode *settings_node, *camera_node, *fog_node;  /* the last file's, for messages */
+    const ynode *focus_on_node;                          /* the camera's focus_on, if given, */
+    glint_vec3 focus_on;                                 /* and the point it names */
     unsigned fog_keys;                                   /* FOG_* keys given in any file */
     const char *output;
     const char *chain[MAX_INCLUDE_DEPTH + 1];   /* canonical paths of the files being read */
@@ -102,6 +104,11 @@ int param_keys(param_table t, const char *const *common, int common_count, const
 void read_settings(loader *l, const ynode *n);
 void read_camera(loader *l, const ynode *n);
 void read_fog(loader *l, const ynode *n);
+
+/* The camera's focus_on, once every file has had its say: a thin lens's
+ * focus_distance becomes the depth of that point along the view; false
+ * after a report (another camera type, both keys, a point behind). */
+bool focus_on_resolve(loader *l);
 
 /* The root's `environment` map: a texture (by name) seen by rays that
  * miss everything, its intensity and rotation. */

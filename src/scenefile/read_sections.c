@@ -1,4 +1,5 @@
 /* read_sections.c - the scene file's settings, camera and fog sections. */
+#include <math.h>
 #include <stdio.h>
 #include "image/image_format.h"
 #include "scenefile/loader.h"
@@ -36,13 +37,41 @@ void read_settings(loader *l, const ynode *n)
 
 void read_camera(loader *l, const ynode *n)
 {
+    static const char *const focus_key[] = {"focus_on"};
     if (!yr_is_map(&l->r, n, "camera"))
         return;
     l->camera_node = n;
     const char *keys[16];
-    int count = param_keys(camera_params(), NULL, 0, keys, COUNT(keys));
+    int count = param_keys(camera_params(), focus_key, COUNT(focus_key), keys, COUNT(keys));
     yr_check_keys(&l->r, n, "camera", keys, count);
     read_params(l, n, camera_params(), "camera", &l->camera);
+    const ynode *focus = yr_get(&l->r, n, "focus_on");
+    if (focus && yr_vec3(&l->r, focus, "focus_on", &l->focus_on))
+        l->focus_on_node = focus;
+}
+
+bool focus_on_resolve(loader *l)
+{
+    glint_camera *c = &l->camera;
+    const ynode *at = l->focus_on_node;
+    if (!at)
+        return true;
+    if (c->kind != GLINT_CAMERA_THIN_LENS) {
+        diag_at(&l->d, at, "camera focus_on is for type thin_lens");
+        return false;
+    }
+    if (c->focus_distance != 0) {
+        diag_at(&l->d, at, "camera takes focus_on or focus_distance, not both");
+        return false;
+    }
+    vec3 view = v3_sub(c->look_at, c->position);
+    double depth = v3_dot(v3_sub(l->focus_on, c->position), v3_normalize(view));
+    if (!(depth > 0) || !isfinite(depth)) {
+        diag_at(&l->d, at, "camera focus_on must lie in front of the camera (its depth along the view is %g)", depth);
+        return false;
+    }
+    c->focus_distance = depth;
+    return true;
 }
 
 void read_fog(loader *l, const ynode *n)

@@ -360,7 +360,7 @@ static void finish(loader *l, const char *name)
     const ynode *where[] = {l->settings_node, l->camera_node, l->fog_node};
     glint_status s[] = {glint_scene_set_settings(l->scene, &l->settings, &err), GLINT_OK, GLINT_OK};
     for (int i = 0; i < 3; i++) {
-        if (i == 1)
+        if (i == 1 && focus_on_resolve(l))
             s[1] = glint_scene_set_camera(l->scene, &l->camera, &err);
         if (i == 2 && (!l->fog_node || fog_complete(l)))
             s[2] = glint_scene_set_fog(l->scene, &l->fog, &err);

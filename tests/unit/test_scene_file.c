@@ -532,6 +532,15 @@ static void test_fog_exponential(void **state)
 
 /* ------------------------------------------------------------- textures */
 
+/* focus_on focuses a thin lens at that point's depth along the view. */
+static void test_camera_focus_on(void **state)
+{
+    glint_scene *s = load_good("camera: {type: thin_lens, position: [0, 1, 6], look_at: [0, 1, 0], aperture: 0.2,"
+                               " focus_on: [2, 3, -1]}\n");
+    assert_exact(glint_scene_get_camera(s).focus_distance, 7);
+    glint_scene_free(s);
+}
+
 /* The environment names a texture; its intensity and rotation default to 1 and 0. */
 static void test_environment(void **state)
 {
@@ -1694,6 +1703,15 @@ static const bad_scene BAD[] = {
     {"environment_no_texture",
      "environment: {intensity: 2}\n",
      "bad.yaml:1:14: environment needs 'texture'", 1},
+    {"focus_on_pinhole",
+     "camera: {position: [0, 1, 6], focus_on: [0, 0, 0]}\n",
+     "bad.yaml:1:41: camera focus_on is for type thin_lens", 1},
+    {"focus_on_and_distance",
+     "camera: {type: thin_lens, position: [0, 0, 6], focus_on: [0, 0, 0], focus_distance: 2}\n",
+     "bad.yaml:1:58: camera takes focus_on or focus_distance, not both", 1},
+    {"focus_on_behind",
+     "camera: {type: thin_lens, position: [0, 0, 6], look_at: [0, 0, 0], focus_on: [0, 0, 9]}\n",
+     "bad.yaml:1:78: camera focus_on must lie in front of the camera (its depth along the view is -3)", 1},
     {"light_type_no_hint",
      "lights:\n"
      "  - {type: area}\n",
@@ -2741,6 +2759,7 @@ int main(void)
         cmocka_unit_test(test_material_every_key),
         cmocka_unit_test(test_settings_ambient_occlusion),
         cmocka_unit_test(test_environment),
+        cmocka_unit_test(test_camera_focus_on),
         cmocka_unit_test(test_lights),
         cmocka_unit_test(test_area_lights),
         cmocka_unit_test(test_sphere_and_plane),
