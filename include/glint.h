@@ -95,8 +95,19 @@ glint_scene *glint_scene_seed_room(glint_error *err);
 /* Sampling pattern within a pixel. */
 typedef enum glint_sampler {
     GLINT_SAMPLER_REGULAR = 0,  /* N x N grid of sample points at cell centres */
-    GLINT_SAMPLER_JITTERED      /* N x N strata, one random point in each */
+    GLINT_SAMPLER_JITTERED,     /* N x N strata, one random point in each */
+    GLINT_SAMPLER_SOBOL         /* any count: scrambled Sobol points, each pixel its own pattern */
 } glint_sampler;
+
+/* Pixel reconstruction filters: how a pixel weighs its samples by where
+ * they fall, each separable and zero from its radius on. */
+typedef enum glint_filter {
+    GLINT_FILTER_BOX = 0,   /* every sample alike (radius 0.5: the pixel's own square) */
+    GLINT_FILTER_TENT,      /* falls linearly to zero at the radius */
+    GLINT_FILTER_GAUSSIAN,  /* standard deviation a third of the radius */
+    GLINT_FILTER_MITCHELL,  /* Mitchell-Netravali, B = C = 1/3: sharper, slight ringing */
+    GLINT_FILTER_LANCZOS    /* windowed sinc: sharpest, most ringing */
+} glint_filter;
 
 /* The most pixels an image may have, width times height (16384 x 16384):
  * its float buffer alone takes 12 bytes a pixel, 3 GiB at the limit. */
@@ -105,12 +116,12 @@ typedef enum glint_sampler {
 /* Image and integrator settings. */
 typedef struct glint_settings {
     int width, height;         /* pixels, 1..65536 each, GLINT_MAX_PIXELS in all */
-    int samples_per_pixel;     /* a square number N*N, 1..4096 */
+    int samples_per_pixel;     /* 1..4096; a square number N*N for the regular and jittered samplers */
     glint_sampler sampler;
     int max_depth;             /* reflection/refraction recursion limit, 0..64 */
     glint_color background;    /* colour of rays that hit nothing */
     glint_color ambient_light; /* multiplies each material's ambient term */
-    uint32_t seed;             /* seed of the jittered sampler */
+    uint32_t seed;             /* seed of every random number: samplers, lens, lights */
     double exposure;           /* in stops, -64..64: every pixel's light is multiplied by
                                   2^exposure before it is stored (0: as rendered) */
     int emission_samples;      /* shadow rays from each shading point towards each emissive
@@ -119,10 +130,19 @@ typedef struct glint_settings {
                                   ambient term times the share of these rays, spread over the
                                   hemisphere as the cosine, that nothing blocks */
     double occlusion_distance; /* how far those rays look, > 0; 0: as far as the scene goes */
+    glint_filter filter;       /* the pixel reconstruction filter (box: the default) */
+    double filter_radius;      /* in pixels, 0.5..16; 0: the filter's own default (box 0.5,
+                                  tent 1, gaussian 1.5, mitchell 2, lanczos 3) */
+    int adaptive_max_samples;  /* 0: every pixel takes samples_per_pixel; else, sampler sobol,
+                                  samples_per_pixel..4096: a pixel whose samples differ by more
+                                  than adaptive_threshold takes more, up to this many */
+    double adaptive_threshold; /* the largest difference in any channel (0..1, after exposure)
+                                  between a pixel's samples that needs no more */
 } glint_settings;
 
-/* Returns the settings of a new scene: 640x480, 1 spp, regular, depth 5,
- * black background, white ambient light, seed 0. */
+/* Returns the settings of a new scene: 640x480, 4 spp, regular, box
+ * filter, no adaptive sampling, depth 5, black background, white ambient
+ * light, seed 0. */
 glint_settings glint_settings_default(void);
 
 /* Replaces the scene's settings after checking every value. */

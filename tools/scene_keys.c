@@ -31,6 +31,8 @@ static int sections(section *out, int room)
     } while (0)
     ADD("settings", settings_params());
     ADD("ambient_occlusion", occlusion_params());
+    ADD("filter", filter_params());
+    ADD("adaptive", adaptive_params());
     ADD("camera", camera_params());
     ADD("fog", fog_params());
     ADD("environment", environment_params());

@@ -17,6 +17,7 @@
 #include "render/film.h"
 #include "render/hit.h"
 #include "render/integrator.h"
+#include "render/pixel_samples.h"
 #include "render/render_tiles.h"
 
 #define MAX_THREADS 1024
@@ -29,7 +30,9 @@ typedef struct job {
     const render_feed *feed;
     film film;
     render_layout layout;
-    int grid;
+    pixel_sampler sampler;
+    int samples;                  /* each pixel's, before adaptive sampling adds any */
+    bool signed_film;             /* pixels take the film's signed path (film.h) */
     bool keys;                    /* tracing uses the samples' keys: tracer_needs_keys */
     int tiles_done;               /* under progress_lock */
     pthread_mutex_t progress_lock;
@@ -42,6 +45,7 @@ typedef struct worker {
     uint64_t pixels_done;         /* in the tiles it finished */
     uint64_t rays;
     uint64_t nan_samples;         /* samples left out of their pixels as NaN */
+    uint64_t extra_samples;       /* samples adaptive sampling added */
 } worker;
 
 /* Camera rays go in packets of 4 x 2 neighbouring pixels, the blocks
@@ -50,65 +54,6 @@ typedef struct worker {
 #define BLOCK_W 4
 #define BLOCK_H (ACCEL_PACKET / BLOCK_W)
 _Static_assert(BLOCK_W % BLOCK_H == 0, "a tile size rounded to BLOCK_W must hold whole blocks");
-
-/* The position in pixel (px, py) of sample (sx, sy) of the n x n grid. */
-static void sample_offset(const glint_settings *s, int n, int px, int py, int sx, int sy, double *ox, double *oy)
-{
-    *ox = (sx + 0.5) / n;
-    *oy = (sy + 0.5) / n;
-    if (s->sampler == GLINT_SAMPLER_JITTERED) {
-        uint32_t h = hash4((uint32_t)px, (uint32_t)py, (uint32_t)(sy * n + sx), s->seed);
-        *ox = (sx + hash_unit(h)) / n;
-        *oy = (sy + hash_unit(hash_u32(h ^ 0x9e3779b9U))) / n;
-    }
-}
-
-static uint32_t gcd(uint32_t x, uint32_t y)
-{
-    while (y) {
-        uint32_t r = x % y;
-        x = y;
-        y = r;
-    }
-    return x;
-}
-
-/* How each lane's pixel shuffles its lens cells: cell k of the n x n
- * grid goes to (a k + b) mod n^2, a coprime to n^2, chosen by a hash of
- * the pixel and the seed, once per block rather than once per sample. */
-typedef struct lens_shuffle {
-    uint32_t pixel[RAY8], a[RAY8], b[RAY8];
-} lens_shuffle;
-
-static void lens_shuffle_init(const glint_settings *s, int n, const int px[RAY8], const int py[RAY8],
-                              lens_shuffle *sh)
-{
-    uint32_t cells = (uint32_t)(n * n);
-    for (int i = 0; i < RAY8; i++) {
-        uint32_t h = hash4((uint32_t)px[i], (uint32_t)py[i], 0, s->seed ^ 0x4c454e53U);
-        sh->pixel[i] = h;
-        sh->a[i] = 1 + hash_u32(h) % cells;
-        sh->b[i] = h % cells;
-        while (gcd(sh->a[i], cells) != 1)
-            sh->a[i]++;
-    }
-}
-
-/* Where sample (sx, sy) of the n x n grid of each lane's pixel passes the
- * lens: stratified as the image positions are, one sample in each of the
- * lens's n x n cells, the cells shuffled per pixel (sh) so that a sample's
- * lens cell does not follow its image cell, and a hashed point within the
- * cell. */
-static void lens_samples(const lens_shuffle *sh, int n, int sx, int sy, camera_lens8 *lens)
-{
-    uint32_t cells = (uint32_t)(n * n), k = (uint32_t)(sy * n + sx);
-    for (int i = 0; i < RAY8; i++) {
-        int cell = (int)(((uint64_t)sh->a[i] * k + sh->b[i]) % cells);
-        uint32_t h = hash_u32(sh->pixel[i] ^ (uint32_t)(cell + 1) * 0x9e3779b9U);
-        lens->u[i] = (cell % n + hash_unit(h)) / n;
-        lens->v[i] = (cell / n + hash_unit(hash_u32(h ^ 0x85ebca6bU))) / n;
-    }
-}
 
 /* The lanes of the block at (x0, y0): their pixels, and which lie in the image. */
 static void block_lanes(const job *j, int x0, int y0, int px[ACCEL_PACKET], int py[ACCEL_PACKET],
@@ -122,70 +67,105 @@ static void block_lanes(const job *j, int x0, int y0, int px[ACCEL_PACKET], int 
     }
 }
 
-/* Traces every sample of the grid as one packet over the block's lanes
- * into *b; `careful` as for film_block_add. Always inlined, so that each
- * block renderer has its own copy with `careful` a constant: left to GCC
- * since the film took the pixels (film.h), it made one copy taking
- * `careful` at run time (seed room +0.7%, bunny +1% instructions). */
+/* Traces sample k of each pixel of the block whose lane is traced[i],
+ * one packet, into *b; `careful` as for film_block_add. */
+__attribute__((always_inline)) static inline void trace_sample(tracer *t, const job *j, const pixel_block_samples *bs,
+                                                               int k, const bool traced[ACCEL_PACKET], bool careful,
+                                                               film_block *b)
+{
+    double x[ACCEL_PACKET], y[ACCEL_PACKET];
+    bool negative[ACCEL_PACKET];
+    camera_lens8 lens;
+    ray8 rays;
+    color c[ACCEL_PACKET];
+    pixel_samples_at(&j->sampler, bs, k, x, y, &lens, negative);
+    /* Every ray is at the shutter's middle. */
+    camera_rays8(&j->cam, x, y, j->cam.uses_lens ? &lens : &camera_lens_centre, camera_shutter_middle, &rays);
+    /* What every other random number of the sample is hashed from. */
+    uint32_t key[ACCEL_PACKET] = {0};
+    if (j->keys)
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            key[i] = hash4((uint32_t)bs->px[i], (uint32_t)bs->py[i], (uint32_t)k, j->scene->settings.seed ^ 0x4b455953U);
+    tracer_trace8(t, &rays, traced, key, c);
+    if (j->signed_film)
+        film_block_add_signed(b, traced, c, negative, careful);
+    else
+        film_block_add(b, traced, c, careful);
+}
+
+/* Adaptive sampling: rounds that each double the samples of the block's
+ * pixels whose samples so far differ by more than the threshold, up to
+ * the most allowed; the samples added, in *extra. Whether a pixel takes
+ * more depends on its own samples alone. */
+static void trace_more_samples(tracer *t, const job *j, const pixel_block_samples *bs,
+                               const bool active[ACCEL_PACKET], bool careful, film_block *b, uint64_t *extra)
+{
+    const glint_settings *s = &j->scene->settings;
+    for (int from = j->samples; from < s->adaptive_max_samples; from *= 2) {
+        bool more[ACCEL_PACKET], any = false;
+        for (int i = 0; i < ACCEL_PACKET; i++) {
+            more[i] = active[i] && film_block_spread(b, i, j->film.exposure_scale) > s->adaptive_threshold;
+            any |= more[i];
+        }
+        if (!any)
+            return;
+        int to = 2 * from < s->adaptive_max_samples ? 2 * from : s->adaptive_max_samples;
+        for (int k = from; k < to; k++)
+            trace_sample(t, j, bs, k, more, careful, b);
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            *extra += more[i] ? (uint64_t)(to - from) : 0;
+    }
+}
+
+/* Traces every sample of the block's pixels, a packet of one sample of
+ * each at a time, into *b; `careful` as for film_block_add. Always
+ * inlined, so that each block renderer has its own copy with `careful` a
+ * constant: left to GCC since the film took the pixels (film.h), it made
+ * one copy taking `careful` at run time (seed room +0.7%, bunny +1%
+ * instructions). */
 __attribute__((always_inline)) static inline void trace_samples(tracer *t, const job *j, const int px[ACCEL_PACKET],
                                                                 const int py[ACCEL_PACKET],
                                                                 const bool active[ACCEL_PACKET], bool careful,
-                                                                film_block *b)
+                                                                film_block *b, uint64_t *extra)
 {
-    const glint_settings *s = &j->scene->settings;
-    int n = j->grid;
-    bool jittered = s->sampler == GLINT_SAMPLER_JITTERED;
-    ray8 rays;
-    color c[ACCEL_PACKET];
-    lens_shuffle shuffle;
-    if (j->cam.uses_lens)
-        lens_shuffle_init(s, n, px, py, &shuffle);
-    film_block_start(b);
-    for (int sy = 0; sy < n; sy++) {
-        for (int sx = 0; sx < n; sx++) {
-            double x[ACCEL_PACKET], y[ACCEL_PACKET], ox = 0, oy = 0;
-            /* The regular grid's offsets are the same for every lane. */
-            if (!jittered)
-                sample_offset(s, n, px[0], py[0], sx, sy, &ox, &oy);
-            for (int i = 0; i < ACCEL_PACKET; i++) {
-                if (jittered)
-                    sample_offset(s, n, px[i], py[i], sx, sy, &ox, &oy);
-                x[i] = px[i] + ox;
-                y[i] = py[i] + oy;
-            }
-            /* A lens sample only for a camera that uses one; every ray
-             * is at the shutter's middle. */
-            camera_lens8 lens;
-            if (j->cam.uses_lens)
-                lens_samples(&shuffle, n, sx, sy, &lens);
-            camera_rays8(&j->cam, x, y, j->cam.uses_lens ? &lens : &camera_lens_centre, camera_shutter_middle,
-                         &rays);
-            /* What every other random number of the sample is hashed from. */
-            uint32_t key[ACCEL_PACKET] = {0};
-            if (j->keys)
-                for (int i = 0; i < ACCEL_PACKET; i++)
-                    key[i] = hash4((uint32_t)px[i], (uint32_t)py[i], (uint32_t)(sy * n + sx), s->seed ^ 0x4b455953U);
-            tracer_trace8(t, &rays, active, key, c);
-            film_block_add(b, active, c, careful);
-        }
-    }
+    pixel_block_samples bs;
+    pixel_samples_start(&j->sampler, px, py, &bs);
+    if (j->signed_film)
+        film_block_start_signed(b);
+    else
+        film_block_start(b);
+    for (int k = 0; k < j->samples; k++)
+        trace_sample(t, j, &bs, k, active, careful, b);
+    if (j->scene->settings.adaptive_max_samples)
+        trace_more_samples(t, j, &bs, active, careful, b, extra);
+}
+
+/* Writes the block's pixels from *b. */
+__attribute__((always_inline)) static inline void put_block(job *j, film *f, const film_block *b, const int px[ACCEL_PACKET], const int py[ACCEL_PACKET],
+                      const bool active[ACCEL_PACKET])
+{
+    if (j->signed_film)
+        film_block_put_signed(f, b, px, py, active);
+    else
+        film_block_put(f, b, px, py, active);
 }
 
 /* Renders the pixels of the block at (x0, y0) that lie in the image: every
  * sample of the grid as one packet over the block. */
-static void render_block(tracer *t, job *j, film *f, int x0, int y0)
+static void render_block(tracer *t, job *j, film *f, int x0, int y0, uint64_t *extra)
 {
     bool active[ACCEL_PACKET];
     int px[ACCEL_PACKET], py[ACCEL_PACKET];
     film_block b;
     block_lanes(j, x0, y0, px, py, active);
-    trace_samples(t, j, px, py, active, false, &b);
-    film_block_put(f, &b, px, py, active);
+    trace_samples(t, j, px, py, active, false, &b, extra);
+    put_block(j, f, &b, px, py, active);
 }
 
 /* render_block for a block with a NaN pixel: traced again, the same rays
  * giving the same colours, with the NaN samples left out of their pixels
- * and counted in *nan_samples. The rays were counted the first time. Out of
+ * and counted in *nan_samples. The rays and samples were counted the
+ * first time. Out of
  * line and cold: no valid scene should come here. (One render_block taking
  * `careful` for both cost the common path 1% of the seed room's
  * instructions and 2% of the bunny's, the profile-guided build inlining
@@ -196,10 +176,10 @@ __attribute__((noinline, cold)) static void render_block_leaving_nan(tracer *t, 
     bool active[ACCEL_PACKET];
     int px[ACCEL_PACKET], py[ACCEL_PACKET];
     film_block b;
-    uint64_t rays = t->rays;
+    uint64_t rays = t->rays, extra = 0;
     block_lanes(j, x0, y0, px, py, active);
-    trace_samples(t, j, px, py, active, true, &b);
-    film_block_put(f, &b, px, py, active);
+    trace_samples(t, j, px, py, active, true, &b, &extra);
+    put_block(j, f, &b, px, py, active);
     t->rays = rays;
     *nan_samples += film_block_nan_samples(&b);
 }
@@ -242,7 +222,7 @@ glint_status render_layout_for(const glint_scene *scene, int tile_size, render_l
  *
  * A NaN colour never reaches a pixel (film.h's rule): a tile that shows one
  * renders its blocks that show one again, leaving it out. */
-static bool render_tile(tracer *t, job *j, film *f, int tile, uint64_t *nan_samples)
+static bool render_tile(tracer *t, job *j, film *f, int tile, uint64_t *nan_samples, uint64_t *extra_samples)
 {
     int x0, y0, x1, y1;
     render_tile_bounds(&j->layout, tile, &x0, &y0, &x1, &y1);
@@ -250,7 +230,7 @@ static bool render_tile(tracer *t, job *j, film *f, int tile, uint64_t *nan_samp
         for (int x = x0; x < x1; x += BLOCK_W) {
             if (cancelled(j))
                 return false;
-            render_block(t, j, f, x, y);
+            render_block(t, j, f, x, y, extra_samples);
         }
     }
     if (t->stopped)
@@ -287,7 +267,7 @@ static void *worker_run(void *arg)
                          .samples = j->film.samples, .exposure_scale = j->film.exposure_scale};
             into = &own;
         }
-        if (!render_tile(&t, j, into, tile, &w->nan_samples)) {
+        if (!render_tile(&t, j, into, tile, &w->nan_samples, &w->extra_samples)) {
             /* What a cancelled tile traced is not its image. */
             film_clear(into, x0, y0, x1, y1);
             break;
@@ -341,6 +321,7 @@ static glint_status run_workers(job *j, int count, worker *sum, glint_error *err
         sum->pixels_done += ws[i].pixels_done;
         sum->rays += ws[i].rays;
         sum->nan_samples += ws[i].nan_samples;
+        sum->extra_samples += ws[i].extra_samples;
         free(ws[i].tile_pixels);
     }
     free(ws);
@@ -370,17 +351,17 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
         return st;
     double start = now_seconds();
 
-    j.grid = 1;
-    while (j.grid * j.grid < s->samples_per_pixel)
-        j.grid++;
+    j.samples = s->samples_per_pixel;
     if (feed->pixels || feed->tiles_only) {
-        j.film = (film){.pixels = feed->pixels, .width = s->width, .height = s->height, .samples = j.grid * j.grid};
-    } else if (!film_init(&j.film, s->width, s->height, j.grid * j.grid)) {
+        j.film = (film){.pixels = feed->pixels, .width = s->width, .height = s->height, .samples = j.samples};
+    } else if (!film_init(&j.film, s->width, s->height, j.samples)) {
         return error_set(err, GLINT_ERR_NOMEM, "out of memory for a %dx%d image", s->width, s->height);
     }
     j.film.exposure_scale = exp2(s->exposure);
     j.keys = tracer_needs_keys(scene);
     camera_init(&j.cam, &scene->camera, s->width, s->height);
+    pixel_sampler_init(&j.sampler, s, j.cam.uses_lens);
+    j.signed_film = s->adaptive_max_samples != 0 || j.sampler.filter.has_negative_lobes;
     /* Embree builds with every thread asked for; tracing needs no more
      * threads than tiles. */
     int build_threads = o->threads ? o->threads : processors_online(MAX_THREADS);
@@ -436,7 +417,7 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
         *out = (glint_image){.width = s->width, .height = s->height, .pixels = j.film.pixels};
     if (stats) {
         stats->seconds = now_seconds() - start;
-        stats->samples = sum.pixels_done * (uint64_t)(j.grid * j.grid);
+        stats->samples = sum.pixels_done * (uint64_t)j.samples + sum.extra_samples;
         stats->rays = sum.rays;
         stats->nan_samples = sum.nan_samples;
         stats->tiles_done = sum.tiles_done;

@@ -119,6 +119,20 @@ param_table camera_params(void);
  * with the defaults it has when given: 16 samples, no distance limit. */
 param_table occlusion_params(void);
 
+/* The first rule between the sampling settings that s breaks (a grid
+ * sampler's square count, adaptive sampling's sampler and most samples):
+ * the key it is about, "samples", "adaptive" or "max_samples", with the
+ * message in err; NULL when s keeps them all. */
+const char *sampling_rule_broken(const glint_settings *s, glint_error *err);
+
+/* The keys of settings.filter (offsets into glint_settings): the type,
+ * box by default, and the radius, 0 for the type's own. */
+param_table filter_params(void);
+
+/* The keys of settings.adaptive (offsets into glint_settings), with the
+ * defaults they have when it is given: threshold 0.05, 64 samples at most. */
+param_table adaptive_params(void);
+
 /* The keys of a scene file's mesh object that are import options (offsets
  * into glint_import_options): the crease angle. */
 param_table import_params(void);

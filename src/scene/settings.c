@@ -15,7 +15,7 @@ static bool is_square(double v)
     return root * root == v;
 }
 
-static const char *const SAMPLERS[] = {"regular", "jittered"};
+static const char *const SAMPLERS[] = {"regular", "jittered", "sobol"};
 
 #define SETTING(name) .offset = offsetof(glint_settings, name)
 
@@ -25,12 +25,13 @@ static const param SETTINGS_PARAMS[] = {
     {.key = "height", .type = PARAM_INTEGER, SETTING(height), .def = {480}, .lo = 1, .hi = 65536,
      .meaning = "image height in pixels"},
     {.key = "samples", .type = PARAM_INTEGER, SETTING(samples_per_pixel), .def = {4}, .lo = 1, .hi = 4096,
-     .rule = is_square, .rule_text = "a square number from 1 to 4096 (1, 4, 9, 16, ...)",
-     .meaning = "samples per pixel, an N x N grid (4, the default, is 2 x 2)"},
-    {.key = "sampler", .type = PARAM_CHOICE, SETTING(sampler), .words = SAMPLERS, .word_count = 2,
-     .meaning = "regular: the centres of the N x N cells; jittered: one random point in each cell"},
+     .meaning = "samples per pixel; the regular and jittered samplers take a square number, an N x N grid "
+                "(4, the default, is 2 x 2); sobol takes any"},
+    {.key = "sampler", .type = PARAM_CHOICE, SETTING(sampler), .words = SAMPLERS, .word_count = 3,
+     .meaning = "regular: the centres of the N x N cells; jittered: one random point in each cell; sobol: "
+                "scrambled Sobol points, well spread for any count and each pixel its own pattern"},
     {.key = "seed", .type = PARAM_UINT32, SETTING(seed), .lo = 0, .hi = 4294967295.0,
-     .meaning = "changes the jittered pattern and a thin lens's samples only"},
+     .meaning = "changes every random choice: the jittered and sobol patterns, lens and light samples"},
     {.key = "depth", .type = PARAM_INTEGER, SETTING(max_depth), .def = {5}, .lo = 0, .hi = 64,
      .meaning = "recursion limit for reflected, refracted and see-through rays (0: none); fainter than 1/8192, or past 4096 a sample, they are not traced"},
     {.key = "background", .type = PARAM_COLOR, SETTING(background), .lo = 0, .hi = DBL_MAX,
@@ -87,6 +88,38 @@ static const param OCCLUSION_PARAMS[] = {
      .unit = "scene units", .meaning = "how far they look for what blocks the sky (0: as far as the scene goes)"},
 };
 
+static const char *const FILTERS[] = {"box", "tent", "gaussian", "mitchell", "lanczos"};
+
+/* settings.filter, a map of its own in a scene file. */
+static const param FILTER_PARAMS[] = {
+    {.key = "type", .type = PARAM_CHOICE, SETTING(filter), .words = FILTERS, .word_count = 5,
+     .meaning = "box: every sample alike; tent: falling linearly to the radius; gaussian: standard deviation "
+                "a third of the radius; mitchell: Mitchell-Netravali (B = C = 1/3), sharper with slight "
+                "ringing; lanczos: windowed sinc, sharpest with most ringing"},
+    {.key = "radius", .type = PARAM_NUMBER, SETTING(filter_radius), .lo = 0, .hi = 16, .unit = "pixels",
+     .meaning = "how far from a pixel's centre its samples reach (0: box 0.5, tent 1, gaussian 1.5, "
+                "mitchell 2, lanczos 3); wider is smoother"},
+};
+
+param_table filter_params(void)
+{
+    return PARAM_TABLE(FILTER_PARAMS);
+}
+
+/* settings.adaptive, a map of its own in a scene file. */
+static const param ADAPTIVE_PARAMS[] = {
+    {.key = "threshold", .type = PARAM_NUMBER, SETTING(adaptive_threshold), .def = {0.05}, .lo = 0, .hi = 1,
+     .meaning = "a pixel whose samples differ by more than this in any channel (0..1, as displayed) takes "
+                "more; lower is smoother and slower"},
+    {.key = "max_samples", .type = PARAM_INTEGER, SETTING(adaptive_max_samples), .def = {64}, .lo = 1,
+     .hi = 4096, .meaning = "the most samples a pixel takes, at least samples"},
+};
+
+param_table adaptive_params(void)
+{
+    return PARAM_TABLE(ADAPTIVE_PARAMS);
+}
+
 param_table occlusion_params(void)
 {
     return PARAM_TABLE(OCCLUSION_PARAMS);
@@ -131,13 +164,44 @@ glint_camera camera_default(void)
     return c;
 }
 
+const char *sampling_rule_broken(const glint_settings *s, glint_error *err)
+{
+    const char *sampler = SAMPLERS[s->sampler];
+    if (s->sampler != GLINT_SAMPLER_SOBOL && !is_square(s->samples_per_pixel)) {
+        error_set(err, GLINT_ERR_INVALID,
+                  "samples %d is not a square number: the %s sampler lays an N x N grid (1, 4, 9, 16, ...); "
+                  "sampler sobol takes any count",
+                  s->samples_per_pixel, sampler);
+        return "samples";
+    }
+    if (s->adaptive_max_samples != 0 && s->sampler != GLINT_SAMPLER_SOBOL) {
+        error_set(err, GLINT_ERR_INVALID,
+                  "adaptive sampling needs sampler sobol, whose points stay well spread as a pixel takes more; "
+                  "this scene's is %s",
+                  sampler);
+        return "adaptive";
+    }
+    if (s->adaptive_max_samples != 0 && s->adaptive_max_samples < s->samples_per_pixel) {
+        error_set(err, GLINT_ERR_INVALID, "adaptive max_samples %d is fewer than samples %d",
+                  s->adaptive_max_samples, s->samples_per_pixel);
+        return "max_samples";
+    }
+    return NULL;
+}
+
 glint_status settings_validate(const glint_settings *s, glint_error *err)
 {
     glint_status st = params_check(settings_params(), s, "settings", err);
     if (!st && s->occlusion_samples != 0)
         st = params_check(occlusion_params(), s, "ambient_occlusion", err);
+    if (!st)
+        st = params_check(filter_params(), s, "filter", err);
+    if (!st && s->adaptive_max_samples != 0)
+        st = params_check(adaptive_params(), s, "adaptive", err);
     if (st)
         return st;
+    if (sampling_rule_broken(s, err))
+        return GLINT_ERR_INVALID;
     /* Refused before anything is allocated: the render's float image takes
      * 12 bytes a pixel (3 GiB at the limit), and a size the system only
      * pretends to have would be found out pages into the render. */

@@ -1,13 +1,30 @@
 /* read_sections.c - the scene file's settings, camera and fog sections. */
 #include <math.h>
 #include <stdio.h>
+#include <string.h>
 #include "image/image_format.h"
 #include "scenefile/loader.h"
 #include "shading/fog.h"
 
+/* A map of settings under its own key in settings (ambient_occlusion,
+ * filter, adaptive): given, it starts from its table's defaults. */
+static void read_settings_map(loader *l, const ynode *settings, const char *key, param_table t)
+{
+    char quoted[40];
+    snprintf(quoted, sizeof quoted, "'%s'", key);
+    const ynode *n = yr_get(&l->r, settings, key);
+    if (!n || !yr_is_map(&l->r, n, quoted))
+        return;
+    const char *keys[8];
+    int count = param_keys(t, NULL, 0, keys, COUNT(keys));
+    yr_check_keys(&l->r, n, key, keys, count);
+    params_defaults(t, &l->settings);
+    read_params(l, n, t, key, &l->settings);
+}
+
 void read_settings(loader *l, const ynode *n)
 {
-    static const char *const extra_keys[] = {"output", "ambient_occlusion"};
+    static const char *const extra_keys[] = {"output", "ambient_occlusion", "filter", "adaptive"};
     if (!yr_is_map(&l->r, n, "settings"))
         return;
     l->settings_node = n;
@@ -15,13 +32,20 @@ void read_settings(loader *l, const ynode *n)
     int count = param_keys(settings_params(), extra_keys, COUNT(extra_keys), keys, COUNT(keys));
     yr_check_keys(&l->r, n, "settings", keys, count);
     read_params(l, n, settings_params(), "settings", &l->settings);
-    const ynode *occlusion = yr_get(&l->r, n, "ambient_occlusion");
-    if (occlusion && yr_is_map(&l->r, occlusion, "'ambient_occlusion'")) {
-        param_table t = occlusion_params();
-        count = param_keys(t, NULL, 0, keys, COUNT(keys));
-        yr_check_keys(&l->r, occlusion, "ambient_occlusion", keys, count);
-        params_defaults(t, &l->settings);
-        read_params(l, occlusion, t, "ambient_occlusion", &l->settings);
+    read_settings_map(l, n, "ambient_occlusion", occlusion_params());
+    read_settings_map(l, n, "filter", filter_params());
+    read_settings_map(l, n, "adaptive", adaptive_params());
+    /* Told at the key it is about, and mended so that it is told once. */
+    glint_error err;
+    const char *key = sampling_rule_broken(&l->settings, &err);
+    if (key) {
+        const ynode *adaptive = yr_get(&l->r, n, "adaptive");
+        const ynode *at = strcmp(key, "samples") == 0 ? yr_get(&l->r, n, "samples")
+                          : strcmp(key, "adaptive") == 0 ? adaptive
+                                                          : yr_get(&l->r, adaptive, "max_samples");
+        diag_error(&l->d, at ? at : n, &err);
+        l->settings.sampler = GLINT_SAMPLER_SOBOL;
+        l->settings.adaptive_max_samples = 0;
     }
     const ynode *out = yr_get(&l->r, n, "output");
     const char *path;

@@ -160,18 +160,27 @@ static void material_value(const plan *p, int i)
     ymap_end(&m);
 }
 
+/* A map of settings under its own key, on one line. */
+static void write_settings_map(const plan *p, ymap *m, const char *key, param_table t, const glint_settings *s)
+{
+    ymap_key(m, key);
+    ymap sub = ymap_begin(p->f, true, 0);
+    yw_params(&sub, t, s, true);
+    ymap_end(&sub);
+}
+
 static void write_settings(const plan *p)
 {
     const glint_scene *s = p->scene;
     fputs("settings:\n  ", p->f);
     ymap m = ymap_begin(p->f, false, 2);
     yw_params(&m, settings_params(), &s->settings, true);
-    if (s->settings.occlusion_samples > 0) {
-        ymap_key(&m, "ambient_occlusion");
-        ymap occlusion = ymap_begin(p->f, true, 0);
-        yw_params(&occlusion, occlusion_params(), &s->settings, true);
-        ymap_end(&occlusion);
-    }
+    if (s->settings.occlusion_samples > 0)
+        write_settings_map(p, &m, "ambient_occlusion", occlusion_params(), &s->settings);
+    if (s->settings.filter != GLINT_FILTER_BOX || s->settings.filter_radius != 0)
+        write_settings_map(p, &m, "filter", filter_params(), &s->settings);
+    if (s->settings.adaptive_max_samples > 0)
+        write_settings_map(p, &m, "adaptive", adaptive_params(), &s->settings);
     if (s->output) {
         ymap_key(&m, "output");
         yw_text(p->f, s->output);

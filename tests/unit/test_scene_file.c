@@ -347,6 +347,35 @@ static void test_settings_ambient_occlusion(void **state)
     glint_scene_free(s);
 }
 
+/* settings.filter and settings.adaptive: the box and no adaptive sampling
+ * unless given; adaptive given, a threshold of 0.05 and 64 samples at most
+ * unless it says; a filter's radius 0 (its own) unless it says. */
+static void test_settings_filter_and_adaptive(void **state)
+{
+    glint_scene *s = load_good("settings: {samples: 5, sampler: sobol}\n");
+    glint_settings st = glint_scene_get_settings(s);
+    assert_int_equal(st.samples_per_pixel, 5);
+    assert_int_equal(st.sampler, GLINT_SAMPLER_SOBOL);
+    assert_int_equal(st.filter, GLINT_FILTER_BOX);
+    assert_int_equal(st.adaptive_max_samples, 0);
+    glint_scene_free(s);
+    s = load_good("settings:\n  sampler: sobol\n  filter: {type: mitchell}\n  adaptive: {}\n");
+    st = glint_scene_get_settings(s);
+    assert_int_equal(st.filter, GLINT_FILTER_MITCHELL);
+    assert_exact(st.filter_radius, 0);
+    assert_int_equal(st.adaptive_max_samples, 64);
+    assert_exact(st.adaptive_threshold, 0.05);
+    glint_scene_free(s);
+    s = load_good("settings:\n  sampler: sobol\n  filter: {type: lanczos, radius: 2.5}\n"
+                  "  adaptive: {threshold: 0.2, max_samples: 4096}\n");
+    st = glint_scene_get_settings(s);
+    assert_int_equal(st.filter, GLINT_FILTER_LANCZOS);
+    assert_exact(st.filter_radius, 2.5);
+    assert_int_equal(st.adaptive_max_samples, 4096);
+    assert_exact(st.adaptive_threshold, 0.2);
+    glint_scene_free(s);
+}
+
 static void test_settings_other_values(void **state)
 {
     glint_scene *s = load_good("settings:\n"
@@ -1571,7 +1600,43 @@ static const bad_scene BAD[] = {
     {"samples_not_square",
      "settings:\n"
      "  samples: 8\n",
-     "bad.yaml:2:12: 'samples' must be a square number from 1 to 4096 (1, 4, 9, 16, ...), got 8", 1},
+     "bad.yaml:2:12: samples 8 is not a square number: the regular sampler lays an N x N grid (1, 4, 9, 16, "
+     "...); sampler sobol takes any count", 1},
+    {"samples_not_square_jittered",
+     "settings:\n"
+     "  sampler: jittered\n"
+     "  samples: 12\n",
+     "bad.yaml:3:12: samples 12 is not a square number: the jittered sampler lays an N x N grid (1, 4, 9, 16, "
+     "...); sampler sobol takes any count", 1},
+    {"adaptive_needs_sobol",
+     "settings:\n"
+     "  adaptive: {max_samples: 16}\n",
+     "bad.yaml:2:13: adaptive sampling needs sampler sobol, whose points stay well spread as a pixel takes more; "
+     "this scene's is regular", 1},
+    {"adaptive_max_below_samples",
+     "settings:\n"
+     "  sampler: sobol\n"
+     "  samples: 32\n"
+     "  adaptive: {threshold: 0.1, max_samples: 16}\n",
+     "bad.yaml:4:43: adaptive max_samples 16 is fewer than samples 32", 1},
+    {"adaptive_threshold_range",
+     "settings:\n"
+     "  sampler: sobol\n"
+     "  adaptive: {threshold: 2}\n",
+     "bad.yaml:3:25: 'threshold' must be from 0 to 1, got 2", 1},
+    {"filter_type",
+     "settings:\n"
+     "  filter: {type: gauss}\n",
+     "bad.yaml:2:18: 'type' must be box, tent, gaussian, mitchell or lanczos, got 'gauss' (did you mean "
+     "'gaussian'?)", 1},
+    {"filter_radius",
+     "settings:\n"
+     "  filter: {type: tent, radius: -1}\n",
+     "bad.yaml:2:32: 'radius' must be from 0 to 16 pixels, got -1", 1},
+    {"filter_key",
+     "settings:\n"
+     "  filter: {type: tent, width: 2}\n",
+     "bad.yaml:2:24: unknown key 'width' in filter", 1},
     {"samples_too_many",
      "settings:\n"
      "  samples: 4225\n",
@@ -1659,11 +1724,11 @@ static const bad_scene BAD[] = {
     {"sampler_hint",
      "settings:\n"
      "  sampler: jitterd\n",
-     "bad.yaml:2:12: 'sampler' must be regular or jittered, got 'jitterd' (did you mean 'jittered'?)", 1},
+     "bad.yaml:2:12: 'sampler' must be regular, jittered or sobol, got 'jitterd' (did you mean 'jittered'?)", 1},
     {"sampler_no_hint",
      "settings:\n"
      "  sampler: random\n",
-     "bad.yaml:2:12: 'sampler' must be regular or jittered, got 'random'", 1},
+     "bad.yaml:2:12: 'sampler' must be regular, jittered or sobol, got 'random'", 1},
     {"object_type_hint",
      "materials:\n"
      "  m: {}\n"
@@ -2136,7 +2201,7 @@ static void test_every_problem_in_order(void **state)
              "  - {type: box, material: m, min: [1, 1, 1], max: [0, 0, 0]}\n",
              0, &log, &err);
     assert_string_equal(log.all, "bad.yaml:2:10: 'width' must be a whole number from 1 to 65536, got '0'\n"
-                                 "bad.yaml:3:12: 'sampler' must be regular or jittered, got 'jitterd' (did you mean 'jittered'?)\n"
+                                 "bad.yaml:3:12: 'sampler' must be regular, jittered or sobol, got 'jitterd' (did you mean 'jittered'?)\n"
                                  "bad.yaml:4:15: 'fov' must be more than 0 and at most 360 degrees, got 0\n"
                                  "bad.yaml:6:19: unknown key 'colour' in material 'm' (did you mean 'color'?)\n"
                                  "bad.yaml:6:16: 'ambient' must be from 0 to 1, got 2\n"
@@ -2758,6 +2823,7 @@ int main(void)
         cmocka_unit_test(test_image_texture_from_a_file),
         cmocka_unit_test(test_material_every_key),
         cmocka_unit_test(test_settings_ambient_occlusion),
+        cmocka_unit_test(test_settings_filter_and_adaptive),
         cmocka_unit_test(test_environment),
         cmocka_unit_test(test_camera_focus_on),
         cmocka_unit_test(test_lights),

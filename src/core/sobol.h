@@ -1,0 +1,70 @@
+/* sobol.h - the two-dimensional Sobol sequence, scrambled: well spread
+ * sample points for any count, that stay well spread as a pixel takes more
+ * of them (adaptive sampling), each pixel with its own pattern.
+ *
+ * The first two dimensions of Sobol's sequence form a (0, 2)-sequence:
+ * every run of 2^m points starting at a multiple of 2^m puts exactly one
+ * point in each of the 2^m boxes of any shape 2^-a x 2^-b (a + b = m)
+ * that tile the square. Owen's scrambling (random flips of each bit, each
+ * flip chosen by the bits above it) keeps that property and makes every
+ * pixel's points an independent random pattern, so averages stay unbiased;
+ * it is done here as Laine and Karras's hash (Burley 2020, "Practical
+ * Hash-based Owen Scrambling"): on the bits reversed, multiplications by
+ * even numbers and additions carry each bit's influence only towards the
+ * more significant ones, which is a flip of each bit chosen by those
+ * below it. Shuffling a pixel's sample numbers the same way keeps every
+ * aligned run of 2^m together, and gives each pair of dimensions (the
+ * image position, the lens) its own order, so the pairs do not follow one
+ * another. */
+#ifndef GLINT_CORE_SOBOL_H
+#define GLINT_CORE_SOBOL_H
+
+#include <stdint.h>
+#include "core/hash.h"
+
+/* i's bits in the opposite order. */
+static inline uint32_t reverse_bits32(uint32_t i)
+{
+    i = (i << 16) | (i >> 16);
+    i = ((i & 0x00ff00ffU) << 8) | ((i & 0xff00ff00U) >> 8);
+    i = ((i & 0x0f0f0f0fU) << 4) | ((i & 0xf0f0f0f0U) >> 4);
+    i = ((i & 0x33333333U) << 2) | ((i & 0xccccccccU) >> 2);
+    return ((i & 0x55555555U) << 1) | ((i & 0xaaaaaaaaU) >> 1);
+}
+
+/* A bijection of 32-bit words in which bit b of the result depends only
+ * on bits 0..b of x: a nested random flip of x's bits from the least
+ * significant up, different for every seed. */
+static inline uint32_t scramble_upwards(uint32_t x, uint32_t seed)
+{
+    x += seed;
+    x ^= x * 0x6c50b47cU;
+    x ^= x * 0xb82f1e52U;
+    x ^= x * 0xc7afe638U;
+    x ^= x * 0x8d22f6e6U;
+    return x;
+}
+
+/* Owen's scrambling of a fraction of 2^32: each bit flipped by a choice
+ * that depends on the bits above it. */
+static inline uint32_t owen_scramble(uint32_t fraction, uint32_t seed)
+{
+    return reverse_bits32(scramble_upwards(reverse_bits32(fraction), seed));
+}
+
+/* Point i of the scrambled two-dimensional Sobol sequence with the given
+ * seed, in [0, 1)^2: index i shuffled within its aligned runs of each
+ * power of two, then each coordinate scrambled. The second coordinate's
+ * generator is Pascal's triangle modulo 2 (Sobol's direction numbers for
+ * the polynomial x + 1), the first's the identity (van der Corput). */
+static inline void sobol2_scrambled(uint32_t i, uint32_t seed, double *x, double *y)
+{
+    uint32_t index = owen_scramble(i, hash_u32(seed)), first = reverse_bits32(index), second = 0;
+    for (uint32_t column = 0x80000000U; index; index >>= 1, column ^= column >> 1)
+        if (index & 1)
+            second ^= column;
+    *x = (owen_scramble(first, hash_u32(seed ^ 0x5851f42dU)) >> 8) * (1.0 / 16777216.0);
+    *y = (owen_scramble(second, hash_u32(seed ^ 0x4c957f2dU)) >> 8) * (1.0 / 16777216.0);
+}
+
+#endif

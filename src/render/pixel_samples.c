@@ -1,0 +1,98 @@
+/* pixel_samples.c - the samplers: sample positions in the pixel and on the
+ * lens (pixel_samples.h). */
+#include "core/hash.h"
+#include "core/sobol.h"
+#include "render/pixel_samples.h"
+
+void pixel_sampler_init(pixel_sampler *ps, const glint_settings *s, bool lens)
+{
+    *ps = (pixel_sampler){.kind = s->sampler, .seed = s->seed, .lens = lens, .grid = 1};
+    while (ps->grid * ps->grid < s->samples_per_pixel)
+        ps->grid++;
+    pixel_filter_init(&ps->filter, s->filter, s->filter_radius);
+    ps->plain_box = s->filter == GLINT_FILTER_BOX && ps->filter.radius == 0.5;
+}
+
+static uint32_t gcd(uint32_t x, uint32_t y)
+{
+    while (y) {
+        uint32_t r = x % y;
+        x = y;
+        y = r;
+    }
+    return x;
+}
+
+void pixel_samples_start(const pixel_sampler *ps, const int px[RAY8], const int py[RAY8], pixel_block_samples *b)
+{
+    uint32_t cells = (uint32_t)(ps->grid * ps->grid);
+    bool patterned = ps->lens || ps->kind == GLINT_SAMPLER_SOBOL;
+    for (int i = 0; i < RAY8; i++) {
+        b->px[i] = px[i];
+        b->py[i] = py[i];
+        if (!patterned)
+            continue;
+        uint32_t h = hash4((uint32_t)px[i], (uint32_t)py[i], 0, ps->seed ^ 0x4c454e53U);
+        b->pattern[i] = h;
+        if (!ps->lens || ps->kind == GLINT_SAMPLER_SOBOL)
+            continue;
+        b->shuffle_a[i] = 1 + hash_u32(h) % cells;
+        b->shuffle_b[i] = h % cells;
+        while (gcd(b->shuffle_a[i], cells) != 1)
+            b->shuffle_a[i]++;
+    }
+}
+
+/* Sample k's point in lane i's pixel, in [0, 1)^2. */
+static void point_in_pixel(const pixel_sampler *ps, const pixel_block_samples *b, int i, int k, double *u,
+                           double *v)
+{
+    int n = ps->grid, sx = k % n, sy = k / n;
+    switch (ps->kind) {
+    case GLINT_SAMPLER_SOBOL: sobol2_scrambled((uint32_t)k, b->pattern[i], u, v); return;
+    case GLINT_SAMPLER_JITTERED: {
+        uint32_t h = hash4((uint32_t)b->px[i], (uint32_t)b->py[i], (uint32_t)k, ps->seed);
+        *u = (sx + hash_unit(h)) / n;
+        *v = (sy + hash_unit(hash_u32(h ^ 0x9e3779b9U))) / n;
+        return;
+    }
+    default: regular_point(n, k, u, v);
+    }
+}
+
+/* Sample k's point on lane i's lens, in [0, 1)^2: for the grid samplers,
+ * a hashed point in the lens cell its image cell is shuffled to. */
+static void point_on_lens(const pixel_sampler *ps, const pixel_block_samples *b, int i, int k, double *u, double *v)
+{
+    if (ps->kind == GLINT_SAMPLER_SOBOL) {
+        sobol2_scrambled((uint32_t)k, hash_u32(b->pattern[i] ^ 0x4c454e53U), u, v);
+        return;
+    }
+    int n = ps->grid;
+    uint32_t cells = (uint32_t)(n * n);
+    int cell = (int)(((uint64_t)b->shuffle_a[i] * (uint32_t)k + b->shuffle_b[i]) % cells);
+    uint32_t h = hash_u32(b->pattern[i] ^ (uint32_t)(cell + 1) * 0x9e3779b9U);
+    *u = (cell % n + hash_unit(h)) / n;
+    *v = (cell / n + hash_unit(hash_u32(h ^ 0x85ebca6bU))) / n;
+}
+
+void pixel_samples_at_any(const pixel_sampler *ps, const pixel_block_samples *b, int k, double x[RAY8],
+                          double y[RAY8], camera_lens8 *lens, bool negative[RAY8])
+{
+    for (int i = 0; i < RAY8; i++) {
+        double u, v;
+        point_in_pixel(ps, b, i, k, &u, &v);
+        negative[i] = false;
+        if (ps->plain_box) {
+            x[i] = b->px[i] + u;
+            y[i] = b->py[i] + v;
+        } else {
+            bool below_x, below_y;
+            x[i] = b->px[i] + 0.5 + pixel_filter_offset(&ps->filter, u, &below_x);
+            y[i] = b->py[i] + 0.5 + pixel_filter_offset(&ps->filter, v, &below_y);
+            negative[i] = below_x != below_y;
+        }
+        if (ps->lens)
+            point_on_lens(ps, b, i, k, &lens->u[i], &lens->v[i]);
+    }
+}

@@ -1,0 +1,274 @@
+/* test_sampling.c - anti-aliasing: the scrambled Sobol points' strata, the
+ * reconstruction filters (each integrates to 1, its samples fall as it
+ * does, and an edge seen through it has the filter's integral as its
+ * profile), adaptive sampling spending samples only where a pixel's
+ * samples differ, and identical bytes for any thread count and tile size
+ * with every one of them on. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <math.h>
+#include <stdbool.h>
+#include <string.h>
+#include "glint.h"
+#include "core/sobol.h"
+#include "render/filter.h"
+
+#define assert_near(a, b, eps) assert_true(fabs((double)(a) - (double)(b)) <= (eps))
+
+/* Every aligned run of 2^m of the first 256 points, for m up to 8, puts
+ * one point in each box 2^-a x 2^-(m-a) of the square, for any seed. */
+static void test_sobol_points_fill_every_stratum(void **state)
+{
+    (void)state;
+    for (uint32_t seed = 0; seed < 64; seed++) {
+        double x[256], y[256];
+        for (uint32_t i = 0; i < 256; i++)
+            sobol2_scrambled(i, seed * 0x9e3779b9U, &x[i], &y[i]);
+        for (int m = 0; m <= 8; m++) {
+            int run = 1 << m;
+            for (int start = 0; start < 256; start += run) {
+                for (int a = 0; a <= m; a++) {
+                    int across = 1 << a, down = 1 << (m - a), seen[256] = {0};
+                    for (int i = start; i < start + run; i++)
+                        seen[(int)(x[i] * across) * down + (int)(y[i] * down)]++;
+                    for (int box = 0; box < run; box++)
+                        assert_int_equal(seen[box], 1);
+                }
+            }
+        }
+    }
+}
+
+static const glint_filter FILTERS[] = {GLINT_FILTER_BOX, GLINT_FILTER_TENT, GLINT_FILTER_GAUSSIAN,
+                                       GLINT_FILTER_MITCHELL, GLINT_FILTER_LANCZOS};
+
+/* The integral of the filter's profile from -radius to x, by the midpoint rule. */
+static double integral_to(const pixel_filter *f, double x)
+{
+    const int steps = 200000;
+    double from = -f->radius, step = (x - from) / steps, sum = 0;
+    for (int i = 0; i < steps; i++)
+        sum += pixel_filter_value(f, from + (i + 0.5) * step) * step;
+    return sum;
+}
+
+static void test_filters_integrate_to_one(void **state)
+{
+    (void)state;
+    for (size_t t = 0; t < sizeof FILTERS / sizeof FILTERS[0]; t++) {
+        for (int r = 0; r < 3; r++) {
+            pixel_filter f;
+            pixel_filter_init(&f, FILTERS[t], (double[]){0, 1.25, 4}[r]);
+            assert_near(integral_to(&f, f.radius), 1, 1e-4);
+            assert_near(pixel_filter_value(&f, f.radius), 0, 0);
+        }
+    }
+    /* The defaults, and the lobes that go below zero. */
+    pixel_filter f;
+    pixel_filter_init(&f, GLINT_FILTER_MITCHELL, 0);
+    assert_near(f.radius, 2, 0);
+    assert_true(pixel_filter_value(&f, 1.5) < 0);
+    pixel_filter_init(&f, GLINT_FILTER_LANCZOS, 0);
+    assert_near(f.radius, 3, 0);
+    assert_true(pixel_filter_value(&f, 1.5) < 0 && pixel_filter_value(&f, 2.5) > 0);
+}
+
+/* A filter's offsets, for evenly spread numbers, counted with their signs,
+ * fall as the filter does: their signed share below x times the whole of
+ * |f| is f's integral up to x. */
+static void test_filter_offsets_fall_as_the_filter(void **state)
+{
+    (void)state;
+    enum { N = 100000 };
+    for (size_t t = 0; t < sizeof FILTERS / sizeof FILTERS[0]; t++) {
+        pixel_filter f;
+        pixel_filter_init(&f, FILTERS[t], 0);
+        double magnitude = 0, step = 2 * f.radius / 200000;
+        for (int i = 0; i < 200000; i++)
+            magnitude += fabs(pixel_filter_value(&f, -f.radius + (i + 0.5) * step)) * step;
+        for (double x = -f.radius; x <= f.radius; x += f.radius / 4) {
+            long below = 0;
+            double previous = -INFINITY;
+            for (int k = 0; k < N; k++) {
+                bool negative;
+                double offset = pixel_filter_offset(&f, (k + 0.5) / N, &negative);
+                assert_true(offset >= previous && fabs(offset) <= f.radius);
+                previous = offset;
+                below += offset < x ? (negative ? -1 : 1) : 0;
+            }
+            assert_near(magnitude * below / N, integral_to(&f, x), 2e-3);
+        }
+    }
+}
+
+/* A 32 x 4 image, one unit a pixel, of a grey background and a lighter
+ * wall on the right of x = EDGE pixels, through the given filter with 1024
+ * Sobol samples a pixel. */
+#define EDGE 16.3
+static glint_image edge_image(glint_filter filter, double radius, int samples, int adaptive_max,
+                              glint_render_stats *stats)
+{
+    glint_scene *s = glint_scene_new();
+    assert_non_null(s);
+    glint_settings st = glint_settings_default();
+    st.width = 32;
+    st.height = 4;
+    st.samples_per_pixel = samples;
+    st.sampler = GLINT_SAMPLER_SOBOL;
+    st.filter = filter;
+    st.filter_radius = radius;
+    st.background = (glint_color){0.25, 0.25, 0.25};
+    st.adaptive_max_samples = adaptive_max;
+    st.adaptive_threshold = 0.05;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_camera cam = {.position = {0, 0, 10}, .look_at = {0, 0, 0}, .up = {0, 1, 0}, .vfov_degrees = 45,
+                        .kind = GLINT_CAMERA_ORTHOGRAPHIC, .view_width = 32};
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    glint_material m = glint_material_default();
+    m.color = (glint_color){0.75, 0.75, 0.75};
+    m.ambient = 1;
+    m.diffuse = m.specular = 0;
+    int wall = glint_scene_add_material(s, NULL, &m, NULL);
+    double x = EDGE - 16;
+    glint_shape quad = {.kind = GLINT_SHAPE_POLYGON,
+                        .point_count = 4,
+                        .points = {{x, -50, 0}, {x + 100, -50, 0}, {x + 100, 50, 0}, {x, 50, 0}}};
+    assert_true(glint_scene_add_shape(s, &quad, wall, NULL, NULL) >= 0);
+    glint_image img;
+    glint_render_options o = {.threads = 2};
+    glint_error err;
+    if (glint_render(s, &o, &img, stats, &err))
+        fail_msg("render failed: %s", err.message);
+    glint_scene_free(s);
+    return img;
+}
+
+/* Across a sharp edge each pixel is the filter's integral over the wall's
+ * side: 0.25 + 0.5 x the share of the filter about the pixel's centre
+ * that lies right of the edge, overshoot and ringing included. */
+static void test_edge_profile_is_the_filters_integral(void **state)
+{
+    (void)state;
+    for (size_t t = 0; t < sizeof FILTERS / sizeof FILTERS[0]; t++) {
+        glint_image img = edge_image(FILTERS[t], 0, 1024, 0, NULL);
+        pixel_filter f;
+        pixel_filter_init(&f, FILTERS[t], 0);
+        for (int x = 8; x < 24; x++) {
+            double centre = x + 0.5, right = 1 - integral_to(&f, fmin(fmax(EDGE - centre, -f.radius), f.radius));
+            for (int y = 0; y < 4; y++)
+                assert_near(img.pixels[3 * (y * 32 + x)], 0.25 + 0.5 * right, 0.006);
+        }
+        glint_image_free(&img);
+    }
+    /* Mitchell's overshoot is really there: a pixel past the edge is lighter than the wall. */
+    glint_image img = edge_image(GLINT_FILTER_MITCHELL, 0, 1024, 0, NULL);
+    assert_true(img.pixels[3 * 17] > 0.755);
+    glint_image_free(&img);
+}
+
+/* Adaptive sampling: only the pixels the edge crosses (column 16, with
+ * the box of radius 0.5) see samples that differ, and each takes the most
+ * allowed; the others keep the first 4. */
+static void test_adaptive_sampling_spends_samples_on_the_edge(void **state)
+{
+    (void)state;
+    glint_render_stats stats;
+    glint_image img = edge_image(GLINT_FILTER_BOX, 0, 4, 40, &stats);
+    assert_int_equal(stats.samples, 32 * 4 * 4 + 4 * (40 - 4));
+    /* With its 40 samples the edge pixel is within a sample's worth of the wall's share, 0.7. */
+    for (int y = 0; y < 4; y++)
+        assert_near(img.pixels[3 * (y * 32 + 16)], 0.25 + 0.5 * 0.7, 0.5 / 40 + 1e-6);
+    glint_image_free(&img);
+}
+
+/* Every new sampling feature at once, with a thin lens: the same bytes for
+ * 1, 2 and 7 threads and another tile size; and not the image without them. */
+static void test_identical_bytes_with_every_sampling_feature(void **state)
+{
+    (void)state;
+    glint_error err;
+    glint_scene *s = glint_scene_seed_room(&err);
+    assert_non_null(s);
+    glint_settings st = glint_scene_get_settings(s);
+    st.width = 72;
+    st.height = 56;
+    glint_image images[5];
+    glint_render_stats stats[5];
+    size_t bytes = (size_t)st.width * st.height * 3 * sizeof(float);
+    for (int f = GLINT_FILTER_TENT; f <= GLINT_FILTER_LANCZOS; f++) {
+        st.samples_per_pixel = 3;
+        st.sampler = GLINT_SAMPLER_SOBOL;
+        st.filter = (glint_filter)f;
+        st.adaptive_max_samples = 12;
+        st.adaptive_threshold = 0.1;
+        assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+        glint_camera cam = glint_scene_get_camera(s);
+        cam.kind = GLINT_CAMERA_THIN_LENS;
+        cam.aperture = 0.5;
+        assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+        glint_render_options o[] = {{.threads = 1}, {.threads = 2}, {.threads = 7}, {.threads = 3, .tile_size = 7}};
+        for (int i = 0; i < 4; i++) {
+            assert_int_equal(glint_render(s, &o[i], &images[i], &stats[i], NULL), GLINT_OK);
+            if (i > 0) {
+                assert_memory_equal(images[0].pixels, images[i].pixels, bytes);
+                assert_int_equal(stats[0].samples, stats[i].samples);
+            }
+        }
+        /* Some pixels, not all, took more samples. */
+        uint64_t pixels = (uint64_t)st.width * st.height;
+        assert_true(stats[0].samples > 3 * pixels && stats[0].samples < 12 * pixels);
+        st.adaptive_max_samples = 0;
+        assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+        assert_int_equal(glint_render(s, &o[1], &images[4], &stats[4], NULL), GLINT_OK);
+        assert_int_equal(stats[4].samples, 3 * pixels);
+        assert_memory_not_equal(images[0].pixels, images[4].pixels, bytes);
+        for (int i = 0; i < 5; i++)
+            glint_image_free(&images[i]);
+    }
+    glint_scene_free(s);
+}
+
+/* The rules between the sampling settings, with the words a user sees. */
+static void test_sampling_settings_are_checked(void **state)
+{
+    (void)state;
+    glint_scene *s = glint_scene_new();
+    glint_settings st = glint_settings_default();
+    glint_error err;
+    st.samples_per_pixel = 8;
+    assert_int_equal(glint_scene_set_settings(s, &st, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "samples 8 is not a square number: the regular sampler lays an N x N grid "
+                                     "(1, 4, 9, 16, ...); sampler sobol takes any count");
+    st.sampler = GLINT_SAMPLER_SOBOL;
+    assert_int_equal(glint_scene_set_settings(s, &st, &err), GLINT_OK);
+    st.adaptive_max_samples = 4;
+    assert_int_equal(glint_scene_set_settings(s, &st, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "adaptive max_samples 4 is fewer than samples 8");
+    st.sampler = GLINT_SAMPLER_JITTERED;
+    st.samples_per_pixel = 4;
+    assert_int_equal(glint_scene_set_settings(s, &st, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "adaptive sampling needs sampler sobol, whose points stay well spread as a "
+                                     "pixel takes more; this scene's is jittered");
+    st.adaptive_max_samples = 0;
+    st.filter_radius = 17;
+    assert_int_equal(glint_scene_set_settings(s, &st, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "filter radius must be from 0 to 16 pixels, got 17");
+    glint_scene_free(s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_sobol_points_fill_every_stratum),
+        cmocka_unit_test(test_filters_integrate_to_one),
+        cmocka_unit_test(test_filter_offsets_fall_as_the_filter),
+        cmocka_unit_test(test_edge_profile_is_the_filters_integral),
+        cmocka_unit_test(test_adaptive_sampling_spends_samples_on_the_edge),
+        cmocka_unit_test(test_identical_bytes_with_every_sampling_feature),
+        cmocka_unit_test(test_sampling_settings_are_checked),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
