@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # glint-mpi (src/mpi/), found beside glint: the default scene and every
 # example scene render to the bytes glint gives, on 1, 2, 3, 4 and 7 ranks
-# with various thread counts, the regular and the jittered sampler; a scene
+# with various thread counts, the regular and the jittered sampler, and
+# the sobol sampler with a filter and adaptive sampling; a scene
 # error is reported once, by rank 0, with glint's message, and every rank
 # exits with glint's code, writing nothing; bad flags likewise. (The
 # scene's files sent by rank 0: mpi_files.sh; signals, a rank killed and
@@ -42,6 +43,26 @@ for i in "${!ranks[@]}"; do
 done
 same 3 1 jittered.exr "" --sampler jittered --spp 9 --exr-pixel float
 [ "$full" -eq 0 ] || same 7 2 jittered.png "" --sampler jittered --spp 4 --seed 7
+
+# Sobol points through a filter with negative lobes, adaptive sampling, a
+# thin lens and an area light, all at once.
+cat >anti-aliasing.yaml <<'YAML'
+glint: 1
+settings:
+  samples: 3
+  sampler: sobol
+  filter: { type: mitchell }
+  adaptive: { threshold: 0.05, max_samples: 12 }
+camera: { type: thin_lens, position: [0, 1.5, 5], look_at: [0, 0.5, 0], aperture: 0.15 }
+textures: { floor: { type: checker, colors: [[0.9, 0.9, 0.9], [0.2, 0.2, 0.2]], size: 0.25 } }
+materials: { floor: { texture: floor }, ball: { color: [0.8, 0.3, 0.2], roughness: 0.3, reflectivity: 0.5 } }
+lights: [{ type: disk, position: [0, 4, 0], direction: [0, -1, 0], radius: 1, samples: 4 }]
+objects:
+  - { type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: floor }
+  - { type: sphere, center: [0, 0.6, 0], radius: 0.6, material: ball }
+YAML
+same 3 2 anti-aliasing.exr anti-aliasing.yaml --exr-pixel float
+same 7 1 anti-aliasing.png anti-aliasing.yaml
 
 # Every example scene, each on another rank count (two under the sanitizers).
 i=0
