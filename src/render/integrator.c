@@ -342,6 +342,7 @@ __attribute__((noinline)) static void ambient_occlusion8(tracer *t, const bool f
     int rays[ACCEL_PACKET] = {0}, most = 0;
     uint32_t rot[ACCEL_PACKET];
     color seen[ACCEL_PACKET];
+    vec3 e1[ACCEL_PACKET], e2[ACCEL_PACKET]; /* each lane's frame about its normal */
     for (int i = 0; i < ACCEL_PACKET; i++) {
         seen[i] = rgb(0, 0, 0);
         if (!found[i])
@@ -350,6 +351,10 @@ __attribute__((noinline)) static void ambient_occlusion8(tracer *t, const bool f
         rays[i] = n < 1 ? 1 : n > st->occlusion_samples ? st->occlusion_samples : (int)n;
         most = rays[i] > most ? rays[i] : most;
         rot[i] = hash_u32(key[i] ^ 0x41f3a9c7U);
+        /* Built here, not for each of the lane's rays: the normal is the same for all. */
+        vec3 a = fabs(sp[i].ns.x) > 0.9 ? v3(0, 1, 0) : v3(1, 0, 0);
+        e1[i] = v3_normalize(v3_cross(a, sp[i].ns));
+        e2[i] = v3_cross(sp[i].ns, e1[i]);
     }
     for (int j = 0; j < most && !stopping(t); j++) {
         ray8 shadow;
@@ -362,10 +367,8 @@ __attribute__((noinline)) static void ambient_occlusion8(tracer *t, const bool f
             double u[2], x, y;
             hammersley(rot[i], j, rays[i], u);
             concentric_disk(u[0], u[1], &x, &y);
-            vec3 a = fabs(sp[i].ns.x) > 0.9 ? v3(0, 1, 0) : v3(1, 0, 0);
-            vec3 e1 = v3_normalize(v3_cross(a, sp[i].ns)), e2 = v3_cross(sp[i].ns, e1);
             vec3 d = v3_add(v3_scale(sp[i].ns, sqrt(fmax(0, 1 - x * x - y * y))),
-                            v3_add(v3_scale(e1, x), v3_scale(e2, y)));
+                            v3_add(v3_scale(e1[i], x), v3_scale(e2[i], y)));
             if (!(v3_dot(d, sp[i].n) > 0))
                 continue; /* into the surface: blocked */
             if (!any)
