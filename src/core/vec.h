@@ -37,6 +37,25 @@ static inline vec3 v3_madd(vec3 a, vec3 b, double s) { return v3(a.x + b.x * s, 
 static inline vec3 ray_at(const ray *r, double t) { return v3_madd(r->o, r->d, t); }
 static inline int v3_is_finite(vec3 a) { return isfinite(a.x) && isfinite(a.y) && isfinite(a.z); }
 
+/* Unit vectors u and v that make an orthonormal frame with unit vector n.
+ * It is the one frame glint builds about a direction: the texture axes of
+ * planes and box faces, and the frame in which a sphere light's cone, a
+ * rough surface's lobe and ambient occlusion's hemisphere are sampled. As
+ * texture axes, seen from the side n points to, u runs right and v runs
+ * down, as in an image. Planes more than 45 degrees from horizontal are
+ * walls: u is horizontal, and v is -y on a vertical wall. The rest are
+ * floors and ceilings: u is +x on a floor, -x on a ceiling, and v is +z on
+ * both. */
+static inline void plane_basis(vec3 n, vec3 *u, vec3 *v)
+{
+    /* Walls measure u from up; floors from -z, which makes their u +x.
+     * Either reference is at least 45 degrees from n, so the cross product
+     * stays well conditioned. */
+    vec3 ref = n.y * n.y > 0.5 ? v3(0, 0, -1) : v3(0, 1, 0);
+    *u = v3_normalize(v3_cross(ref, n));
+    *v = v3_cross(*u, n);
+}
+
 /* Rays side by side in a packet. */
 #define RAY8 8
 

@@ -17,16 +17,6 @@ static glint_status plane_init(shape *s, glint_error *err)
     return GLINT_OK;
 }
 
-void plane_basis(vec3 n, vec3 *u, vec3 *v)
-{
-    /* Walls measure u from up; floors from -z, which makes their u +x.
-     * Either reference is at least 45 degrees from n, so the cross product
-     * stays well conditioned. */
-    vec3 ref = n.y * n.y > 0.5 ? v3(0, 0, -1) : v3(0, 1, 0);
-    *u = v3_normalize(v3_cross(ref, n));
-    *v = v3_cross(*u, n);
-}
-
 static bool plane_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
     double t;

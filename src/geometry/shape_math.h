@@ -8,13 +8,6 @@
 #include <stdbool.h>
 #include "geometry/shape.h"
 
-/* The texture axes of a plane with unit normal n. Seen from the side n
- * points to, u runs right and v runs down, as in an image. Planes more than
- * 45 degrees from horizontal are walls: u is horizontal, and v is -y on a
- * vertical wall. The rest are floors and ceilings: u is +x on a floor, -x
- * on a ceiling, and v is +z on both. Box faces share it. */
-void plane_basis(vec3 n, vec3 *u, vec3 *v);
-
 /* Candidate hits are offered one by one to best, which starts as {tmax, 0}
  * and keeps the nearest in (tmin, tmax); the first offered wins a tie. */
 static inline void hit_offer(shape_hit *best, double tmin, double t, int part)

@@ -352,9 +352,7 @@ __attribute__((noinline)) static void ambient_occlusion8(tracer *t, const bool f
         most = rays[i] > most ? rays[i] : most;
         rot[i] = hash_u32(key[i] ^ 0x41f3a9c7U);
         /* Built here, not for each of the lane's rays: the normal is the same for all. */
-        vec3 a = fabs(sp[i].ns.x) > 0.9 ? v3(0, 1, 0) : v3(1, 0, 0);
-        e1[i] = v3_normalize(v3_cross(a, sp[i].ns));
-        e2[i] = v3_cross(sp[i].ns, e1[i]);
+        plane_basis(sp[i].ns, &e1[i], &e2[i]);
     }
     for (int j = 0; j < most && !stopping(t); j++) {
         ray8 shadow;

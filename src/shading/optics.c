@@ -21,8 +21,8 @@ bool optics_refract(vec3 d, vec3 n, double eta, vec3 *out)
 vec3 optics_lobe(vec3 d, vec3 side, double exponent, double u1, double u2)
 {
     double cos_t = pow(1 - u1, 1 / (exponent + 1)), sin_t = sqrt(fmax(0, 1 - cos_t * cos_t)), phi = 2 * M_PI * u2;
-    vec3 a = fabs(d.x) > 0.9 ? v3(0, 1, 0) : v3(1, 0, 0);
-    vec3 u = v3_normalize(v3_cross(a, d)), v = v3_cross(d, u);
+    vec3 u, v;
+    plane_basis(d, &u, &v);
     vec3 out = v3_add(v3_scale(d, cos_t), v3_add(v3_scale(u, sin_t * cos(phi)), v3_scale(v, sin_t * sin(phi))));
     double behind = v3_dot(out, side);
     return behind < 0 ? v3_madd(out, side, -2 * behind) : out;

@@ -3,7 +3,6 @@
  * every sample lands on the half facing the point and none is wasted. */
 #include <math.h>
 #include <stddef.h>
-#include "geometry/shape_math.h"
 #include "shading/light.h"
 
 static glint_status sphere_light_init(light *l, glint_error *err)
