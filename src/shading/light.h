@@ -40,6 +40,7 @@ typedef struct light_kind light_kind;
 typedef struct emitter_triangle {
     vec3 a, b, c;
     vec3 normal;              /* unit, on the side it glows: by the winding */
+    double area;              /* found once: every sample of it divides by it */
     color radiance;
 } emitter_triangle;
 

@@ -27,9 +27,8 @@ static bool mesh_emitter_sample(const light *l, vec3 p, double u1, double u2, li
     double u = (u1 - before) / share;
     u = u < 1 ? u : 0.99999999999999989;
     const emitter_triangle *tri = &l->triangles[t];
-    double area = v3_length(v3_cross(v3_sub(tri->b, tri->a), v3_sub(tri->c, tri->a))) / 2;
     vec3 q = triangle_point(tri->a, tri->b, tri->c, u, u2);
-    return light_surface_point(p, q, tri->normal, share / area, tri->radiance, true, out);
+    return light_surface_point(p, q, tri->normal, share / tri->area, tri->radiance, true, out);
 }
 
 const light_kind mesh_emitter = {.name = "emissive mesh", .sample = mesh_emitter_sample};
@@ -74,8 +73,9 @@ bool emitter_for_instance(light *l, const mesh *m, const instance *inst, const m
         double twice_area = v3_length(cross);
         if (!(twice_area > 0) || !isfinite(twice_area))
             continue; /* degenerate: never hit, never lit from */
-        tris[kept] = (emitter_triangle){v[0], v[1], v[2], v3_scale(cross, 1 / twice_area), e};
-        total += twice_area / 2 * brightness(e);
+        tris[kept] = (emitter_triangle){.a = v[0], .b = v[1], .c = v[2], .normal = v3_scale(cross, 1 / twice_area),
+                                        .area = twice_area / 2, .radiance = e};
+        total += tris[kept].area * brightness(e);
         cumulative[kept++] = total;
     }
     if (kept == 0 || !isfinite(total)) {
