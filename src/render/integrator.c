@@ -406,9 +406,9 @@ __attribute__((noinline)) static void area_lights_seen(const tracer *t, const ra
             continue;
         ray ri = ray8_get(r, i);
         double nearest = found[i] ? sp[i].hit.t : t->reach, at;
-        for (int l = 0; l < scene->light_count; l++) {
-            const light *li = &scene->lights[l];
-            if (!li->kind->delta && light_seen(li, &ri, nearest, &at)) {
+        for (int l = 0; l < scene->area_light_count; l++) {
+            const light *li = &scene->lights[scene->area_lights[l]];
+            if (light_seen(li, &ri, nearest, &at)) {
                 nearest = sp[i].hit.t = at;
                 glows[i] = true;
                 found[i] = false;

@@ -44,6 +44,7 @@ void glint_scene_free(glint_scene *s)
     id_table_free(&s->material_names);
     free(s->shapes);
     free(s->lights);
+    free(s->area_lights);
     for (int i = 0; i < s->emitter_count; i++)
         light_release(&s->emitters[i]);
     free(s->emitters);
@@ -345,7 +346,12 @@ int glint_scene_add_light(glint_scene *scene, const glint_light *desc, glint_err
     if (grow((void **)&scene->lights, &scene->light_cap, scene->light_count, sizeof(light), "lights", err) ||
         light_init(&scene->lights[scene->light_count], desc, err))
         return -1;
-    scene->area_light_count += !scene->lights[scene->light_count].kind->delta;
+    if (!scene->lights[scene->light_count].kind->delta) {
+        if (grow((void **)&scene->area_lights, &scene->area_light_cap, scene->area_light_count, sizeof(int), "lights",
+                 err))
+            return -1;
+        scene->area_lights[scene->area_light_count++] = scene->light_count;
+    }
     return scene->light_count++;
 }
 

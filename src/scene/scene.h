@@ -33,7 +33,11 @@ struct glint_scene {
     light *lights;
     int light_count;
     size_t light_cap;
-    int area_light_count;     /* lights that are not delta lights: camera rays can see them */
+    /* The lights that are not delta lights, which camera rays can see, as
+     * indices into `lights`: a ray looks for those alone. */
+    int *area_lights;
+    int area_light_count;
+    size_t area_light_cap;
     light *emitters;          /* the emissive shapes and meshes as lights (light.h), */
     int emitter_count;        /* made as they are added, apart from `lights` */
     size_t emitter_cap;

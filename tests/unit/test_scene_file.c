@@ -838,6 +838,17 @@ static void test_area_lights(void **state)
     assert_exact(l->radius, 2);
     assert_int_equal(l->samples, 1);
     glint_scene_free(s);
+    /* Among delta lights, the area lights are listed by their index, as
+     * camera rays look through that list alone. */
+    s = load_good("lights:\n"
+                  "  - {type: point, position: [0, 5, 0]}\n"
+                  "  - {type: sphere, position: [1, 2, 3], radius: 0.5}\n"
+                  "  - {type: directional, direction: [0, -1, 0]}\n"
+                  "  - {type: disk, position: [0, 3, 0], direction: [0, -1, 0], radius: 2}\n");
+    assert_int_equal(s->area_light_count, 2);
+    assert_int_equal(s->area_lights[0], 1);
+    assert_int_equal(s->area_lights[1], 3);
+    glint_scene_free(s);
 }
 
 /* --------------------------------------------------------------- shapes */
