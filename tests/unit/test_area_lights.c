@@ -14,6 +14,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "glint.h"
+#include "one_sample_scene.h"
 #include "scene/scene.h"
 
 #ifndef M_PI
@@ -29,17 +30,9 @@
  * white floor (diffuse 1, no highlight) at y = 0. */
 static glint_scene *floor_seen(int w, int h, double view, glint_vec3 eye)
 {
-    glint_scene *s = glint_scene_new();
-    assert_non_null(s);
-    glint_settings st = glint_settings_default();
-    st.width = w;
-    st.height = h;
-    st.samples_per_pixel = 1;
-    st.ambient_light = (glint_color){0, 0, 0};
-    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
     glint_camera cam = {.kind = GLINT_CAMERA_ORTHOGRAPHIC, .position = eye, .look_at = {0, 0, 0},
                         .up = {0, 0, -1}, .vfov_degrees = 40, .view_width = view};
-    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    glint_scene *s = one_sample_scene(w, h, (glint_color){0, 0, 0}, cam);
     glint_material m = glint_material_default();
     m.specular = 0;
     int white = glint_scene_add_material(s, NULL, &m, NULL);
@@ -193,19 +186,15 @@ static void test_penumbra_of_a_ball(void **state)
     glint_image_free(&open);
 }
 
-/* A camera looking along -z at the origin, one sample a pixel, no ambient. */
+/* A camera looking along -z at the origin, one sample a pixel, no ambient,
+ * a grey background. */
 static glint_scene *looking_down_z(int w, int h)
 {
-    glint_scene *s = glint_scene_new();
-    glint_settings st = glint_settings_default();
-    st.width = w;
-    st.height = h;
-    st.samples_per_pixel = 1;
-    st.ambient_light = (glint_color){0, 0, 0};
+    glint_camera cam = {.position = {0, 0, 10}, .look_at = {0, 0, 0}, .up = {0, 1, 0}, .vfov_degrees = 30};
+    glint_scene *s = one_sample_scene(w, h, (glint_color){0, 0, 0}, cam);
+    glint_settings st = glint_scene_get_settings(s);
     st.background = (glint_color){0.25, 0.25, 0.25};
     assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
-    glint_camera cam = {.position = {0, 0, 10}, .look_at = {0, 0, 0}, .up = {0, 1, 0}, .vfov_degrees = 30};
-    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
     return s;
 }
 

@@ -13,6 +13,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include "glint.h"
+#include "one_sample_scene.h"
 
 #define assert_near(a, b, eps) assert_true(fabs((double)(a) - (double)(b)) <= (eps))
 
@@ -50,13 +51,7 @@ static const char *sky_path(void)
  * seen by camera cam over W x H pixels, one sample each. */
 static glint_image render_sky(glint_camera cam, glint_environment env, int threads)
 {
-    glint_scene *s = glint_scene_new();
-    glint_settings st = glint_settings_default();
-    st.width = W;
-    st.height = H;
-    st.samples_per_pixel = 1;
-    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
-    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    glint_scene *s = one_sample_scene(W, H, (glint_color){1, 1, 1}, cam);
     glint_texture t = glint_texture_default(GLINT_TEXTURE_IMAGE);
     t.file = sky_path();
     glint_error err;
@@ -103,13 +98,8 @@ static void test_mirror_shows_the_environment(void **state)
 {
     (void)state;
     write_sky(sky_path());
-    glint_scene *s = glint_scene_new();
-    glint_settings st = glint_settings_default();
-    st.width = st.height = 1;
-    st.samples_per_pixel = 1;
-    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
     glint_camera cam = {.position = {0, 0, 5}, .look_at = {0, 0, 0}, .up = {0, 1, 0}, .vfov_degrees = 10};
-    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    glint_scene *s = one_sample_scene(1, 1, (glint_color){1, 1, 1}, cam);
     glint_material m = glint_material_default();
     m.ambient = m.diffuse = m.specular = 0;
     m.reflectivity = 1;

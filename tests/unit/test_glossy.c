@@ -10,6 +10,7 @@
 #include <math.h>
 #include <stdbool.h>
 #include "glint.h"
+#include "one_sample_scene.h"
 
 #ifndef M_PI
 #define M_PI 3.14159265358979323846
@@ -42,15 +43,10 @@ enum { WIDTH = 200 };
  * sheet) and black elsewhere: what each pixel shows. */
 static glint_image half_plane_seen(glint_material m, double card_y, int threads)
 {
-    glint_scene *s = glint_scene_new();
-    glint_settings st = glint_settings_default();
-    st.width = WIDTH;
-    st.height = 1;
-    st.samples_per_pixel = 1;
-    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
     glint_camera cam = {.kind = GLINT_CAMERA_ORTHOGRAPHIC, .position = {0, 1, 0}, .look_at = {0, 0, 0},
                         .up = {0, 0, -1}, .vfov_degrees = 40, .view_width = VIEW};
-    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    /* The white card shows the ambient light, white. */
+    glint_scene *s = one_sample_scene(WIDTH, 1, (glint_color){1, 1, 1}, cam);
     glint_error err;
     int surface = glint_scene_add_material(s, NULL, &m, &err);
     if (surface < 0)

@@ -10,20 +10,18 @@
 #include <cmocka.h>
 #include <stdbool.h>
 #include "glint.h"
+#include "one_sample_scene.h"
 #include "render/integrator.h"
 
 /* A one-pixel, one-sample scene at the deepest recursion, its camera at the
  * origin looking down -z. */
 static glint_scene *deep_scene(void)
 {
-    glint_scene *s = glint_scene_new();
-    assert_non_null(s);
-    glint_settings st = glint_settings_default();
-    st.width = st.height = st.samples_per_pixel = 1;
+    glint_camera cam = {.position = {0, 0, 0}, .look_at = {0, 0, -1}, .up = {0, 1, 0}, .vfov_degrees = 30};
+    glint_scene *s = one_sample_scene(1, 1, (glint_color){1, 1, 1}, cam);
+    glint_settings st = glint_scene_get_settings(s);
     st.max_depth = 64;
     assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
-    glint_camera cam = {.position = {0, 0, 0}, .look_at = {0, 0, -1}, .up = {0, 1, 0}, .vfov_degrees = 30};
-    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
     return s;
 }
 

@@ -14,6 +14,7 @@
 #include <stdatomic.h>
 #include <stdlib.h>
 #include "glint.h"
+#include "one_sample_scene.h"
 #include "render/render_tiles.h"
 #include "tiles_told.h"
 
@@ -23,19 +24,12 @@
 
 #define assert_near(a, b, eps) assert_true(fabs((double)(a) - (double)(b)) <= (eps))
 
+/* A one-sample scene under white ambient light (flat's materials show
+ * their colour by it), seen from eye towards at. */
 static glint_scene *new_scene(int w, int h, glint_vec3 eye, glint_vec3 at, glint_vec3 up, double fov)
 {
-    glint_scene *s = glint_scene_new();
-    assert_non_null(s);
-    glint_settings st = glint_settings_default();
-    st.width = w;
-    st.height = h;
-    /* One sample, at each pixel's centre, where the analytic values hold. */
-    st.samples_per_pixel = 1;
-    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
     glint_camera cam = {.position = eye, .look_at = at, .up = up, .vfov_degrees = fov};
-    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
-    return s;
+    return one_sample_scene(w, h, (glint_color){1, 1, 1}, cam);
 }
 
 /* A material that shows exactly its colour: ambient only, under white ambient light. */

@@ -1,0 +1,34 @@
+/* one_sample_scene.h - the empty scene the rendering tests build their
+ * cases in: a small image of one sample a pixel, where a test can check
+ * each pixel against an analytic value (test_area_lights.c,
+ * test_environment.c, test_glossy.c, test_ray_limits.c, test_render.c). */
+#ifndef GLINT_TESTS_ONE_SAMPLE_SCENE_H
+#define GLINT_TESTS_ONE_SAMPLE_SCENE_H
+
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include "glint.h"
+
+/* A new scene of width x height pixels, each sampled once at its centre
+ * (where the analytic values hold), under ambient light `ambient` (black:
+ * none, so that only the lights show; white is the settings' default), seen
+ * by cam, with nothing in it yet. Fails the test when the scene cannot be
+ * made or refuses the values. */
+static inline glint_scene *one_sample_scene(int width, int height, glint_color ambient, glint_camera cam)
+{
+    glint_scene *s = glint_scene_new();
+    assert_non_null(s);
+    glint_settings st = glint_settings_default();
+    st.width = width;
+    st.height = height;
+    st.samples_per_pixel = 1;
+    st.ambient_light = ambient;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    return s;
+}
+
+#endif
