@@ -4,6 +4,7 @@
 #include <math.h>
 #include <string.h>
 #include "core/hash.h"
+#include "core/sobol.h"
 #include "core/square_maps.h"
 #include "render/hit.h"
 #include "render/integrator.h"
@@ -254,24 +255,13 @@ __attribute__((always_inline)) static inline void light_packet(tracer *t, const 
     }
 }
 
-/* The radical inverse of i in base 2: i's bits mirrored about the point. */
-static double radical_inverse2(uint32_t i)
-{
-    i = (i << 16) | (i >> 16);
-    i = ((i & 0x00ff00ffU) << 8) | ((i & 0xff00ff00U) >> 8);
-    i = ((i & 0x0f0f0f0fU) << 4) | ((i & 0xf0f0f0f0U) >> 4);
-    i = ((i & 0x33333333U) << 2) | ((i & 0xccccccccU) >> 2);
-    i = ((i & 0x55555555U) << 1) | ((i & 0xaaaaaaaaU) >> 1);
-    return i * (1.0 / 4294967296.0);
-}
-
 /* Sample j of n of a 2-D pattern: Hammersley's points (j / n, radical
  * inverse of j), well spread for any n, shifted modulo 1 by the hash rot,
  * so that every point has its own pattern and the sum stays unbiased. */
 static void hammersley(uint32_t rot, int j, int n, double u[2])
 {
     u[0] = (double)j / n + hash_unit(rot);
-    u[1] = radical_inverse2((uint32_t)j) + hash_unit(hash_u32(rot ^ 0x68e31da4U));
+    u[1] = reverse_bits32((uint32_t)j) * (1.0 / 4294967296.0) + hash_unit(hash_u32(rot ^ 0x68e31da4U));
     u[0] -= u[0] >= 1;
     u[1] -= u[1] >= 1;
 }
