@@ -9,6 +9,7 @@
 #include <string.h>
 #include "glint.h"
 #include "cli/args.h"
+#include "cli/reports.h"
 #include "core/word_list.h"
 #include "scene/scene.h"
 
@@ -77,7 +78,14 @@ static const char USAGE_END[] =
  * the exit codes. */
 static void print_help(void)
 {
-    fputs(USAGE, stdout);
+    /* Line by line, each written out: the help is longer than stdout's
+     * buffer (cli_flush_report). */
+    for (const char *line = USAGE, *end; *line; line = end) {
+        end = strchr(line, '\n');
+        end = end ? end + 1 : line + strlen(line);
+        fwrite(line, 1, (size_t)(end - line), stdout);
+        cli_flush_report();
+    }
     puts("\nImage formats, by the output's extension in any case:");
     const glint_image_format *f;
     for (int i = 0; (f = glint_image_format_at(i)) != NULL; i++) {

@@ -11,9 +11,7 @@
  * failed once may flush its next buffer without error, and errno is gone. */
 static int report_errno;
 
-/* Writes out what a report has put on stdout so far, remembering why if
- * it cannot (reported gives the exit code). */
-static void flush_report(void)
+void cli_flush_report(void)
 {
     errno = 0;
     if (fflush(stdout) != 0 && !report_errno)
@@ -22,7 +20,7 @@ static void flush_report(void)
 
 int cli_reported(int code)
 {
-    flush_report();
+    cli_flush_report();
     bool out_lost = report_errno != 0 || ferror(stdout);
     bool err_lost = fflush(stderr) != 0 || ferror(stderr);
     if (!out_lost && !err_lost)
@@ -73,7 +71,7 @@ int cli_check_only(const cli_options *o)
         if (code > worst)
             worst = code;
         /* In order with the problems on stderr, when both go to one place. */
-        flush_report();
+        cli_flush_report();
     }
     return worst;
 }
