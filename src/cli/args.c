@@ -40,9 +40,13 @@ static const char USAGE[] =
     "  -w, --width N          image width in pixels, 1..65536\n"
     "  -h, --height N         image height in pixels, 1..65536; at most 16384 x 16384\n"
     "                         pixels in all\n"
-    "      --spp N            samples per pixel, 1..4096 (regular, jittered: a square)\n"
-    "      --sampler NAME     regular (an N x N grid), jittered (a random point in\n"
-    "                         each cell) or sobol (scrambled Sobol points)\n"
+    "      --spp N            samples per pixel, 1..4096; a square number for the\n"
+    "                         regular and jittered samplers\n"
+    "      --sampler NAME     regular (an N x N grid), jittered (one random point in\n"
+    "                         each cell of the grid) or sobol (scrambled Sobol\n"
+    "                         points, any count)\n"
+    "      --filter NAME      pixel filter, at its own radius: box, tent, gaussian,\n"
+    "                         mitchell or lanczos\n"
     "      --seed N           seed of every random choice, 0..4294967295\n"
     "      --depth N          reflection and refraction recursion limit, 0..64\n"
     "                         (defaults: seed room 1000 x 1000, scene file 640 x 480,\n"
@@ -190,15 +194,17 @@ typedef struct word_flag {
     const char *setting;          /* the settings key it overrides, or NULL */
     const char *const *words;     /* without a setting: the words, in the enum's order */
     int word_count;
+    param_table (*table)(void);   /* the setting's table: NULL for settings_params */
 } word_flag;
 
 static const char *const EXR_PIXELS[] = {"half", "float"}; /* glint_exr_pixel's order */
 static const char *const VIEWS[] = {"auto", "front", "back", "left", "right", "top", "iso"}; /* glint_model_view's */
 
 static const word_flag WORD_FLAGS[] = {
-    {"--sampler", offsetof(cli_options, sampler), "sampler", NULL, 0},
-    {"--exr-pixel", offsetof(cli_options, exr_pixel), NULL, EXR_PIXELS, 2},
-    {"--view", offsetof(cli_options, view), NULL, VIEWS, 7},
+    {"--sampler", offsetof(cli_options, sampler), "sampler", NULL, 0, NULL},
+    {"--filter", offsetof(cli_options, filter), "type", NULL, 0, filter_params},
+    {"--exr-pixel", offsetof(cli_options, exr_pixel), NULL, EXR_PIXELS, 2, NULL},
+    {"--view", offsetof(cli_options, view), NULL, VIEWS, 7, NULL},
 };
 
 /* Sets wf's field to the index of the word v; false, with the words
@@ -206,7 +212,7 @@ static const word_flag WORD_FLAGS[] = {
  * after an earlier good value). */
 static bool parse_word_flag(const word_flag *wf, const char *v, int *field, char *what, size_t size)
 {
-    const param *p = wf->setting ? params_find(settings_params(), wf->setting) : NULL;
+    const param *p = wf->setting ? params_find(wf->table ? wf->table() : settings_params(), wf->setting) : NULL;
     const char *const *words = p ? p->words : wf->words;
     int count = p ? p->word_count : wf->word_count, found = -1;
     what[0] = '\0';
@@ -270,7 +276,7 @@ static bool is_switch(const char *a)
 int cli_parse_args(int argc, char **argv, cli_options *o)
 {
     *o = (cli_options){.width = -1, .height = -1, .spp = -1, .depth = -1,
-                       .threads = -1, .seed = -1, .sampler = -1, .exr_pixel = -1,
+                       .threads = -1, .seed = -1, .sampler = -1, .filter = -1, .exr_pixel = -1,
                        .view = -1};
     /* The scene files move to argv[1] on: no slot is written before it is read. */
     int files = 0;

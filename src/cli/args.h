@@ -35,6 +35,7 @@ typedef struct cli_options {
     bool print_scene;           /* write the scene as YAML on stdout instead of rendering */
     long long width, height, spp, depth, threads, seed; /* -1: the scene's own */
     int sampler;                                        /* -1: the scene's own, else a glint_sampler */
+    int filter;                                         /* -1: the scene's own, else a glint_filter */
     int exr_pixel;                                      /* -1: not given, else a glint_exr_pixel */
     int view;                                           /* -1: not given, else a glint_model_view */
     bool exposure_given;

@@ -28,6 +28,12 @@ static void apply_overrides(const cli_options *o, glint_settings *s)
     if (o->seed >= 0) s->seed = (uint32_t)o->seed;
     if (o->exposure_given) s->exposure = o->exposure;
     if (o->sampler >= 0) s->sampler = (glint_sampler)o->sampler;
+    /* A filter named on the command line takes its own radius, not one
+     * the scene gave another filter. */
+    if (o->filter >= 0) {
+        s->filter = (glint_filter)o->filter;
+        s->filter_radius = 0;
+    }
 }
 
 

@@ -60,7 +60,8 @@ fi
 
 # The flags that change settings are in what is printed: the settings list
 # every key, in the order of the docs, and -o becomes the output.
-"$GLINT" --print-scene -w 33 -h 21 --spp 9 --sampler jittered --seed 7 --depth 3 --exposure -1.5 -o x.exr >"$work/flags.yaml"
+"$GLINT" --print-scene -w 33 -h 21 --spp 9 --sampler jittered --seed 7 --depth 3 --exposure -1.5 --filter mitchell \
+    -o x.exr >"$work/flags.yaml"
 sed -n '/^settings:/,/^camera:/p' "$work/flags.yaml" >"$work/settings.txt"
 cat >"$work/settings.want" <<'EOF'
 settings:
@@ -74,6 +75,7 @@ settings:
   ambient: [1, 1, 1]
   exposure: -1.5
   emission_samples: 16
+  filter: {type: mitchell, radius: 0}
   output: x.exr
 camera:
 EOF
