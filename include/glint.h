@@ -138,6 +138,9 @@ typedef struct glint_settings {
                                   than adaptive_threshold takes more, up to this many */
     double adaptive_threshold; /* the largest difference in any channel (0..1, after exposure)
                                   between a pixel's samples that needs no more */
+    int light_samples;         /* 0: each area light and emitter sends its own samples from each
+                                  point lit; 1..4096: the point sends this many in all, each to
+                                  one of them chosen by its power */
 } glint_settings;
 
 /* Returns the settings of a new scene: 640x480, 4 spp, regular, box

@@ -14,6 +14,8 @@ static inline color rgb_scale(color a, double s) { return rgb(a.r * s, a.g * s, 
 /* a + b * s */
 static inline color rgb_madd(color a, color b, double s) { return rgb(a.r + b.r * s, a.g + b.g * s, a.b + b.b * s); }
 static inline color rgb_lerp(color a, color b, double t) { return rgb_madd(rgb_scale(a, 1.0 - t), b, t); }
+/* The mean of the channels: a colour's brightness, to weigh lights by. */
+static inline double rgb_mean(color a) { return (a.r + a.g + a.b) / 3; }
 static inline double rgb_max(color a) { double m = a.r > a.g ? a.r : a.g; return m > a.b ? m : a.b; }
 /* True for a colour with finite, non-negative channels. */
 static inline int rgb_is_valid(color c)

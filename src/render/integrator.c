@@ -295,10 +295,62 @@ __attribute__((noinline)) static void area_light_packets(tracer *t, const ray8 *
     }
 }
 
+/* The radical inverse of j in base 3: the third coordinate of Halton's
+ * points, beside Hammersley's two, so that which light a sample goes to
+ * does not follow where on the light it falls. */
+static double radical_inverse3(uint32_t j)
+{
+    double inverse = 0, digit = 1.0 / 3;
+    for (; j; j /= 3, digit /= 3)
+        inverse += (j % 3) * digit;
+    return inverse;
+}
+
+/* Adds to direct[i] the light of the area lights and emitters that reaches
+ * the hit sp[i] of each lane found[i] with settings.light_samples samples
+ * in all (light_choice.h): sample j of lane i goes to the light its
+ * number chooses by power, counted divided by that light's chance. The
+ * lanes that chose the same light go as one packet of shadow segments. */
+__attribute__((noinline)) static void chosen_light_packets(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
+                                                           const shade_point sp[ACCEL_PACKET], int depth,
+                                                           const uint32_t key[ACCEL_PACKET],
+                                                           color direct[ACCEL_PACKET])
+{
+    const light_choice *choice = t->choice;
+    int n = t->scene->settings.light_samples;
+    uint32_t rot[ACCEL_PACKET];
+    double shift[ACCEL_PACKET];
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        rot[i] = hash_u32(key[i] ^ 0x504f5752U);
+        shift[i] = hash_unit(hash_u32(rot[i] ^ 0x2c1b3c6dU));
+    }
+    for (int j = 0; j < n && !stopping(t); j++) {
+        double u[ACCEL_PACKET][2], chance[ACCEL_PACKET];
+        int pick[ACCEL_PACKET];
+        area_samples(rot, j, n, u);
+        for (int i = 0; i < ACCEL_PACKET; i++) {
+            double v = radical_inverse3((uint32_t)j) + shift[i];
+            pick[i] = found[i] ? light_choice_pick(choice, v - (v >= 1), &chance[i]) : -1;
+        }
+        for (int i = 0; i < ACCEL_PACKET; i++) {
+            if (pick[i] < 0)
+                continue;
+            bool chose[ACCEL_PACKET];
+            int light_index = pick[i];
+            for (int k = 0; k < ACCEL_PACKET; k++) {
+                chose[k] = pick[k] == light_index;
+                pick[k] = chose[k] ? -1 : pick[k];
+            }
+            light_packet(t, r, chose, sp, depth, choice->lights[light_index], u, 1.0 / (n * chance[i]), direct);
+        }
+    }
+}
+
 /* Adds to direct[i] the light of every light source, emissive shapes and
  * meshes too, that reaches the hit sp[i] of each lane found[i], whose
  * random numbers come from key[i]: one packet of shadow segments per light
- * (per sample of an area light or emitter). */
+ * (per sample of an area light or emitter), or with settings.light_samples
+ * the area lights and emitters sampled together, chosen by power. */
 static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
                           const shade_point sp[ACCEL_PACKET], int depth, const uint32_t key[ACCEL_PACKET],
                           color direct[ACCEL_PACKET])
@@ -309,10 +361,12 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
         const light *li = emitter ? &scene->emitters[l - scene->light_count] : &scene->lights[l];
         if (li->kind->delta)
             light_packet(t, r, found, sp, depth, li, NULL, 1, direct);
-        else
+        else if (!t->choice)
             area_light_packets(t, r, found, sp, depth, li, l,
                                emitter ? scene->settings.emission_samples : li->desc.samples, key, direct);
     }
+    if (t->choice && t->choice->count > 0 && !stopping(t))
+        chosen_light_packets(t, r, found, sp, depth, key, direct);
 }
 
 /* Adds to local[i] the ambient term of the hit sp[i] of each lane found[i]

@@ -3,6 +3,7 @@
 #define GLINT_RENDER_INTEGRATOR_H
 
 #include <stdint.h>
+#include "shading/light_choice.h"
 #include "accel/accel.h"
 #include "scene/scene.h"
 
@@ -33,6 +34,7 @@ typedef struct tracer {
     const volatile int *cancel; /* when non-NULL and set, tracing stops at the next packet */
     bool stopped;             /* the flag was seen set: every colour since is meaningless */
     bool keys;                /* tracer_needs_keys: without, no key is hashed, no ray spread */
+    const light_choice *choice; /* settings.light_samples: the area lights and emitters by power; else NULL */
     int budget[ACCEL_PACKET]; /* each lane's branch rays left in its sample */
 } tracer;
 

@@ -34,6 +34,7 @@ typedef struct job {
     int samples;                  /* each pixel's, before adaptive sampling adds any */
     bool signed_film;             /* pixels take the film's signed path (film.h) */
     bool keys;                    /* tracing uses the samples' keys: tracer_needs_keys */
+    light_choice choice;          /* with settings.light_samples: the area lights and emitters by power */
     int tiles_done;               /* under progress_lock */
     pthread_mutex_t progress_lock;
 } job;
@@ -252,7 +253,7 @@ static void *worker_run(void *arg)
     worker *w = arg;
     job *j = w->job;
     tracer t = {.scene = j->scene, .acc = j->acc, .reach = tracer_reach(j->scene), .cancel = j->opts->cancel,
-                .keys = j->keys};
+                .keys = j->keys, .choice = j->scene->settings.light_samples > 0 ? &j->choice : NULL};
     const render_feed *f = j->feed;
     const render_layout *l = &j->layout;
     int tile;
@@ -397,7 +398,12 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
     if (!st) {
         j.acc = acc;
         pthread_mutex_init(&j.progress_lock, NULL);
-        st = run_workers(&j, threads, &sum, err);
+        if (!light_choice_init(&j.choice, scene->lights, scene->area_lights, scene->area_light_count,
+                               scene->emitters, scene->emitter_count))
+            st = error_set(err, GLINT_ERR_NOMEM, "out of memory choosing among the lights");
+        else
+            st = run_workers(&j, threads, &sum, err);
+        light_choice_free(&j.choice);
         pthread_mutex_destroy(&j.progress_lock);
         accel_free(acc);
     }

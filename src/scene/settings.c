@@ -42,6 +42,9 @@ static const param SETTINGS_PARAMS[] = {
      .meaning = "every pixel's light times 2^exposure before it is written: 1 is twice as bright, -1 half"},
     {.key = "emission_samples", .type = PARAM_INTEGER, SETTING(emission_samples), .def = {16}, .lo = 1, .hi = 4096,
      .meaning = "shadow rays from each point lit towards each emissive shape or mesh: more is smoother"},
+    {.key = "light_samples", .type = PARAM_INTEGER, SETTING(light_samples), .lo = 0, .hi = 4096,
+     .meaning = "0: every area light and emissive surface sends its own samples; more: each point lit sends "
+                "this many in all, each to one of them chosen by its power (many lamps cost what one does)"}, 
 };
 
 #define CAMERA(name) .offset = offsetof(glint_camera, name)

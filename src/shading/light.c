@@ -68,6 +68,7 @@ bool light_delta_sample_fn(const light *l, vec3 p, double u1, double u2, light_s
 glint_status light_area_init(light *l, const glint_shape *glow, double area, glint_error *err)
 {
     l->area = area;
+    l->power = rgb_mean(l->desc.color) * area;
     return shape_init(&l->glow, glow, NULL, -1, err);
 }
 

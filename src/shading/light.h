@@ -59,6 +59,8 @@ typedef struct light {
     emitter_triangle *triangles; /* an emissive mesh's triangles that glow, */
     double *cumulative;       /* the sum of their powers up to each, the last 1, */
     int triangle_count;       /* and their number */
+    double power;             /* an area light's or emitter's brightness (rgb_mean) times the area
+                                 it glows over, to choose among them by (light_choice.h) */
 } light;
 
 /* What a light offers to point p for one sample. */

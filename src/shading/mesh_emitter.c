@@ -33,19 +33,13 @@ static bool mesh_emitter_sample(const light *l, vec3 p, double u1, double u2, li
 
 const light_kind mesh_emitter = {.name = "emissive mesh", .sample = mesh_emitter_sample};
 
-/* A colour's brightness, for weighing triangles: the mean of its channels. */
-static double brightness(color c)
-{
-    return (c.r + c.g + c.b) / 3;
-}
-
 bool emitter_for_instance(light *l, const mesh *m, const instance *inst, const material *materials,
                           bool *out_of_memory)
 {
     *out_of_memory = false;
     int count = 0;
     for (int t = 0; t < m->triangle_count; t++)
-        count += brightness(material_emission(&materials[mesh_material(m, inst, (unsigned)t)].m)) > 0;
+        count += rgb_mean(material_emission(&materials[mesh_material(m, inst, (unsigned)t)].m)) > 0;
     if (count == 0)
         return false;
     emitter_triangle *tris = malloc(sizeof *tris * (size_t)count);
@@ -60,7 +54,7 @@ bool emitter_for_instance(light *l, const mesh *m, const instance *inst, const m
     double total = 0;
     for (int t = 0; t < m->triangle_count; t++) {
         color e = material_emission(&materials[mesh_material(m, inst, (unsigned)t)].m);
-        if (!(brightness(e) > 0))
+        if (!(rgb_mean(e) > 0))
             continue;
         vec3 v[3];
         for (int k = 0; k < 3; k++) {
@@ -75,7 +69,7 @@ bool emitter_for_instance(light *l, const mesh *m, const instance *inst, const m
             continue; /* degenerate: never hit, never lit from */
         tris[kept] = (emitter_triangle){.a = v[0], .b = v[1], .c = v[2], .normal = v3_scale(cross, 1 / twice_area),
                                         .area = twice_area / 2, .radiance = e};
-        total += tris[kept].area * brightness(e);
+        total += tris[kept].area * rgb_mean(e);
         cumulative[kept++] = total;
     }
     if (kept == 0 || !isfinite(total)) {
@@ -86,6 +80,7 @@ bool emitter_for_instance(light *l, const mesh *m, const instance *inst, const m
     for (int t = 0; t < kept; t++)
         cumulative[t] /= total;
     cumulative[kept - 1] = 1;
-    *l = (light){.kind = &mesh_emitter, .triangles = tris, .cumulative = cumulative, .triangle_count = kept};
+    *l = (light){.kind = &mesh_emitter, .triangles = tris, .cumulative = cumulative, .triangle_count = kept,
+                 .power = total};
     return true;
 }

@@ -15,8 +15,10 @@ const light_kind shape_emitter = {.name = "emissive shape", .sample = shape_emit
 bool emitter_for_shape(light *l, const shape *s, color radiance)
 {
     vec3 q, n;
-    if (!(shape_sample(s, 0.5, 0.5, &q, &n) > 0))
+    /* Uniform by area: the density is 1 / area. */
+    double density = shape_sample(s, 0.5, 0.5, &q, &n);
+    if (!(density > 0))
         return false;
-    *l = (light){.kind = &shape_emitter, .desc = {.color = radiance}, .glow = *s};
+    *l = (light){.kind = &shape_emitter, .desc = {.color = radiance}, .glow = *s, .power = rgb_mean(radiance) / density};
     return true;
 }

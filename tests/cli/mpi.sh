@@ -53,6 +53,7 @@ settings:
   sampler: sobol
   filter: { type: mitchell }
   adaptive: { threshold: 0.05, max_samples: 12 }
+  light_samples: 6
 camera: { type: thin_lens, position: [0, 1.5, 5], look_at: [0, 0.5, 0], aperture: 0.15 }
 textures: { floor: { type: checker, colors: [[0.9, 0.9, 0.9], [0.2, 0.2, 0.2]], size: 0.25 } }
 materials: { floor: { texture: floor }, ball: { color: [0.8, 0.3, 0.2], roughness: 0.3, reflectivity: 0.5 } }

@@ -75,6 +75,7 @@ settings:
   ambient: [1, 1, 1]
   exposure: -1.5
   emission_samples: 16
+  light_samples: 0
   filter: {type: mitchell, radius: 0}
   output: x.exr
 camera:
@@ -137,6 +138,7 @@ settings:
   ambient: [1, 1, 1]
   exposure: 0
   emission_samples: 16
+  light_samples: 0
   output: out.png
 camera:
   position: [0, 1, 5]
