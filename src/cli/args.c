@@ -9,7 +9,7 @@
 #include <string.h>
 #include "glint.h"
 #include "cli/args.h"
-#include "cli/reports.h"
+#include "cli/report_flush.h"
 #include "core/word_list.h"
 #include "scene/scene.h"
 

@@ -4,30 +4,20 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include "cli/report_flush.h"
 #include "cli/reports.h"
 #include "cli/setup.h"
-
-/* Why the first flush of a report to stdout failed, or 0: a stream that
- * failed once may flush its next buffer without error, and errno is gone. */
-static int report_errno;
-
-void cli_flush_report(void)
-{
-    errno = 0;
-    if (fflush(stdout) != 0 && !report_errno)
-        report_errno = errno ? errno : EIO;
-}
 
 int cli_reported(int code)
 {
     cli_flush_report();
-    bool out_lost = report_errno != 0 || ferror(stdout);
+    bool out_lost = cli_report_errno() != 0 || ferror(stdout);
     bool err_lost = fflush(stderr) != 0 || ferror(stderr);
     if (!out_lost && !err_lost)
         return code;
     /* A write that failed inside printf left its reason behind. */
     if (out_lost && code < CLI_EXIT_IO)
-        cli_complain(CLI_EXIT_IO, "cannot write '<stdout>': %s", strerror(report_errno ? report_errno : EIO));
+        cli_complain(CLI_EXIT_IO, "cannot write '<stdout>': %s", strerror(cli_report_errno() ? cli_report_errno() : EIO));
     return code > CLI_EXIT_IO ? code : CLI_EXIT_IO;
 }
 

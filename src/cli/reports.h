@@ -17,12 +17,6 @@ int cli_check_only(const cli_options *o);
  * NULL), as a scene file on stdout; frees the scene. The exit code. */
 int cli_print_scene(glint_scene *scene, const char *output);
 
-/* Writes out what a report has put on stdout so far, remembering why if
- * it cannot, for cli_reported. A report longer than stdout's buffer calls
- * it before the buffer fills: a write that fails inside printf or fputs
- * leaves no reason behind. */
-void cli_flush_report(void);
-
 /* The exit code of a run that reports on stdout, with its problems on
  * stderr (the help, the version, --check, --print-scene): `code`, or 3
  * when either could not be written in whole (a full disk, a reader gone),
