@@ -3,8 +3,9 @@
  * MAX_ARGS arguments after it; a final argument needs no NUL after it) for
  * cli_parse_args, whose promises are checked: it returns -1 (go on), 0
  * (only for --help, --version or a last -h) or 2 (usage), and when it goes on, every
- * number is -1 or within its flag's range (the ranges glint --help gives),
- * the sampler, the OpenEXR pixel type, the image format and the model
+ * number is -1 or within its flag's range (the ranges glint --help gives;
+ * a sample count need not be square, which the settings check with the
+ * sampler), the sampler, the filter, the OpenEXR pixel type, the image format and the model
  * view known ones, a view only with a model file, --print-scene only when
  * given and never with --check, every string one the command line holds,
  * and the scene files those arguments that are not flags nor their
@@ -28,14 +29,6 @@ int LLVMFuzzerTestOneInput(const uint8_t *data, size_t size);
 static bool unset_or_in(long long v, long long lo, long long hi)
 {
     return v == -1 || (v >= lo && v <= hi);
-}
-
-static bool is_square(long long n)
-{
-    for (long long r = 0; r * r <= n; r++)
-        if (r * r == n)
-            return true;
-    return false;
 }
 
 /* Whether v is a flag's value as the parser takes it: a whole argument, or
@@ -91,11 +84,12 @@ static bool known_format(const glint_image_format *format)
 static void check_options(const cli_options *o, int argc, char **argv)
 {
     if (!unset_or_in(o->width, 1, 65536) || !unset_or_in(o->height, 1, 65536) ||
-        !unset_or_in(o->spp, 1, 4096) || (o->spp != -1 && !is_square(o->spp)) ||
+        !unset_or_in(o->spp, 1, 4096) ||
         !unset_or_in(o->depth, 0, 64) || !unset_or_in(o->threads, 0, 1024) ||
         !unset_or_in(o->seed, 0, 4294967295LL))
         abort();
-    if (o->sampler != -1 && o->sampler != GLINT_SAMPLER_REGULAR && o->sampler != GLINT_SAMPLER_JITTERED)
+    if (!unset_or_in(o->sampler, GLINT_SAMPLER_REGULAR, GLINT_SAMPLER_SOBOL) ||
+        !unset_or_in(o->filter, GLINT_FILTER_BOX, GLINT_FILTER_LANCZOS))
         abort();
     if (o->exr_pixel != -1 && o->exr_pixel != GLINT_EXR_HALF && o->exr_pixel != GLINT_EXR_FLOAT)
         abort();
