@@ -39,7 +39,7 @@ void light_choice_free(light_choice *c)
     *c = (light_choice){0};
 }
 
-int light_choice_pick(const light_choice *c, double u, double *chance)
+int light_choice_pick(const light_choice *c, double u)
 {
     /* The first light whose running sum passes u. */
     int lo = 0, hi = c->count - 1;
@@ -50,6 +50,10 @@ int light_choice_pick(const light_choice *c, double u, double *chance)
         else
             lo = mid + 1;
     }
-    *chance = c->cumulative[lo] - (lo > 0 ? c->cumulative[lo - 1] : 0);
     return lo;
+}
+
+double light_choice_chance(const light_choice *c, int index)
+{
+    return c->cumulative[index] - (index > 0 ? c->cumulative[index - 1] : 0);
 }

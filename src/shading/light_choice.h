@@ -26,7 +26,10 @@ bool light_choice_init(light_choice *c, const light *lights, const int *area_lig
 /* Frees what light_choice_init took. */
 void light_choice_free(light_choice *c);
 
-/* The index of the light that u in [0, 1) chooses, and its chance in *chance. */
-int light_choice_pick(const light_choice *c, double u, double *chance);
+/* The index of the light that u in [0, 1) chooses. */
+int light_choice_pick(const light_choice *c, double u);
+
+/* The chance that light `index` is chosen. */
+double light_choice_chance(const light_choice *c, int index);
 
 #endif
