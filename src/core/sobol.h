@@ -52,19 +52,37 @@ static inline uint32_t owen_scramble(uint32_t fraction, uint32_t seed)
     return reverse_bits32(scramble_upwards(reverse_bits32(fraction), seed));
 }
 
+/* The second Sobol coordinate of index i, bit-reversed (bit 0 the most
+ * significant bit of the fraction): i times the generator matrix, Pascal's
+ * triangle modulo 2, whose entry (r, c) is 1 when the bits of r are among
+ * those of c (Lucas's theorem). Bit r of the product is then the parity of
+ * i's bits at the positions holding r's, which five shifted XORs gather
+ * over the five bits of a position (a subset-sum transform), where a loop
+ * over i's bits took up to 32 steps. */
+static inline uint32_t sobol_second_reversed(uint32_t i)
+{
+    i ^= (i >> 1) & 0x55555555U;
+    i ^= (i >> 2) & 0x33333333U;
+    i ^= (i >> 4) & 0x0f0f0f0fU;
+    i ^= (i >> 8) & 0x00ff00ffU;
+    i ^= (i >> 16) & 0x0000ffffU;
+    return i;
+}
+
 /* Point i of the scrambled two-dimensional Sobol sequence with the given
  * seed, in [0, 1)^2: index i shuffled within its aligned runs of each
- * power of two, then each coordinate scrambled. The second coordinate's
- * generator is Pascal's triangle modulo 2 (Sobol's direction numbers for
- * the polynomial x + 1), the first's the identity (van der Corput). */
+ * power of two, then each coordinate scrambled. The first coordinate's
+ * generator is the identity (van der Corput: the index reversed), the
+ * second's Pascal's triangle modulo 2 (Sobol's direction numbers for the
+ * polynomial x + 1). Each step is owen_scramble written out, so that
+ * reversals that undo each other are left out. */
 static inline void sobol2_scrambled(uint32_t i, uint32_t seed, double *x, double *y)
 {
-    uint32_t index = owen_scramble(i, hash_u32(seed)), first = reverse_bits32(index), second = 0;
-    for (uint32_t column = 0x80000000U; index; index >>= 1, column ^= column >> 1)
-        if (index & 1)
-            second ^= column;
-    *x = (owen_scramble(first, hash_u32(seed ^ 0x5851f42dU)) >> 8) * (1.0 / 16777216.0);
-    *y = (owen_scramble(second, hash_u32(seed ^ 0x4c957f2dU)) >> 8) * (1.0 / 16777216.0);
+    uint32_t index = reverse_bits32(scramble_upwards(reverse_bits32(i), hash_u32(seed)));
+    uint32_t first = reverse_bits32(scramble_upwards(index, hash_u32(seed ^ 0x5851f42dU)));
+    uint32_t second = reverse_bits32(scramble_upwards(sobol_second_reversed(index), hash_u32(seed ^ 0x4c957f2dU)));
+    *x = (first >> 8) * (1.0 / 16777216.0);
+    *y = (second >> 8) * (1.0 / 16777216.0);
 }
 
 #endif

@@ -255,23 +255,22 @@ __attribute__((always_inline)) static inline void light_packet(tracer *t, const 
     }
 }
 
-/* Sample j of n of a 2-D pattern: Hammersley's points (j / n, radical
- * inverse of j), well spread for any n, shifted modulo 1 by the hash rot,
- * so that every point has its own pattern and the sum stays unbiased. */
-static void hammersley(uint32_t rot, int j, int n, double u[2])
+/* Sample j of a point's 2-D pattern, rot its scramble: the point's own
+ * Owen-scrambled Sobol points (core/sobol.h), stratified in every aligned
+ * run of a power of two. Against the shifted Hammersley points they
+ * replaced, a soft shadow of 64 samples has 31% less noise for 15-20% more
+ * time (bench/README.md). */
+static void pattern_point(uint32_t rot, int j, double u[2])
 {
-    u[0] = (double)j / n + hash_unit(rot);
-    u[1] = reverse_bits32((uint32_t)j) * (1.0 / 4294967296.0) + hash_unit(hash_u32(rot ^ 0x68e31da4U));
-    u[0] -= u[0] >= 1;
-    u[1] -= u[1] >= 1;
+    sobol2_scrambled((uint32_t)j, rot, &u[0], &u[1]);
 }
 
-/* The samples of an area light with n of them at each lane's shading
- * point, sample j, each lane's pattern shifted by its own rot[i]. */
-static void area_samples(const uint32_t rot[ACCEL_PACKET], int j, int n, double u[ACCEL_PACKET][2])
+/* Sample j of an area light at each lane's shading point, each lane's
+ * pattern scrambled by its own rot[i]. */
+static void area_samples(const uint32_t rot[ACCEL_PACKET], int j, double u[ACCEL_PACKET][2])
 {
     for (int i = 0; i < ACCEL_PACKET; i++)
-        hammersley(rot[i], j, n, u[i]);
+        pattern_point(rot[i], j, u[i]);
 }
 
 /* Adds to direct[i] the light of area light l (the scene's light number
@@ -290,14 +289,14 @@ __attribute__((noinline)) static void area_light_packets(tracer *t, const ray8 *
         rot[i] = hash_u32(key[i] ^ hash_u32((uint32_t)index + 1));
     for (int j = 0; j < n && !stopping(t); j++) {
         double u[ACCEL_PACKET][2];
-        area_samples(rot, j, n, u);
+        area_samples(rot, j, u);
         light_packet(t, r, found, sp, depth, l, u, 1.0 / n, direct);
     }
 }
 
-/* The radical inverse of j in base 3: the third coordinate of Halton's
- * points, beside Hammersley's two, so that which light a sample goes to
- * does not follow where on the light it falls. */
+/* The radical inverse of j in base 3, a coordinate apart from the base-2
+ * Sobol points, so that which light a sample goes to does not follow
+ * where on the light it falls. */
 static double radical_inverse3(uint32_t j)
 {
     double inverse = 0, digit = 1.0 / 3;
@@ -361,7 +360,7 @@ __attribute__((noinline)) static void chosen_light_packets(tracer *t, const ray8
                         continue;
                     chose[i] = true;
                     pick[i][k] = -1;
-                    hammersley(rot[i], first + k, n, u[i]);
+                    pattern_point(rot[i], first + k, u[i]);
                 }
             }
             light_packet(t, r, chose, sp, depth, choice->lights[chosen], u,
@@ -431,7 +430,7 @@ __attribute__((noinline)) static void ambient_occlusion8(tracer *t, const bool f
             if (j >= rays[i])
                 continue;
             double u[2], x, y;
-            hammersley(rot[i], j, rays[i], u);
+            pattern_point(rot[i], j, u);
             concentric_disk(u[0], u[1], &x, &y);
             vec3 d = v3_add(v3_scale(sp[i].ns, sqrt(fmax(0, 1 - x * x - y * y))),
                             v3_add(v3_scale(e1[i], x), v3_scale(e2[i], y)));
@@ -524,7 +523,7 @@ static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET
             next_key[i] = j ? hash_u32(branch_key ^ (uint32_t)j * 0x85ebca6bU) : branch_key;
             if (on[i] && k != BRANCH_PASS && sp[i].m->roughness > 0) {
                 double u[2];
-                hammersley(hash_u32(branch_key ^ 0x7a3c1f55U), j, rays[i], u);
+                pattern_point(hash_u32(branch_key ^ 0x7a3c1f55U), j, u);
                 ri.d = optics_lobe(ri.d, b[i].side[k], material_lobe_exponent(sp[i].m), u[0], u[1]);
             }
         }
