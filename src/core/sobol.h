@@ -69,36 +69,20 @@ static inline uint32_t sobol_second_reversed(uint32_t i)
     return i;
 }
 
-/* The scrambles of a pattern's two coordinates, from its seed. */
-typedef struct sobol_scramble {
-    uint32_t x, y;
-} sobol_scramble;
-
-static inline sobol_scramble sobol_scramble_for(uint32_t seed)
-{
-    return (sobol_scramble){hash_u32(seed ^ 0x5851f42dU), hash_u32(seed ^ 0x4c957f2dU)};
-}
-
-/* Point i of the two-dimensional Sobol sequence, in [0, 1)^2, each
- * coordinate Owen-scrambled by s: the first coordinate's generator is the
- * identity (van der Corput: i reversed), the second's Pascal's triangle
- * modulo 2 (Sobol's direction numbers for the polynomial x + 1). Each is
- * owen_scramble written out, so that reversals that undo each other are
- * left out. For a pattern whose sample numbers no other pattern follows
- * (a light's samples at a point); else sobol2_scrambled. */
-static inline void sobol2_owen(uint32_t i, sobol_scramble s, double *x, double *y)
-{
-    *x = (reverse_bits32(scramble_upwards(i, s.x)) >> 8) * (1.0 / 16777216.0);
-    *y = (reverse_bits32(scramble_upwards(sobol_second_reversed(i), s.y)) >> 8) * (1.0 / 16777216.0);
-}
-
 /* Point i of the scrambled two-dimensional Sobol sequence with the given
  * seed, in [0, 1)^2: index i shuffled within its aligned runs of each
- * power of two, so that patterns taking the same sample numbers (a pixel's
- * position and lens) do not follow one another, then sobol2_owen. */
+ * power of two, then each coordinate scrambled. The first coordinate's
+ * generator is the identity (van der Corput: the index reversed), the
+ * second's Pascal's triangle modulo 2 (Sobol's direction numbers for the
+ * polynomial x + 1). Each step is owen_scramble written out, so that
+ * reversals that undo each other are left out. */
 static inline void sobol2_scrambled(uint32_t i, uint32_t seed, double *x, double *y)
 {
-    sobol2_owen(owen_scramble(i, hash_u32(seed)), sobol_scramble_for(seed), x, y);
+    uint32_t index = reverse_bits32(scramble_upwards(reverse_bits32(i), hash_u32(seed)));
+    uint32_t first = reverse_bits32(scramble_upwards(index, hash_u32(seed ^ 0x5851f42dU)));
+    uint32_t second = reverse_bits32(scramble_upwards(sobol_second_reversed(index), hash_u32(seed ^ 0x4c957f2dU)));
+    *x = (first >> 8) * (1.0 / 16777216.0);
+    *y = (second >> 8) * (1.0 / 16777216.0);
 }
 
 #endif
