@@ -398,8 +398,10 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
     if (!st) {
         j.acc = acc;
         pthread_mutex_init(&j.progress_lock, NULL);
-        if (!light_choice_init(&j.choice, scene->lights, scene->area_lights, scene->area_light_count,
-                               scene->emitters, scene->emitter_count))
+        /* Built only for a render that chooses among its lights. */
+        if (s->light_samples > 0 && !light_choice_init(&j.choice, scene->lights, scene->area_lights,
+                                                       scene->area_light_count, scene->emitters,
+                                                       scene->emitter_count))
             st = error_set(err, GLINT_ERR_NOMEM, "out of memory choosing among the lights");
         else
             st = run_workers(&j, threads, &sum, err);
