@@ -334,9 +334,11 @@ __attribute__((noinline)) static void chosen_light_packets(tracer *t, const ray8
     for (int first = 0; first < n && !stopping(t); first += CHOICE_RUN) {
         int run = n - first < CHOICE_RUN ? n - first : CHOICE_RUN;
         int pick[ACCEL_PACKET][CHOICE_RUN], next[ACCEL_PACKET] = {0};
-        for (int i = 0; i < ACCEL_PACKET; i++) {
-            for (int k = 0; k < run; k++) {
-                double v = radical_inverse3((uint32_t)(first + k)) + shift[i];
+        for (int k = 0; k < run; k++) {
+            /* The same for every lane; each lane shifts it by its own. */
+            double base = radical_inverse3((uint32_t)(first + k));
+            for (int i = 0; i < ACCEL_PACKET; i++) {
+                double v = base + shift[i];
                 pick[i][k] = found[i] ? light_choice_pick(choice, v - (v >= 1)) : -1;
             }
         }
