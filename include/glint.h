@@ -700,10 +700,14 @@ typedef enum glint_exr_pixel {
 /* How glint_image_write_ex writes; all zero is the default. */
 typedef struct glint_image_write_options {
     glint_exr_pixel exr_pixel; /* .exr files only; the other formats ignore it */
+    int bit_depth;             /* .png and .ppm only: 8 (or 0, the default) or 16 bits a
+                                  channel, sRGB either way; 16 keeps gradients and low
+                                  noise that 8 would round away. .exr ignores it */
 } glint_image_write_options;
 
 /* As glint_image_write, with options (NULL: the defaults). An exr_pixel
- * that is not a glint_exr_pixel is GLINT_ERR_INVALID. */
+ * that is not a glint_exr_pixel, or a bit_depth other than 0, 8 and 16, is
+ * GLINT_ERR_INVALID. */
 glint_status glint_image_write_ex(const glint_image *image, const char *path,
                                   const glint_image_write_options *options, glint_error *err);
 

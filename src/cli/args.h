@@ -37,6 +37,7 @@ typedef struct cli_options {
     int sampler;                                        /* -1: the scene's own, else a glint_sampler */
     int filter;                                         /* -1: the scene's own, else a glint_filter */
     int exr_pixel;                                      /* -1: not given, else a glint_exr_pixel */
+    int bit_depth;                                      /* -1: not given, 0: 8 bits, 1: 16 bits */
     int view;                                           /* -1: not given, else a glint_model_view */
     bool exposure_given;
     double exposure;                                    /* --exposure, in stops, when given */

@@ -84,7 +84,8 @@ glint_scene *cli_load_scene(const cli_options *o, const char *path, const char *
 /* Chooses where the image goes and in which format, and checks before
  * rendering that it can go there: -o, else the scene's output setting, else
  * glint.png (glint.ppm with --format ppm); a --format that disagrees with
- * the file's extension, or an --exr-pixel for other formats, is refused.
+ * the file's extension, an --exr-pixel for other formats, or a --bit-depth
+ * for OpenEXR, is refused.
  * Returns -1 to go on, or the exit code after complaining. The path may
  * point into the scene. */
 static int choose_destination(const cli_options *o, const glint_scene *scene, cli_destination *d)
@@ -115,6 +116,11 @@ static int choose_destination(const cli_options *o, const glint_scene *scene, cl
                    ? cli_complain(CLI_EXIT_USAGE, "--exr-pixel is for .exr output, not '%s'", d->path)
                    : cli_complain(CLI_EXIT_USAGE, "--exr-pixel is for .exr output, not %s on standard output "
                                                   "(add --format exr)", d->format->name);
+    if (o->bit_depth >= 0 && strcmp(d->format->name, "OpenEXR") == 0)
+        return strcmp(d->path, "-") != 0
+                   ? cli_complain(CLI_EXIT_USAGE, "--bit-depth is for .png and .ppm output, not '%s'", d->path)
+                   : cli_complain(CLI_EXIT_USAGE, "--bit-depth is for .png and .ppm output, not OpenEXR on "
+                                                  "standard output");
     return -1;
 }
 
@@ -155,7 +161,8 @@ int cli_prepare(const cli_options *o, bool with_output, cli_run *r)
         }
     }
     glint_status st = GLINT_OK;
-    r->write_options = (glint_image_write_options){.exr_pixel = o->exr_pixel >= 0 ? o->exr_pixel : GLINT_EXR_HALF};
+    r->write_options = (glint_image_write_options){.exr_pixel = o->exr_pixel >= 0 ? o->exr_pixel : GLINT_EXR_HALF,
+                                                   .bit_depth = o->bit_depth == 1 ? 16 : 8};
     for (int i = 0; i < o->swaps && !st; i++)
         st = glint_scene_replace_image(scene, o->swap_name[i], o->swap_path[i], &err);
     r->settings = glint_scene_get_settings(scene);

@@ -191,7 +191,8 @@ glint_status glint_image_write(const glint_image *image, const char *path, glint
 }
 
 /* The checks every write makes before its writer runs, with messages that
- * name the destination: an image to write and a known pixel type. */
+ * name the destination: an image to write, a known pixel type and bit
+ * depth. */
 static glint_status check_write(const glint_image *image, const glint_image_write_options *options, const char *name,
                                 glint_error *err)
 {
@@ -202,6 +203,9 @@ static glint_status check_write(const glint_image *image, const glint_image_writ
     if (options->exr_pixel != GLINT_EXR_HALF && options->exr_pixel != GLINT_EXR_FLOAT)
         return error_set(err, GLINT_ERR_INVALID, "cannot write '%s': unknown OpenEXR pixel type %d", name,
                          (int)options->exr_pixel);
+    if (options->bit_depth != 0 && options->bit_depth != 8 && options->bit_depth != 16)
+        return error_set(err, GLINT_ERR_INVALID, "cannot write '%s': bit depth %d is neither 8 nor 16", name,
+                         options->bit_depth);
     return GLINT_OK;
 }
 

@@ -42,8 +42,9 @@ typedef struct slice {
 
 typedef struct encoder {
     const glint_image *image;
+    int depth;                /* bits a channel: 8 or 16 */
     unsigned char *srgb;      /* the whole image's sRGB bytes, row by row */
-    size_t row_bytes;         /* 3 * width */
+    size_t row_bytes;         /* 3 * width * depth / 8 */
     slice *slices;
     int slice_count;
     atomic_int next;          /* the next slice a thread takes */
@@ -69,8 +70,9 @@ static void filter_row(const encoder *e, int y, unsigned char *out)
 
 static void encode_rows(encoder *e, slice *s)
 {
-    size_t offset = (size_t)s->first_row * e->row_bytes;
-    srgb_encode(e->srgb + offset, e->image->pixels + offset, (size_t)s->rows * e->row_bytes);
+    size_t samples = 3 * (size_t)e->image->width, offset = (size_t)s->first_row * samples;
+    srgb_encode_depth(e->srgb + (size_t)s->first_row * e->row_bytes, e->image->pixels + offset,
+                      (size_t)s->rows * samples, e->depth);
 }
 
 /* Filters the slice's rows, with enough rows before it to fill the window,
@@ -193,7 +195,7 @@ static bool assemble(const encoder *e, unsigned char **bytes, size_t *size)
     unsigned char header[13];
     put32(header, (uint32_t)e->image->width);
     put32(header + 4, (uint32_t)e->image->height);
-    header[8] = 8;            /* bits per sample */
+    header[8] = (unsigned char)e->depth; /* bits per sample */
     header[9] = 2;            /* RGB */
     header[10] = header[11] = header[12] = 0; /* deflate, adaptive filters, not interlaced */
     static const unsigned char perceptual = 0;
@@ -208,11 +210,11 @@ static bool assemble(const encoder *e, unsigned char **bytes, size_t *size)
     return true;
 }
 
-bool png_encode(const glint_image *image, int threads, unsigned char **bytes, size_t *size)
+bool png_encode(const glint_image *image, int depth, int threads, unsigned char **bytes, size_t *size)
 {
     *bytes = NULL;
     *size = 0;
-    encoder e = {.image = image, .row_bytes = 3 * (size_t)image->width};
+    encoder e = {.image = image, .depth = depth, .row_bytes = 3 * (size_t)image->width * (size_t)depth / 8};
     size_t stride = e.row_bytes + 1;
     int rows = stride < SLICE_BYTES ? (int)(SLICE_BYTES / stride) : 1;
     e.slice_count = (image->height + rows - 1) / rows;

@@ -1,4 +1,4 @@
-/* png_write.c - the PNG format: 8-bit sRGB with an sRGB chunk, the rows
+/* png_write.c - the PNG format: 8-bit (or 16) sRGB with an sRGB chunk, the rows
  * deflated on a thread per processor (png_encode.c). */
 #include <stdlib.h>
 #include "core/error.h"
@@ -15,7 +15,7 @@ static glint_status write_png(int fd, const glint_image *image, const glint_imag
                          PNG_ENCODE_MAX_SIDE, image->width, image->height);
     unsigned char *bytes;
     size_t size;
-    if (!png_encode(image, processors_online(64), &bytes, &size))
+    if (!png_encode(image, options->bit_depth == 16 ? 16 : 8, processors_online(64), &bytes, &size))
         return image_write_no_memory(path, err);
     glint_status st = image_write_bytes(fd, bytes, size, path, err);
     free(bytes);
@@ -24,4 +24,4 @@ static glint_status write_png(int fd, const glint_image *image, const glint_imag
 
 static const char *const png_extensions[] = {".png", NULL};
 
-const image_writer png_writer = {{"PNG", png_extensions, "8-bit sRGB, clamped to 0..1"}, write_png};
+const image_writer png_writer = {{"PNG", png_extensions, "8-bit (or 16) sRGB, clamped to 0..1"}, write_png};

@@ -110,3 +110,20 @@ void srgb_encode(unsigned char *dst, const float *src, size_t n)
     for (size_t i = 0; i < n; i++)
         dst[i] = encode(src[i]);
 }
+
+void srgb_encode16(unsigned char *dst, const float *src, size_t n)
+{
+    for (size_t i = 0; i < n; i++) {
+        unsigned code = (unsigned)(glint_linear_to_srgb(src[i]) * 65535.0 + 0.5);
+        dst[2 * i] = (unsigned char)(code >> 8);
+        dst[2 * i + 1] = (unsigned char)code;
+    }
+}
+
+void srgb_encode_depth(unsigned char *dst, const float *src, size_t n, int depth)
+{
+    if (depth == 16)
+        srgb_encode16(dst, src, n);
+    else
+        srgb_encode(dst, src, n);
+}

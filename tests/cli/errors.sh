@@ -123,6 +123,22 @@ else
     echo "FAIL: --exr-pixel with a scene's PNG output: $err"; failed=$((failed + 1))
 fi
 
+# --bit-depth 16: a PPM of maxval 65535 and 2 bytes a channel, a PNG whose
+# IHDR says 16 bits. Each 16-bit code is within half an 8-bit step of the
+# 8-bit image's byte, and some are between 8-bit steps (finer, not scaled).
+"$GLINT" -w 32 -h 24 --spp 1 --quiet -o d8.ppm && "$GLINT" -w 32 -h 24 --spp 1 --quiet --bit-depth 16 -o d16.ppm &&
+    "$GLINT" -w 32 -h 24 --spp 1 --quiet --bit-depth=16 -o d16.png
+if [ "$(head -c 15 d16.ppm | tr '\n' ' ')" = "P6 32 24 65535 " ] && [ "$(stat -c %s d16.ppm)" -eq $((15 + 32 * 24 * 6)) ] &&
+   [ "$(od -An -tu1 -j 24 -N 1 d16.png | tr -d ' ')" = 16 ] &&
+   paste <(tail -c $((32 * 24 * 3)) d8.ppm | od -An -v -tu1 -w1) \
+         <(tail -c $((32 * 24 * 6)) d16.ppm | od -An -v -tu2 --endian=big -w2) |
+       awk '{ d = $2 * 255 / 65535 - $1; if (d > 0.501 || d < -0.501) bad++; if ($2 % 257) finer++ }
+            END { exit !(NR == 32 * 24 * 3 && bad == 0 && finer > 0) }'; then
+    passed=$((passed + 1))
+else
+    echo "FAIL: --bit-depth 16 output"; failed=$((failed + 1))
+fi
+
 # GNU habits: -h alone is the help, --name=value is --name value (the same
 # bytes), and --threads 0 is one thread per core (the same bytes again).
 help=$("$GLINT" -h 2>/dev/null)

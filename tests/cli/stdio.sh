@@ -28,6 +28,8 @@ check "-o - --format exr --exr-pixel float: the bytes of -o FILE" same_bytes exr
 check "-o - is PNG by default" bash -c "'$GLINT' ${small[*]} -q -o - >default.out && cmp -s default.out file.png"
 check "--format ppm -o x.PPM writes the file" bash -c "'$GLINT' ${small[*]} -q --format ppm -o x.PPM && cmp -s x.PPM file.ppm"
 check "--format ppm alone writes glint.ppm" bash -c "'$GLINT' ${small[*]} -q --format=ppm && cmp -s glint.ppm file.ppm"
+check "-o - --format png --bit-depth 16: the bytes of -o FILE" same_bytes png --bit-depth 16
+check "-o - --format ppm --bit-depth 16: the bytes of -o FILE" same_bytes ppm --bit-depth 16
 rm -f ./*.png ./*.ppm ./*.PPM ./*.exr default.out summary.txt
 
 check "--help names --format and '-'" bash -c "'$GLINT' --help | grep -q -- '--format png|ppm|exr' && '$GLINT' --help | grep -q \"'-' reads it from standard input\""

@@ -93,6 +93,8 @@ static void check_options(const cli_options *o, int argc, char **argv)
         abort();
     if (o->exr_pixel != -1 && o->exr_pixel != GLINT_EXR_HALF && o->exr_pixel != GLINT_EXR_FLOAT)
         abort();
+    if (!unset_or_in(o->bit_depth, 0, 1))
+        abort();
     if (o->view != -1 && (o->view < GLINT_VIEW_AUTO || o->view > GLINT_VIEW_ISO || !o->scene ||
                           !glint_is_model_path(o->scene)))
         abort();

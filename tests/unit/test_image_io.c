@@ -209,6 +209,36 @@ static void write_png16(const char *path, int width, int height, const uint16_t 
     assert_int_equal(fclose(f), 0);
 }
 
+/* libpng's reading of the 16-bit RGB PNG at path, width x height, its
+ * samples as stored (no gamma or other transformation) into rgb. */
+static void read_png16(const char *path, int width, int height, uint16_t *rgb)
+{
+    FILE *f = fopen(path, "rb");
+    assert_non_null(f);
+    png_structp png = png_create_read_struct(PNG_LIBPNG_VER_STRING, NULL, NULL, NULL);
+    assert_non_null(png);
+    png_infop info = png_create_info_struct(png);
+    assert_non_null(info);
+    if (setjmp(png_jmpbuf(png)))
+        fail_msg("libpng could not read %s", path);
+    png_init_io(png, f);
+    png_read_info(png, info);
+    assert_int_equal(png_get_image_width(png, info), width);
+    assert_int_equal(png_get_image_height(png, info), height);
+    assert_int_equal(png_get_bit_depth(png, info), 16);
+    assert_int_equal(png_get_color_type(png, info), PNG_COLOR_TYPE_RGB);
+    unsigned char row[6 * 512];
+    assert_true(width <= 512);
+    for (int y = 0; y < height; y++) {
+        png_read_row(png, row, NULL);
+        for (int i = 0; i < 3 * width; i++)
+            rgb[3 * width * y + i] = (uint16_t)(row[2 * i] << 8 | row[2 * i + 1]);
+    }
+    png_read_end(png, NULL);
+    png_destroy_read_struct(&png, &info, NULL);
+    fclose(f);
+}
+
 static void put_be32(unsigned char *p, uint32_t v)
 {
     p[0] = (unsigned char)(v >> 24);
@@ -475,6 +505,85 @@ static void test_write_png_decodes_to_srgb_bytes(void **state)
     free(bytes);
     free(want);
     free(got);
+}
+
+/* sample_linear's 16-bit sRGB codes, worked out apart (Python, from the
+ * sRGB formula): what 16-bit PNG and PPM files hold. */
+static const uint16_t sample_srgb16[18] = {
+    0, 65535, 48192,  32765, 0, 0,    65535, 847, 2651,
+    30235, 57725, 16240, 8, 62565, 38261,  6544, 52280, 9942,
+};
+
+static void test_write_16bit_ppm(void **state)
+{
+    char path[PATH_SIZE];
+    glint_error err = {0};
+    glint_image img = sample_image();
+    tmp_path(path, "deep.ppm");
+    glint_image_write_options sixteen = {.bit_depth = 16};
+    assert_int_equal(glint_image_write_ex(&img, path, &sixteen, &err), GLINT_OK);
+    glint_image_free(&img);
+    size_t size;
+    unsigned char *bytes = read_bytes(path, &size);
+    static const char header[] = "P6\n3 2\n65535\n";
+    assert_int_equal(size, strlen(header) + 36);
+    assert_memory_equal(bytes, header, strlen(header));
+    for (int i = 0; i < 18; i++)
+        assert_int_equal(bytes[strlen(header) + 2 * i] << 8 | bytes[strlen(header) + 2 * i + 1], sample_srgb16[i]);
+    free(bytes);
+}
+
+/* A 16-bit PNG holds every channel's 16-bit code, over many rows (the Up
+ * filter works on bytes) and slices (several threads deflate it). */
+static void test_write_16bit_png(void **state)
+{
+    enum { width = 307, height = 499 };
+    char path[PATH_SIZE];
+    glint_error err = {0};
+    glint_image img = noise_image(width, height);
+    memcpy(img.pixels, sample_linear, sizeof sample_linear);
+    size_t n = 3 * (size_t)width * height;
+    float *linear = malloc(n * sizeof *linear);
+    uint16_t *got = malloc(n * sizeof *got);
+    assert_non_null(linear);
+    assert_non_null(got);
+    memcpy(linear, img.pixels, n * sizeof *linear);
+    tmp_path(path, "deep.png");
+    glint_image_write_options sixteen = {.bit_depth = 16};
+    assert_int_equal(glint_image_write_ex(&img, path, &sixteen, &err), GLINT_OK);
+    glint_image_free(&img);
+    read_png16(path, width, height, got);
+    for (int i = 0; i < 18; i++)
+        assert_int_equal(got[i], sample_srgb16[i]);
+    for (size_t i = 0; i < n; i++)
+        /* within half a 16-bit step of the exact code: 8 bits would be 128 steps apart */
+        assert_near(got[i], glint_linear_to_srgb(linear[i]) * 65535, 0.5 + 1e-6);
+    free(linear);
+    free(got);
+}
+
+/* Bit depths other than 8 and 16 are refused before anything is written. */
+static void test_write_bad_bit_depth(void **state)
+{
+    char path[PATH_SIZE];
+    glint_error err = {0};
+    glint_image img = sample_image();
+    tmp_path(path, "shallow.png");
+    static const int bad[] = {1, 7, 12, 32, -8};
+    for (size_t k = 0; k < sizeof bad / sizeof bad[0]; k++) {
+        glint_image_write_options o = {.bit_depth = bad[k]};
+        char want[PATH_SIZE + 64];
+        snprintf(want, sizeof want, "cannot write '%s': bit depth %d is neither 8 nor 16", path, bad[k]);
+        expect_error(glint_image_write_ex(&img, path, &o, &err), &err, GLINT_ERR_INVALID, want);
+        assert_int_equal(access(path, F_OK), -1);
+    }
+    glint_image_write_options eight = {.bit_depth = 8};
+    assert_int_equal(glint_image_write_ex(&img, path, &eight, &err), GLINT_OK);
+    size_t size;
+    unsigned char *bytes = read_bytes(path, &size);
+    assert_int_equal(bytes[24], 8);
+    free(bytes);
+    glint_image_free(&img);
 }
 
 static void test_write_extension_any_case(void **state)
@@ -807,7 +916,7 @@ static void test_png_encode_any_thread_count(void **state)
         for (int threads = 1; threads <= 5; threads += 2) {
             unsigned char *bytes;
             size_t size;
-            assert_true(png_encode(&img, threads, &bytes, &size));
+            assert_true(png_encode(&img, 8, threads, &bytes, &size));
             if (!first) {
                 first = bytes;
                 first_size = size;
@@ -835,7 +944,7 @@ static void test_png_encode_chunks(void **state)
     glint_image img = noise_image(width, height);
     unsigned char *bytes;
     size_t size;
-    assert_true(png_encode(&img, 2, &bytes, &size));
+    assert_true(png_encode(&img, 8, 2, &bytes, &size));
     char types[64];
     chunk_types(bytes, size, types, sizeof types);
     assert_string_equal(types, "IHDRsRGBIDATIDATIEND");
@@ -1328,6 +1437,9 @@ int main(void)
         cmocka_unit_test(test_srgb_continuous_at_boundary),
         cmocka_unit_test(test_srgb_round_trips),
         cmocka_unit_test(test_write_ppm_bytes),
+        cmocka_unit_test(test_write_16bit_ppm),
+        cmocka_unit_test(test_write_16bit_png),
+        cmocka_unit_test(test_write_bad_bit_depth),
         cmocka_unit_test(test_write_png_round_trip),
         cmocka_unit_test(test_write_png_decodes_to_srgb_bytes),
         cmocka_unit_test(test_write_extension_any_case),
