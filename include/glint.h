@@ -177,13 +177,21 @@ typedef struct glint_camera {
                                   sharp, >= 0 (0: the distance to look_at); 0 for the pinhole */
     int blades;                /* thin lens: 0, a round aperture, or 3..64 blades: a regular
                                   polygon of radius `aperture` (polygonal bokeh) */
+    double f_number;           /* thin lens: the lens's size as a photographer's f-number N
+                                  instead of `aperture` (0: aperture gives it): its radius is
+                                  the focal length / (2 N), the focal length that of a sensor
+                                  sensor_width wide seeing this field of view */
+    double sensor_width;       /* thin lens with f_number: the sensor's width in scene units,
+                                  > 0 (0: 0.036, a 36 mm full-frame sensor, scene units
+                                  taken as metres) */
     double view_width;         /* orthographic: the view's width in scene units, >= 0 (0:
                                   the pinhole's at look_at's distance); 0 for other kinds */
 } glint_camera;
 
 /* Replaces the camera after checking it (distinct position and look_at, up
  * not parallel to the view direction, field of view in range, a lens's
- * values only for the thin lens). */
+ * values only for the thin lens, aperture or f_number but not both, and
+ * sensor_width only with f_number). */
 glint_status glint_scene_set_camera(glint_scene *scene, const glint_camera *cam, glint_error *err);
 
 /* Returns the scene's current camera. */

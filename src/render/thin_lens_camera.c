@@ -2,7 +2,7 @@
  * through an image position crosses the plane of focus (focus_distance
  * along the view direction) at one point; the thin lens's ray for a lens
  * sample starts at that sample's point on a disk of radius `aperture`
- * about the camera's position, across the view, and goes to that point.
+ * (or the radius an f-number gives) about the camera's position, across the view, and goes to that point.
  * Points on the plane of focus are sharp; a point at depth d blurs into a
  * disk 2 * aperture * |1/focus - 1/d| across on the image plane at
  * distance 1. The lens sample is spread over the disk by the concentric
@@ -13,10 +13,24 @@
 #include "core/square_maps.h"
 #include "render/camera_kind.h"
 
+/* The width of a full-frame (35 mm film) sensor, 36 mm, in metres: what an
+ * f-number is relative to when the scene gives no sensor_width. */
+#define FULL_FRAME_WIDTH 0.036
+
+/* The lens's radius for an f-number: the focal length over twice N, the
+ * focal length being the distance at which a sensor sensor_width wide
+ * spans the horizontal field of view (fov is the vertical one). */
+static double f_number_radius(const glint_camera *d, int width, int height)
+{
+    double sensor = d->sensor_width > 0 ? d->sensor_width : FULL_FRAME_WIDTH;
+    double half_width = tan(d->vfov_degrees * M_PI / 360) * width / height;
+    return sensor / (2 * half_width) / (2 * d->f_number);
+}
+
 static void thin_lens_init(camera *c, const glint_camera *d, int width, int height)
 {
     camera_frame_init(c, d, width, height);
-    c->lens_radius = d->aperture;
+    c->lens_radius = d->f_number > 0 ? f_number_radius(d, width, height) : d->aperture;
     c->blades = d->blades;
     /* 0: focused on look_at, at its depth along the view. */
     c->focus_distance = d->focus_distance > 0 ? d->focus_distance : v3_length(v3_sub(d->look_at, d->position));

@@ -76,6 +76,14 @@ static const param CAMERA_PARAMS[] = {
     {.key = "focus_distance", .type = PARAM_NUMBER, CAMERA(focus_distance), .lo = 0, .hi = DBL_MAX,
      .unit = "scene units",
      .meaning = "thin_lens: the distance along the view direction that is in focus (0: to look_at)"},
+    {.key = "f_number", .type = PARAM_NUMBER, CAMERA(f_number), .lo = 0, .hi = DBL_MAX,
+     .meaning = "thin_lens: the lens's size as a photographer's f-number N instead of aperture (0: aperture "
+                "gives it): radius = focal length / (2 N), the focal length that of a sensor sensor_width "
+                "wide seeing fov; smaller N blurs more"},
+    {.key = "sensor_width", .type = PARAM_NUMBER, CAMERA(sensor_width), .lo = 0, .hi = DBL_MAX,
+     .unit = "scene units",
+     .meaning = "thin_lens with f_number: the sensor's width (0: 0.036, a 36 mm full-frame sensor with "
+                "scene units in metres)"},
     {.key = "blades", .type = PARAM_INTEGER, CAMERA(blades), .lo = 0, .hi = 64, .rule = no_two_blades,
      .rule_text = "0 (round) or from 3 to 64",
      .meaning = "thin_lens: the aperture's blades: out-of-focus points blur into that regular polygon (0: a disk)"},
@@ -244,10 +252,21 @@ glint_status camera_validate(const glint_camera *c, glint_error *err)
         return error_set(err, GLINT_ERR_INVALID, "camera up must not be parallel to the view direction");
     /* A key of another kind is a forgotten type, not a wish for its default. */
     const char *kind = CAMERA_KINDS[c->kind];
-    if (c->kind != GLINT_CAMERA_THIN_LENS && (c->aperture != 0 || c->focus_distance != 0 || c->blades != 0))
+    const char *lens_key = c->aperture != 0         ? "aperture"
+                           : c->focus_distance != 0 ? "focus_distance"
+                           : c->blades != 0         ? "blades"
+                           : c->f_number != 0       ? "f_number"
+                           : c->sensor_width != 0   ? "sensor_width"
+                                                    : NULL;
+    if (c->kind != GLINT_CAMERA_THIN_LENS && lens_key)
         return error_set(err, GLINT_ERR_INVALID, "camera %s is for type thin_lens, and this camera is %s %s",
-                         c->aperture != 0 ? "aperture" : c->focus_distance != 0 ? "focus_distance" : "blades",
-                         a_or_an(kind), kind);
+                         lens_key, a_or_an(kind), kind);
+    if (c->aperture != 0 && c->f_number != 0)
+        return error_set(err, GLINT_ERR_INVALID, "camera takes aperture or f_number, not both (aperture is the "
+                         "lens's radius, f_number the same size as a photographer gives it)");
+    if (c->sensor_width != 0 && c->f_number == 0)
+        return error_set(err, GLINT_ERR_INVALID, "camera sensor_width only sizes the lens of an f_number: give "
+                         "f_number too, or leave sensor_width out");
     if (c->kind != GLINT_CAMERA_ORTHOGRAPHIC && c->view_width != 0)
         return error_set(err, GLINT_ERR_INVALID, "camera view_width is for type orthographic, and this camera is %s %s",
                          a_or_an(kind), kind);

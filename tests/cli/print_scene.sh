@@ -148,6 +148,8 @@ camera:
   type: pinhole
   aperture: 0
   focus_distance: 0
+  f_number: 0
+  sensor_width: 0
   blades: 0
   view_width: 0
 materials:

@@ -883,7 +883,7 @@ static double spread_x(const glint_image *im)
 /* A small sphere seen through a camera at the origin looking down -z
  * (10 degrees of view over 101 x 101 pixels, 16 x 16 samples): its spread. */
 static double sphere_spread(glint_camera_kind kind, double aperture, double focus, double depth, double radius,
-                            int blades)
+                            int blades, double f_number)
 {
     glint_scene *s = new_scene(101, 101, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 10);
     glint_settings st = glint_scene_get_settings(s);
@@ -894,6 +894,7 @@ static double sphere_spread(glint_camera_kind kind, double aperture, double focu
     cam.aperture = aperture;
     cam.focus_distance = focus;
     cam.blades = blades;
+    cam.f_number = f_number;
     assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
     add_sphere(s, 0, 0, -depth, radius, flat(s, 1, 1, 1));
     glint_image im;
@@ -916,20 +917,39 @@ static void test_thin_lens_circle_of_confusion(void **state)
     (void)state;
     double aperture = 0.1, pixel = 2 * tan(5 * M_PI / 180) / 101;
     double expected = 2 * aperture * (1.0 / 4 - 1.0 / 6) / pixel; /* 9.6 pixels across */
-    double sharp = sphere_spread(GLINT_CAMERA_PINHOLE, 0, 0, 6, 0.02, 0);
-    double blurred = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 4, 6, 0.02, 0);
+    double sharp = sphere_spread(GLINT_CAMERA_PINHOLE, 0, 0, 6, 0.02, 0, 0);
+    double blurred = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 4, 6, 0.02, 0, 0);
     double diameter = 4 * sqrt(blurred - sharp);
     assert_true(fabs(diameter - expected) <= 0.1 * expected);
-    double focused = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 6, 6, 0.02, 0);
+    double focused = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 6, 6, 0.02, 0, 0);
     assert_near(focused, sharp, 0.05 * sharp);
     /* Focus 0 is look_at's distance: 1 here, so the sphere at 6 blurs by 2 * 0.1 * (1 - 1/6). */
-    double to_look_at = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 0, 6, 0.02, 0);
+    double to_look_at = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 0, 6, 0.02, 0, 0);
     double near_expected = 2 * aperture * (1.0 - 1.0 / 6) / pixel;
     assert_true(fabs(4 * sqrt(to_look_at - sharp) - near_expected) <= 0.1 * near_expected);
     /* Six blades: a regular hexagon of the disk's radius spreads 5/24 of
      * its radius squared along x where the disk spreads 6/24. */
-    double hexagon = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 4, 6, 0.02, 6);
+    double hexagon = sphere_spread(GLINT_CAMERA_THIN_LENS, aperture, 4, 6, 0.02, 6, 0);
     assert_true(fabs((hexagon - sharp) / (blurred - sharp) - 5.0 / 6) <= 0.05 * 5 / 6);
+}
+
+/* An f-number N sizes the lens as a camera's does: radius f / (2 N), f the
+ * focal length at which a 36 mm (0.036 units) sensor spans the 10 degrees
+ * across: 0.036 / (2 tan 5 degrees) = 0.2057. At N = 1.0287 that is the
+ * radius 0.1 above, and the sphere blurs into the same circle. */
+static void test_thin_lens_f_number(void **state)
+{
+    (void)state;
+    double focal = 0.036 / (2 * tan(5 * M_PI / 180)), n = focal / (2 * 0.1);
+    double pixel = 2 * tan(5 * M_PI / 180) / 101;
+    double expected = 2 * 0.1 * (1.0 / 4 - 1.0 / 6) / pixel;
+    double sharp = sphere_spread(GLINT_CAMERA_PINHOLE, 0, 0, 6, 0.02, 0, 0);
+    double by_f_number = sphere_spread(GLINT_CAMERA_THIN_LENS, 0, 4, 6, 0.02, 0, n);
+    assert_true(fabs(4 * sqrt(by_f_number - sharp) - expected) <= 0.1 * expected);
+    assert_near(by_f_number, sphere_spread(GLINT_CAMERA_THIN_LENS, 0.1, 4, 6, 0.02, 0, 0), 1e-6 * by_f_number);
+    /* Twice the f-number, half the lens: a circle half as wide. */
+    double stopped_down = sphere_spread(GLINT_CAMERA_THIN_LENS, 0, 4, 6, 0.02, 0, 2 * n);
+    assert_true(fabs(4 * sqrt(stopped_down - sharp) - expected / 2) <= 0.1 * expected / 2);
 }
 
 /* Exposure in stops: +1 doubles every pixel exactly, -1 halves it; 0 is
@@ -1027,6 +1047,25 @@ static void test_thin_lens_values_checked(void **state)
     assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
     cam.focus_distance = -1;
     assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_ERR_INVALID);
+    cam.focus_distance = 0;
+    cam.f_number = 2.8;
+    assert_int_equal(glint_scene_set_camera(s, &cam, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "camera takes aperture or f_number, not both (aperture is the lens's radius, "
+                                     "f_number the same size as a photographer gives it)");
+    cam.aperture = 0;
+    cam.sensor_width = 0.024;
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    cam.f_number = 0;
+    assert_int_equal(glint_scene_set_camera(s, &cam, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "camera sensor_width only sizes the lens of an f_number: give f_number too, "
+                                     "or leave sensor_width out");
+    cam.f_number = -1;
+    cam.sensor_width = 0;
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_ERR_INVALID);
+    cam.f_number = 2;
+    cam.kind = GLINT_CAMERA_PINHOLE;
+    assert_int_equal(glint_scene_set_camera(s, &cam, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "camera f_number is for type thin_lens, and this camera is a pinhole");
     glint_scene_free(s);
 }
 
@@ -1154,6 +1193,7 @@ int main(void)
         cmocka_unit_test(test_nan_samples_never_reach_a_pixel),
         cmocka_unit_test(test_sphere_silhouette_area),
         cmocka_unit_test(test_thin_lens_circle_of_confusion),
+        cmocka_unit_test(test_thin_lens_f_number),
         cmocka_unit_test(test_thin_lens_values_checked),
         cmocka_unit_test(test_exposure_scales_every_pixel),
         cmocka_unit_test(test_light_falloff_modes),

@@ -570,6 +570,18 @@ static void test_camera_focus_on(void **state)
     glint_scene_free(s);
 }
 
+/* f_number and sensor_width reach the camera as written. */
+static void test_camera_f_number(void **state)
+{
+    glint_scene *s = load_good("camera: {type: thin_lens, position: [0, 1, 6], look_at: [0, 1, 0], f_number: 2.8,"
+                               " sensor_width: 0.024}\n");
+    glint_camera c = glint_scene_get_camera(s);
+    assert_exact(c.f_number, 2.8);
+    assert_exact(c.sensor_width, 0.024);
+    assert_exact(c.aperture, 0);
+    glint_scene_free(s);
+}
+
 /* The environment names a texture; its intensity and rotation default to 1 and 0. */
 static void test_environment(void **state)
 {
@@ -1785,6 +1797,17 @@ static const bad_scene BAD[] = {
     {"focus_on_and_distance",
      "camera: {type: thin_lens, position: [0, 0, 6], focus_on: [0, 0, 0], focus_distance: 2}\n",
      "bad.yaml:1:58: camera takes focus_on or focus_distance, not both", 1},
+    {"aperture_and_f_number",
+     "camera: {type: thin_lens, position: [0, 0, 6], aperture: 0.1, f_number: 2.8}\n",
+     "bad.yaml:1:9: camera takes aperture or f_number, not both (aperture is the lens's radius, f_number the same "
+     "size as a photographer gives it)", 1},
+    {"sensor_width_alone",
+     "camera: {type: thin_lens, position: [0, 0, 6], sensor_width: 0.024}\n",
+     "bad.yaml:1:9: camera sensor_width only sizes the lens of an f_number: give f_number too, or leave "
+     "sensor_width out", 1},
+    {"f_number_pinhole",
+     "camera: {position: [0, 0, 6], f_number: 2}\n",
+     "bad.yaml:1:9: camera f_number is for type thin_lens, and this camera is a pinhole", 1},
     {"focus_on_behind",
      "camera: {type: thin_lens, position: [0, 0, 6], look_at: [0, 0, 0], focus_on: [0, 0, 9]}\n",
      "bad.yaml:1:78: camera focus_on must lie in front of the camera (its depth along the view is -3)", 1},
@@ -2837,6 +2860,7 @@ int main(void)
         cmocka_unit_test(test_settings_filter_and_adaptive),
         cmocka_unit_test(test_environment),
         cmocka_unit_test(test_camera_focus_on),
+        cmocka_unit_test(test_camera_f_number),
         cmocka_unit_test(test_lights),
         cmocka_unit_test(test_area_lights),
         cmocka_unit_test(test_sphere_and_plane),
