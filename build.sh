@@ -13,7 +13,7 @@ cd "$(dirname "$0")"
 
 PACKAGES=(gcc make cmake pkg-config libembree-dev zlib1g-dev libpng-dev libjpeg62-turbo-dev libyaml-dev libassimp-dev
           libopenexr-dev libcmocka-dev clang libclang-rt-14-dev openexr openmpi-bin libopenmpi-dev
-          libsdl2-dev libx11-dev xvfb xdotool imagemagick)
+          libsdl2-dev libx11-dev xvfb xdotool imagemagick povray)
 
 install_missing() {
     local missing=()

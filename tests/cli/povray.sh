@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# Soft shadows and depth of field against an independent renderer, POV-Ray
+# 3.7, at thumbnail scale: each scene is rendered by both at 96x72 (16 bits
+# a channel, sRGB), shrunk by averaging 2x2 or 4x4 pixels, and compared by
+# ImageMagick's mean and peak absolute error (as a share of full scale).
+#
+# - Soft shadow: glint's sphere light (radius 0.8, 1024 samples) against
+#   POV-Ray's `area_light` of 32x32 jittered points on a disc of the same
+#   radius turned to face each point (`circular orient`). Both light a white
+#   floor and a ball; POV-Ray's fade_power 2 with a short fade_distance is
+#   the inverse square a sphere light has, its colour r^2 / (2 fade^2) times
+#   the sphere's radiance. The floor around the shadow, umbra and penumbra,
+#   must agree. (A lamp 25% smaller in POV-Ray puts the peak error at 12%.)
+# - Depth of field: glint's thin lens (aperture 0.15, 256 Sobol samples)
+#   against POV-Ray's focal_blur (256 blur_samples, no early stop), focused
+#   on look_at. POV-Ray's aperture is four times the lens's radius (measured
+#   from a point's blur circle: 0.25 of its aperture at every fov, focus and
+#   size tried). Three balls before, at and past the focus must blur alike.
+#   (An aperture 25% smaller puts the peak error at 6%, here under 1%.)
+# Usage: povray.sh PATH/TO/glint
+source "$(dirname "$0")/lib/harness.sh"
+
+# POV-Ray's horizontal angle for glint's vertical fov of 40 degrees at 4:3.
+ANGLE=51.77400875924256
+
+# render NAME: glint renders NAME.yaml to NAME-glint.ppm, POV-Ray NAME.pov
+# to NAME-povray.ppm (POV-Ray reads and writes only in the working folder,
+# which Debian's povray.conf allows under /tmp).
+render() {
+    "$GLINT" "$1.yaml" --bit-depth 16 -q -o "$1-glint.ppm" &&
+        povray -D "+I$1.pov" "+O$1-povray.ppm" +FP16 +W96 +H72 -A File_Gamma=sRGB >"$1-povray.log" 2>&1 ||
+        { sed 's/^/  /' "$1-povray.log"; return 1; }
+}
+
+# close NAME CROP SCALE MAE PAE: the CROP (ImageMagick geometry) of both
+# images, shrunk to SCALE, differ by at most MAE on average and PAE at the
+# worst pixel.
+close() {
+    local name=$1 crop=$2 scale=$3 mae pae
+    convert "$name-glint.ppm" -crop "$crop" +repage -scale "$scale" glint-t.ppm &&
+        convert "$name-povray.ppm" -crop "$crop" +repage -scale "$scale" povray-t.ppm || return 1
+    mae=$(compare -metric MAE glint-t.ppm povray-t.ppm null: 2>&1 | sed 's/.*(\(.*\))/\1/')
+    pae=$(compare -metric PAE glint-t.ppm povray-t.ppm null: 2>&1 | sed 's/.*(\(.*\))/\1/')
+    echo "  $name $crop at $scale: mean error $mae (at most $4), peak $pae (at most $5)"
+    awk -v m="$mae" -v p="$pae" -v mm="$4" -v pp="$5" 'BEGIN { exit !(m <= mm && p <= pp) }'
+}
+
+cat >soft.yaml <<'EOF'
+glint: 1
+settings: { width: 96, height: 72, samples: 1, ambient: [0, 0, 0], background: [0, 0, 0] }
+camera: { position: [0, 4, 5], look_at: [0, 0.4, 0], fov: 40 }
+materials:
+  white: { color: [1, 1, 1], specular: 0, ambient: 0 }
+lights:
+  - { type: sphere, position: [0.8, 5, 0.4], radius: 0.8, intensity: 25, samples: 1024 }
+objects:
+  - { type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: white }
+  - { type: sphere, center: [0, 0.9, 0], radius: 0.5, material: white }
+EOF
+cat >soft.pov <<EOF
+#version 3.7;
+global_settings { assumed_gamma 1.0 ambient_light rgb 0 }
+camera { perspective location <0, 4, -5> look_at <0, 0.4, 0> right x*4/3 up y angle $ANGLE }
+background { rgb 0 }
+// 25 * 0.8^2 / (2 * 0.05^2) = 3200
+light_source { <0.8, 5, -0.4> color rgb 3200
+  area_light <1.6, 0, 0>, <0, 0, 1.6>, 32, 32 jitter circular orient
+  fade_distance 0.05 fade_power 2 }
+#declare White = texture { pigment { rgb 1 } finish { ambient 0 diffuse 1 specular 0 phong 0 } }
+plane { y, 0 texture { White } }
+sphere { <0, 0.9, 0>, 0.5 texture { White } }
+EOF
+
+cat >dof.yaml <<'EOF'
+glint: 1
+settings: { width: 96, height: 72, samples: 256, sampler: sobol, ambient: [0, 0, 0],
+            background: {linear: [0.2, 0.3, 0.5]} }
+camera: { type: thin_lens, position: [0, 1, 6], look_at: [0, 0.5, 0], fov: 40, aperture: 0.15 }
+materials:
+  grey: { color: {linear: [0.5, 0.5, 0.5]}, specular: 0, ambient: 0 }
+  red: { color: {linear: [0.8, 0.1, 0.05]}, specular: 0, ambient: 0 }
+  green: { color: {linear: [0.1, 0.6, 0.1]}, specular: 0, ambient: 0 }
+  blue: { color: {linear: [0.1, 0.2, 0.8]}, specular: 0, ambient: 0 }
+lights:
+  - { type: point, position: [4, 6, 6], color: {linear: [1, 1, 1]} }
+objects:
+  - { type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: grey }
+  - { type: sphere, center: [-0.9, 0.5, 3], radius: 0.5, material: red }
+  - { type: sphere, center: [0, 0.5, 0], radius: 0.5, material: green }
+  - { type: sphere, center: [1.1, 0.5, -4], radius: 0.5, material: blue }
+EOF
+cat >dof.pov <<EOF
+#version 3.7;
+global_settings { assumed_gamma 1.0 ambient_light rgb 0 }
+camera { perspective location <0, 1, -6> look_at <0, 0.5, 0> right x*4/3 up y angle $ANGLE
+  aperture 0.6 blur_samples 256 focal_point <0, 0.5, 0> confidence 0.9 variance 0 }
+background { rgb <0.2, 0.3, 0.5> }
+light_source { <4, 6, -6> color rgb 1 }
+#declare Matte = finish { ambient 0 diffuse 1 specular 0 phong 0 }
+plane { y, 0 pigment { rgb 0.5 } finish { Matte } }
+sphere { <-0.9, 0.5, -3>, 0.5 pigment { rgb <0.8, 0.1, 0.05> } finish { Matte } }
+sphere { <0, 0.5, 0>, 0.5 pigment { rgb <0.1, 0.6, 0.1> } finish { Matte } }
+sphere { <1.1, 0.5, 4>, 0.5 pigment { rgb <0.1, 0.2, 0.8> } finish { Matte } }
+EOF
+
+if ! command -v povray >/dev/null || ! command -v compare >/dev/null; then
+    echo "skipped: povray or ImageMagick is not installed (Debian: povray imagemagick)"
+    exit 77
+fi
+check "glint and POV-Ray render the soft shadow" render soft
+# The floor below the ball: the shadow's umbra and penumbra, at 2x2.
+check "the soft shadow's umbra and penumbra match POV-Ray's" close soft 96x32+0+36 50% 0.0012 0.06
+# The whole picture at 4x4: the lit ball too.
+check "the soft-shadow scene matches POV-Ray's at 24x18" close soft 96x72+0+0 25% 0.0015 0.08
+check "glint and POV-Ray render the depth of field" render dof
+check "the depth of field matches POV-Ray's focal_blur at 24x18" close dof 96x72+0+0 25% 0.0015 0.02
+check "the depth of field matches POV-Ray's focal_blur at 48x36" close dof 96x72+0+0 50% 0.002 0.04
+finish
