@@ -69,20 +69,40 @@ static inline uint32_t sobol_second_reversed(uint32_t i)
     return i;
 }
 
-/* Point i of the scrambled two-dimensional Sobol sequence with the given
- * seed, in [0, 1)^2: index i shuffled within its aligned runs of each
- * power of two, then each coordinate scrambled. The first coordinate's
- * generator is the identity (van der Corput: the index reversed), the
- * second's Pascal's triangle modulo 2 (Sobol's direction numbers for the
- * polynomial x + 1). Each step is owen_scramble written out, so that
- * reversals that undo each other are left out. */
-static inline void sobol2_scrambled(uint32_t i, uint32_t seed, double *x, double *y)
+/* The three scrambles a seed's sequence uses: of the index, and of each
+ * coordinate. A caller taking many points of one sequence works them out
+ * once (sobol2_seeds_of) and passes them to each sobol2_point. */
+typedef struct sobol2_seeds {
+    uint32_t index, x, y;
+} sobol2_seeds;
+
+static inline sobol2_seeds sobol2_seeds_of(uint32_t seed)
 {
-    uint32_t index = reverse_bits32(scramble_upwards(reverse_bits32(i), hash_u32(seed)));
-    uint32_t first = reverse_bits32(scramble_upwards(index, hash_u32(seed ^ 0x5851f42dU)));
-    uint32_t second = reverse_bits32(scramble_upwards(sobol_second_reversed(index), hash_u32(seed ^ 0x4c957f2dU)));
+    return (sobol2_seeds){.index = hash_u32(seed), .x = hash_u32(seed ^ 0x5851f42dU),
+                          .y = hash_u32(seed ^ 0x4c957f2dU)};
+}
+
+/* Point i of the scrambled two-dimensional Sobol sequence of the seeds s,
+ * in [0, 1)^2: index i shuffled within its aligned runs of each power of
+ * two, then each coordinate scrambled. The first coordinate's generator is
+ * the identity (van der Corput: the index reversed), the second's Pascal's
+ * triangle modulo 2 (Sobol's direction numbers for the polynomial x + 1).
+ * Each step is owen_scramble written out, so that reversals that undo each
+ * other are left out. */
+static inline void sobol2_point(uint32_t i, sobol2_seeds s, double *x, double *y)
+{
+    uint32_t index = reverse_bits32(scramble_upwards(reverse_bits32(i), s.index));
+    uint32_t first = reverse_bits32(scramble_upwards(index, s.x));
+    uint32_t second = reverse_bits32(scramble_upwards(sobol_second_reversed(index), s.y));
     *x = (first >> 8) * (1.0 / 16777216.0);
     *y = (second >> 8) * (1.0 / 16777216.0);
+}
+
+/* Point i of the scrambled two-dimensional Sobol sequence with the given
+ * seed (sobol2_point of sobol2_seeds_of(seed)). */
+static inline void sobol2_scrambled(uint32_t i, uint32_t seed, double *x, double *y)
+{
+    sobol2_point(i, sobol2_seeds_of(seed), x, y);
 }
 
 #endif

@@ -1,7 +1,6 @@
 /* pixel_samples.c - the samplers: sample positions in the pixel and on the
  * lens (pixel_samples.h). */
 #include "core/hash.h"
-#include "core/sobol.h"
 #include "render/pixel_samples.h"
 
 void pixel_sampler_init(pixel_sampler *ps, const glint_settings *s, bool lens)
@@ -34,6 +33,10 @@ void pixel_samples_start(const pixel_sampler *ps, const int px[RAY8], const int 
             continue;
         uint32_t h = hash4((uint32_t)px[i], (uint32_t)py[i], 0, ps->seed ^ 0x4c454e53U);
         b->pattern[i] = h;
+        if (ps->kind == GLINT_SAMPLER_SOBOL) {
+            b->image[i] = sobol2_seeds_of(h);
+            b->lens[i] = sobol2_seeds_of(hash_u32(h ^ 0x4c454e53U));
+        }
         if (!ps->lens || ps->kind == GLINT_SAMPLER_SOBOL)
             continue;
         b->shuffle_a[i] = 1 + hash_u32(h) % cells;
@@ -43,56 +46,70 @@ void pixel_samples_start(const pixel_sampler *ps, const int px[RAY8], const int 
     }
 }
 
-/* Sample k's point in lane i's pixel, in [0, 1)^2. */
-static void point_in_pixel(const pixel_sampler *ps, const pixel_block_samples *b, int i, int k, double *u,
-                           double *v)
+/* Sample k's point in each lane's pixel, in [0, 1)^2: the sampler chosen
+ * once for the eight lanes, whose loops then run without a branch (the
+ * Sobol points' integer steps vectorise). */
+static void points_in_pixels(const pixel_sampler *ps, const pixel_block_samples *b, int k, double u[RAY8],
+                             double v[RAY8])
 {
     int n = ps->grid, sx = k % n, sy = k / n;
     switch (ps->kind) {
-    case GLINT_SAMPLER_SOBOL: sobol2_scrambled((uint32_t)k, b->pattern[i], u, v); return;
-    case GLINT_SAMPLER_JITTERED: {
-        uint32_t h = hash4((uint32_t)b->px[i], (uint32_t)b->py[i], (uint32_t)k, ps->seed);
-        *u = (sx + hash_unit(h)) / n;
-        *v = (sy + hash_unit(hash_u32(h ^ 0x9e3779b9U))) / n;
+    case GLINT_SAMPLER_SOBOL:
+        for (int i = 0; i < RAY8; i++)
+            sobol2_point((uint32_t)k, b->image[i], &u[i], &v[i]);
         return;
-    }
-    default: regular_point(n, k, u, v);
+    case GLINT_SAMPLER_JITTERED:
+        for (int i = 0; i < RAY8; i++) {
+            uint32_t h = hash4((uint32_t)b->px[i], (uint32_t)b->py[i], (uint32_t)k, ps->seed);
+            u[i] = (sx + hash_unit(h)) / n;
+            v[i] = (sy + hash_unit(hash_u32(h ^ 0x9e3779b9U))) / n;
+        }
+        return;
+    default:
+        regular_point(n, k, &u[0], &v[0]);
+        for (int i = 1; i < RAY8; i++) {
+            u[i] = u[0];
+            v[i] = v[0];
+        }
     }
 }
 
-/* Sample k's point on lane i's lens, in [0, 1)^2: for the grid samplers,
- * a hashed point in the lens cell its image cell is shuffled to. */
-static void point_on_lens(const pixel_sampler *ps, const pixel_block_samples *b, int i, int k, double *u, double *v)
+/* Sample k's point on each lane's lens, in [0, 1)^2: for the grid
+ * samplers, a hashed point in the lens cell its image cell is shuffled to. */
+static void points_on_lenses(const pixel_sampler *ps, const pixel_block_samples *b, int k, camera_lens8 *lens)
 {
     if (ps->kind == GLINT_SAMPLER_SOBOL) {
-        sobol2_scrambled((uint32_t)k, hash_u32(b->pattern[i] ^ 0x4c454e53U), u, v);
+        for (int i = 0; i < RAY8; i++)
+            sobol2_point((uint32_t)k, b->lens[i], &lens->u[i], &lens->v[i]);
         return;
     }
     int n = ps->grid;
     uint32_t cells = (uint32_t)(n * n);
-    int cell = (int)(((uint64_t)b->shuffle_a[i] * (uint32_t)k + b->shuffle_b[i]) % cells);
-    uint32_t h = hash_u32(b->pattern[i] ^ (uint32_t)(cell + 1) * 0x9e3779b9U);
-    *u = (cell % n + hash_unit(h)) / n;
-    *v = (cell / n + hash_unit(hash_u32(h ^ 0x85ebca6bU))) / n;
+    for (int i = 0; i < RAY8; i++) {
+        int cell = (int)(((uint64_t)b->shuffle_a[i] * (uint32_t)k + b->shuffle_b[i]) % cells);
+        uint32_t h = hash_u32(b->pattern[i] ^ (uint32_t)(cell + 1) * 0x9e3779b9U);
+        lens->u[i] = (cell % n + hash_unit(h)) / n;
+        lens->v[i] = (cell / n + hash_unit(hash_u32(h ^ 0x85ebca6bU))) / n;
+    }
 }
 
 void pixel_samples_at_any(const pixel_sampler *ps, const pixel_block_samples *b, int k, double x[RAY8],
                           double y[RAY8], camera_lens8 *lens, bool negative[RAY8])
 {
+    double u[RAY8], v[RAY8];
+    points_in_pixels(ps, b, k, u, v);
     for (int i = 0; i < RAY8; i++) {
-        double u, v;
-        point_in_pixel(ps, b, i, k, &u, &v);
         negative[i] = false;
         if (ps->plain_box) {
-            x[i] = b->px[i] + u;
-            y[i] = b->py[i] + v;
+            x[i] = b->px[i] + u[i];
+            y[i] = b->py[i] + v[i];
         } else {
             bool below_x, below_y;
-            x[i] = b->px[i] + 0.5 + pixel_filter_offset(&ps->filter, u, &below_x);
-            y[i] = b->py[i] + 0.5 + pixel_filter_offset(&ps->filter, v, &below_y);
+            x[i] = b->px[i] + 0.5 + pixel_filter_offset(&ps->filter, u[i], &below_x);
+            y[i] = b->py[i] + 0.5 + pixel_filter_offset(&ps->filter, v[i], &below_y);
             negative[i] = below_x != below_y;
         }
-        if (ps->lens)
-            point_on_lens(ps, b, i, k, &lens->u[i], &lens->v[i]);
     }
+    if (ps->lens)
+        points_on_lenses(ps, b, k, lens);
 }
