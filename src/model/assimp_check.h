@@ -6,6 +6,7 @@
 #ifndef GLINT_MODEL_ASSIMP_CHECK_H
 #define GLINT_MODEL_ASSIMP_CHECK_H
 
+#include <stdbool.h>
 #include <stddef.h>
 #include "glint.h"
 
@@ -23,6 +24,11 @@ glint_status gltf_check(const unsigned char *data, size_t size, const char *file
  * media type in its JSON has its '/', and its node hierarchy passes
  * gltf_check_nodes (gltf_check.c). */
 glint_status glb_check(const unsigned char *data, size_t size, const char *file, glint_error *err);
+
+/* The JSON of a GLB that passed glb_check, its chunk 0, in *json and
+ * *json_size; false when the file is too short to have one (Assimp
+ * refuses it). */
+bool glb_json(const unsigned char *data, size_t size, const unsigned char **json, size_t *json_size);
 
 /* The most nodes a glTF's hierarchy may expand to, each node counted once
  * for every path to it from a root (docs/robustness.md): Assimp makes a

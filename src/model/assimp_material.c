@@ -51,7 +51,8 @@ static bool is_made_up(const struct aiScene *ai, unsigned i, const model_format 
 
 /* glTF metallic-roughness: base colour is linear already; metals mirror,
  * roughness widens and dims the highlight, transmission refracts, the
- * emissive factor glows. */
+ * emissive factor glows (times the emissive strength, which Assimp does
+ * not read: the caller sets it). */
 static glint_material from_gltf(const struct aiMaterial *a)
 {
     glint_material m = glint_material_default();
@@ -114,7 +115,8 @@ static bool colour_image(const struct aiMaterial *a, struct aiString *ref)
 }
 
 glint_status assimp_add_materials(glint_scene *scene, const struct aiScene *ai, const bool *used, int *index,
-                                  const model_import *job, glint_error *err)
+                                  const double *strengths, size_t strength_count, const model_import *job,
+                                  glint_error *err)
 {
     unsigned n = ai->mNumMaterials ? ai->mNumMaterials : 1;
     model_material *mats = calloc(n, sizeof *mats);
@@ -139,6 +141,8 @@ glint_status assimp_add_materials(glint_scene *scene, const struct aiScene *ai, 
             names[i].length = (ai_uint32)snprintf(names[i].data, sizeof names[i].data, "material%u", i);
         m->name = names[i].data;
         m->m = from_gltf(a);
+        if (i < strength_count)
+            m->m.emission_strength = strengths[i];
         m->texture = colour_image(a, &refs[i]) ? refs[i].data : NULL;
     }
     glint_status s = model_add_materials(scene, mats, count, add_texture, (void *)ai, job, added, err);

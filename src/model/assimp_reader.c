@@ -4,7 +4,9 @@
  * glint documents ever see them. Assimp triangulates, flattens the node
  * hierarchy into world positions, generates missing normals, drops points
  * and lines and validates; its meshes are then merged into one
- * (assimp_merge.c), and its materials become glint's (assimp_material.c).
+ * (assimp_merge.c), and its materials become glint's (assimp_material.c),
+ * with the emissive strength of a glTF's, which Assimp does not read
+ * (gltf_emissive.c).
  * Assimp's C API attaches no logger unless asked, so nothing is printed. */
 #include <math.h>
 #include <pthread.h>
@@ -19,6 +21,7 @@
 #include "model/assimp_io.h"
 #include "model/assimp_material.h"
 #include "model/assimp_merge.h"
+#include "model/gltf_emissive.h"
 #include "model/model_build.h"
 
 /* Assimp's C API keeps the last error message in one global string. */
@@ -147,8 +150,11 @@ static const struct aiScene *assimp_read(assimp_source *src, const char *file, g
     return NULL;
 }
 
-/* Builds the mesh of a model Assimp read: materials first, then the mesh. */
-static int build(glint_scene *scene, const struct aiScene *ai, const model_import *job, glint_error *err)
+/* Builds the mesh of a model Assimp read: materials first (Assimp's
+ * material i with emissive strength strengths[i], when i < strength_count),
+ * then the mesh. */
+static int build(glint_scene *scene, const struct aiScene *ai, const double *strengths, size_t strength_count,
+                 const model_import *job, glint_error *err)
 {
     assimp_merged mg = {0};
     size_t nm = ai->mNumMaterials ? ai->mNumMaterials : 1;
@@ -160,7 +166,7 @@ static int build(glint_scene *scene, const struct aiScene *ai, const model_impor
     if (!s && mg.unnormalled)
         s = assimp_make_normals(&mg, job->crease, job->file, err);
     if (!s)
-        s = assimp_add_materials(scene, ai, used, index, job, err);
+        s = assimp_add_materials(scene, ai, used, index, strengths, strength_count, job, err);
     int mesh = -1;
     if (!s) {
         bool one = true;
@@ -181,9 +187,29 @@ static int build(glint_scene *scene, const struct aiScene *ai, const model_impor
     return mesh;
 }
 
+/* The JSON of a glTF or GLB model, into *json and *json_size; false for
+ * the other formats, and for a GLB too short to have any. */
+static bool gltf_json_of(const unsigned char *data, size_t size, const model_import *job,
+                         const unsigned char **json, size_t *json_size)
+{
+    if (job->format->check == glb_check)
+        return glb_json(data, size, json, json_size);
+    *json = data;
+    *json_size = size;
+    return job->format->check == gltf_check;
+}
+
 static int import_memory(glint_scene *scene, const unsigned char *data, size_t size, const model_import *job,
                          glint_error *err)
 {
+    /* What Assimp does not read of a glTF's materials is read first. */
+    const unsigned char *json;
+    size_t json_size, strength_count = 0;
+    double *strengths = NULL;
+    if (gltf_json_of(data, size, job, &json, &json_size) &&
+        gltf_emissive_strengths(json, json_size, job->file, &strengths, &strength_count, err))
+        return -1;
+
     /* Assimp picks its reader by the name's extension: a model from a file
      * goes by its own name, the files it names beside it; one from memory
      * by a name made of its format's extension. */
@@ -194,9 +220,10 @@ static int import_memory(glint_scene *scene, const unsigned char *data, size_t s
     const struct aiScene *ai = assimp_read(&src, job->file, err);
     int mesh = -1;
     if (ai) {
-        mesh = build(scene, ai, job, err);
+        mesh = build(scene, ai, strengths, strength_count, job, err);
         aiReleaseImport(ai);
     }
+    free(strengths);
     return mesh;
 }
 

@@ -151,11 +151,22 @@ glint_status glb_check(const unsigned char *data, size_t size, const char *file,
                              length, size - pos - 8);
         pos += 8 + (size_t)(length + 3) / 4 * 4;
     }
-    if (size < 20)
+    const unsigned char *json;
+    size_t json_size;
+    if (!glb_json(data, size, &json, &json_size))
         return GLINT_OK;
-    /* Chunk 0 is the JSON; positions in messages are within it. */
+    /* Positions in messages are within the JSON chunk. */
     char where[PATH_MAX + 32];
     snprintf(where, sizeof where, "%s: JSON chunk ", file);
-    glint_status s = check_media_types(data + 20, le32(data + 12), where, err);
-    return s ? s : gltf_check_nodes(data + 20, le32(data + 12), file, err);
+    glint_status s = check_media_types(json, json_size, where, err);
+    return s ? s : gltf_check_nodes(json, json_size, file, err);
+}
+
+bool glb_json(const unsigned char *data, size_t size, const unsigned char **json, size_t *json_size)
+{
+    if (size < 20)
+        return false;
+    *json = data + 20;
+    *json_size = le32(data + 12);
+    return true;
 }

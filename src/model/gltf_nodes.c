@@ -22,22 +22,14 @@
 #include "core/error.h"
 #include "model/assimp_check.h"
 #include "model/json_char.h"
+#include "model/json_scan.h"
 #include "model/model_file.h"
 
-/* Where the scan is in the JSON text. */
-typedef struct reader {
-    const unsigned char *t;
-    size_t size, i;
-    bool nomem;               /* memory ran out (the scan stops as for broken JSON) */
-    char *names;              /* glTF 1's names, decoded, each ended by a NUL: no more than the text */
-    size_t names_used;
-} reader;
-
-/* A glTF 1 reference, by name: NAMED | the name's offset in reader.names,
+/* A glTF 1 reference, by name: NAMED | the name's offset in graph.names,
  * until resolve_names makes it a node's number. */
 #define NAMED (1ULL << 63)
 /* A reference to no node (a number or name out of range). */
-#define NO_NODE (NAMED - 1)
+#define NO_NODE JSON_NO_INDEX
 
 /* The hierarchy as the file gives it: node n's children are
  * child[first[n]] to child[first[n + 1] - 1]. */
@@ -47,7 +39,9 @@ typedef struct graph {
     size_t children, child_cap;
     uint64_t *roots;          /* every scene's root nodes, all scenes together */
     size_t root_count, root_cap;
-    uint64_t *node_names;     /* glTF 1: node n's name (an offset in reader.names) */
+    char *names;              /* glTF 1's names, decoded, each ended by a NUL: no more than the text */
+    size_t names_used;
+    uint64_t *node_names;     /* glTF 1: node n's name (an offset in names) */
     size_t node_name_cap;
     uint64_t *node_mesh;      /* glTF 2: node n's mesh, or NO_NODE */
     size_t node_mesh_cap;
@@ -60,176 +54,30 @@ typedef struct graph {
     size_t accessors, accessor_count_cap;
 } graph;
 
-static void skip_space(reader *r)
+/* Decodes the string at the scan into g->names, its offset there in *at:
+ * the decoded characters are never more than the text's. */
+static bool read_name(json_scan *r, graph *g, uint64_t *at)
 {
-    while (r->i < r->size && (r->t[r->i] == ' ' || r->t[r->i] == '\t' || r->t[r->i] == '\n' || r->t[r->i] == '\r'))
-        r->i++;
-}
-
-/* True, the reader past it, when `c` comes next. */
-static bool take(reader *r, unsigned char c)
-{
-    skip_space(r);
-    if (r->i >= r->size || r->t[r->i] != c)
-        return false;
-    r->i++;
-    return true;
-}
-
-/* Decodes the string at the reader into key (its first size - 1
- * characters; a longer one is cut to size - 1 and marked with a final
- * 0x01, so that it equals no short key). False at a broken string. */
-static bool read_string(reader *r, char *key, size_t size)
-{
-    if (!take(r, '"'))
-        return false;
-    size_t n = 0;
-    int c;
-    while ((c = json_next_char(r->t, r->size, &r->i)) >= 0) {
-        if (n + 1 < size)
-            key[n++] = (char)c;
-        else
-            key[size - 2] = 1;
-    }
-    key[n] = '\0';
-    return c == -1;
-}
-
-/* Decodes the string at the reader into r->names, its offset there in
- * *at: the decoded characters are never more than the text's. */
-static bool read_name(reader *r, uint64_t *at)
-{
-    if (!r->names && !(r->names = malloc(r->size + 1))) {
+    if (!g->names && !(g->names = malloc(r->size + 1))) {
         r->nomem = true;
         return false;
     }
-    skip_space(r);
+    json_skip_space(r);
     size_t start = r->i;
     char none[2];
-    if (!read_string(r, none, sizeof none))
+    if (!json_read_string(r, none, sizeof none))
         return false;
-    *at = r->names_used;
+    *at = g->names_used;
     size_t k = start + 1;
     int c;
     while ((c = json_next_char(r->t, r->size, &k)) >= 0)
-        r->names[r->names_used++] = (char)c;
-    r->names[r->names_used++] = '\0';
+        g->names[g->names_used++] = (char)c;
+    g->names[g->names_used++] = '\0';
     return true;
-}
-
-/* Skips one value of any kind; nesting is counted, never recursed into. */
-static bool skip_value(reader *r)
-{
-    size_t depth = 0;
-    char none[2];
-    do {
-        skip_space(r);
-        if (r->i >= r->size)
-            return false;
-        unsigned char c = r->t[r->i];
-        if (c == '"') {
-            if (!read_string(r, none, sizeof none))
-                return false;
-        } else if (c == '{' || c == '[') {
-            depth++;
-            r->i++;
-        } else if (c == '}' || c == ']' || c == ',' || c == ':') {
-            if (depth == 0)
-                return false;
-            depth -= c == '}' || c == ']';
-            r->i++;
-        } else {
-            size_t start = r->i;
-            while (r->i < r->size && strchr("0123456789+-.eEtruefalsn", r->t[r->i]) && r->t[r->i])
-                r->i++;
-            if (r->i == start)
-                return false;
-        }
-    } while (depth > 0);
-    return true;
-}
-
-/* Moves to the next item of an array or object whose opening bracket has
- * been read: 1 when one follows (the reader at it), 0 past the closing
- * bracket, -1 at broken JSON. */
-static int next_item(reader *r, bool *first, unsigned char close)
-{
-    if (take(r, close))
-        return 0;
-    if (!*first && !take(r, ','))
-        return -1;
-    *first = false;
-    return 1;
-}
-
-/* next_item for an object, its key decoded into key and the reader at its
- * value. */
-static int next_member(reader *r, bool *first, char *key, size_t size)
-{
-    int n = next_item(r, first, '}');
-    if (n <= 0)
-        return n;
-    return read_string(r, key, size) && take(r, ':') ? 1 : -1;
-}
-
-/* Reads an array of node indices, appending each to *list: numbers, or
- * names (NAMED). A value that is neither an unsigned integer nor a string
- * is skipped, as Assimp skips it; one too large for any node is kept, and
- * found out of range by the count. */
-static bool read_indices(reader *r, uint64_t **list, size_t *count, size_t *cap)
-{
-    if (!take(r, '['))
-        return skip_value(r);
-    bool first = true;
-    int n;
-    while ((n = next_item(r, &first, ']')) > 0) {
-        skip_space(r);
-        size_t start = r->i;
-        uint64_t v = 0;
-        if (r->i < r->size && r->t[r->i] == '"') {
-            if (!read_name(r, &v))
-                return false;
-            v |= NAMED;
-            r->i = start;
-        }
-        bool negative = r->i < r->size && r->t[r->i] == '-';
-        r->i += negative;
-        /* Every digit is passed over, a number too large for a node included. */
-        for (; r->i < r->size && r->t[r->i] >= '0' && r->t[r->i] <= '9'; r->i++)
-            v = v > NO_NODE / 10 - 1 ? NO_NODE : v * 10 + (uint64_t)(r->t[r->i] - '0');
-        bool integer = v & NAMED || (r->i > start + negative && (r->i >= r->size || !strchr(".eE", r->t[r->i])));
-        r->i = start;
-        if (!skip_value(r))
-            return false;
-        if (!integer || (negative && v != 0))
-            continue;
-        if (!array_reserve((void **)list, cap, *count + 1, sizeof **list)) {
-            r->nomem = true;
-            return false;
-        }
-        (*list)[(*count)++] = v;
-    }
-    return n == 0;
-}
-
-/* Reads one value into *v: its number when it is an unsigned integer
- * (capped at NO_NODE), NO_NODE when it is anything else. False at broken
- * JSON. */
-static bool read_number(reader *r, uint64_t *v)
-{
-    skip_space(r);
-    size_t start = r->i;
-    uint64_t n = 0;
-    for (; r->i < r->size && r->t[r->i] >= '0' && r->t[r->i] <= '9'; r->i++)
-        n = n > NO_NODE / 10 - 1 ? NO_NODE : n * 10 + (uint64_t)(r->t[r->i] - '0');
-    bool integer = r->i > start && (r->i >= r->size || !strchr(".eE", r->t[r->i]));
-    r->i = start;
-    *v = integer ? n : NO_NODE;
-    return skip_value(r);
 }
 
 /* Appends v to *list; false (r->nomem) when memory runs out. */
-static bool append(reader *r, uint64_t **list, size_t *count, size_t *cap, uint64_t v)
+static bool append(json_scan *r, uint64_t **list, size_t *count, size_t *cap, uint64_t v)
 {
     if (!array_reserve((void **)list, cap, *count + 1, sizeof **list)) {
         r->nomem = true;
@@ -239,104 +87,89 @@ static bool append(reader *r, uint64_t **list, size_t *count, size_t *cap, uint6
     return true;
 }
 
-/* Calls on(r, g, key) for each member of the object at the reader, the
- * reader at its value, which on must read; the first of two equal keys
- * is the one JSON parsers keep, so each key is handed over once. A value
- * that is not an object is skipped. */
-typedef bool (*member_fn)(reader *r, graph *g, const char *key);
-
-static bool each_member(reader *r, graph *g, member_fn on, const char *const *keys, int key_count)
+/* Reads an array of node indices, appending each to *list: numbers, or
+ * names (NAMED). A value that is neither an unsigned integer nor a string
+ * is skipped, as Assimp skips it. */
+static bool read_indices(json_scan *r, graph *g, uint64_t **list, size_t *count, size_t *cap)
 {
-    if (!take(r, '{'))
-        return skip_value(r);
-    bool first = true;
-    unsigned seen = 0;
-    char member[16];
-    int m;
-    while ((m = next_member(r, &first, member, sizeof member)) > 0) {
-        int k = 0;
-        while (k < key_count && strcmp(member, keys[k]) != 0)
-            k++;
-        bool wanted = k < key_count && !(seen >> k & 1);
-        seen |= wanted ? 1u << k : 0;
-        if (!(wanted ? on(r, g, member) : skip_value(r)))
-            return false;
-    }
-    return m == 0;
-}
-
-/* Calls on(r, g) for each item of the array at the reader, which on must
- * read; a value that is not an array is skipped. */
-static bool each_item(reader *r, graph *g, bool (*on)(reader *r, graph *g))
-{
-    if (!take(r, '['))
-        return skip_value(r);
+    if (!json_take(r, '['))
+        return json_skip_value(r);
     bool first = true;
     int n;
-    while ((n = next_item(r, &first, ']')) > 0)
-        if (!on(r, g))
+    while ((n = json_next_item(r, &first, ']')) > 0) {
+        json_skip_space(r);
+        bool named = r->i < r->size && r->t[r->i] == '"';
+        uint64_t v;
+        if (!(named ? read_name(r, g, &v) : json_read_index(r, &v)))
             return false;
+        if ((named || v != NO_NODE) && !append(r, list, count, cap, named ? v | NAMED : v))
+            return false;
+    }
     return n == 0;
 }
 
 /* A primitive's attribute POSITION, or its indices: an accessor of the
  * current mesh. */
-static bool on_accessor_ref(reader *r, graph *g, const char *key)
+static bool on_accessor_ref(json_scan *r, void *ctx, const char *key)
 {
+    graph *g = ctx;
     (void)key;
     uint64_t v;
-    return read_number(r, &v) && append(r, &g->accessor, &g->accessor_refs, &g->accessor_ref_cap, v);
+    return json_read_index(r, &v) && append(r, &g->accessor, &g->accessor_refs, &g->accessor_ref_cap, v);
 }
 
-static bool on_attributes(reader *r, graph *g, const char *key)
+static bool on_attributes(json_scan *r, void *ctx, const char *key)
 {
     static const char *const keys[] = {"POSITION"};
     (void)key;
-    return each_member(r, g, on_accessor_ref, keys, 1);
+    return json_each_member(r, ctx, on_accessor_ref, keys, 1);
 }
 
-static bool on_primitive_member(reader *r, graph *g, const char *key)
+static bool on_primitive_member(json_scan *r, void *ctx, const char *key)
 {
-    return strcmp(key, "attributes") == 0 ? on_attributes(r, g, key) : on_accessor_ref(r, g, key);
+    return strcmp(key, "attributes") == 0 ? on_attributes(r, ctx, key) : on_accessor_ref(r, ctx, key);
 }
 
-static bool on_primitive(reader *r, graph *g)
+static bool on_primitive(json_scan *r, void *ctx)
 {
     static const char *const keys[] = {"attributes", "indices"};
-    return each_member(r, g, on_primitive_member, keys, 2);
+    return json_each_member(r, ctx, on_primitive_member, keys, 2);
 }
 
-static bool on_primitives(reader *r, graph *g, const char *key)
+static bool on_primitives(json_scan *r, void *ctx, const char *key)
 {
     (void)key;
-    return each_item(r, g, on_primitive);
+    return json_each_item(r, ctx, on_primitive);
 }
 
-static bool on_mesh(reader *r, graph *g)
+static bool on_mesh(json_scan *r, void *ctx)
 {
     static const char *const keys[] = {"primitives"};
+    graph *g = ctx;
     if (!array_reserve((void **)&g->mesh_first, &g->mesh_first_cap, g->meshes + 2, sizeof *g->mesh_first)) {
         r->nomem = true;
         return false;
     }
     g->mesh_first[g->meshes++] = g->accessor_refs;
-    bool ok = each_member(r, g, on_primitives, keys, 1);
+    bool ok = json_each_member(r, g, on_primitives, keys, 1);
     g->mesh_first[g->meshes] = g->accessor_refs;
     return ok;
 }
 
-static bool on_accessor_count(reader *r, graph *g, const char *key)
+static bool on_accessor_count(json_scan *r, void *ctx, const char *key)
 {
+    graph *g = ctx;
     (void)key;
     uint64_t v;
-    return read_number(r, &v) && append(r, &g->accessor_count, &g->accessors, &g->accessor_count_cap, v);
+    return json_read_index(r, &v) && append(r, &g->accessor_count, &g->accessors, &g->accessor_count_cap, v);
 }
 
-static bool on_accessor(reader *r, graph *g)
+static bool on_accessor(json_scan *r, void *ctx)
 {
     static const char *const keys[] = {"count"};
+    graph *g = ctx;
     size_t before = g->accessors;
-    if (!each_member(r, g, on_accessor_count, keys, 1))
+    if (!json_each_member(r, g, on_accessor_count, keys, 1))
         return false;
     /* An accessor without a count counts for nothing: Assimp refuses it. */
     return g->accessors > before || append(r, &g->accessor_count, &g->accessors, &g->accessor_count_cap, 0);
@@ -346,17 +179,17 @@ static bool on_accessor(reader *r, graph *g)
  * value of "nodes" or "scenes": the value of its member `key` through
  * read_indices into *list; with nodes set, also where each node's children
  * start, and its name. */
-static bool read_objects(reader *r, const char *key, graph *g, bool nodes, uint64_t **list, size_t *count,
+static bool read_objects(json_scan *r, const char *key, graph *g, bool nodes, uint64_t **list, size_t *count,
                          size_t *cap)
 {
-    bool named = take(r, '{');
-    if (!named && !take(r, '['))
-        return skip_value(r);
+    bool named = json_take(r, '{');
+    if (!named && !json_take(r, '['))
+        return json_skip_value(r);
     bool first = true;
     int n;
-    while ((n = next_item(r, &first, named ? '}' : ']')) > 0) {
+    while ((n = json_next_item(r, &first, named ? '}' : ']')) > 0) {
         uint64_t name = 0;
-        if (named && !(read_name(r, &name) && take(r, ':')))
+        if (named && !(read_name(r, g, &name) && json_take(r, ':')))
             return false;
         if (nodes) {
             if (!array_reserve((void **)&g->first, &g->first_cap, g->nodes + 2, sizeof *g->first) ||
@@ -369,8 +202,8 @@ static bool read_objects(reader *r, const char *key, graph *g, bool nodes, uint6
             g->node_names[g->nodes] = named ? name | NAMED : 0;
             g->first[g->nodes++] = *count;
         }
-        if (!take(r, '{')) {
-            if (!skip_value(r))
+        if (!json_take(r, '{')) {
+            if (!json_skip_value(r))
                 return false;
             continue;
         }
@@ -378,14 +211,14 @@ static bool read_objects(reader *r, const char *key, graph *g, bool nodes, uint6
         char member[16];
         int m;
         bool mesh_seen = false;
-        while ((m = next_member(r, &first_member, member, sizeof member)) > 0) {
+        while ((m = json_next_member(r, &first_member, member, sizeof member)) > 0) {
             bool wanted = !seen && strcmp(member, key) == 0;
             bool mesh = nodes && !named && !mesh_seen && strcmp(member, "mesh") == 0;
             seen |= wanted;
             mesh_seen |= mesh;
-            if (!(wanted ? read_indices(r, list, count, cap)
-                  : mesh ? read_number(r, &g->node_mesh[g->nodes - 1])
-                         : skip_value(r)))
+            if (!(wanted ? read_indices(r, g, list, count, cap)
+                  : mesh ? json_read_index(r, &g->node_mesh[g->nodes - 1])
+                         : json_skip_value(r)))
                 return false;
         }
         if (m < 0)
@@ -396,36 +229,25 @@ static bool read_objects(reader *r, const char *key, graph *g, bool nodes, uint6
     return n == 0;
 }
 
-/* Reads the graph from the top-level "nodes" and "scenes". False at JSON
- * the scan cannot follow or when memory runs out (r->nomem). */
-static bool read_graph(reader *r, graph *g)
+/* One of the top-level members read_graph reads. */
+static bool on_top_member(json_scan *r, void *ctx, const char *key)
 {
-    if (!take(r, '{'))
-        return false;
-    bool first = true, nodes_seen = false, scenes_seen = false, meshes_seen = false, accessors_seen = false;
-    char key[16];
-    int n;
-    while ((n = next_member(r, &first, key, sizeof key)) > 0) {
-        bool ok;
-        if (!nodes_seen && strcmp(key, "nodes") == 0) {
-            nodes_seen = true;
-            ok = read_objects(r, "children", g, true, &g->child, &g->children, &g->child_cap);
-        } else if (!scenes_seen && strcmp(key, "scenes") == 0) {
-            scenes_seen = true;
-            ok = read_objects(r, "nodes", g, false, &g->roots, &g->root_count, &g->root_cap);
-        } else if (!meshes_seen && strcmp(key, "meshes") == 0) {
-            meshes_seen = true;
-            ok = each_item(r, g, on_mesh);
-        } else if (!accessors_seen && strcmp(key, "accessors") == 0) {
-            accessors_seen = true;
-            ok = each_item(r, g, on_accessor);
-        } else {
-            ok = skip_value(r);
-        }
-        if (!ok)
-            return false;
-    }
-    return n == 0;
+    graph *g = ctx;
+    if (strcmp(key, "nodes") == 0)
+        return read_objects(r, "children", g, true, &g->child, &g->children, &g->child_cap);
+    if (strcmp(key, "scenes") == 0)
+        return read_objects(r, "nodes", g, false, &g->roots, &g->root_count, &g->root_cap);
+    return json_each_item(r, g, strcmp(key, "meshes") == 0 ? on_mesh : on_accessor);
+}
+
+/* Reads the graph from the top-level "nodes", "scenes", "meshes" and
+ * "accessors". False at JSON the scan cannot follow or when memory runs
+ * out (r->nomem). */
+static bool read_graph(json_scan *r, graph *g)
+{
+    static const char *const keys[] = {"nodes", "scenes", "meshes", "accessors"};
+    json_skip_space(r);
+    return r->i < r->size && r->t[r->i] == '{' && json_each_member(r, g, on_top_member, keys, 4);
 }
 
 /* A node's name and number, for finding names by bsearch. */
@@ -441,12 +263,12 @@ static int by_name(const void *a, const void *b)
 
 /* Turns each reference by name in list into the number of the node of that
  * name (the first, as Assimp's table keeps the first), or NO_NODE. */
-static void resolve(const reader *r, const named_node *sorted, size_t nodes, uint64_t *list, size_t count)
+static void resolve(const graph *g, const named_node *sorted, size_t nodes, uint64_t *list, size_t count)
 {
     for (size_t k = 0; k < count; k++) {
         if (!(list[k] & NAMED))
             continue;
-        named_node key = {r->names + (list[k] & ~NAMED), 0};
+        named_node key = {g->names + (list[k] & ~NAMED), 0};
         const named_node *found = bsearch(&key, sorted, nodes, sizeof *sorted, by_name);
         list[k] = found ? found->node : NO_NODE;
     }
@@ -454,9 +276,9 @@ static void resolve(const reader *r, const named_node *sorted, size_t nodes, uin
 
 /* glTF 1: every reference by name becomes a number. False when memory runs
  * out. */
-static bool resolve_names(const reader *r, graph *g)
+static bool resolve_names(graph *g)
 {
-    if (!r->names)
+    if (!g->names)
         return true;
     named_node *sorted = array_alloc(g->nodes, sizeof *sorted);
     if (!sorted)
@@ -464,7 +286,7 @@ static bool resolve_names(const reader *r, graph *g)
     size_t named = 0;
     for (size_t n = 0; n < g->nodes; n++)
         if (g->node_names[n] & NAMED)
-            sorted[named++] = (named_node){r->names + (g->node_names[n] & ~NAMED), n};
+            sorted[named++] = (named_node){g->names + (g->node_names[n] & ~NAMED), n};
     /* Equal names keep the first node: a stable order by number breaks ties. */
     qsort(sorted, named, sizeof *sorted, by_name);
     size_t kept = 0;
@@ -473,8 +295,8 @@ static bool resolve_names(const reader *r, graph *g)
             sorted[kept++] = sorted[k];
         else if (sorted[k].node < sorted[kept - 1].node)
             sorted[kept - 1] = sorted[k];
-    resolve(r, sorted, kept, g->child, g->children);
-    resolve(r, sorted, kept, g->roots, g->root_count);
+    resolve(g, sorted, kept, g->child, g->children);
+    resolve(g, sorted, kept, g->roots, g->root_count);
     free(sorted);
     return true;
 }
@@ -568,14 +390,14 @@ static uint64_t *placed_weights(const graph *g, uint64_t cap)
 
 glint_status gltf_check_nodes(const unsigned char *text, size_t size, const char *file, glint_error *err)
 {
-    reader r = {.t = text, .size = size};
+    json_scan r = {.t = text, .size = size};
     graph g = {0};
     glint_status s = GLINT_OK;
     if (!read_graph(&r, &g)) {
         if (r.nomem)
             s = error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", file);
         g.nodes = 0; /* left to Assimp's parser */
-    } else if (!resolve_names(&r, &g)) {
+    } else if (!resolve_names(&g)) {
         s = error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", file);
     }
     uint64_t *paths = g.nodes ? array_alloc(g.nodes, sizeof *paths) : NULL;
@@ -616,6 +438,6 @@ glint_status gltf_check_nodes(const unsigned char *text, size_t size, const char
     free(g.mesh_first);
     free(g.accessor);
     free(g.accessor_count);
-    free(r.names);
+    free(g.names);
     return s;
 }

@@ -1,7 +1,7 @@
 /* json_char.h - the characters of a JSON string as a JSON parser decodes
- * them, escapes included, for the checks that read a glTF's JSON before
- * Assimp does (gltf_check.c, gltf_nodes.c): a key written "nod\u0065s" is
- * still the key nodes to Assimp, so it must be to them. */
+ * them, escapes included, for the checks and readers that read a glTF's
+ * JSON before Assimp does (gltf_check.c, json_scan.c): a key written
+ * "nod\u0065s" is still the key nodes to Assimp, so it must be to them. */
 #ifndef GLINT_MODEL_JSON_CHAR_H
 #define GLINT_MODEL_JSON_CHAR_H
 

@@ -5,8 +5,10 @@
  * generated normals and their crease angle, every MTL mapping, files read
  * in chunks, and malformed files refused at file:line:column. PLY, STL,
  * glTF (with a data-URI buffer) and GLB (with an embedded PNG and a node
- * hierarchy) go through Assimp. Malformed files are refused with a message
- * naming them, without a crash and without a line on stdout or stderr. */
+ * hierarchy) go through Assimp, but for the emissive strength of glTF
+ * materials, which glint reads itself. Malformed files are refused with a
+ * message naming them, without a crash and without a line on stdout or
+ * stderr. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -29,6 +31,7 @@
 #include "model/text_scan.h"
 #include "model/triangulate.h"
 #include "scene/scene.h"
+#include "shading/material.h"
 
 #define PATH_SIZE 1024
 
@@ -262,6 +265,28 @@ static size_t write_glb(const char *name, const char *mat_json, unsigned char *o
     if (name)
         write_bytes(name, out, total);
     return total;
+}
+
+/* Replaces the first `from` in text (which must hold it) by `to`. */
+static void replace_in(char *text, size_t size, const char *from, const char *to)
+{
+    char *at = strstr(text, from);
+    assert_non_null(at);
+    size_t tail = strlen(at + strlen(from));
+    assert_true((size_t)(at - text) + strlen(to) + tail < size);
+    memmove(at + strlen(to), at + strlen(from), tail + 1);
+    memcpy(at, to, strlen(to));
+}
+
+/* The quad as glTF text into json (size bytes), its buffer in a data URI,
+ * with the materials `mat_json` (JSON objects, comma-separated). */
+static void gltf_with_materials(char *json, size_t size, const char *mat_json)
+{
+    unsigned char bin[256];
+    size_t n = gltf_buffer(bin, false);
+    char uri[512] = "data:application/octet-stream;base64,";
+    base64(bin, n, uri + strlen(uri));
+    gltf_json(json, size, uri, n, false, mat_json);
 }
 
 /* OBJ parts: a quad, a triangle by negative indices in another group, a
@@ -1703,14 +1728,12 @@ static void expect_flattened(const glint_scene *s, int mesh_index)
 
 static void test_gltf_data_uri(void **state)
 {
-    unsigned char bin[256];
-    size_t n = gltf_buffer(bin, false);
-    char uri[512] = "data:application/octet-stream;base64,", json[8192];
-    base64(bin, n, uri + strlen(uri));
-    gltf_json(json, sizeof json, uri, n, false,
-              "{\"name\":\"shiny\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.5,0.25,0.125,1],"
-              "\"metallicFactor\":0.5,\"roughnessFactor\":0.5},\"extensions\":{\"KHR_materials_transmission\":"
-              "{\"transmissionFactor\":0.75},\"KHR_materials_ior\":{\"ior\":1.4}}}");
+    char json[8192];
+    gltf_with_materials(json, sizeof json,
+                        "{\"name\":\"shiny\",\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.5,0.25,0.125,1],"
+                        "\"metallicFactor\":0.5,\"roughnessFactor\":0.5},\"extensions\":{"
+                        "\"KHR_materials_transmission\":{\"transmissionFactor\":0.75},"
+                        "\"KHR_materials_ior\":{\"ior\":1.4}}}");
     write_text("shiny.gltf", json);
     glint_scene *s = new_scene();
     const mesh *m = import_ok(s, "shiny.gltf", NULL);
@@ -1734,13 +1757,10 @@ static void test_gltf_data_uri(void **state)
 
 static void test_gltf_blend_and_unnamed(void **state)
 {
-    unsigned char bin[256];
-    size_t n = gltf_buffer(bin, false);
-    char uri[512] = "data:application/octet-stream;base64,", json[8192];
-    base64(bin, n, uri + strlen(uri));
-    gltf_json(json, sizeof json, uri, n, false,
-              "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.2,0.4,0.6,0.4],\"metallicFactor\":0},"
-              "\"alphaMode\":\"BLEND\"}");
+    char json[8192];
+    gltf_with_materials(json, sizeof json,
+                        "{\"pbrMetallicRoughness\":{\"baseColorFactor\":[0.2,0.4,0.6,0.4],\"metallicFactor\":0},"
+                        "\"alphaMode\":\"BLEND\"}");
     write_text("veil.gltf", json);
     glint_scene *s = new_scene();
     import_ok(s, "veil.gltf", NULL);
@@ -1765,6 +1785,143 @@ static void test_glb_embedded_texture(void **state)
         assert_near(m->uvs[2 * v + 1], (4 - m->positions[3 * v + 1]) / 2, 1e-6);
     expect_red_over_blue(s, 0, (glint_vec3){2, 3, 5});
     glint_scene_free(s);
+}
+
+/* A material glowing white, named `name`, with `extension` (JSON members,
+ * or "") added to its extensions. */
+static void glowing(char *out, size_t size, const char *name, const char *extension)
+{
+    int n = snprintf(out, size, "{\"name\":\"%s\",\"emissiveFactor\":[1,1,1],\"extensions\":{%s}}", name, extension);
+    assert_true(n > 0 && (size_t)n < size);
+}
+
+#define STRENGTH_5 "\"KHR_materials_emissive_strength\":{\"emissiveStrength\":5}"
+
+/* KHR_materials_emissive_strength, which Assimp 5.2.5 drops, multiplies
+ * emissiveFactor: a strength of 5 glows five times as bright as none. */
+static void test_gltf_emissive_strength(void **state)
+{
+    char mat[512], json[8192];
+    glowing(mat, sizeof mat, "plain", "");
+    gltf_with_materials(json, sizeof json, mat);
+    write_text("plain.gltf", json);
+    glowing(mat, sizeof mat, "lamp", STRENGTH_5);
+    gltf_with_materials(json, sizeof json, mat);
+    write_text("lamp.gltf", json);
+    unsigned char glb[4096];
+    write_glb("lamp.glb", mat, glb, sizeof glb);
+    glint_scene *s = new_scene();
+    import_ok(s, "plain.gltf", NULL);
+    import_ok(s, "lamp.gltf", NULL);
+    import_ok(s, "lamp.glb", NULL);
+    const glint_material *plain = material_named(s, "plain/plain");
+    assert_true(plain->emission.r == 1 && plain->emission.g == 1 && plain->emission.b == 1);
+    assert_true(plain->emission_strength == 1);
+    const char *lamps[] = {"lamp/lamp", "lamp/lamp#2"};
+    for (int k = 0; k < 2; k++) {
+        const glint_material *lamp = material_named(s, lamps[k]);
+        assert_true(lamp->emission.r == 1 && lamp->emission.g == 1 && lamp->emission.b == 1);
+        assert_true(lamp->emission_strength == 5);
+        assert_true(material_emission(lamp).g == 5 * material_emission(plain).g);
+    }
+    glint_scene_free(s);
+}
+
+/* Assimp numbers a glTF's materials as its reading of the scene meets
+ * them, children before their parent's mesh, not in the file's order:
+ * each strength must reach its own material. */
+static void test_gltf_emissive_strength_order(void **state)
+{
+    char mats[2048] = "", mat[512], json[8192];
+    const char *const names[] = {"unused", "b", "c", "d"};
+    const char *const strengths[] = {"9", "2", "3", "4"};
+    for (int k = 0; k < 4; k++) {
+        char extension[128];
+        snprintf(extension, sizeof extension, "\"KHR_materials_emissive_strength\":{\"emissiveStrength\":%s}",
+                 strengths[k]);
+        glowing(mat, sizeof mat, names[k], extension);
+        strcat(mats, k ? "," : "");
+        strcat(mats, mat);
+    }
+    gltf_with_materials(json, sizeof json, mats);
+    /* The child's mesh 0 uses c then b; its parent's mesh 1 uses d. */
+    replace_in(json, sizeof json, "\"material\":0}]}]",
+               "\"material\":2},{\"attributes\":{\"POSITION\":0},\"indices\":2,\"material\":1}]},"
+               "{\"primitives\":[{\"attributes\":{\"POSITION\":0},\"indices\":2,\"material\":3}]}]");
+    replace_in(json, sizeof json, "\"name\":\"parent\",", "\"name\":\"parent\",\"mesh\":1,");
+    write_text("order.gltf", json);
+    glint_scene *s = new_scene();
+    import_ok(s, "order.gltf", NULL);
+    assert_int_equal(s->material_count, 3);
+    assert_true(material_named(s, "order/b")->emission_strength == 2);
+    assert_true(material_named(s, "order/c")->emission_strength == 3);
+    assert_true(material_named(s, "order/d")->emission_strength == 4);
+    glint_scene_free(s);
+}
+
+/* What is odd about a strength is read as a JSON parser reads it, or left
+ * out: escaped keys, the first of two equal keys, values that are not
+ * numbers or not objects, a strength beyond glint's range. */
+static void test_gltf_emissive_strength_odd(void **state)
+{
+    static const struct {
+        const char *extension;
+        double strength;
+    } cases[] = {
+        {"\"KHR_materials_emissive_strength\":{\"emissive\\u0053trength\":2.5e0}", 2.5},
+        {"\"KHR_materials_emissive_str\\u0065ngth\":{\"emissiveStrength\":6}", 6},
+        {"\"KHR_materials_emissive_strength\":{\"emissiveStrength\":2,\"emissiveStrength\":7}", 2},
+        {"\"KHR_materials_emissive_strength\":{\"emissiveStrength\":\"5\"}", 1},
+        {"\"KHR_materials_emissive_strength\":{\"emissiveStrength\":[5]}", 1},
+        {"\"KHR_materials_emissive_strength\":{\"emissiveStrength\":null}", 1},
+        {"\"KHR_materials_emissive_strength\":5", 1},
+        {"\"KHR_materials_emissive_strength\":[{\"emissiveStrength\":5}]", 1},
+        {"\"other\":{\"emissiveStrength\":5}", 1},
+        {"\"KHR_materials_emissive_strength\":{}", 1},
+        {"\"KHR_materials_emissive_strength\":{\"emissiveStrength\":0}", 0},
+        {"\"KHR_materials_emissive_strength\":{\"emissiveStrength\":-0}", 0},
+        {"\"KHR_materials_emissive_strength\":{\"emissiveStrength\":1e308}", 1e300},
+    };
+    for (size_t k = 0; k < sizeof cases / sizeof cases[0]; k++) {
+        char mat[512], json[8192];
+        glowing(mat, sizeof mat, "odd", cases[k].extension);
+        gltf_with_materials(json, sizeof json, mat);
+        write_text("odd.gltf", json);
+        glint_scene *s = new_scene();
+        import_ok(s, "odd.gltf", NULL);
+        const glint_material *g = material_named(s, "odd/odd");
+        if (g->emission_strength != cases[k].strength || signbit(g->emission_strength))
+            fail_msg("%s: strength %.17g, expected %.17g", cases[k].extension, g->emission_strength,
+                     cases[k].strength);
+        glint_scene_free(s);
+    }
+    /* Extensions, or a material, that are no object are passed over, for
+     * Assimp to refuse. */
+    char json[8192];
+    gltf_with_materials(json, sizeof json, "{\"extensions\":7},5");
+    write_text("odd.gltf", json);
+    expect_refused_by_assimp("odd.gltf");
+}
+
+/* A strength below zero, or too large for a double, is refused, in any
+ * material, used or not, of a glTF or a GLB. */
+static void test_gltf_emissive_strength_refused(void **state)
+{
+    char mats[1024], mat[512], json[8192];
+    glowing(mats, sizeof mats, "lamp", STRENGTH_5);
+    glowing(mat, sizeof mat, "dim", "\"KHR_materials_emissive_strength\":{\"emissiveStrength\":-5}");
+    strcat(mats, ",");
+    strcat(mats, mat);
+    gltf_with_materials(json, sizeof json, mats);
+    write_text("dim.gltf", json);
+    expect_refused("dim.gltf", NULL, "material 1: emissiveStrength -5 (KHR_materials_emissive_strength) is negative");
+    unsigned char glb[4096];
+    write_glb("dim.glb", mats, glb, sizeof glb);
+    expect_refused("dim.glb", NULL, "material 1: emissiveStrength -5 (KHR_materials_emissive_strength) is negative");
+    replace_in(json, sizeof json, "-5", "1e999");
+    write_text("bright.gltf", json);
+    expect_refused("bright.gltf", NULL,
+                   "material 1: emissiveStrength 1e999 (KHR_materials_emissive_strength) is not finite");
 }
 
 /* ---------------------------------------------------------------- memory */
@@ -1981,17 +2138,6 @@ static void test_fuzz_glb_chunk_length(void **state)
     expect_refused("huge.glb", NULL, want);
 }
 
-/* Replaces the first `from` in text (which must hold it) by `to`. */
-static void replace_in(char *text, size_t size, const char *from, const char *to)
-{
-    char *at = strstr(text, from);
-    assert_non_null(at);
-    size_t tail = strlen(at + strlen(from));
-    assert_true((size_t)(at - text) + strlen(to) + tail < size);
-    memmove(at + strlen(to), at + strlen(from), tail + 1);
-    memcpy(at, to, strlen(to));
-}
-
 /* The textured quad as glTF text, its buffer in a data URI and its image
  * given by `image` (a JSON object), written as tmp_dir/name. Returns the
  * column (from 1, on the one line) where `mark` starts. */
@@ -2150,6 +2296,10 @@ int main(void)
         cmocka_unit_test(test_gltf_data_uri),
         cmocka_unit_test(test_gltf_blend_and_unnamed),
         cmocka_unit_test(test_glb_embedded_texture),
+        cmocka_unit_test(test_gltf_emissive_strength),
+        cmocka_unit_test(test_gltf_emissive_strength_order),
+        cmocka_unit_test(test_gltf_emissive_strength_odd),
+        cmocka_unit_test(test_gltf_emissive_strength_refused),
         cmocka_unit_test(test_memory_imports),
         cmocka_unit_test(test_memory_refusals),
         cmocka_unit_test(test_model_paths),
