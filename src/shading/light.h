@@ -38,10 +38,11 @@ typedef struct light_kind light_kind;
 
 /* A triangle of an emissive mesh, in world space. */
 typedef struct emitter_triangle {
-    vec3 a, b, c;
+    vec3 a, b, c;             /* with parallelogram, the corner a and its neighbours b and c */
     vec3 normal;              /* unit, on the side it glows: by the winding */
     double area;              /* found once: every sample of it divides by it */
     color radiance;
+    bool parallelogram;       /* two triangles of a quad joined: a + u (b - a) + v (c - a), u, v in [0, 1) */
 } emitter_triangle;
 
 /* A light with its derived values precomputed. */
@@ -56,7 +57,7 @@ typedef struct light {
     shape glow;               /* an area light: the surface it glows over, */
     vec3 normal;              /* its lit side's unit normal when it is flat, */
     double area;              /* and its area */
-    emitter_triangle *triangles; /* an emissive mesh's triangles that glow, */
+    emitter_triangle *triangles; /* an emissive mesh's triangles that glow (a quad's two as one), */
     double *cumulative;       /* the sum of their powers up to each, the last 1, */
     int triangle_count;       /* and their number */
     double power;             /* an area light's or emitter's brightness (rgb_mean) times the area

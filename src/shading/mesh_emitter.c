@@ -1,7 +1,13 @@
 /* mesh_emitter.c - the emissive triangles of a placed mesh as one light
  * (light.h): a triangle chosen in proportion to its power (area times
  * brightness), then a point of it uniformly by area, glowing on the side
- * its winding makes the front. The Cornell box's ceiling lamp is one. */
+ * its winding makes the front. The Cornell box's ceiling lamp is one: a
+ * quad the file splits into two triangles. Two such triangles, one after
+ * the other, that make a parallelogram are sampled as one, by the
+ * parallelogram's own coordinates: a stratified sample stays stratified
+ * over the whole lamp, where split between two triangles (and through the
+ * triangle's square root) it did not. The lamp's soft shadows at 64
+ * samples had a third more noise than a rectangle light's. */
 #include <stdlib.h>
 #include "geometry/shape_math.h"
 #include "shading/light.h"
@@ -27,11 +33,53 @@ static bool mesh_emitter_sample(const light *l, vec3 p, double u1, double u2, li
     double u = (u1 - before) / share;
     u = u < 1 ? u : 0.99999999999999989;
     const emitter_triangle *tri = &l->triangles[t];
-    vec3 q = triangle_point(tri->a, tri->b, tri->c, u, u2);
+    vec3 q = tri->parallelogram ? v3_add(tri->a, v3_add(v3_scale(v3_sub(tri->b, tri->a), u),
+                                                       v3_scale(v3_sub(tri->c, tri->a), u2)))
+                                : triangle_point(tri->a, tri->b, tri->c, u, u2);
     return light_surface_point(p, q, tri->normal, share / tri->area, tri->radiance, true, out);
 }
 
 const light_kind mesh_emitter = {.name = "emissive mesh", .sample = mesh_emitter_sample};
+
+static bool same_point(vec3 p, vec3 q)
+{
+    return p.x == q.x && p.y == q.y && p.z == q.z;
+}
+
+/* Whether triangle *next and the triangle *into (not yet joined) share an
+ * edge across which they make a parallelogram of one brightness and one
+ * facing; if so, *into becomes that parallelogram. The corner is *into's
+ * vertex off the shared edge, the fourth vertex next's: the parallelogram
+ * holds when the two off-edge vertices add up to the edge's ends. */
+static bool join_parallelogram(emitter_triangle *into, const emitter_triangle *next)
+{
+    if (into->parallelogram || v3_dot(into->normal, next->normal) < 1 - 1e-9 ||
+        into->radiance.r != next->radiance.r || into->radiance.g != next->radiance.g ||
+        into->radiance.b != next->radiance.b)
+        return false;
+    const vec3 mine[3] = {into->a, into->b, into->c}, theirs[3] = {next->a, next->b, next->c};
+    for (int off = 0; off < 3; off++) {
+        vec3 s1 = mine[(off + 1) % 3], s2 = mine[(off + 2) % 3];
+        for (int other = 0; other < 3; other++) {
+            vec3 t1 = theirs[(other + 1) % 3], t2 = theirs[(other + 2) % 3];
+            bool shared = (same_point(s1, t1) && same_point(s2, t2)) || (same_point(s1, t2) && same_point(s2, t1));
+            if (!shared)
+                continue;
+            vec3 corner = mine[off], fourth = theirs[other];
+            vec3 gap = v3_sub(v3_add(corner, fourth), v3_add(s1, s2));
+            double size = v3_length(v3_sub(s1, corner)) + v3_length(v3_sub(s2, corner));
+            if (!(v3_length(gap) <= 1e-6 * size))
+                return false;
+            /* The corner's neighbours in the order that keeps the winding. */
+            bool turned = v3_dot(v3_cross(v3_sub(s1, corner), v3_sub(s2, corner)), into->normal) < 0;
+            *into = (emitter_triangle){.a = corner, .b = turned ? s2 : s1, .c = turned ? s1 : s2,
+                                       .normal = into->normal, .area = into->area + next->area,
+                                       .radiance = into->radiance, .parallelogram = true};
+            return true;
+        }
+    }
+    return false;
+}
 
 bool emitter_for_instance(light *l, const mesh *m, const instance *inst, const material *materials,
                           bool *out_of_memory)
@@ -70,7 +118,10 @@ bool emitter_for_instance(light *l, const mesh *m, const instance *inst, const m
         tris[kept] = (emitter_triangle){.a = v[0], .b = v[1], .c = v[2], .normal = v3_scale(cross, 1 / twice_area),
                                         .area = twice_area / 2, .radiance = e};
         total += tris[kept].area * rgb_mean(e);
-        cumulative[kept++] = total;
+        if (kept > 0 && join_parallelogram(&tris[kept - 1], &tris[kept]))
+            cumulative[kept - 1] = total;
+        else
+            cumulative[kept++] = total;
     }
     if (kept == 0 || !isfinite(total)) {
         free(tris);

@@ -502,6 +502,36 @@ static void test_emissive_meshes(void **state)
     glint_scene_free(s);
 }
 
+/* A quad lamp split into two triangles is sampled as one parallelogram,
+ * its stratified samples spread over the whole lamp: with 16 of them the
+ * irradiance under it is within 1.2% of its form factor on average, over
+ * heights and seeds (0.8% measured; sampled as two triangles apart, 2.3%). */
+static void test_quad_lamp_sampled_whole(void **state)
+{
+    (void)state;
+    const float square[] = {-1, 0, -1, 1, 0, -1, 1, 0, 1, -1, 0, 1};
+    const uint32_t down[] = {0, 1, 2, 0, 2, 3};
+    double error = 0;
+    int renders = 0;
+    for (uint32_t seed = 0; seed < 4; seed++)
+        for (int k = 0; k < 8; k++) {
+            double height = 1.2 + 0.3 * k; /* above the camera's line of sight */
+            glint_scene *s = floor_seen(1, 1, 0.1, (glint_vec3){20, 20, 0});
+            glint_settings st = glint_scene_get_settings(s);
+            st.emission_samples = 16;
+            st.seed = seed;
+            assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+            glint_mesh_data d = {.positions = square, .vertex_count = 4, .indices = down, .triangle_count = 2,
+                                 .material = glowing(s, 2)};
+            glint_transform up = {{{1, 0, 0, 0}, {0, 1, 0, height}, {0, 0, 1, 0}}};
+            assert_true(glint_scene_add_instance(s, glint_scene_add_mesh(s, NULL, &d, NULL), -1, &up, NULL) >= 0);
+            double expected = 2 * 4 * corner_form_factor(1, 1, height);
+            error += fabs(origin_seen(s) / expected - 1);
+            renders++;
+        }
+    assert_true(error / renders <= 0.012);
+}
+
 /* glint CornellBox-Original.obj: lit by its own ceiling lamp (MTL Ke 17
  * 12 4) alone, which the camera sees at that radiance (its ambient term,
  * 0.2 of its Kd, on top). */
@@ -521,7 +551,9 @@ static void test_cornell_box_lit_by_its_lamp(void **state)
         fail_msg("%s", err.message);
     assert_int_equal(glint_scene_get_counts(s).lights, 0);
     assert_int_equal(s->emitter_count, 1);
-    assert_int_equal(s->emitters[0].triangle_count, 2);
+    /* The lamp's two triangles make a rectangle: sampled as one. */
+    assert_int_equal(s->emitters[0].triangle_count, 1);
+    assert_true(s->emitters[0].triangles[0].parallelogram);
     glint_settings st = glint_scene_get_settings(s);
     st.width = 80;
     st.height = 60;
@@ -588,6 +620,7 @@ int main(void)
         cmocka_unit_test(test_area_light_bytes_independent_of_threads),
         cmocka_unit_test(test_emissive_shapes_light_the_scene),
         cmocka_unit_test(test_emissive_meshes),
+        cmocka_unit_test(test_quad_lamp_sampled_whole),
         cmocka_unit_test(test_many_lights_chosen_by_power),
         cmocka_unit_test(test_cornell_box_lit_by_its_lamp),
         cmocka_unit_test(test_ambient_occlusion_under_a_ball),
