@@ -84,15 +84,19 @@ bool light_surface_point(vec3 p, vec3 q, vec3 n_q, double density, color radianc
     double d2 = v3_dot(d, d);
     if (!(d2 > 0) || !(density > 0))
         return false;
-    double distance = sqrt(d2);
-    out->to_light = v3_scale(d, 1 / distance);
-    double cos_light = -v3_dot(out->to_light, n_q);
-    if (!(cos_light > 0))
+    /* The cosine at the light times the distance, from d itself: the
+     * radiance's scale waits for one square root and one division, not for
+     * the direction's division as well (four dependent ones, at about 15
+     * cycles each, were a quarter of a Cornell box render). */
+    double distance = sqrt(d2), cos_times_distance = -v3_dot(d, n_q);
+    if (!(cos_times_distance > 0))
         return false;
+    out->to_light = v3_scale(d, 1 / distance);
     out->distance = in_scene ? distance * (1 - EMITTER_GAP) : distance;
-    /* By area: density d^2 / cos times that among directions. */
-    out->pdf = density * d2 / cos_light;
-    out->radiance = rgb_scale(radiance, 1 / (M_PI * out->pdf));
+    /* By area: density d^2 / cos among directions. */
+    double per_area = density * d2 * distance;
+    out->pdf = per_area / cos_times_distance;
+    out->radiance = rgb_scale(radiance, cos_times_distance / (M_PI * per_area));
     return true;
 }
 
