@@ -1,11 +1,12 @@
 /* rmse.c - bench: how far an image is from a reference, as the root mean
  * square of their difference over every channel of every pixel, divided
- * by the reference's mean: the relative noise that bench/soft-light.sh
+ * by the reference's mean: the relative noise that bench/equal-noise.sh
  * compares renderers by, each against a reference of its own.
  *
  *   bench_rmse image.ppm reference.ppm      prints the relative RMSE
  *
- * Both binary PPM (P6), 8 or 16 bits, of the same size. */
+ * Both binary PPM (P6), 8 or 16 bits, of the same size: bench/equal-noise.sh
+ * asks both renderers for 16, so that rounding to 8 bits adds no noise. */
 #include <math.h>
 #include <stdbool.h>
 #include <stdio.h>
@@ -30,7 +31,7 @@ static int header_number(FILE *f)
 }
 
 /* Reads a binary PPM's pixels, as 0..1; NULL, having said why, when it
- * cannot. Both 8 and 16 bits (POV-Ray writes 16). */
+ * cannot. Both 8 and 16 bits. */
 static double *read_ppm(const char *path, int *width, int *height)
 {
     FILE *f = fopen(path, "rb");

@@ -1,4 +1,4 @@
-// soft-light.pov - POV-Ray 3.7 copy of bench/soft-light.yaml for bench/soft-light.sh: the same
+// soft-light.pov - POV-Ray 3.7 copy of bench/soft-light.yaml for bench/equal-noise.sh: the same
 // room, ball, block and 2 x 2 square lamp (an area_light of LIGHT_N x LIGHT_N jittered
 // points, centred on its location as POV-Ray centres them). Its brightness
 // falls as fade_power 2, not exactly as an area light's; noise is compared

@@ -1,0 +1,93 @@
+#!/usr/bin/env bash
+# bench/equal-noise.sh - glint against POV-Ray 3.7 at equal noise, on the
+# work Monte Carlo sampling does: for each sample count S (4 to 144) it
+# prints each renderer's median time and its noise, the RMSE against its
+# own 1024-sample reference over the reference's mean (bench/rmse.c), both
+# images 16 bits a channel.
+# Equal noise is read off the table. The cases:
+#
+#   soft-light      bench/soft-light.yaml / .pov: a 2 x 2 lamp over a ball and
+#                   a block, 640x480, one camera ray a pixel; S samples of the
+#                   lamp (POV-Ray: a jittered sqrt(S) x sqrt(S) area_light)
+#   cornell-box     scenes/models/cornell-box.yaml / bench/cornell-box.pov:
+#                   the box lit by its own ceiling lamp, 640x640, one camera
+#                   ray a pixel; S samples of the lamp (emission_samples)
+#   depth-of-field  scenes/depth-of-field.yaml / bench/depth-of-field.pov:
+#                   a thin lens, 640x480; S samples a pixel (glint's Sobol
+#                   sampler; POV-Ray's focal_blur with S blur_samples)
+#
+#   GLINT_BIN=/path/to/glint bench/equal-noise.sh [CASE ...]   (default: all)
+#   BENCH_RUNS=5 ...                         5 runs of each (default 3)
+#
+# The Cornell box needs ../shared/data/CornellBox-Original.obj (or
+# GLINT_SHARED_DATA); without it that case is skipped. Results and what
+# they mean: bench/README.md.
+set -euo pipefail
+
+BENCH_DIR=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+ROOT=$(dirname "$BENCH_DIR")
+RUNS=${BENCH_RUNS:-3}
+SHARED=${GLINT_SHARED_DATA:-$(dirname "$ROOT")/shared/data}
+die() { echo "bench/equal-noise.sh: $*" >&2; exit 1; }
+[[ -x "${GLINT_BIN:-}" ]] || die "set GLINT_BIN to a built glint (./build.sh render builds one)"
+command -v povray >/dev/null 2>&1 || die "povray is missing (Debian: apt-get install povray)"
+[[ "$RUNS" =~ ^[1-9][0-9]*$ ]] || die "BENCH_RUNS must be a positive integer, not '$RUNS'"
+CASES=("$@")
+[[ ${#CASES[@]} -gt 0 ]] || CASES=(soft-light cornell-box depth-of-field)
+for c in "${CASES[@]}"; do
+    [[ $c =~ ^(soft-light|cornell-box|depth-of-field)$ ]] || die "no case '$c' (soft-light cornell-box depth-of-field)"
+done
+
+# POV-Ray's Debian configuration reads scenes only from a few folders: /tmp is one.
+WORK=$(mktemp -d /tmp/glint-equal-noise.XXXXXX)
+trap 'rm -rf "$WORK"' EXIT
+cp "$BENCH_DIR"/soft-light.pov "$BENCH_DIR"/cornell-box.pov "$BENCH_DIR"/depth-of-field.pov "$WORK/"
+cc -O2 -o "$WORK/bench_rmse" "$BENCH_DIR/rmse.c" -lm || die "cannot build bench/rmse.c"
+
+# glint_run CASE S OUT: renders CASE with S samples; prints the seconds.
+glint_run() {
+    local flags=()
+    case $1 in
+    soft-light) sed "s/samples: 16 /samples: $2 /" "$BENCH_DIR/soft-light.yaml" >"$WORK/scene.yaml" ;;
+    cornell-box)
+        sed -e "s/emission_samples: [0-9]*/emission_samples: $2/" -e "s|file: [./]*shared/data/|file: $SHARED/|" \
+            "$ROOT/scenes/models/cornell-box.yaml" >"$WORK/scene.yaml"
+        flags=(--spp 1) ;;
+    depth-of-field)
+        cp "$ROOT/scenes/depth-of-field.yaml" "$WORK/scene.yaml"
+        flags=(--spp "$2" --sampler sobol) ;;
+    esac
+    "$GLINT_BIN" "$WORK/scene.yaml" "${flags[@]}" --threads 2 --bit-depth 16 -o "$3" 2>&1 |
+        sed -n 's/.*threads: \([0-9.]*\) s,.*/\1/p'
+}
+# povray_run CASE S OUT: renders CASE's copy with S samples; prints the trace seconds.
+povray_run() {
+    local args
+    case $1 in
+    soft-light) args=(+W640 +H480 "Declare=LIGHT_N=$(isqrt "$2")" Declare=LIGHT_POWER=0.85) ;;
+    cornell-box) args=(+W640 +H640 "Declare=LIGHT_N=$(isqrt "$2")") ;;
+    depth-of-field) args=(+W640 +H480 "Declare=BLUR_N=$2") ;;
+    esac
+    (cd "$WORK" && povray "$1.pov" -D "${args[@]}" +FP16 "+O$3" -A +WT2 2>&1) |
+        sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p'
+}
+isqrt() { awk -v s="$1" 'BEGIN { print int(sqrt(s) + 0.5) }'; }
+median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
+
+for c in "${CASES[@]}"; do
+    if [[ $c == cornell-box && ! -f $SHARED/CornellBox-Original.obj ]]; then
+        echo "cornell-box: skipped, $SHARED/CornellBox-Original.obj is missing (set GLINT_SHARED_DATA)"
+        continue
+    fi
+    echo "$c"
+    glint_run "$c" 1024 "$WORK/glint-ref.ppm" >/dev/null
+    povray_run "$c" 1024 "$WORK/povray-ref.ppm" >/dev/null
+    printf '%-8s %-10s %-12s %-10s %-12s %s\n' samples "glint s" "glint noise" "povray s" "povray noise" "povray/glint"
+    for s in 4 9 16 36 64 144; do
+        g=$(for _ in $(seq "$RUNS"); do glint_run "$c" "$s" "$WORK/glint.ppm"; done | median)
+        p=$(for _ in $(seq "$RUNS"); do povray_run "$c" "$s" "$WORK/povray.ppm"; done | median)
+        printf '%-8s %-10s %-12s %-10s %-12s %s\n' "$s" "$g" "$("$WORK/bench_rmse" "$WORK/glint.ppm" "$WORK/glint-ref.ppm")" \
+            "$p" "$("$WORK/bench_rmse" "$WORK/povray.ppm" "$WORK/povray-ref.ppm")" \
+            "$(awk -v g="$g" -v p="$p" 'BEGIN { printf "%.2f", p / g }')"
+    done
+done
