@@ -125,7 +125,7 @@ static RTCScene build_scene(RTCDevice dev, const glint_scene *s)
 static bool shadow_ray(const light *l, vec3 p, vec3 ng, vec3 dir, struct RTCRay *out)
 {
     light_sample ls;
-    if (!light_sample_at(l, p, 0.5, 0.5, &ls))
+    if (!l->kind->sample(l, p, 0.5, 0.5, &ls))
         return false;
     ng = v3_normalize(ng);
     vec3 n = v3_dot(ng, dir) < 0 ? ng : v3_neg(ng);

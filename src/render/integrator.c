@@ -73,11 +73,10 @@ static void shade_begin(const glint_scene *scene, const ray *r, const accel_hit 
 /* The shadow segment from sp, seen along ray r, towards light l sampled
  * with (u1, u2), when l lights sp's front and its light there is not black
  * before any shadow. */
-__attribute__((always_inline)) static inline bool shadow_segment(const light *l, const ray *r, const shade_point *sp, double u1, double u2,
-                           light_sample *ls, ray *shadow)
+__attribute__((always_inline)) static inline bool shadow_segment(const ray *r, const shade_point *sp,
+                                                                  const light_sample *ls, ray *shadow)
 {
-    if (!light_sample_at(l, sp->s.p, u1, u2, ls) || v3_dot(sp->n, ls->to_light) <= 0 ||
-        v3_dot(sp->ns, ls->to_light) <= 0 ||
+    if (v3_dot(sp->n, ls->to_light) <= 0 || v3_dot(sp->ns, ls->to_light) <= 0 ||
         !phong_reaches(sp->m, sp->base, sp->ns, ls->to_light, v3_neg(r->d), ls->radiance))
         return false;
     *shadow = (ray){sp->origin, ls->to_light};
@@ -210,9 +209,6 @@ static void environment_seen(const glint_scene *scene, const ray8 *r, const bool
     }
 }
 
-/* The light sample (u1, u2) a delta light is given: it has no use for one. */
-#define DELTA_SAMPLE_U 0.5
-
 /* Adds to direct[i] the light of light l that reaches the hit sp[i] of
  * each lane found[i] through one sample of it, u[i] (NULL for a delta
  * light), weighed by `share`: one packet of shadow segments over the lanes
@@ -222,6 +218,14 @@ __attribute__((always_inline)) static inline void light_packet(tracer *t, const 
 {
     const glint_scene *scene = t->scene;
     light_sample ls[ACCEL_PACKET];
+    /* An area light's samples for every lane first, in one call. */
+    bool sampled[ACCEL_PACKET] = {false};
+    if (u) {
+        vec3 p[ACCEL_PACKET];
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            p[i] = sp[i].s.p;
+        l->kind->sample_lanes(l, p, u, found, ls, sampled);
+    }
     /* A lane without a segment keeps its own ray. Copied only once some
      * lane has one: a spotlight lights few packets. */
     ray8 shadow;
@@ -232,7 +236,7 @@ __attribute__((always_inline)) static inline void light_packet(tracer *t, const 
         if (!found[i])
             continue;
         ray ri = ray8_get(r, i), si;
-        if (!shadow_segment(l, &ri, &sp[i], u ? u[i][0] : DELTA_SAMPLE_U, u ? u[i][1] : DELTA_SAMPLE_U, &ls[i], &si))
+        if (!(u ? sampled[i] : light_delta_sample(l, sp[i].s.p, &ls[i])) || !shadow_segment(&ri, &sp[i], &ls[i], &si))
             continue;
         if (!any)
             shadow = *r;

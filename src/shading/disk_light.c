@@ -26,6 +26,8 @@ static bool disk_light_sample(const light *l, vec3 p, double u1, double u2, ligh
     return light_area_point(l, p, q, out);
 }
 
+LIGHT_SAMPLE_LANES(disk_light_lanes, disk_light_sample)
+
 static const param DISK_LIGHT_PARAMS[] = {
     {.key = "position", .type = PARAM_VEC3, .offset = offsetof(light_spec, light.position), .required = true,
      .meaning = "the disc's centre"},
@@ -38,5 +40,5 @@ static const param DISK_LIGHT_PARAMS[] = {
 
 const light_kind disk_light = {
     .name = "disk", .id = GLINT_LIGHT_DISK, .params = PARAM_TABLE(DISK_LIGHT_PARAMS), .init = disk_light_init,
-    .one_sided = true, .sample = disk_light_sample,
+    .one_sided = true, .sample = disk_light_sample, .sample_lanes = disk_light_lanes,
 };

@@ -10,7 +10,7 @@
  * Delta lights shine from one point (or one direction, at infinity),
  * optionally limited to a cone: they ignore the sample and give density 1.
  * Their kinds set up that description in their init and the integrator
- * samples them all with one inlined rule (light_sample_at), as a call
+ * samples them all with one inlined rule (light_delta_sample), as a call
  * through the record for every shading point and light cost the seed room
  * 2.6% of its instructions.
  *
@@ -98,7 +98,25 @@ struct light_kind {
     /* Samples the light from point p with (u1, u2) in [0, 1)^2: false when
      * it gives p nothing. light_delta_sample for delta kinds. */
     bool (*sample)(const light *l, vec3 p, double u1, double u2, light_sample *out);
+    /* An area light's sample for the lanes of a packet: ok[i] is sample's
+     * answer at p[i] with u[i] for each active lane, false for the rest.
+     * One call and one loop (LIGHT_SAMPLE_LANES), so that the lanes'
+     * square roots and divisions overlap where a call a lane waited for
+     * each in turn. NULL for delta kinds. */
+    void (*sample_lanes)(const light *l, const vec3 p[RAY8], const double (*u)[2], const bool active[RAY8],
+                         light_sample out[RAY8], bool ok[RAY8]);
 };
+
+/* Defines `name`, a light_kind.sample_lanes that runs the kind's own
+ * sample function `one` (defined before it, in the same file) over the
+ * lanes. */
+#define LIGHT_SAMPLE_LANES(name, one)                                                                        \
+    static void name(const light *l, const vec3 p[RAY8], const double (*u)[2], const bool active[RAY8],     \
+                     light_sample out[RAY8], bool ok[RAY8])                                                 \
+    {                                                                                                        \
+        for (int i = 0; i < RAY8; i++)                                                                       \
+            ok[i] = active[i] && one(l, p[i], u[i][0], u[i][1], &out[i]);                                    \
+    }
 
 extern const light_kind point_light, spot_light, directional_light, sphere_light, rectangle_light, disk_light;
 
@@ -167,13 +185,6 @@ static inline bool light_delta_sample(const light *l, vec3 p, light_sample *out)
  * kinds (the sample (u1, u2) is not used). */
 bool light_delta_sample_fn(const light *l, vec3 p, double u1, double u2, light_sample *out);
 
-/* Samples light l from point p (see light_kind.sample). */
-static inline bool light_sample_at(const light *l, vec3 p, double u1, double u2, light_sample *out)
-{
-    if (l->kind->delta)
-        return light_delta_sample(l, p, out);
-    return l->kind->sample(l, p, u1, u2, out);
-}
 
 /* The words of falloff_mode, in glint_falloff's order. */
 extern const char *const LIGHT_FALLOFF_WORDS[3];

@@ -39,7 +39,9 @@ static bool mesh_emitter_sample(const light *l, vec3 p, double u1, double u2, li
     return light_surface_point(p, q, tri->normal, share / tri->area, tri->radiance, true, out);
 }
 
-const light_kind mesh_emitter = {.name = "emissive mesh", .sample = mesh_emitter_sample};
+LIGHT_SAMPLE_LANES(mesh_emitter_lanes, mesh_emitter_sample)
+
+const light_kind mesh_emitter = {.name = "emissive mesh", .sample = mesh_emitter_sample, .sample_lanes = mesh_emitter_lanes};
 
 static bool same_point(vec3 p, vec3 q)
 {

@@ -30,6 +30,8 @@ static bool rectangle_light_sample(const light *l, vec3 p, double u1, double u2,
     return light_area_point(l, p, v3_add(d->position, v3_add(v3_scale(d->edge1, u1), v3_scale(d->edge2, u2))), out);
 }
 
+LIGHT_SAMPLE_LANES(rectangle_light_lanes, rectangle_light_sample)
+
 static const param RECTANGLE_LIGHT_PARAMS[] = {
     {.key = "corner", .type = PARAM_VEC3, .offset = offsetof(light_spec, light.position), .required = true,
      .meaning = "one corner"},
@@ -42,5 +44,5 @@ static const param RECTANGLE_LIGHT_PARAMS[] = {
 
 const light_kind rectangle_light = {
     .name = "rectangle", .id = GLINT_LIGHT_RECTANGLE, .params = PARAM_TABLE(RECTANGLE_LIGHT_PARAMS),
-    .init = rectangle_light_init, .one_sided = true, .sample = rectangle_light_sample,
+    .init = rectangle_light_init, .one_sided = true, .sample = rectangle_light_sample, .sample_lanes = rectangle_light_lanes,
 };

@@ -10,7 +10,9 @@ static bool shape_emitter_sample(const light *l, vec3 p, double u1, double u2, l
     return light_surface_point(p, q, n, density, l->desc.color, true, out);
 }
 
-const light_kind shape_emitter = {.name = "emissive shape", .sample = shape_emitter_sample};
+LIGHT_SAMPLE_LANES(shape_emitter_lanes, shape_emitter_sample)
+
+const light_kind shape_emitter = {.name = "emissive shape", .sample = shape_emitter_sample, .sample_lanes = shape_emitter_lanes};
 
 bool emitter_for_shape(light *l, const shape *s, color radiance)
 {

@@ -35,6 +35,8 @@ static bool sphere_light_sample(const light *l, vec3 p, double u1, double u2, li
     return true;
 }
 
+LIGHT_SAMPLE_LANES(sphere_light_lanes, sphere_light_sample)
+
 static const param SPHERE_LIGHT_PARAMS[] = {
     {.key = "position", .type = PARAM_VEC3, .offset = offsetof(light_spec, light.position), .required = true,
      .meaning = "the ball's centre"},
@@ -45,5 +47,5 @@ static const param SPHERE_LIGHT_PARAMS[] = {
 
 const light_kind sphere_light = {
     .name = "sphere", .id = GLINT_LIGHT_SPHERE, .params = PARAM_TABLE(SPHERE_LIGHT_PARAMS),
-    .init = sphere_light_init, .sample = sphere_light_sample,
+    .init = sphere_light_init, .sample = sphere_light_sample, .sample_lanes = sphere_light_lanes,
 };

@@ -86,17 +86,17 @@ static light make_spot(double cone, double falloff)
 static void test_spotlight(void **state)
 {
     light l = make_spot(20, 10);
-    light_sample s;
+    light_sample s = {0};
     /* Straight below: full light, at distance 10. */
-    assert_true(light_sample_at(&l, v3(0, 0, 0), 0.5, 0.5, &s));
+    assert_true(light_delta_sample(&l, v3(0, 0, 0), &s));
     assert_near(s.distance, 10, EPS);
     assert_vec_near(s.to_light, v3(0, 1, 0), EPS);
     assert_near(s.radiance.r, 1, EPS);
     /* 5 degrees off axis: inside the inner cone (10 degrees). */
-    assert_true(light_sample_at(&l, v3(10 * tan(5 * M_PI / 180), 0, 0), 0.5, 0.5, &s));
+    assert_true(light_delta_sample(&l, v3(10 * tan(5 * M_PI / 180), 0, 0), &s));
     assert_near(s.radiance.g, 1, EPS);
     /* 25 degrees off axis: outside the cone. */
-    assert_false(light_sample_at(&l, v3(10 * tan(25 * M_PI / 180), 0, 0), 0.5, 0.5, &s));
+    assert_false(light_delta_sample(&l, v3(10 * tan(25 * M_PI / 180), 0, 0), &s));
     /* In the falloff, halfway in cosine: smoothstep(0.5) = 0.5. */
     double c = 0.5 * (cos(20 * M_PI / 180) + cos(10 * M_PI / 180));
     assert_near(spot_factor(&l, c), 0.5, 1e-12);
@@ -106,14 +106,14 @@ static void test_spotlight(void **state)
     light hard = make_spot(8.5, 0);
     assert_near(spot_factor(&hard, cos(8.49 * M_PI / 180)), 1, 0);
     assert_near(spot_factor(&hard, cos(8.51 * M_PI / 180)), 0, 0);
-    /* The same edge through light_sample_at, whose quick rejection of
+    /* The same edge through light_delta_sample, whose quick rejection of
      * points outside the cone must leave those just inside lit. */
-    assert_true(light_sample_at(&hard, v3(10 * tan(8.4999 * M_PI / 180), 0, 0), 0.5, 0.5, &s));
+    assert_true(light_delta_sample(&hard, v3(10 * tan(8.4999 * M_PI / 180), 0, 0), &s));
     assert_near(s.radiance.r, 1, 0);
-    assert_false(light_sample_at(&hard, v3(10 * tan(8.5001 * M_PI / 180), 0, 0), 0.5, 0.5, &s));
-    assert_false(light_sample_at(&hard, v3(0, 10, 5), 0.5, 0.5, &s));
+    assert_false(light_delta_sample(&hard, v3(10 * tan(8.5001 * M_PI / 180), 0, 0), &s));
+    assert_false(light_delta_sample(&hard, v3(0, 10, 5), &s));
     /* Behind the spot: nothing. */
-    assert_false(light_sample_at(&l, v3(0, 20, 0), 0.5, 0.5, &s));
+    assert_false(light_delta_sample(&l, v3(0, 20, 0), &s));
 }
 
 static void test_point_and_directional(void **state)
@@ -121,14 +121,14 @@ static void test_point_and_directional(void **state)
     glint_light pd = {.kind = GLINT_LIGHT_POINT, .position = {3, 4, 0}, .color = {0.5, 1, 2}};
     glint_light dd = {.kind = GLINT_LIGHT_DIRECTIONAL, .direction = {0, -2, 0}, .color = {1, 1, 1}};
     light p, d;
-    light_sample s;
+    light_sample s = {0};
     assert_int_equal(light_init(&p, &pd, NULL), GLINT_OK);
-    assert_true(light_sample_at(&p, v3(0, 0, 0), 0.5, 0.5, &s));
+    assert_true(light_delta_sample(&p, v3(0, 0, 0), &s));
     assert_near(s.distance, 5, EPS);
     assert_vec_near(s.to_light, v3(0.6, 0.8, 0), EPS);
     assert_near(s.radiance.b, 2, EPS);
     assert_int_equal(light_init(&d, &dd, NULL), GLINT_OK);
-    assert_true(light_sample_at(&d, v3(7, 7, 7), 0.5, 0.5, &s));
+    assert_true(light_delta_sample(&d, v3(7, 7, 7), &s));
     assert_true(isinf(s.distance));
     assert_vec_near(s.to_light, v3(0, 1, 0), EPS);
 }
