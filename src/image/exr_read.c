@@ -6,6 +6,7 @@
  * memory, its data window checked against the size limits before any
  * pixel memory is allocated, and every OpenEXR failure reported in its
  * words, never a crash or a message on stderr. */
+#include <stdlib.h>
 #include <string.h>
 #include <openexr.h>
 #include "core/error.h"
@@ -54,10 +55,39 @@ static int channel_slot(const char *name)
     return -1;
 }
 
+/* Where the channels glint does not read are decoded to. OpenEXR 3.1
+ * picks an unpacker for three interleaved channels when the channels it
+ * fills happen to be spaced like three (one grey Y among three, its pixel
+ * stride three floats) and then writes through the others' pointers even
+ * when they are NULL; a skipped channel therefore gets a real plane of its
+ * own, reused by every skipped channel and grown as chunks need. */
+typedef struct skipped_plane {
+    float *values;
+    size_t capacity;
+} skipped_plane;
+
+/* Points `channel` at plane, grown to the channel's samples in this chunk. */
+static exr_result_t skip_channel(exr_coding_channel_info_t *channel, skipped_plane *plane)
+{
+    size_t columns = channel->width > 0 ? (size_t)channel->width : 1;
+    size_t needed = columns * (channel->height > 0 ? (size_t)channel->height : 1);
+    if (needed > plane->capacity) {
+        float *grown = realloc(plane->values, needed * sizeof(float));
+        if (!grown)
+            return EXR_ERR_OUT_OF_MEMORY;
+        plane->values = grown;
+        plane->capacity = needed;
+    }
+    channel->decode_to_ptr = (uint8_t *)plane->values;
+    channel->user_pixel_stride = sizeof(float);
+    channel->user_line_stride = (int32_t)(sizeof(float) * columns);
+    return EXR_ERR_SUCCESS;
+}
+
 /* Decodes chunk `chunk` (covering rows and columns of the data window from
  * (x0, y0)) into img through *decoder. */
 static exr_result_t decode_chunk(exr_context_t ctxt, const exr_chunk_info_t *chunk, exr_decode_pipeline_t *decoder,
-                                 bool *started, texture_image *img, int x0, int y0, bool grey)
+                                 bool *started, texture_image *img, int x0, int y0, bool grey, skipped_plane *plane)
 {
     /* A chunk the file places outside the data window would be decoded
      * outside the pixels. */
@@ -72,15 +102,16 @@ static exr_result_t decode_chunk(exr_context_t ctxt, const exr_chunk_info_t *chu
     float *pixels = (float *)img->owned;
     for (int c = 0; c < decoder->channel_count; c++) {
         exr_coding_channel_info_t *channel = &decoder->channels[c];
+        channel->user_data_type = EXR_PIXEL_FLOAT;
+        channel->user_bytes_per_element = sizeof(float);
         int slot = channel_slot(channel->channel_name);
         if (slot < 0 || (grey && slot != 3) || (!grey && slot == 3)) {
-            channel->decode_to_ptr = NULL; /* skipped */
+            if ((rv = skip_channel(channel, plane)) != EXR_ERR_SUCCESS)
+                return rv;
             continue;
         }
         size_t row = (size_t)(chunk->start_y - y0), col = (size_t)(chunk->start_x - x0);
         channel->decode_to_ptr = (uint8_t *)(pixels + 3 * (row * (size_t)img->width + col) + (grey ? 0 : slot));
-        channel->user_data_type = EXR_PIXEL_FLOAT;
-        channel->user_bytes_per_element = sizeof(float);
         channel->user_pixel_stride = 3 * sizeof(float);
         channel->user_line_stride = 3 * sizeof(float) * img->width;
     }
@@ -95,6 +126,7 @@ static exr_result_t decode_chunks(exr_context_t ctxt, exr_storage_t storage, tex
                                   bool grey)
 {
     exr_decode_pipeline_t decoder = EXR_DECODE_PIPELINE_INITIALIZER;
+    skipped_plane plane = {NULL, 0};
     bool started = false;
     exr_result_t rv = EXR_ERR_SUCCESS;
     if (storage == EXR_STORAGE_SCANLINE) {
@@ -104,7 +136,7 @@ static exr_result_t decode_chunks(exr_context_t ctxt, exr_storage_t storage, tex
             exr_chunk_info_t chunk;
             rv = exr_read_scanline_chunk_info(ctxt, 0, y, &chunk);
             if (rv == EXR_ERR_SUCCESS)
-                rv = decode_chunk(ctxt, &chunk, &decoder, &started, img, x0, y0, grey);
+                rv = decode_chunk(ctxt, &chunk, &decoder, &started, img, x0, y0, grey, &plane);
         }
     } else {
         int32_t tile_w = 1, tile_h = 1;
@@ -118,10 +150,11 @@ static exr_result_t decode_chunks(exr_context_t ctxt, exr_storage_t storage, tex
                 exr_chunk_info_t chunk;
                 rv = exr_read_tile_chunk_info(ctxt, 0, (int)tx, (int)ty, 0, 0, &chunk);
                 if (rv == EXR_ERR_SUCCESS)
-                    rv = decode_chunk(ctxt, &chunk, &decoder, &started, img, x0, y0, grey);
+                    rv = decode_chunk(ctxt, &chunk, &decoder, &started, img, x0, y0, grey, &plane);
             }
     }
     exr_result_t done = exr_decoding_destroy(ctxt, &decoder);
+    free(plane.values);
     return rv != EXR_ERR_SUCCESS ? rv : done;
 }
 

@@ -1131,6 +1131,76 @@ static void test_load_exr_corrupt(void **state)
     assert_null(tex.owned);
 }
 
+/* Appends an OpenEXR attribute (name, type, size, value) at p. */
+static size_t put_exr_attribute(unsigned char *p, const char *name, const char *type, const void *value,
+                                uint32_t size)
+{
+    size_t n = strlen(name) + 1, t = strlen(type) + 1;
+    memcpy(p, name, n);
+    memcpy(p + n, type, t);
+    memcpy(p + n + t, &size, 4); /* OpenEXR is little-endian, as the machines glint runs on */
+    memcpy(p + n + t + 4, value, size);
+    return n + t + 4 + size;
+}
+
+/* A luminance-chroma OpenEXR image (half channels BY, RY, Y, as OpenEXR's
+ * own RgbaYca files have) is read as grey from Y. Only one of its three
+ * channels is read, which OpenEXR 3.1 took for three interleaved ones and
+ * decoded through the skipped channels' NULL pointers (a crash found by
+ * fuzz_texture); the skipped channels now have a plane of their own. */
+static void test_load_exr_luminance_chroma(void **state)
+{
+    (void)state;
+    unsigned char file[512] = {0x76, 0x2f, 0x31, 0x01, 2, 0, 0, 0};
+    size_t n = 8;
+    unsigned char channels[64];
+    size_t c = 0;
+    static const char *const names[] = {"BY", "RY", "Y"};
+    for (int i = 0; i < 3; i++) {
+        const int32_t half = 1, sampling = 1;
+        memcpy(channels + c, names[i], strlen(names[i]) + 1);
+        c += strlen(names[i]) + 1;
+        memcpy(channels + c, &half, 4);
+        memset(channels + c + 4, 0, 4); /* pLinear and reserved */
+        memcpy(channels + c + 8, &sampling, 4);
+        memcpy(channels + c + 12, &sampling, 4);
+        c += 16;
+    }
+    channels[c++] = 0;
+    const unsigned char none = 0;
+    const int32_t window[4] = {0, 0, 1, 0}; /* 2 x 1 pixels */
+    const float one = 1, centre[2] = {0, 0};
+    n += put_exr_attribute(file + n, "channels", "chlist", channels, (uint32_t)c);
+    n += put_exr_attribute(file + n, "compression", "compression", &none, 1);
+    n += put_exr_attribute(file + n, "dataWindow", "box2i", window, sizeof window);
+    n += put_exr_attribute(file + n, "displayWindow", "box2i", window, sizeof window);
+    n += put_exr_attribute(file + n, "lineOrder", "lineOrder", &none, 1);
+    n += put_exr_attribute(file + n, "pixelAspectRatio", "float", &one, 4);
+    n += put_exr_attribute(file + n, "screenWindowCenter", "v2f", centre, sizeof centre);
+    n += put_exr_attribute(file + n, "screenWindowWidth", "float", &one, 4);
+    file[n++] = 0;
+    const uint64_t chunk_offset = n + 8;
+    memcpy(file + n, &chunk_offset, 8);
+    n += 8;
+    /* The one scanline: y, byte count, then BY, RY and Y for both pixels;
+     * Y is 0.5 and 2 as halves. */
+    const int32_t row[2] = {0, 12};
+    const uint16_t halves[6] = {0x3c00, 0x3c00, 0x3c00, 0x3c00, 0x3800, 0x4000};
+    memcpy(file + n, row, sizeof row);
+    memcpy(file + n + sizeof row, halves, sizeof halves);
+    n += sizeof row + sizeof halves;
+
+    glint_error err = {0};
+    texture_image tex;
+    assert_int_equal(texture_image_load_memory(&tex, file, n, "yca.exr", &err), GLINT_OK);
+    assert_int_equal(tex.width, 2);
+    assert_int_equal(tex.height, 1);
+    const float grey[6] = {0.5f, 0.5f, 0.5f, 2, 2, 2};
+    for (int i = 0; i < 6; i++)
+        assert_true(tex.hdr[i] == grey[i]);
+    texture_image_free(&tex);
+}
+
 /* A material using a texture decodes its file (one no material uses is
  * never decoded); textures naming one file, by its name or through a link,
  * share one decoding, which outlives the texture that made it; another
@@ -1467,6 +1537,7 @@ int main(void)
         cmocka_unit_test(test_load_oversized_png),
         cmocka_unit_test(test_load_png_chunk_past_end),
         cmocka_unit_test(test_load_exr_corrupt),
+        cmocka_unit_test(test_load_exr_luminance_chroma),
         cmocka_unit_test(test_load_grey_png),
         cmocka_unit_test(test_textures_share_decoded_file),
         cmocka_unit_test(test_textures_within_budget),
