@@ -64,7 +64,7 @@ glint_run() {
 povray_run() {
     local args
     case $1 in
-    soft-light) args=(+W640 +H480 "Declare=LIGHT_N=$(isqrt "$2")" Declare=LIGHT_POWER=0.85) ;;
+    soft-light) args=(+W640 +H480 "Declare=LIGHT_N=$(isqrt "$2")") ;;
     cornell-box) args=(+W640 +H640 "Declare=LIGHT_N=$(isqrt "$2")") ;;
     depth-of-field) args=(+W640 +H480 "Declare=BLUR_N=$2") ;;
     esac
