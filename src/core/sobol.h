@@ -22,51 +22,65 @@
 #include <stdint.h>
 #include "core/hash.h"
 
-/* i's bits in the opposite order. */
-static inline uint32_t reverse_bits32(uint32_t i)
-{
-    i = (i << 16) | (i >> 16);
-    i = ((i & 0x00ff00ffU) << 8) | ((i & 0xff00ff00U) >> 8);
-    i = ((i & 0x0f0f0f0fU) << 4) | ((i & 0xf0f0f0f0U) >> 4);
-    i = ((i & 0x33333333U) << 2) | ((i & 0xccccccccU) >> 2);
-    return ((i & 0x55555555U) << 1) | ((i & 0xaaaaaaaaU) >> 1);
-}
+/* Eight 32-bit words, one a lane: eight sequences' points at once
+ * (sobol2_points8). Aligned as a word, so that a struct holding them may
+ * sit anywhere malloc puts it. Integer steps are exact, so each lane has
+ * the bits one sobol2_point gives. */
+typedef uint32_t sobol_lanes __attribute__((vector_size(8 * sizeof(uint32_t)), aligned(sizeof(uint32_t))));
 
-/* A bijection of 32-bit words in which bit b of the result depends only
- * on bits 0..b of x: a nested random flip of x's bits from the least
- * significant up, different for every seed. */
-static inline uint32_t scramble_upwards(uint32_t x, uint32_t seed)
-{
-    x += seed;
-    x ^= x * 0x6c50b47cU;
-    x ^= x * 0xb82f1e52U;
-    x ^= x * 0xc7afe638U;
-    x ^= x * 0x8d22f6e6U;
-    return x;
-}
+/* The bit steps below, written once for one word (T uint32_t, no suffix)
+ * and for eight (sobol_lanes, suffix _lanes): GCC's vectors take the same
+ * operators, a scalar operand standing for all lanes.
+ *
+ * reverse_bits32: i's bits in the opposite order.
+ *
+ * scramble_upwards: a bijection of 32-bit words in which bit b of the
+ * result depends only on bits 0..b of x: a nested random flip of x's bits
+ * from the least significant up, different for every seed.
+ *
+ * sobol_second_reversed: the second Sobol coordinate of index i,
+ * bit-reversed (bit 0 the most significant bit of the fraction): i times
+ * the generator matrix, Pascal's triangle modulo 2, whose entry (r, c) is 1
+ * when the bits of r are among those of c (Lucas's theorem). Bit r of the
+ * product is then the parity of i's bits at the positions holding r's,
+ * which five shifted XORs gather over the five bits of a position (a
+ * subset-sum transform), where a loop over i's bits took up to 32 steps. */
+#define SOBOL_BIT_STEPS(T, suffix)                                                                           \
+    __attribute__((always_inline)) static inline T reverse_bits32##suffix(T i)                               \
+    {                                                                                                        \
+        i = (i << 16) | (i >> 16);                                                                           \
+        i = ((i & 0x00ff00ffU) << 8) | ((i & 0xff00ff00U) >> 8);                                             \
+        i = ((i & 0x0f0f0f0fU) << 4) | ((i & 0xf0f0f0f0U) >> 4);                                             \
+        i = ((i & 0x33333333U) << 2) | ((i & 0xccccccccU) >> 2);                                             \
+        return ((i & 0x55555555U) << 1) | ((i & 0xaaaaaaaaU) >> 1);                                          \
+    }                                                                                                        \
+    __attribute__((always_inline)) static inline T scramble_upwards##suffix(T x, T seed)                     \
+    {                                                                                                        \
+        x += seed;                                                                                           \
+        x ^= x * 0x6c50b47cU;                                                                                \
+        x ^= x * 0xb82f1e52U;                                                                                \
+        x ^= x * 0xc7afe638U;                                                                                \
+        x ^= x * 0x8d22f6e6U;                                                                                \
+        return x;                                                                                            \
+    }                                                                                                        \
+    __attribute__((always_inline)) static inline T sobol_second_reversed##suffix(T i)                        \
+    {                                                                                                        \
+        i ^= (i >> 1) & 0x55555555U;                                                                         \
+        i ^= (i >> 2) & 0x33333333U;                                                                         \
+        i ^= (i >> 4) & 0x0f0f0f0fU;                                                                         \
+        i ^= (i >> 8) & 0x00ff00ffU;                                                                         \
+        i ^= (i >> 16) & 0x0000ffffU;                                                                        \
+        return i;                                                                                            \
+    }
+
+SOBOL_BIT_STEPS(uint32_t, )
+SOBOL_BIT_STEPS(sobol_lanes, _lanes)
 
 /* Owen's scrambling of a fraction of 2^32: each bit flipped by a choice
  * that depends on the bits above it. */
 static inline uint32_t owen_scramble(uint32_t fraction, uint32_t seed)
 {
     return reverse_bits32(scramble_upwards(reverse_bits32(fraction), seed));
-}
-
-/* The second Sobol coordinate of index i, bit-reversed (bit 0 the most
- * significant bit of the fraction): i times the generator matrix, Pascal's
- * triangle modulo 2, whose entry (r, c) is 1 when the bits of r are among
- * those of c (Lucas's theorem). Bit r of the product is then the parity of
- * i's bits at the positions holding r's, which five shifted XORs gather
- * over the five bits of a position (a subset-sum transform), where a loop
- * over i's bits took up to 32 steps. */
-static inline uint32_t sobol_second_reversed(uint32_t i)
-{
-    i ^= (i >> 1) & 0x55555555U;
-    i ^= (i >> 2) & 0x33333333U;
-    i ^= (i >> 4) & 0x0f0f0f0fU;
-    i ^= (i >> 8) & 0x00ff00ffU;
-    i ^= (i >> 16) & 0x0000ffffU;
-    return i;
 }
 
 /* The three scrambles a seed's sequence uses: of the index, and of each
@@ -96,6 +110,35 @@ static inline void sobol2_point(uint32_t i, sobol2_seeds s, double *x, double *y
     uint32_t second = reverse_bits32(scramble_upwards(sobol_second_reversed(index), s.y));
     *x = (first >> 8) * (1.0 / 16777216.0);
     *y = (second >> 8) * (1.0 / 16777216.0);
+}
+
+/* The scrambles of eight sequences, lane by lane. */
+typedef struct sobol2_seeds8 {
+    sobol_lanes index, x, y;
+} sobol2_seeds8;
+
+/* Puts one sequence's scrambles in lane `lane` of *s. */
+static inline void sobol2_seeds8_set(sobol2_seeds8 *s, int lane, sobol2_seeds one)
+{
+    s->index[lane] = one.index;
+    s->x[lane] = one.x;
+    s->y[lane] = one.y;
+}
+
+/* Point i of each of the eight sequences of s: lane k is sobol2_point of
+ * lane k's seeds, bit for bit, for about the time of two of them (the
+ * scalar steps wait on eight multiplications in a row). */
+__attribute__((always_inline)) static inline void sobol2_points8(uint32_t i, const sobol2_seeds8 *s, double x[8],
+                                                                 double y[8])
+{
+    sobol_lanes reversed = (sobol_lanes){0} + reverse_bits32(i);
+    sobol_lanes index = reverse_bits32_lanes(scramble_upwards_lanes(reversed, s->index));
+    sobol_lanes first = reverse_bits32_lanes(scramble_upwards_lanes(index, s->x)) >> 8;
+    sobol_lanes second = reverse_bits32_lanes(scramble_upwards_lanes(sobol_second_reversed_lanes(index), s->y)) >> 8;
+    for (int k = 0; k < 8; k++) {
+        x[k] = (int32_t)first[k] * (1.0 / 16777216.0);
+        y[k] = (int32_t)second[k] * (1.0 / 16777216.0);
+    }
 }
 
 /* Point i of the scrambled two-dimensional Sobol sequence with the given

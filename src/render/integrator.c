@@ -271,11 +271,16 @@ static void pattern_point(sobol2_seeds seeds, int j, double u[2])
 }
 
 /* Sample j of an area light at each lane's shading point, each lane's
- * pattern scrambled by its own seeds[i]. */
-static void area_samples(const sobol2_seeds seeds[ACCEL_PACKET], int j, double u[ACCEL_PACKET][2])
+ * pattern scrambled by its own seeds (lane i of seeds): pattern_point for
+ * the eight lanes at once. */
+static void area_samples(const sobol2_seeds8 *seeds, int j, double u[ACCEL_PACKET][2])
 {
-    for (int i = 0; i < ACCEL_PACKET; i++)
-        pattern_point(seeds[i], j, u[i]);
+    double x[ACCEL_PACKET], y[ACCEL_PACKET];
+    sobol2_points8((uint32_t)j, seeds, x, y);
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        u[i][0] = x[i];
+        u[i][1] = y[i];
+    }
 }
 
 /* Adds to direct[i] the light of area light l (the scene's light number
@@ -289,12 +294,12 @@ __attribute__((noinline)) static void area_light_packets(tracer *t, const ray8 *
                                                          const light *l, int index, int n,
                                                          const uint32_t key[ACCEL_PACKET], color direct[ACCEL_PACKET])
 {
-    sobol2_seeds seeds[ACCEL_PACKET];
+    sobol2_seeds8 seeds;
     for (int i = 0; i < ACCEL_PACKET; i++)
-        seeds[i] = sobol2_seeds_of(hash_u32(key[i] ^ hash_u32((uint32_t)index + 1)));
+        sobol2_seeds8_set(&seeds, i, sobol2_seeds_of(hash_u32(key[i] ^ hash_u32((uint32_t)index + 1))));
     for (int j = 0; j < n && !stopping(t); j++) {
         double u[ACCEL_PACKET][2];
-        area_samples(seeds, j, u);
+        area_samples(&seeds, j, u);
         light_packet(t, r, found, sp, depth, l, u, 1.0 / n, direct);
     }
 }

@@ -34,8 +34,8 @@ void pixel_samples_start(const pixel_sampler *ps, const int px[RAY8], const int 
         uint32_t h = hash4((uint32_t)px[i], (uint32_t)py[i], 0, ps->seed ^ 0x4c454e53U);
         b->pattern[i] = h;
         if (ps->kind == GLINT_SAMPLER_SOBOL) {
-            b->image[i] = sobol2_seeds_of(h);
-            b->lens[i] = sobol2_seeds_of(hash_u32(h ^ 0x4c454e53U));
+            sobol2_seeds8_set(&b->image, i, sobol2_seeds_of(h));
+            sobol2_seeds8_set(&b->lens, i, sobol2_seeds_of(hash_u32(h ^ 0x4c454e53U)));
         }
         if (!ps->lens || ps->kind == GLINT_SAMPLER_SOBOL)
             continue;
@@ -48,15 +48,14 @@ void pixel_samples_start(const pixel_sampler *ps, const int px[RAY8], const int 
 
 /* Sample k's point in each lane's pixel, in [0, 1)^2: the sampler chosen
  * once for the eight lanes, whose loops then run without a branch (the
- * Sobol points' integer steps vectorise). */
+ * Sobol points are worked out for the eight at once). */
 static void points_in_pixels(const pixel_sampler *ps, const pixel_block_samples *b, int k, double u[RAY8],
                              double v[RAY8])
 {
     int n = ps->grid, sx = k % n, sy = k / n;
     switch (ps->kind) {
     case GLINT_SAMPLER_SOBOL:
-        for (int i = 0; i < RAY8; i++)
-            sobol2_point((uint32_t)k, b->image[i], &u[i], &v[i]);
+        sobol2_points8((uint32_t)k, &b->image, u, v);
         return;
     case GLINT_SAMPLER_JITTERED:
         for (int i = 0; i < RAY8; i++) {
@@ -79,8 +78,7 @@ static void points_in_pixels(const pixel_sampler *ps, const pixel_block_samples 
 static void points_on_lenses(const pixel_sampler *ps, const pixel_block_samples *b, int k, camera_lens8 *lens)
 {
     if (ps->kind == GLINT_SAMPLER_SOBOL) {
-        for (int i = 0; i < RAY8; i++)
-            sobol2_point((uint32_t)k, b->lens[i], &lens->u[i], &lens->v[i]);
+        sobol2_points8((uint32_t)k, &b->lens, lens->u, lens->v);
         return;
     }
     int n = ps->grid;

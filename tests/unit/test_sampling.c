@@ -43,6 +43,30 @@ static void test_sobol_points_fill_every_stratum(void **state)
     }
 }
 
+/* Eight sequences at once give each lane the very point the sequence
+ * gives alone, for indices from 0 to past 2^20 and seeds across the word. */
+static void test_sobol_eight_lanes_are_eight_sequences(void **state)
+{
+    (void)state;
+    for (uint32_t round = 0; round < 64; round++) {
+        sobol2_seeds one[8];
+        sobol2_seeds8 lanes;
+        for (int k = 0; k < 8; k++) {
+            one[k] = sobol2_seeds_of(hash_u32(round * 8 + (uint32_t)k));
+            sobol2_seeds8_set(&lanes, k, one[k]);
+        }
+        for (uint32_t i = 0; i < 1200000; i += 1 + i / 7 + round) {
+            double x[8], y[8];
+            sobol2_points8(i, &lanes, x, y);
+            for (int k = 0; k < 8; k++) {
+                double ex, ey;
+                sobol2_point(i, one[k], &ex, &ey);
+                assert_true(x[k] == ex && y[k] == ey);
+            }
+        }
+    }
+}
+
 static const glint_filter FILTERS[] = {GLINT_FILTER_BOX, GLINT_FILTER_TENT, GLINT_FILTER_GAUSSIAN,
                                        GLINT_FILTER_MITCHELL, GLINT_FILTER_LANCZOS};
 
@@ -294,6 +318,7 @@ int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sobol_points_fill_every_stratum),
+        cmocka_unit_test(test_sobol_eight_lanes_are_eight_sequences),
         cmocka_unit_test(test_concentric_disk_is_the_formula),
         cmocka_unit_test(test_filters_integrate_to_one),
         cmocka_unit_test(test_filter_offsets_fall_as_the_filter),
