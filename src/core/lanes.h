@@ -56,6 +56,16 @@ static inline quad_f64 quad_select(quad_mask m, quad_f64 a, quad_f64 b)
     return v;
 }
 
+/* The absolute value of every lane, as fabs's: the sign bit cleared. */
+static inline quad_f64 quad_abs(quad_f64 v)
+{
+    quad_mask bits;
+    memcpy(&bits, &v, sizeof bits);
+    bits &= INT64_MAX;
+    memcpy(&v, &bits, sizeof v);
+    return v;
+}
+
 /* The square root of every lane, correctly rounded as sqrt's. */
 #if defined(__x86_64__) || defined(__i386__)
 #include <immintrin.h>

@@ -48,10 +48,10 @@ static void polygon_point(int blades, double u, double v, double *x, double *y)
     *y = r * ((1 - v) * sin(a0) + v * sin(a1));
 }
 
-/* Each lane's ray, four lanes at a time: the lens points one by one (a
- * map of the square), everything else as v3_* would work it out but for
- * four lanes at once, so that each square root and division overlaps
- * three others instead of waiting for the last (the same bytes). */
+/* Each lane's ray, four lanes at a time: everything (but a polygon's
+ * points, one by one) as v3_* would work it out but for four lanes at
+ * once, so that each square root and division overlaps three others
+ * instead of waiting for the last (the same bytes). */
 static void thin_lens_rays8(const camera *c, const double x[RAY8], const double y[RAY8], const camera_lens8 *lens,
                             const double time[RAY8], ray8 *out)
 {
@@ -64,14 +64,17 @@ static void thin_lens_rays8(const camera *c, const double x[RAY8], const double 
                          quad_dot(dx, dy, dz, quad_splat(c->forward.x), quad_splat(c->forward.y),
                                   quad_splat(c->forward.z));
         quad_f64 fx = c->position.x + dx * along, fy = c->position.y + dy * along, fz = c->position.z + dz * along;
-        double lx[QUAD], ly[QUAD];
-        for (int k = 0; k < QUAD; k++) {
-            if (c->blades)
-                polygon_point(c->blades, lens->u[i + k], lens->v[i + k], &lx[k], &ly[k]);
-            else
-                concentric_disk(lens->u[i + k], lens->v[i + k], &lx[k], &ly[k]);
+        quad_f64 lx, ly;
+        if (c->blades) {
+            double px[QUAD], py[QUAD];
+            for (int k = 0; k < QUAD; k++)
+                polygon_point(c->blades, lens->u[i + k], lens->v[i + k], &px[k], &py[k]);
+            lx = quad_load(px);
+            ly = quad_load(py);
+        } else {
+            concentric_disk_quad(quad_load(lens->u + i), quad_load(lens->v + i), &lx, &ly);
         }
-        quad_f64 rx = c->lens_radius * quad_load(lx), ry = c->lens_radius * quad_load(ly);
+        quad_f64 rx = c->lens_radius * lx, ry = c->lens_radius * ly;
         quad_f64 ox = c->position.x + (c->right.x * rx + c->up.x * ry);
         quad_f64 oy = c->position.y + (c->right.y * rx + c->up.y * ry);
         quad_f64 oz = c->position.z + (c->right.z * rx + c->up.z * ry);
