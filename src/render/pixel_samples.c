@@ -33,10 +33,9 @@ void pixel_samples_start(const pixel_sampler *ps, const int px[RAY8], const int 
             continue;
         uint32_t h = hash4((uint32_t)px[i], (uint32_t)py[i], 0, ps->seed ^ 0x4c454e53U);
         b->pattern[i] = h;
-        if (ps->kind == GLINT_SAMPLER_SOBOL) {
-            sobol2_seeds8_set(&b->image, i, sobol2_seeds_of(h));
-            sobol2_seeds8_set(&b->lens, i, sobol2_seeds_of(hash_u32(h ^ 0x4c454e53U)));
-        }
+        if (ps->kind == GLINT_SAMPLER_SOBOL)
+            for (int d = 0; d < 4; d++)
+                b->scramble[d][i] = hash_u32(h ^ (uint32_t)(d + 1) * 0x9e3779b9U);
         if (!ps->lens || ps->kind == GLINT_SAMPLER_SOBOL)
             continue;
         b->shuffle_a[i] = 1 + hash_u32(h) % cells;
@@ -55,7 +54,8 @@ static void points_in_pixels(const pixel_sampler *ps, const pixel_block_samples 
     int n = ps->grid, sx = k % n, sy = k / n;
     switch (ps->kind) {
     case GLINT_SAMPLER_SOBOL:
-        sobol2_points8((uint32_t)k, &b->image, u, v);
+        sobol_scrambled8((uint32_t)k, b->scramble[0], u);
+        sobol_scrambled8(sobol_second_reversed((uint32_t)k), b->scramble[1], v);
         return;
     case GLINT_SAMPLER_JITTERED:
         for (int i = 0; i < RAY8; i++) {
@@ -78,7 +78,10 @@ static void points_in_pixels(const pixel_sampler *ps, const pixel_block_samples 
 static void points_on_lenses(const pixel_sampler *ps, const pixel_block_samples *b, int k, camera_lens8 *lens)
 {
     if (ps->kind == GLINT_SAMPLER_SOBOL) {
-        sobol2_points8((uint32_t)k, &b->lens, lens->u, lens->v);
+        uint32_t third, fourth;
+        sobol_third_fourth_reversed((uint32_t)k, &third, &fourth);
+        sobol_scrambled8(third, b->scramble[2], lens->u);
+        sobol_scrambled8(fourth, b->scramble[3], lens->v);
         return;
     }
     int n = ps->grid;

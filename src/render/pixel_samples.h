@@ -35,7 +35,7 @@ typedef struct pixel_sampler {
 typedef struct pixel_block_samples {
     int px[RAY8], py[RAY8];
     uint32_t pattern[RAY8];        /* the pixel's own scramble (sobol, and the lens cells' points) */
-    sobol2_seeds8 image, lens;     /* sobol: the scrambles of the image and lens sequences */
+    sobol_lanes scramble[4];       /* sobol: the scrambles of the four dimensions (image x, y; lens u, v) */
     uint32_t shuffle_a[RAY8], shuffle_b[RAY8]; /* the grid's lens cells: k goes to (a k + b) mod n^2 */
 } pixel_block_samples;
 
