@@ -93,9 +93,8 @@ bool light_surface_point(vec3 p, vec3 q, vec3 n_q, double density, color radianc
         return false;
     out->to_light = v3_scale(d, 1 / distance);
     out->distance = in_scene ? distance * (1 - EMITTER_GAP) : distance;
-    /* By area: density d^2 / cos among directions. */
+    /* By area, the density among directions is density d^2 / cos. */
     double per_area = density * d2 * distance;
-    out->pdf = per_area / cos_times_distance;
     out->radiance = rgb_scale(radiance, cos_times_distance / (M_PI * per_area));
     return true;
 }

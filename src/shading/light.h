@@ -70,9 +70,9 @@ typedef struct light_sample {
     double distance;          /* to the light; INFINITY for directional lights */
     color radiance;           /* arriving light before shadows, as the colour of a point
                                  light in to_light (phong_light's radiance): for an area
-                                 light, its radiance / (pi pdf) (docs/scene-format.md) */
-    double pdf;               /* density of to_light among the light's directions; 1 for a
-                                 light of one direction */
+                                 light, its radiance / (pi pdf), pdf the density of to_light
+                                 among the directions the light is sampled in
+                                 (docs/scene-format.md) */
 } light_sample;
 
 /* What a scene file says of a light: the public description and the
@@ -160,7 +160,6 @@ double light_falloff(const light *l, double d);
 static inline bool light_delta_sample(const light *l, vec3 p, light_sample *out)
 {
     double factor = 1;
-    out->pdf = 1;
     if (l->at_infinity) {
         out->to_light = v3_neg(l->dir);
         out->distance = INFINITY;

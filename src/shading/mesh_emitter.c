@@ -30,7 +30,9 @@ static bool mesh_emitter_sample(const light *l, vec3 p, double u1, double u2, li
 {
     int t = find_triangle(l, u1);
     double before = t > 0 ? l->cumulative[t - 1] : 0, share = l->cumulative[t] - before;
-    double u = (u1 - before) / share;
+    /* One triangle (or parallelogram), as a lamp often is: u1 itself,
+     * which the division would give, without its wait. */
+    double u = l->triangle_count == 1 ? u1 : (u1 - before) / share;
     u = u < 1 ? u : 0.99999999999999989;
     const emitter_triangle *tri = &l->triangles[t];
     vec3 q = tri->parallelogram ? v3_add(tri->a, v3_add(v3_scale(v3_sub(tri->b, tri->a), u),

@@ -30,7 +30,6 @@ static bool sphere_light_sample(const light *l, vec3 p, double u1, double u2, li
     out->to_light = v3_add(v3_scale(axis, cos_t), v3_add(v3_scale(a, sin_t * cos(phi)), v3_scale(b, sin_t * sin(phi))));
     /* The near side of the ball along that direction. */
     out->distance = d * cos_t - sqrt(fmax(0, r * r - d2 * sin_t * sin_t));
-    out->pdf = 1 / (2 * M_PI * cap);
     out->radiance = rgb_scale(l->desc.color, 2 * cap);
     return true;
 }
