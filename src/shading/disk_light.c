@@ -17,16 +17,13 @@ static glint_status disk_light_init(light *l, glint_error *err)
     return s;
 }
 
-static bool disk_light_sample(const light *l, vec3 p, double u1, double u2, light_sample *out)
+static void disk_light_surface(const light *l, double u1, double u2, surface_point *out)
 {
     double x, y, r = l->desc.radius;
     concentric_disk(u1, u2, &x, &y);
     const shape *g = &l->glow;
-    vec3 q = v3_add(g->desc.center, v3_add(v3_scale(g->plane_u, r * x), v3_scale(g->plane_v, r * y)));
-    return light_area_point(l, p, q, out);
+    light_area_point(l, v3_add(g->desc.center, v3_add(v3_scale(g->plane_u, r * x), v3_scale(g->plane_v, r * y))), out);
 }
-
-LIGHT_SAMPLE_LANES(disk_light_lanes, disk_light_sample)
 
 static const param DISK_LIGHT_PARAMS[] = {
     {.key = "position", .type = PARAM_VEC3, .offset = offsetof(light_spec, light.position), .required = true,
@@ -40,5 +37,6 @@ static const param DISK_LIGHT_PARAMS[] = {
 
 const light_kind disk_light = {
     .name = "disk", .id = GLINT_LIGHT_DISK, .params = PARAM_TABLE(DISK_LIGHT_PARAMS), .init = disk_light_init,
-    .one_sided = true, .sample = disk_light_sample, .sample_lanes = disk_light_lanes,
+    .one_sided = true, .sample = light_surface_sample, .sample_lanes = light_surface_lanes,
+    .surface = disk_light_surface,
 };

@@ -5,6 +5,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "core/error.h"
+#include "core/lanes.h"
 #include "core/registry.h"
 #include "shading/light.h"
 
@@ -68,6 +69,7 @@ bool light_delta_sample_fn(const light *l, vec3 p, double u1, double u2, light_s
 glint_status light_area_init(light *l, const glint_shape *glow, double area, glint_error *err)
 {
     l->area = area;
+    l->density = 1 / area;
     l->power = rgb_mean(l->desc.color) * area;
     return shape_init(&l->glow, glow, NULL, -1, err);
 }
@@ -77,31 +79,97 @@ glint_status light_area_init(light *l, const glint_shape *glow, double area, gli
  * not taken for a blocker. */
 #define EMITTER_GAP 1e-4
 
+/* light_surface_point's arithmetic for four lanes (k of each quad): the
+ * vector from p to q and its length, the direction, the distance the
+ * shadow segment runs, and the scale of the radiance, where the mask is
+ * set (d^2, the density and the cosine at the light all above 0). The
+ * cosine at the light times the distance comes from d itself: the scale
+ * waits for one square root and one division, not for the direction's
+ * division as well (four dependent ones, at about 15 cycles each, were a
+ * quarter of a Cornell box render). By area, the density among directions
+ * is density d^2 / cos. */
+static inline quad_mask surface_point_quad(const quad_f64 p[3], const quad_f64 q[3], const quad_f64 n[3],
+                                           quad_f64 density, bool in_scene, quad_f64 to_light[3],
+                                           quad_f64 *distance, quad_f64 *scale)
+{
+    quad_f64 dx = q[0] - p[0], dy = q[1] - p[1], dz = q[2] - p[2];
+    quad_f64 d2 = quad_dot(dx, dy, dz, dx, dy, dz);
+    quad_f64 length = quad_sqrt(d2), cos_times_distance = -quad_dot(dx, dy, dz, n[0], n[1], n[2]);
+    quad_f64 inverse = 1 / length;
+    to_light[0] = dx * inverse;
+    to_light[1] = dy * inverse;
+    to_light[2] = dz * inverse;
+    *distance = in_scene ? length * (1 - EMITTER_GAP) : length;
+    quad_f64 per_area = density * d2 * length;
+    *scale = cos_times_distance / (M_PI * per_area);
+    return (d2 > 0) & (density > 0) & (cos_times_distance > 0);
+}
+
+/* Lane k of the quads' sample, into *out. */
+static void surface_sample_lane(const quad_f64 to_light[3], quad_f64 distance, quad_f64 scale, int k,
+                                color radiance, light_sample *out)
+{
+    out->to_light = v3(to_light[0][k], to_light[1][k], to_light[2][k]);
+    out->distance = distance[k];
+    out->radiance = rgb_scale(radiance, scale[k]);
+}
+
 bool light_surface_point(vec3 p, vec3 q, vec3 n_q, double density, color radiance, bool in_scene,
                          light_sample *out)
 {
-    vec3 d = v3_sub(q, p);
-    double d2 = v3_dot(d, d);
-    if (!(d2 > 0) || !(density > 0))
+    const quad_f64 pq[3] = {quad_splat(p.x), quad_splat(p.y), quad_splat(p.z)};
+    const quad_f64 qq[3] = {quad_splat(q.x), quad_splat(q.y), quad_splat(q.z)};
+    const quad_f64 nq[3] = {quad_splat(n_q.x), quad_splat(n_q.y), quad_splat(n_q.z)};
+    quad_f64 to_light[3], distance, scale;
+    if (!surface_point_quad(pq, qq, nq, quad_splat(density), in_scene, to_light, &distance, &scale)[0])
         return false;
-    /* The cosine at the light times the distance, from d itself: the
-     * radiance's scale waits for one square root and one division, not for
-     * the direction's division as well (four dependent ones, at about 15
-     * cycles each, were a quarter of a Cornell box render). */
-    double distance = sqrt(d2), cos_times_distance = -v3_dot(d, n_q);
-    if (!(cos_times_distance > 0))
-        return false;
-    out->to_light = v3_scale(d, 1 / distance);
-    out->distance = in_scene ? distance * (1 - EMITTER_GAP) : distance;
-    /* By area, the density among directions is density d^2 / cos. */
-    double per_area = density * d2 * distance;
-    out->radiance = rgb_scale(radiance, cos_times_distance / (M_PI * per_area));
+    surface_sample_lane(to_light, distance, scale, 0, radiance, out);
     return true;
 }
 
-bool light_area_point(const light *l, vec3 p, vec3 q, light_sample *out)
+bool light_surface_sample(const light *l, vec3 p, double u1, double u2, light_sample *out)
 {
-    return light_surface_point(p, q, l->normal, 1 / l->area, l->desc.color, false, out);
+    surface_point s;
+    l->kind->surface(l, u1, u2, &s);
+    return light_surface_point(p, s.q, s.n, s.density, s.radiance, l->kind->in_scene, out);
+}
+
+void light_surface_lanes(const light *l, const vec3 p[RAY8], const double (*u)[2], const bool active[RAY8],
+                         light_sample out[RAY8], bool ok[RAY8])
+{
+    surface_point s[RAY8];
+    for (int i = 0; i < RAY8; i++) {
+        if (active[i])
+            l->kind->surface(l, u[i][0], u[i][1], &s[i]);
+        else
+            memset(&s[i], 0, sizeof s[i]); /* density 0: nothing */
+    }
+    for (int i = 0; i < RAY8; i += QUAD) {
+        const surface_point *t = s + i;
+        const vec3 *at = p + i;
+        const quad_f64 pq[3] = {{at[0].x, at[1].x, at[2].x, at[3].x}, {at[0].y, at[1].y, at[2].y, at[3].y},
+                                {at[0].z, at[1].z, at[2].z, at[3].z}};
+        const quad_f64 qq[3] = {{t[0].q.x, t[1].q.x, t[2].q.x, t[3].q.x}, {t[0].q.y, t[1].q.y, t[2].q.y, t[3].q.y},
+                                {t[0].q.z, t[1].q.z, t[2].q.z, t[3].q.z}};
+        const quad_f64 nq[3] = {{t[0].n.x, t[1].n.x, t[2].n.x, t[3].n.x}, {t[0].n.y, t[1].n.y, t[2].n.y, t[3].n.y},
+                                {t[0].n.z, t[1].n.z, t[2].n.z, t[3].n.z}};
+        const quad_f64 density = {t[0].density, t[1].density, t[2].density, t[3].density};
+        quad_f64 to_light[3], distance, scale;
+        quad_mask fine = surface_point_quad(pq, qq, nq, density, l->kind->in_scene, to_light, &distance, &scale);
+        for (int k = 0; k < QUAD; k++) {
+            ok[i + k] = active[i + k] && fine[k];
+            if (ok[i + k])
+                surface_sample_lane(to_light, distance, scale, k, t[k].radiance, &out[i + k]);
+        }
+    }
+}
+
+void light_area_point(const light *l, vec3 q, surface_point *out)
+{
+    out->q = q;
+    out->n = l->normal;
+    out->density = l->density;
+    out->radiance = l->desc.color;
 }
 
 void light_release(light *l)

@@ -56,7 +56,8 @@ typedef struct light {
     double cos_inner;         /* the cosine of the half-angle where falloff begins */
     shape glow;               /* an area light: the surface it glows over, */
     vec3 normal;              /* its lit side's unit normal when it is flat, */
-    double area;              /* and its area */
+    double area;              /* and its area, */
+    double density;           /* 1 / area: a point's density, chosen uniformly over it */
     emitter_triangle *triangles; /* an emissive mesh's triangles that glow (a quad's two as one), */
     double *cumulative;       /* the sum of their powers up to each, the last 1, */
     int triangle_count;       /* and their number */
@@ -74,6 +75,15 @@ typedef struct light_sample {
                                  among the directions the light is sampled in
                                  (docs/scene-format.md) */
 } light_sample;
+
+/* A point of the surface an area light or emitter glows over, chosen for
+ * one sample: the same whatever point it lights. */
+typedef struct surface_point {
+    vec3 q;                   /* the point */
+    vec3 n;                   /* the unit normal of its glowing side */
+    double density;           /* with which q was chosen, per unit area */
+    color radiance;           /* its glow */
+} surface_point;
 
 /* What a scene file says of a light: the public description and the
  * intensity its colour is scaled by. The kinds' parameter tables give
@@ -96,16 +106,32 @@ struct light_kind {
     /* An area light whose surface is flat and glows on the side of normal only. */
     bool one_sided;
     /* Samples the light from point p with (u1, u2) in [0, 1)^2: false when
-     * it gives p nothing. light_delta_sample for delta kinds. */
+     * it gives p nothing. light_delta_sample for delta kinds;
+     * light_surface_sample for kinds with a surface. */
     bool (*sample)(const light *l, vec3 p, double u1, double u2, light_sample *out);
     /* An area light's sample for the lanes of a packet: ok[i] is sample's
      * answer at p[i] with u[i] for each active lane, false for the rest.
-     * One call and one loop (LIGHT_SAMPLE_LANES), so that the lanes'
-     * square roots and divisions overlap where a call a lane waited for
-     * each in turn. NULL for delta kinds. */
+     * One call and one loop (light_surface_lanes, LIGHT_SAMPLE_LANES), so
+     * that the lanes' square roots and divisions overlap where a call a
+     * lane waited for each in turn. NULL for delta kinds. */
     void (*sample_lanes)(const light *l, const vec3 p[RAY8], const double (*u)[2], const bool active[RAY8],
                          light_sample out[RAY8], bool ok[RAY8]);
+    /* A kind sampled by area over the surface it glows over (all area
+     * kinds but the sphere's, which samples the cone of directions it
+     * fills): the point for (u1, u2), whose sample at any p
+     * light_surface_sample and light_surface_lanes then work out. */
+    void (*surface)(const light *l, double u1, double u2, surface_point *out);
+    /* The surface is in the scene (an emitter's), so that its shadow
+     * segments stop just short of it. */
+    bool in_scene;
 };
+
+/* light_kind.sample and .sample_lanes of a kind with a surface: the
+ * surface's point for (u1, u2) seen from p, as light_surface_point makes
+ * it; the lanes four at a time in vector instructions (the same bits). */
+bool light_surface_sample(const light *l, vec3 p, double u1, double u2, light_sample *out);
+void light_surface_lanes(const light *l, const vec3 p[RAY8], const double (*u)[2], const bool active[RAY8],
+                         light_sample out[RAY8], bool ok[RAY8]);
 
 /* Defines `name`, a light_kind.sample_lanes that runs the kind's own
  * sample function `one` (defined before it, in the same file) over the
@@ -207,9 +233,10 @@ glint_status light_falloff_check(const light *l, glint_error *err);
  * one-sided kind, on the side of l->normal, which its init sets). */
 glint_status light_area_init(light *l, const glint_shape *glow, double area, glint_error *err);
 
-/* The sample of one-sided area light l at p through the point q on it,
- * sampled uniformly by area: false when p is behind it. */
-bool light_area_point(const light *l, vec3 p, vec3 q, light_sample *out);
+/* Fills *out with the surface point of one-sided area light l (uniform by
+ * area over it) at q, field by field: a struct built and copied whole
+ * waited on its parts' stores. */
+void light_area_point(const light *l, vec3 q, surface_point *out);
 
 /* Whether ray r meets area light l's glowing side before tmax, and where:
  * *t. A camera, reflected or refracted ray that does sees desc.color. */

@@ -26,7 +26,7 @@ static int find_triangle(const light *l, double u)
     return lo;
 }
 
-static bool mesh_emitter_sample(const light *l, vec3 p, double u1, double u2, light_sample *out)
+static void mesh_emitter_surface(const light *l, double u1, double u2, surface_point *out)
 {
     int t = find_triangle(l, u1);
     double before = t > 0 ? l->cumulative[t - 1] : 0, share = l->cumulative[t] - before;
@@ -35,15 +35,17 @@ static bool mesh_emitter_sample(const light *l, vec3 p, double u1, double u2, li
     double u = l->triangle_count == 1 ? u1 : (u1 - before) / share;
     u = u < 1 ? u : 0.99999999999999989;
     const emitter_triangle *tri = &l->triangles[t];
-    vec3 q = tri->parallelogram ? v3_add(tri->a, v3_add(v3_scale(v3_sub(tri->b, tri->a), u),
+    out->q = tri->parallelogram ? v3_add(tri->a, v3_add(v3_scale(v3_sub(tri->b, tri->a), u),
                                                        v3_scale(v3_sub(tri->c, tri->a), u2)))
                                 : triangle_point(tri->a, tri->b, tri->c, u, u2);
-    return light_surface_point(p, q, tri->normal, share / tri->area, tri->radiance, true, out);
+    out->n = tri->normal;
+    out->density = share / tri->area;
+    out->radiance = tri->radiance;
 }
 
-LIGHT_SAMPLE_LANES(mesh_emitter_lanes, mesh_emitter_sample)
-
-const light_kind mesh_emitter = {.name = "emissive mesh", .sample = mesh_emitter_sample, .sample_lanes = mesh_emitter_lanes};
+const light_kind mesh_emitter = {.name = "emissive mesh", .sample = light_surface_sample,
+                                 .sample_lanes = light_surface_lanes, .surface = mesh_emitter_surface,
+                                 .in_scene = true};
 
 static bool same_point(vec3 p, vec3 q)
 {

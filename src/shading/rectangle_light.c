@@ -24,13 +24,11 @@ static glint_status rectangle_light_init(light *l, glint_error *err)
     return light_area_init(l, &panel, area, err);
 }
 
-static bool rectangle_light_sample(const light *l, vec3 p, double u1, double u2, light_sample *out)
+static void rectangle_light_surface(const light *l, double u1, double u2, surface_point *out)
 {
     const glint_light *d = &l->desc;
-    return light_area_point(l, p, v3_add(d->position, v3_add(v3_scale(d->edge1, u1), v3_scale(d->edge2, u2))), out);
+    light_area_point(l, v3_add(d->position, v3_add(v3_scale(d->edge1, u1), v3_scale(d->edge2, u2))), out);
 }
-
-LIGHT_SAMPLE_LANES(rectangle_light_lanes, rectangle_light_sample)
 
 static const param RECTANGLE_LIGHT_PARAMS[] = {
     {.key = "corner", .type = PARAM_VEC3, .offset = offsetof(light_spec, light.position), .required = true,
@@ -44,5 +42,6 @@ static const param RECTANGLE_LIGHT_PARAMS[] = {
 
 const light_kind rectangle_light = {
     .name = "rectangle", .id = GLINT_LIGHT_RECTANGLE, .params = PARAM_TABLE(RECTANGLE_LIGHT_PARAMS),
-    .init = rectangle_light_init, .one_sided = true, .sample = rectangle_light_sample, .sample_lanes = rectangle_light_lanes,
+    .init = rectangle_light_init, .one_sided = true, .sample = light_surface_sample,
+    .sample_lanes = light_surface_lanes, .surface = rectangle_light_surface,
 };

@@ -3,16 +3,15 @@
  * material's emission from the shape's front. */
 #include "shading/light.h"
 
-static bool shape_emitter_sample(const light *l, vec3 p, double u1, double u2, light_sample *out)
+static void shape_emitter_surface(const light *l, double u1, double u2, surface_point *out)
 {
-    vec3 q, n;
-    double density = shape_sample(&l->glow, u1, u2, &q, &n);
-    return light_surface_point(p, q, n, density, l->desc.color, true, out);
+    out->density = shape_sample(&l->glow, u1, u2, &out->q, &out->n);
+    out->radiance = l->desc.color;
 }
 
-LIGHT_SAMPLE_LANES(shape_emitter_lanes, shape_emitter_sample)
-
-const light_kind shape_emitter = {.name = "emissive shape", .sample = shape_emitter_sample, .sample_lanes = shape_emitter_lanes};
+const light_kind shape_emitter = {.name = "emissive shape", .sample = light_surface_sample,
+                                  .sample_lanes = light_surface_lanes, .surface = shape_emitter_surface,
+                                  .in_scene = true};
 
 bool emitter_for_shape(light *l, const shape *s, color radiance)
 {
