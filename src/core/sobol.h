@@ -79,13 +79,6 @@ typedef uint32_t sobol_lanes __attribute__((vector_size(8 * sizeof(uint32_t)), a
 SOBOL_BIT_STEPS(uint32_t, )
 SOBOL_BIT_STEPS(sobol_lanes, _lanes)
 
-/* Owen's scrambling of a fraction of 2^32: each bit flipped by a choice
- * that depends on the bits above it. */
-static inline uint32_t owen_scramble(uint32_t fraction, uint32_t seed)
-{
-    return reverse_bits32(scramble_upwards(reverse_bits32(fraction), seed));
-}
-
 /* The third and fourth coordinates of Sobol's sequence at index i,
  * bit-reversed as sobol_second_reversed's: i times the generator matrices
  * of the primitive polynomials x^2 + x + 1 and x^3 + x + 1 with Joe and
@@ -136,8 +129,9 @@ static inline sobol2_seeds sobol2_seeds_of(uint32_t seed)
  * two, then each coordinate scrambled. The first coordinate's generator is
  * the identity (van der Corput: the index reversed), the second's Pascal's
  * triangle modulo 2 (Sobol's direction numbers for the polynomial x + 1).
- * Each step is owen_scramble written out, so that reversals that undo each
- * other are left out. */
+ * Each step is Owen's scrambling of a fraction (reverse_bits32 of
+ * scramble_upwards of the fraction reversed) written out, so that
+ * reversals that undo each other are left out. */
 static inline void sobol2_point(uint32_t i, sobol2_seeds s, double *x, double *y)
 {
     uint32_t index = reverse_bits32(scramble_upwards(reverse_bits32(i), s.index));
