@@ -100,13 +100,16 @@ static inline void sobol_third_fourth_reversed(uint32_t i, uint32_t *third, uint
     *fourth = reverse_bits32(c4);
 }
 
+/* A scalar in every lane: one index's coordinate for eight sequences. */
+static inline sobol_lanes sobol_same(uint32_t word) { return (sobol_lanes){0} + word; }
+
 /* One coordinate of a point of eight Owen-scrambled Sobol sequences, from
- * the coordinate bit-reversed (the same in every lane: one index) and each
- * lane's scramble of that dimension, as fractions in [0, 1). */
-__attribute__((always_inline)) static inline void sobol_scrambled8(uint32_t reversed, sobol_lanes scramble,
+ * each lane's coordinate bit-reversed and its scramble of that dimension,
+ * as fractions in [0, 1). */
+__attribute__((always_inline)) static inline void sobol_scrambled8(sobol_lanes reversed, sobol_lanes scramble,
                                                                    double out[8])
 {
-    sobol_lanes bits = reverse_bits32_lanes(scramble_upwards_lanes((sobol_lanes){0} + reversed, scramble)) >> 8;
+    sobol_lanes bits = reverse_bits32_lanes(scramble_upwards_lanes(reversed, scramble)) >> 8;
     for (int k = 0; k < 8; k++)
         out[k] = (int32_t)bits[k] * (1.0 / 16777216.0);
 }
@@ -160,14 +163,10 @@ static inline void sobol2_seeds8_set(sobol2_seeds8 *s, int lane, sobol2_seeds on
 __attribute__((always_inline)) static inline void sobol2_points8(uint32_t i, const sobol2_seeds8 *s, double x[8],
                                                                  double y[8])
 {
-    sobol_lanes reversed = (sobol_lanes){0} + reverse_bits32(i);
+    sobol_lanes reversed = sobol_same(reverse_bits32(i));
     sobol_lanes index = reverse_bits32_lanes(scramble_upwards_lanes(reversed, s->index));
-    sobol_lanes first = reverse_bits32_lanes(scramble_upwards_lanes(index, s->x)) >> 8;
-    sobol_lanes second = reverse_bits32_lanes(scramble_upwards_lanes(sobol_second_reversed_lanes(index), s->y)) >> 8;
-    for (int k = 0; k < 8; k++) {
-        x[k] = (int32_t)first[k] * (1.0 / 16777216.0);
-        y[k] = (int32_t)second[k] * (1.0 / 16777216.0);
-    }
+    sobol_scrambled8(index, s->x, x);
+    sobol_scrambled8(sobol_second_reversed_lanes(index), s->y, y);
 }
 
 /* Point i of the scrambled two-dimensional Sobol sequence with the given

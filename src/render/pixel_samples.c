@@ -54,8 +54,8 @@ static void points_in_pixels(const pixel_sampler *ps, const pixel_block_samples 
     int n = ps->grid, sx = k % n, sy = k / n;
     switch (ps->kind) {
     case GLINT_SAMPLER_SOBOL:
-        sobol_scrambled8((uint32_t)k, b->scramble[0], u);
-        sobol_scrambled8(sobol_second_reversed((uint32_t)k), b->scramble[1], v);
+        sobol_scrambled8(sobol_same((uint32_t)k), b->scramble[0], u);
+        sobol_scrambled8(sobol_same(sobol_second_reversed((uint32_t)k)), b->scramble[1], v);
         return;
     case GLINT_SAMPLER_JITTERED:
         for (int i = 0; i < RAY8; i++) {
@@ -80,8 +80,8 @@ static void points_on_lenses(const pixel_sampler *ps, const pixel_block_samples 
     if (ps->kind == GLINT_SAMPLER_SOBOL) {
         uint32_t third, fourth;
         sobol_third_fourth_reversed((uint32_t)k, &third, &fourth);
-        sobol_scrambled8(third, b->scramble[2], lens->u);
-        sobol_scrambled8(fourth, b->scramble[3], lens->v);
+        sobol_scrambled8(sobol_same(third), b->scramble[2], lens->u);
+        sobol_scrambled8(sobol_same(fourth), b->scramble[3], lens->v);
         return;
     }
     int n = ps->grid;

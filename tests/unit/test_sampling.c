@@ -119,10 +119,10 @@ static void test_sobol_four_dimensions_are_nets(void **state)
             double c[4][8];
             uint32_t third, fourth;
             sobol_third_fourth_reversed(i, &third, &fourth);
-            sobol_scrambled8(i, scramble[0], c[0]);
-            sobol_scrambled8(sobol_second_reversed(i), scramble[1], c[1]);
-            sobol_scrambled8(third, scramble[2], c[2]);
-            sobol_scrambled8(fourth, scramble[3], c[3]);
+            sobol_scrambled8(sobol_same(i), scramble[0], c[0]);
+            sobol_scrambled8(sobol_same(sobol_second_reversed(i)), scramble[1], c[1]);
+            sobol_scrambled8(sobol_same(third), scramble[2], c[2]);
+            sobol_scrambled8(sobol_same(fourth), scramble[3], c[3]);
             for (int lane = 0; lane < 8; lane++)
                 for (int d = 0; d < 4; d++)
                     p[lane][i][d] = c[d][lane];
