@@ -223,7 +223,6 @@ static glint_status decode_exr(texture_image *out, const void *data, size_t size
     }
     out->hdr = out->owned;
     out->srgb = NULL;
-    memset(out->owned, 0, 3 * sizeof(float) * width * height);
     rv = decode_chunks(ctxt, storage, out, window.min.x, window.min.y, grey);
     exr_finish(&ctxt);
     if (rv != EXR_ERR_SUCCESS) {

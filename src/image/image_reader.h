@@ -26,10 +26,13 @@ typedef struct image_reader {
 /* "texture 'WHAT' is corrupt: REASON", as GLINT_ERR_INVALID. */
 glint_status image_read_corrupt(const char *what, const char *reason, glint_error *err);
 
-/* Gives img room for width x height pixels of `bytes` bytes each, and its
- * size and sRGB table, once the size is within TEXTURE_IMAGE_MAX_SIDE and
- * TEXTURE_IMAGE_MAX_PIXELS: beyond, GLINT_ERR_INVALID naming the limits,
- * before anything is allocated. */
+/* Gives img zeroed room for width x height pixels of `bytes` bytes each,
+ * and its size and sRGB table, once the size is within
+ * TEXTURE_IMAGE_MAX_SIDE, TEXTURE_IMAGE_MAX_PIXELS and
+ * TEXTURE_IMAGE_MAX_BYTES: beyond, GLINT_ERR_INVALID naming the limits,
+ * before anything is allocated. The room is zeroed by the system as pages
+ * are touched, so a file that claims a large image and ends early costs
+ * little memory. */
 glint_status image_read_alloc(texture_image *img, unsigned long width, unsigned long height, size_t bytes,
                               const char *what, glint_error *err);
 

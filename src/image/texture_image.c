@@ -39,24 +39,29 @@ glint_status image_read_corrupt(const char *what, const char *reason, glint_erro
     return error_set(err, GLINT_ERR_INVALID, "texture '%s' is corrupt: %s", what, reason);
 }
 
-static glint_status check_size(unsigned long width, unsigned long height, const char *what, glint_error *err)
+/* Refuses an image of width x height pixels of `bytes` bytes each past the
+ * limits; the pixel limit given is the lower of the two the pixels meet. */
+static glint_status check_size(unsigned long width, unsigned long height, size_t bytes, const char *what,
+                               glint_error *err)
 {
-    if (width > TEXTURE_IMAGE_MAX_SIDE || height > TEXTURE_IMAGE_MAX_SIDE ||
-        width * height > TEXTURE_IMAGE_MAX_PIXELS)
+    unsigned long max_pixels = TEXTURE_IMAGE_MAX_BYTES / bytes;
+    if (max_pixels > TEXTURE_IMAGE_MAX_PIXELS)
+        max_pixels = TEXTURE_IMAGE_MAX_PIXELS;
+    if (width > TEXTURE_IMAGE_MAX_SIDE || height > TEXTURE_IMAGE_MAX_SIDE || width * height > max_pixels)
         return error_set(err, GLINT_ERR_INVALID,
                          "texture '%s' is too large: %lux%lu (limit %lu a side, %lu pixels)",
-                         what, width, height, TEXTURE_IMAGE_MAX_SIDE, TEXTURE_IMAGE_MAX_PIXELS);
+                         what, width, height, TEXTURE_IMAGE_MAX_SIDE, max_pixels);
     return GLINT_OK;
 }
 
 glint_status image_read_alloc(texture_image *img, unsigned long width, unsigned long height, size_t bytes,
                               const char *what, glint_error *err)
 {
-    glint_status st = check_size(width, height, what, err);
+    glint_status st = check_size(width, height, bytes, what, err);
     if (st != GLINT_OK)
         return st;
     /* check_size keeps the product in range. */
-    img->srgb = img->owned = malloc((size_t)width * height * bytes);
+    img->srgb = img->owned = calloc((size_t)width * height, bytes);
     if (!img->owned)
         return error_set(err, GLINT_ERR_NOMEM, "cannot decode texture '%s': out of memory", what);
     img->width = (int)width;

@@ -11,10 +11,13 @@
 #include <stddef.h>
 #include "glint.h"
 
-/* The largest image decoded: a side longer, or more pixels in all, is
- * refused as too large before any pixel memory is allocated. */
+/* The largest image decoded: a side longer, more pixels in all, or more
+ * bytes of decoded pixels (1.5 GiB: an OpenEXR image of 16384 x 8192 at 12
+ * bytes a pixel) is refused as too large before any pixel memory is
+ * allocated. */
 #define TEXTURE_IMAGE_MAX_SIDE 32768UL
 #define TEXTURE_IMAGE_MAX_PIXELS (1UL << 28)
+#define TEXTURE_IMAGE_MAX_BYTES (3UL << 29)
 /* The largest texture file read, 2 GiB: twice the 16-bit RGBA pixels of the
  * largest image, more than any PNG or JPEG of it takes. A file is read
  * whole before it is decoded, so a larger one is refused unread. */

@@ -2,7 +2,8 @@
  * bytes to texture_image_load_memory (PNG, JPEG or OpenEXR, told apart by
  * their magic bytes) and checks what the API promises. A refused image must
  * come with a message naming its source and leave the image empty; a
- * decoded one must have a size within the decoder's limits and all of its
+ * decoded one must have a size within the decoder's limits (sides, pixels and
+ * bytes) and all of its
  * width x height x 3 bytes (or floats, finite and not negative, for
  * OpenEXR) of pixels, which ASan checks. A broken promise aborts, which
  * libFuzzer counts as a crash.
@@ -37,6 +38,9 @@ static void check_decoded(const texture_image *img)
         (unsigned long)img->width * (unsigned long)img->height > TEXTURE_IMAGE_MAX_PIXELS)
         abort();
     bool hdr = img->hdr != NULL;
+    size_t n = 3 * (size_t)img->width * (size_t)img->height;
+    if (n * (hdr ? sizeof(float) : 1) > TEXTURE_IMAGE_MAX_BYTES)
+        abort();
     if (hdr == (img->srgb != NULL) || img->owned != (hdr ? (const void *)img->hdr : (const void *)img->srgb) ||
         !img->linear)
         abort();
@@ -44,7 +48,6 @@ static void check_decoded(const texture_image *img)
      * at once: reading its bytes one by one would find the same short
      * buffer, but takes 4 to 9 s more for the largest image allowed (which a
      * valid arithmetic-coded JPEG of 300 bytes can be), past -timeout. */
-    size_t n = 3 * (size_t)img->width * (size_t)img->height;
     const volatile unsigned char *missing = __asan_region_is_poisoned(img->owned, n * (hdr ? sizeof(float) : 1));
     if (missing) {
         (void)*missing; /* ASan's report: where the buffer ends and who allocated it */

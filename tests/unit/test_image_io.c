@@ -1143,20 +1143,18 @@ static size_t put_exr_attribute(unsigned char *p, const char *name, const char *
     return n + t + 4 + size;
 }
 
-/* A luminance-chroma OpenEXR image (half channels BY, RY, Y, as OpenEXR's
- * own RgbaYca files have) is read as grey from Y. Only one of its three
- * channels is read, which OpenEXR 3.1 took for three interleaved ones and
- * decoded through the skipped channels' NULL pointers (a crash found by
- * fuzz_texture); the skipped channels now have a plane of their own. */
-static void test_load_exr_luminance_chroma(void **state)
+/* Writes at file the header of a one-part scanline OpenEXR image without
+ * compression, of half channels named by the count names, and a data
+ * window of width x height pixels; returns its size. */
+static size_t forge_exr_header(unsigned char *file, const char *const *names, int count, int32_t width,
+                               int32_t height)
 {
-    (void)state;
-    unsigned char file[512] = {0x76, 0x2f, 0x31, 0x01, 2, 0, 0, 0};
-    size_t n = 8;
-    unsigned char channels[64];
+    static const unsigned char magic[8] = {0x76, 0x2f, 0x31, 0x01, 2, 0, 0, 0};
+    memcpy(file, magic, sizeof magic);
+    size_t n = sizeof magic;
+    unsigned char channels[128];
     size_t c = 0;
-    static const char *const names[] = {"BY", "RY", "Y"};
-    for (int i = 0; i < 3; i++) {
+    for (int i = 0; i < count; i++) {
         const int32_t half = 1, sampling = 1;
         memcpy(channels + c, names[i], strlen(names[i]) + 1);
         c += strlen(names[i]) + 1;
@@ -1168,7 +1166,7 @@ static void test_load_exr_luminance_chroma(void **state)
     }
     channels[c++] = 0;
     const unsigned char none = 0;
-    const int32_t window[4] = {0, 0, 1, 0}; /* 2 x 1 pixels */
+    const int32_t window[4] = {0, 0, width - 1, height - 1};
     const float one = 1, centre[2] = {0, 0};
     n += put_exr_attribute(file + n, "channels", "chlist", channels, (uint32_t)c);
     n += put_exr_attribute(file + n, "compression", "compression", &none, 1);
@@ -1179,6 +1177,20 @@ static void test_load_exr_luminance_chroma(void **state)
     n += put_exr_attribute(file + n, "screenWindowCenter", "v2f", centre, sizeof centre);
     n += put_exr_attribute(file + n, "screenWindowWidth", "float", &one, 4);
     file[n++] = 0;
+    return n;
+}
+
+/* A luminance-chroma OpenEXR image (half channels BY, RY, Y, as OpenEXR's
+ * own RgbaYca files have) is read as grey from Y. Only one of its three
+ * channels is read, which OpenEXR 3.1 took for three interleaved ones and
+ * decoded through the skipped channels' NULL pointers (a crash found by
+ * fuzz_texture); the skipped channels now have a plane of their own. */
+static void test_load_exr_luminance_chroma(void **state)
+{
+    (void)state;
+    unsigned char file[512];
+    static const char *const names[] = {"BY", "RY", "Y"};
+    size_t n = forge_exr_header(file, names, 3, 2, 1);
     const uint64_t chunk_offset = n + 8;
     memcpy(file + n, &chunk_offset, 8);
     n += 8;
@@ -1199,6 +1211,30 @@ static void test_load_exr_luminance_chroma(void **state)
     for (int i = 0; i < 6; i++)
         assert_true(tex.hdr[i] == grey[i]);
     texture_image_free(&tex);
+}
+
+/* An OpenEXR image is decoded to 12 bytes a pixel, so its limit is 1.5 GiB
+ * of them, 134217728 pixels (16384 x 8192), not PNG's 268435456: a header
+ * that claimed more had the fuzzer (under its 2 GiB allocation limit)
+ * allocate 2.8 GB before the file was found to end. At the limit, the
+ * image is allocated, and the missing scanlines make it corrupt. */
+static void test_load_exr_too_large(void **state)
+{
+    (void)state;
+    unsigned char file[512];
+    static const char *const names[] = {"B", "G", "R"};
+    glint_error err = {0};
+    texture_image tex;
+    size_t n = forge_exr_header(file, names, 3, 16384, 8193);
+    expect_error(texture_image_load_memory(&tex, file, n, "big.exr", &err), &err, GLINT_ERR_INVALID,
+                 "texture 'big.exr' is too large: 16384x8193 (limit 32768 a side, 134217728 pixels)");
+    assert_null(tex.hdr);
+    n = forge_exr_header(file, names, 3, 16384, 8192);
+    glint_status st = texture_image_load_memory(&tex, file, n, "short.exr", &err);
+    assert_int_equal(st, GLINT_ERR_INVALID);
+    assert_non_null(strstr(err.message, "texture 'short.exr' is corrupt: "));
+    assert_null(tex.hdr);
+    assert_null(tex.owned);
 }
 
 /* A material using a texture decodes its file (one no material uses is
@@ -1538,6 +1574,7 @@ int main(void)
         cmocka_unit_test(test_load_png_chunk_past_end),
         cmocka_unit_test(test_load_exr_corrupt),
         cmocka_unit_test(test_load_exr_luminance_chroma),
+        cmocka_unit_test(test_load_exr_too_large),
         cmocka_unit_test(test_load_grey_png),
         cmocka_unit_test(test_textures_share_decoded_file),
         cmocka_unit_test(test_textures_within_budget),
