@@ -72,12 +72,16 @@ quad_mask shape_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tm
 
 void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *out)
 {
-    out->p = ray_at(r, hit->t);
+    /* p from a local, not read back from out: a 16-byte load of what was
+     * just stored 8 bytes at a time waits for the stores (4-6% of a depth
+     * of field's time). */
+    vec3 p = ray_at(r, hit->t);
+    out->p = p;
     if (s->has_transform) {
         ray o = object_ray(s, r);
         out->p_obj = ray_at(&o, hit->t);
     } else {
-        out->p_obj = out->p;
+        out->p_obj = p;
     }
     out->part = hit->part;
     out->u = out->v = 0;
