@@ -51,37 +51,52 @@ static void polygon_point(int blades, double u, double v, double *x, double *y)
 /* Each lane's ray, four lanes at a time: everything (but a polygon's
  * points, one by one) as v3_* would work it out but for four lanes at
  * once, so that each square root and division overlaps three others
- * instead of waiting for the last (the same bytes). */
+ * instead of waiting for the last (the same bytes). The packet's two
+ * quads go through each step together: one quad's chain of square roots
+ * and divisions is long enough that the processor would otherwise wait
+ * on it before it reached the other's. */
 static void thin_lens_rays8(const camera *c, const double x[RAY8], const double y[RAY8], const camera_lens8 *lens,
                             const double time[RAY8], ray8 *out)
 {
     (void)time;
-    for (int i = 0; i < RAY8; i += QUAD) {
+    enum { QUADS = RAY8 / QUAD };
+    quad_f64 fx[QUADS], fy[QUADS], fz[QUADS], lx[QUADS], ly[QUADS];
+#pragma GCC unroll 2
+    for (int q = 0; q < QUADS; q++) {
         quad_f64 dx, dy, dz;
-        camera_plane_directions(c, quad_load(x + i), quad_load(y + i), &dx, &dy, &dz);
+        camera_plane_directions(c, quad_load(x + q * QUAD), quad_load(y + q * QUAD), &dx, &dy, &dz);
         /* Where the pinhole's ray crosses the plane of focus. */
         quad_f64 along = quad_splat(c->focus_distance) /
                          quad_dot(dx, dy, dz, quad_splat(c->forward.x), quad_splat(c->forward.y),
                                   quad_splat(c->forward.z));
-        quad_f64 fx = c->position.x + dx * along, fy = c->position.y + dy * along, fz = c->position.z + dz * along;
-        quad_f64 lx, ly;
-        if (c->blades) {
+        fx[q] = c->position.x + dx * along;
+        fy[q] = c->position.y + dy * along;
+        fz[q] = c->position.z + dz * along;
+    }
+    if (c->blades) {
+        for (int q = 0; q < QUADS; q++) {
             double px[QUAD], py[QUAD];
             for (int k = 0; k < QUAD; k++)
-                polygon_point(c->blades, lens->u[i + k], lens->v[i + k], &px[k], &py[k]);
-            lx = quad_load(px);
-            ly = quad_load(py);
-        } else {
-            concentric_disk_quad(quad_load(lens->u + i), quad_load(lens->v + i), &lx, &ly);
+                polygon_point(c->blades, lens->u[q * QUAD + k], lens->v[q * QUAD + k], &px[k], &py[k]);
+            lx[q] = quad_load(px);
+            ly[q] = quad_load(py);
         }
-        quad_f64 rx = c->lens_radius * lx, ry = c->lens_radius * ly;
+    } else {
+#pragma GCC unroll 2
+        for (int q = 0; q < QUADS; q++)
+            concentric_disk_quad(quad_load(lens->u + q * QUAD), quad_load(lens->v + q * QUAD), &lx[q], &ly[q]);
+    }
+#pragma GCC unroll 2
+    for (int q = 0; q < QUADS; q++) {
+        quad_f64 rx = c->lens_radius * lx[q], ry = c->lens_radius * ly[q];
         quad_f64 ox = c->position.x + (c->right.x * rx + c->up.x * ry);
         quad_f64 oy = c->position.y + (c->right.y * rx + c->up.y * ry);
         quad_f64 oz = c->position.z + (c->right.z * rx + c->up.z * ry);
-        quad_f64 wx = fx - ox, wy = fy - oy, wz = fz - oz;
+        quad_f64 wx = fx[q] - ox, wy = fy[q] - oy, wz = fz[q] - oz;
         quad_f64 length = quad_sqrt(quad_dot(wx, wy, wz, wx, wy, wz));
         quad_mask positive = length > 0;
         quad_f64 inverse = 1.0 / length;
+        int i = q * QUAD;
         quad_store(out->ox + i, ox);
         quad_store(out->oy + i, oy);
         quad_store(out->oz + i, oz);

@@ -99,6 +99,39 @@ static bool runs_are_nets(const double (*p)[4], int n, int s, int m, int t)
     }
 }
 
+/* The tabled columns of Sobol's third and fourth dimensions are those of
+ * the primitive polynomials x^2 + x + 1 and x^3 + x + 1 with initial
+ * direction numbers 1, 3 and 1, 3, 1 (Joe and Kuo), built by the
+ * polynomials' recurrences: every index's coordinates, bit-reversed, are
+ * the XOR of the columns of its bits. */
+static void test_sobol_third_fourth_are_the_recurrence(void **state)
+{
+    (void)state;
+    uint32_t v3[32], v4[32];
+    for (int q = 0; q < 32; q++) {
+        v3[q] = q == 0 ? 1U << 31 : q == 1 ? 3U << 30 : v3[q - 1] ^ v3[q - 2] ^ (v3[q - 2] >> 2);
+        v4[q] = q == 0 ? 1U << 31 : q == 1 ? 3U << 30 : q == 2 ? 1U << 29 : v4[q - 2] ^ v4[q - 3] ^ (v4[q - 3] >> 3);
+    }
+    for (uint32_t round = 0; round < 100000; round++) {
+        uint32_t i = round < 4096 ? round : hash_u32(round), c3 = 0, c4 = 0, third, fourth;
+        for (int q = 0; q < 32; q++)
+            if (i >> q & 1) {
+                c3 ^= v3[q];
+                c4 ^= v4[q];
+            }
+        sobol_third_fourth_reversed(i, &third, &fourth);
+        assert_int_equal(third, reverse_bits32(c3));
+        assert_int_equal(fourth, reverse_bits32(c4));
+    }
+    /* The first points of the third dimension, as fractions: 0, 1/2, 3/4, 1/4, 3/8. */
+    static const uint32_t first[5] = {0, 0x80000000U, 0xc0000000U, 0x40000000U, 0x60000000U};
+    for (uint32_t i = 0; i < 5; i++) {
+        uint32_t third, fourth;
+        sobol_third_fourth_reversed(i, &third, &fourth);
+        assert_int_equal(reverse_bits32(third), first[i]);
+    }
+}
+
 /* The Sobol sampler's four dimensions (image x and y, lens u and v) for
  * eight pixels' scrambles: in every lane the image pair's runs of 2^m are
  * (0, m, 2)-nets, and the four together (t, m, 4)-nets with the t of
@@ -389,6 +422,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_sobol_points_fill_every_stratum),
         cmocka_unit_test(test_sobol_eight_lanes_are_eight_sequences),
+        cmocka_unit_test(test_sobol_third_fourth_are_the_recurrence),
         cmocka_unit_test(test_sobol_four_dimensions_are_nets),
         cmocka_unit_test(test_concentric_disk_is_the_formula),
         cmocka_unit_test(test_filters_integrate_to_one),
