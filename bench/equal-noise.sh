@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # bench/equal-noise.sh - glint against POV-Ray 3.7 at equal noise, on the
-# work Monte Carlo sampling does: for each sample count S (4 to 144) it
+# work Monte Carlo sampling does: for each sample count S (4 to 256) it
 # prints each renderer's median time and its noise, the RMSE against its
 # own 1024-sample reference over the reference's mean (bench/rmse.c), both
 # images 16 bits a channel.
-# Equal noise is read off the table. The cases:
+# Then, for each of glint's rows, the samples and time POV-Ray needs for
+# the same noise (equal_noise, below). The cases:
 #
 #   soft-light      bench/soft-light.yaml / .pov: a 2 x 2 lamp over a ball and
 #                   a block, 640x480, one camera ray a pixel; S samples of the
@@ -72,6 +73,32 @@ povray_run() {
         sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p'
 }
 isqrt() { awk -v s="$1" 'BEGIN { print int(sqrt(s) + 0.5) }'; }
+# equal_noise: reads a case's rows (samples, glint s, glint noise, POV-Ray s,
+# POV-Ray noise) and prints, for each of glint's rows, the samples POV-Ray
+# needs for glint's noise and how many times glint's time POV-Ray then takes.
+# The noise of each row is the same in every run (both renderers' samples
+# are fixed); only the times move with the machine. So POV-Ray's samples at
+# glint's noise come from its noise curve, log-log between the two rows
+# about it (past the last, from the last two: "extrapolated"), and its time
+# there from its time a sample in those rows, taken in the same run as
+# glint's: steadier than interpolating its times alone.
+equal_noise() {
+    awk '{ s[NR] = $1; gt[NR] = $2; gn[NR] = $3; pt[NR] = $4; pn[NR] = $5 }
+    END {
+        printf "%-8s %-16s %s\n", "samples", "povray samples", "povray s / glint s at equal noise"
+        for (i = 1; i <= NR; i++) {
+            k = 0
+            for (j = 1; j < NR; j++) if (pn[j] >= gn[i] && gn[i] >= pn[j + 1]) k = j
+            past = k == 0; if (past) k = NR - 1
+            f = log(gn[i] / pn[k]) / log(pn[k + 1] / pn[k])
+            samples = s[k] * exp(f * log(s[k + 1] / s[k]))
+            a = pt[k] / s[k]; b = pt[k + 1] / s[k + 1]
+            g = log(samples / s[k]) / log(s[k + 1] / s[k])
+            povray = samples * a * exp(g * log(b / a))
+            printf "%-8s %-16.0f %.1fx%s\n", s[i], samples, povray / gt[i], past ? " (extrapolated)" : ""
+        }
+    }'
+}
 median() { sort -g | awk '{ v[NR] = $1 } END { print v[int((NR + 1) / 2)] }'; }
 
 for c in "${CASES[@]}"; do
@@ -83,11 +110,15 @@ for c in "${CASES[@]}"; do
     glint_run "$c" 1024 "$WORK/glint-ref.ppm" >/dev/null
     povray_run "$c" 1024 "$WORK/povray-ref.ppm" >/dev/null
     printf '%-8s %-10s %-12s %-10s %-12s %s\n' samples "glint s" "glint noise" "povray s" "povray noise" "povray/glint"
-    for s in 4 9 16 36 64 144; do
+    : >"$WORK/rows"
+    for s in 4 9 16 36 64 144 256; do
         g=$(for _ in $(seq "$RUNS"); do glint_run "$c" "$s" "$WORK/glint.ppm"; done | median)
         p=$(for _ in $(seq "$RUNS"); do povray_run "$c" "$s" "$WORK/povray.ppm"; done | median)
-        printf '%-8s %-10s %-12s %-10s %-12s %s\n' "$s" "$g" "$("$WORK/bench_rmse" "$WORK/glint.ppm" "$WORK/glint-ref.ppm")" \
+        row=$(printf '%-8s %-10s %-12s %-10s %-12s %s' "$s" "$g" "$("$WORK/bench_rmse" "$WORK/glint.ppm" "$WORK/glint-ref.ppm")" \
             "$p" "$("$WORK/bench_rmse" "$WORK/povray.ppm" "$WORK/povray-ref.ppm")" \
-            "$(awk -v g="$g" -v p="$p" 'BEGIN { printf "%.2f", p / g }')"
+            "$(awk -v g="$g" -v p="$p" 'BEGIN { printf "%.2f", p / g }')")
+        echo "$row"
+        echo "$row" >>"$WORK/rows"
     done
+    equal_noise <"$WORK/rows"
 done
