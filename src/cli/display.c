@@ -439,7 +439,8 @@ static void *window_thread(void *arg)
     /* Lowered only once the window is open: the render waits for it, and
      * at this priority SDL's start lags on a machine busy with other work
      * (two cores, six busy processes: a 64x48 frame shown done after 1.5 s
-     * instead of 0.95 s; an ASan build beside MPI tests once not in 80 s).
+     * instead of 0.95 s; beside the MPI tests, an ASan build's window once
+     * did not show within tests/cli/display.sh's wait).
      * Linux's nice is per thread; no matter if it is refused. */
     if (ok) {
         setpriority(PRIO_PROCESS, (id_t)gettid(), WINDOW_NICE);

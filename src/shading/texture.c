@@ -155,7 +155,7 @@ color checker_eval(color a, color b, double cell, double u, double v)
     double half = 0.5 * k;
     /* Chosen by address, not by a branch: a blurred or distant checker
      * flips from sample to sample, and the mispredicted branch cost a depth
-     * of field 3% of its time. */
+     * of field about 2% of its time. */
     const color *chosen = half == floor(half) ? &a : &b;
     return *chosen;
 }
