@@ -1238,15 +1238,22 @@ static void check_alias_bomb(const char *yaml, const char *first)
         fail_msg("expected 1 problem:\n  %s\ngot %d:\n%s", first, log.count, log.all);
 }
 
+/* Appends levels &l1 to &l9 to yaml (of `size` bytes), each `opener`
+ * (which takes the level's number) and ten aliases of the level below. */
+static void append_alias_levels(char *yaml, size_t size, const char *opener)
+{
+    for (int i = 1; i <= 9; i++) {
+        snprintf(yaml + strlen(yaml), size - strlen(yaml), opener, i);
+        for (int k = 0; k < 10; k++)
+            snprintf(yaml + strlen(yaml), size - strlen(yaml), "%s*l%d", k ? ", " : "", i - 1);
+        snprintf(yaml + strlen(yaml), size - strlen(yaml), "]}\n");
+    }
+}
+
 static void test_alias_bomb_of_objects(void **state)
 {
     char yaml[4096] = "materials: {m: {}}\nobjects:\n  - &l0 {type: sphere, material: m, radius: 1}\n";
-    for (int i = 1; i <= 9; i++) {
-        snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "  - &l%d {type: group, objects: [", i);
-        for (int k = 0; k < 10; k++)
-            snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "%s*l%d", k ? ", " : "", i - 1);
-        snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "]}\n");
-    }
+    append_alias_levels(yaml, sizeof yaml, "  - &l%d {type: group, objects: [");
     /* Level k adds ten copies of 5 + 10 * (level k-1) nodes (l0: 7), 839,470
      * nodes by l5: the first alias of l6 passes the limit. */
     check_alias_bomb(yaml, "bad.yaml:9:33: scene too large after alias expansion (limit 1000000 nodes)");
@@ -1256,12 +1263,7 @@ static void test_alias_bomb_of_objects(void **state)
 static void test_alias_bomb_of_lights(void **state)
 {
     char yaml[4096] = "lights:\n  - &l0 {type: point, position: [0, 0, 0]}\n";
-    for (int i = 1; i <= 9; i++) {
-        snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "  - &l%d {<<: [", i);
-        for (int k = 0; k < 10; k++)
-            snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "%s*l%d", k ? ", " : "", i - 1);
-        snprintf(yaml + strlen(yaml), sizeof yaml - strlen(yaml), "]}\n");
-    }
+    append_alias_levels(yaml, sizeof yaml, "  - &l%d {<<: [");
     check_alias_bomb(yaml, "bad.yaml:8:15: scene too large after alias expansion (limit 1000000 nodes)");
 }
 
