@@ -75,6 +75,9 @@ static inline ray ray8_get(const ray8 *p, int i)
 }
 
 /* Stores r in lane i of a packet. */
+/* Lane i's direction. */
+static inline vec3 ray8_dir(const ray8 *p, int i) { return v3(p->dx[i], p->dy[i], p->dz[i]); }
+
 static inline void ray8_set(ray8 *p, int i, ray r)
 {
     p->ox[i] = r.o.x;

@@ -209,23 +209,15 @@ static void environment_seen(const glint_scene *scene, const ray8 *r, const bool
     }
 }
 
-/* Adds to direct[i] the light of light l that reaches the hit sp[i] of
- * each lane found[i] through one sample of it, u[i] (NULL for a delta
- * light), weighed by `share`: one packet of shadow segments over the lanes
- * it lights, for hits of rays at recursion depth `depth`. */
-__attribute__((always_inline)) static inline void light_packet(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET], const shade_point sp[ACCEL_PACKET],
-                         int depth, const light *l, const double (*u)[2], double share, color direct[ACCEL_PACKET])
+/* Adds to direct[i] the light of delta light l that reaches the hit
+ * sp[i] of each lane found[i]: one packet of shadow segments over the
+ * lanes it lights, for hits of rays at recursion depth `depth`. */
+__attribute__((always_inline)) static inline void light_packet(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
+                                                                const shade_point sp[ACCEL_PACKET], int depth,
+                                                                const light *l, color direct[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
     light_sample ls[ACCEL_PACKET];
-    /* An area light's samples for every lane first, in one call. */
-    bool sampled[ACCEL_PACKET] = {false};
-    if (u) {
-        vec3 p[ACCEL_PACKET];
-        for (int i = 0; i < ACCEL_PACKET; i++)
-            p[i] = sp[i].s.p;
-        l->kind->sample_lanes(l, p, u, found, ls, sampled);
-    }
     /* A lane without a segment keeps its own ray. Copied only once some
      * lane has one: a spotlight lights few packets. */
     ray8 shadow;
@@ -236,7 +228,7 @@ __attribute__((always_inline)) static inline void light_packet(tracer *t, const 
         if (!found[i])
             continue;
         ray ri = ray8_get(r, i), si;
-        if (!(u ? sampled[i] : light_delta_sample(l, sp[i].s.p, &ls[i])) || !shadow_segment(&ri, &sp[i], &ls[i], &si))
+        if (!light_delta_sample(l, sp[i].s.p, &ls[i]) || !shadow_segment(&ri, &sp[i], &ls[i], &si))
             continue;
         if (!any)
             shadow = *r;
@@ -250,12 +242,156 @@ __attribute__((always_inline)) static inline void light_packet(tracer *t, const 
         return;
     color through[ACCEL_PACKET];
     accel_transmission8(t->acc, &shadow, dist, skip, depth == 0, lit, shadow_filter, t, through);
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        if (lit[i])
+            direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i], v3(-r->dx[i], -r->dy[i], -r->dz[i])));
+}
+
+/* A packet's shading points as arrays of lanes, gathered once for all the
+ * samples its lanes take of the area lights, and the direct light they
+ * gather (lit_lanes_take, lit_lanes_give): each sample's steps then run a
+ * quad of lanes at a time, where one lane at a time they were a quarter of
+ * a Cornell box. A lane not found holds zeros. */
+typedef struct lit_lanes {
+    double p[3][ACCEL_PACKET];        /* the hit */
+    double origin[3][ACCEL_PACKET];   /* where its shadow segments start */
+    double n[3][ACCEL_PACKET], ns[3][ACCEL_PACKET];
+    double base[3][ACCEL_PACKET];     /* the surface colour */
+    double diffuse[ACCEL_PACKET];
+    bool warm[3][ACCEL_PACKET];       /* the diffuse term has channel c: diffuse and base's c above 0 */
+    bool lobe[ACCEL_PACKET];          /* a specular lobe too: that lane's light comes from light_share */
+    bool skips[ACCEL_PACKET];         /* the hit is on a shape, which a segment may leave behind */
+    bool plain[ACCEL_PACKET / QUAD];  /* no lane of quad q has a lobe or skips */
+    double direct[3][ACCEL_PACKET];   /* the light gathered */
+} lit_lanes;
+
+/* Fills ll's description of the lanes' hits. */
+static void lit_lanes_describe(const shade_point sp[ACCEL_PACKET], const bool found[ACCEL_PACKET], lit_lanes *ll)
+{
+    memset(ll, 0, sizeof *ll);
     for (int i = 0; i < ACCEL_PACKET; i++) {
-        if (!lit[i])
+        if (!found[i])
             continue;
-        if (u)
-            ls[i].radiance = rgb_scale(ls[i].radiance, share);
-        direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i], v3(-r->dx[i], -r->dy[i], -r->dz[i])));
+        const shade_point *s = &sp[i];
+        const double p[3] = {s->s.p.x, s->s.p.y, s->s.p.z}, o[3] = {s->origin.x, s->origin.y, s->origin.z};
+        const double n[3] = {s->n.x, s->n.y, s->n.z}, ns[3] = {s->ns.x, s->ns.y, s->ns.z};
+        const double base[3] = {s->base.r, s->base.g, s->base.b};
+        for (int c = 0; c < 3; c++) {
+            ll->p[c][i] = p[c];
+            ll->origin[c][i] = o[c];
+            ll->n[c][i] = n[c];
+            ll->ns[c][i] = ns[c];
+            ll->base[c][i] = base[c];
+            ll->warm[c][i] = s->m->diffuse > 0 && base[c] > 0;
+        }
+        ll->diffuse[i] = s->m->diffuse;
+        ll->lobe[i] = s->m->specular > 0;
+        ll->skips[i] = s->hit.shape >= 0;
+    }
+    for (int q = 0; q < ACCEL_PACKET / QUAD; q++)
+        ll->plain[q] = !quad_any(quad_from_bools(ll->lobe + q * QUAD) | quad_from_bools(ll->skips + q * QUAD));
+}
+
+/* ll's direct light starts from direct's. */
+static void lit_lanes_take(lit_lanes *ll, const color direct[ACCEL_PACKET])
+{
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        ll->direct[0][i] = direct[i].r;
+        ll->direct[1][i] = direct[i].g;
+        ll->direct[2][i] = direct[i].b;
+    }
+}
+
+/* direct becomes ll's direct light. */
+static void lit_lanes_give(const lit_lanes *ll, color direct[ACCEL_PACKET])
+{
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        direct[i] = rgb(ll->direct[0][i], ll->direct[1][i], ll->direct[2][i]);
+}
+
+/* Adds to ll's direct light the light of area light l that reaches each
+ * lane's hit through its sample u (lane i of u[0] and u[1]) where lanes[i]
+ * is set, weighed by `share`, as light_packet did lane by lane (the same
+ * bits): one packet of shadow segments over the lanes it lights. */
+static void area_light_packet(tracer *t, const ray8 *r, const bool lanes[ACCEL_PACKET],
+                              const shade_point sp[ACCEL_PACKET], lit_lanes *ll, int depth, const light *l,
+                              const double u[2][ACCEL_PACKET], double share)
+{
+    const glint_scene *scene = t->scene;
+    light_samples8 ls;
+    l->kind->sample_lanes(l, ll->p, u, lanes, &ls);
+    ray8 shadow;
+    double n_dot_l[ACCEL_PACKET];
+    int skip[ACCEL_PACKET];
+    bool lit[ACCEL_PACKET];
+    int count = 0;
+    for (int h = 0; h < ACCEL_PACKET; h += QUAD) {
+        const quad_f64 d[3] = {quad_load(ls.to_light[0] + h), quad_load(ls.to_light[1] + h),
+                               quad_load(ls.to_light[2] + h)};
+        quad_f64 facing = quad_dot(quad_load(ll->n[0] + h), quad_load(ll->n[1] + h), quad_load(ll->n[2] + h), d[0],
+                                   d[1], d[2]);
+        quad_f64 shading = quad_dot(quad_load(ll->ns[0] + h), quad_load(ll->ns[1] + h), quad_load(ll->ns[2] + h),
+                                    d[0], d[1], d[2]);
+        /* shadow_segment's tests: NaN passes them as it did there. */
+        quad_mask faces = quad_from_bools(ls.ok + h) & ~(facing <= 0) & ~(shading <= 0);
+        quad_mask warm = (quad_from_bools(ll->warm[0] + h) & (quad_load(ls.radiance[0] + h) > 0)) |
+                         (quad_from_bools(ll->warm[1] + h) & (quad_load(ls.radiance[1] + h) > 0)) |
+                         (quad_from_bools(ll->warm[2] + h) & (quad_load(ls.radiance[2] + h) > 0));
+        quad_store(n_dot_l + h, shading);
+        /* A lane without a segment keeps its own ray. */
+        quad_store(shadow.ox + h, quad_select(faces, quad_load(ll->origin[0] + h), quad_load(r->ox + h)));
+        quad_store(shadow.oy + h, quad_select(faces, quad_load(ll->origin[1] + h), quad_load(r->oy + h)));
+        quad_store(shadow.oz + h, quad_select(faces, quad_load(ll->origin[2] + h), quad_load(r->oz + h)));
+        quad_store(shadow.dx + h, quad_select(faces, d[0], quad_load(r->dx + h)));
+        quad_store(shadow.dy + h, quad_select(faces, d[1], quad_load(r->dy + h)));
+        quad_store(shadow.dz + h, quad_select(faces, d[2], quad_load(r->dz + h)));
+        if (ll->plain[h / QUAD]) {
+            quad_mask on = faces & warm;
+            quad_mask_store(lit + h, on);
+            memcpy(skip + h, (const int[QUAD]){-1, -1, -1, -1}, sizeof(int[QUAD]));
+            count += (on[0] != 0) + (on[1] != 0) + (on[2] != 0) + (on[3] != 0);
+            continue;
+        }
+        for (int k = 0; k < QUAD; k++) {
+            int i = h + k;
+            lit[i] = faces[k] && (warm[k] || (ll->lobe[i] && phong_reaches(sp[i].m, sp[i].base, sp[i].ns,
+                                                                            ray8_dir(&shadow, i),
+                                                                            v3(-r->dx[i], -r->dy[i], -r->dz[i]),
+                                                                            light_samples8_radiance(&ls, i))));
+            skip[i] = lit[i] && ll->skips[i] ? hit_left_behind(scene, &sp[i].hit, sp[i].s.n, ray8_dir(&shadow, i)) : -1;
+            count += lit[i];
+        }
+    }
+    if (!count)
+        return;
+    t->rays += (unsigned)count;
+    color through[ACCEL_PACKET];
+    accel_transmission8(t->acc, &shadow, ls.distance, skip, depth == 0, lit, shadow_filter, t, through);
+    for (int h = 0; h < ACCEL_PACKET; h += QUAD) {
+        const color *th = through + h;
+        const quad_f64 passed[3] = {{th[0].r, th[1].r, th[2].r, th[3].r}, {th[0].g, th[1].g, th[2].g, th[3].g},
+                                    {th[0].b, th[1].b, th[2].b, th[3].b}};
+        /* light_share's test, rgb_max(through) > 0, and phong_light's
+         * diffuse term: (base * (radiance * share * through)) * (diffuse * n . l). */
+        quad_mask adds = quad_from_bools(lit + h) & ~quad_from_bools(ll->lobe + h) &
+                         ((passed[0] > 0) | (passed[1] > 0) | (passed[2] > 0));
+        quad_f64 weight = quad_load(ll->diffuse + h) * quad_load(n_dot_l + h);
+        for (int c = 0; c < 3; c++) {
+            quad_f64 arriving = quad_load(ls.radiance[c] + h) * share * passed[c];
+            quad_f64 sum = quad_load(ll->direct[c] + h);
+            quad_store(ll->direct[c] + h, quad_select(adds, sum + quad_load(ll->base[c] + h) * arriving * weight, sum));
+        }
+        for (int k = 0; k < QUAD && !ll->plain[h / QUAD]; k++) {
+            int i = h + k;
+            if (!lit[i] || !ll->lobe[i])
+                continue;
+            light_sample one = {ray8_dir(&shadow, i), ls.distance[i],
+                                rgb_scale(light_samples8_radiance(&ls, i), share)};
+            color add = light_share(&sp[i], &one, through[i], v3(-r->dx[i], -r->dy[i], -r->dz[i]));
+            ll->direct[0][i] += add.r;
+            ll->direct[1][i] += add.g;
+            ll->direct[2][i] += add.b;
+        }
     }
 }
 
@@ -270,37 +406,25 @@ static void pattern_point(sobol2_seeds seeds, int j, double u[2])
     sobol2_point((uint32_t)j, seeds, &u[0], &u[1]);
 }
 
-/* Sample j of an area light at each lane's shading point, each lane's
- * pattern scrambled by its own seeds (lane i of seeds): pattern_point for
- * the eight lanes at once. */
-static void area_samples(const sobol2_seeds8 *seeds, int j, double u[ACCEL_PACKET][2])
-{
-    double x[ACCEL_PACKET], y[ACCEL_PACKET];
-    sobol2_points8((uint32_t)j, seeds, x, y);
-    for (int i = 0; i < ACCEL_PACKET; i++) {
-        u[i][0] = x[i];
-        u[i][1] = y[i];
-    }
-}
-
-/* Adds to direct[i] the light of area light l (the scene's light number
- * `index`, emitters numbered after the lights) that reaches the hit sp[i]
- * of each lane found[i], whose random numbers come from key[i]: one
- * packet of shadow segments per sample, n of them. Out
- * of line, so that the delta lights' packet stays inlined in
- * direct_light8 (the seed room's every shading point) as it was. */
+/* Adds to ll's direct light the light of area light l (the scene's light
+ * number `index`, emitters numbered after the lights) that reaches the hit
+ * sp[i] of each lane found[i], whose random numbers come from key[i]: one
+ * packet of shadow segments per sample, n of them, sample j of lane i
+ * pattern_point's j of its own pattern, the eight lanes' at once. Out of
+ * line, so that the delta lights' packet stays inlined in direct_light8
+ * (the seed room's every shading point) as it was. */
 __attribute__((noinline)) static void area_light_packets(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
-                                                         const shade_point sp[ACCEL_PACKET], int depth,
-                                                         const light *l, int index, int n,
-                                                         const uint32_t key[ACCEL_PACKET], color direct[ACCEL_PACKET])
+                                                         const shade_point sp[ACCEL_PACKET], lit_lanes *ll,
+                                                         int depth, const light *l, int index, int n,
+                                                         const uint32_t key[ACCEL_PACKET])
 {
     sobol2_seeds8 seeds;
     for (int i = 0; i < ACCEL_PACKET; i++)
         sobol2_seeds8_set(&seeds, i, sobol2_seeds_of(hash_u32(key[i] ^ hash_u32((uint32_t)index + 1))));
     for (int j = 0; j < n && !stopping(t); j++) {
-        double u[ACCEL_PACKET][2];
-        area_samples(&seeds, j, u);
-        light_packet(t, r, found, sp, depth, l, u, 1.0 / n, direct);
+        double u[2][ACCEL_PACKET];
+        sobol2_points8((uint32_t)j, &seeds, u[0], u[1]);
+        area_light_packet(t, r, found, sp, ll, depth, l, u, 1.0 / n);
     }
 }
 
@@ -329,9 +453,8 @@ static double radical_inverse3(uint32_t j)
  * at the same sample, and a packet a sample would hold one or two lanes
  * (30 lamps, 16 samples: a third of the rays a second). */
 __attribute__((noinline)) static void chosen_light_packets(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
-                                                           const shade_point sp[ACCEL_PACKET], int depth,
-                                                           const uint32_t key[ACCEL_PACKET],
-                                                           color direct[ACCEL_PACKET])
+                                                           const shade_point sp[ACCEL_PACKET], lit_lanes *ll,
+                                                           int depth, const uint32_t key[ACCEL_PACKET])
 {
     const light_choice *choice = t->choice;
     int n = t->scene->settings.light_samples;
@@ -365,7 +488,7 @@ __attribute__((noinline)) static void chosen_light_packets(tracer *t, const ray8
             if (chosen < 0 || stopping(t))
                 break;
             bool chose[ACCEL_PACKET];
-            double u[ACCEL_PACKET][2];
+            double u[2][ACCEL_PACKET] = {{0}};
             for (int i = 0; i < ACCEL_PACKET; i++) {
                 chose[i] = false;
                 for (int k = next[i]; k < run && !chose[i]; k++) {
@@ -373,11 +496,11 @@ __attribute__((noinline)) static void chosen_light_packets(tracer *t, const ray8
                         continue;
                     chose[i] = true;
                     pick[i][k] = -1;
-                    pattern_point(seeds[i], first + k, u[i]);
+                    sobol2_point((uint32_t)(first + k), seeds[i], &u[0][i], &u[1][i]);
                 }
             }
-            light_packet(t, r, chose, sp, depth, choice->lights[chosen], u,
-                         1.0 / (n * light_choice_chance(choice, chosen)), direct);
+            area_light_packet(t, r, chose, sp, ll, depth, choice->lights[chosen], u,
+                              1.0 / (n * light_choice_chance(choice, chosen)));
         }
     }
 }
@@ -392,17 +515,35 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
                           color direct[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
-    for (int l = 0; l < scene->light_count + scene->emitter_count && !stopping(t); l++) {
+    /* The area lights' light gathers in ll from the first area light on,
+     * and goes back into direct before a delta light adds its own. */
+    lit_lanes ll;
+    bool described = false, gathering = false;
+    for (int l = 0; l < scene->light_count + scene->emitter_count + 1 && !stopping(t); l++) {
+        bool chosen = l == scene->light_count + scene->emitter_count;
         bool emitter = l >= scene->light_count;
-        const light *li = emitter ? &scene->emitters[l - scene->light_count] : &scene->lights[l];
-        if (li->kind->delta)
-            light_packet(t, r, found, sp, depth, li, NULL, 1, direct);
-        else if (!t->choice)
-            area_light_packets(t, r, found, sp, depth, li, l,
-                               emitter ? scene->settings.emission_samples : li->desc.samples, key, direct);
+        const light *li = chosen ? NULL : emitter ? &scene->emitters[l - scene->light_count] : &scene->lights[l];
+        bool area = chosen ? t->choice && t->choice->count > 0 : !li->kind->delta && !t->choice;
+        if (area && !gathering) {
+            if (!described)
+                lit_lanes_describe(sp, found, &ll);
+            described = gathering = true;
+            lit_lanes_take(&ll, direct);
+        }
+        if (li && li->kind->delta) {
+            if (gathering)
+                lit_lanes_give(&ll, direct);
+            gathering = false;
+            light_packet(t, r, found, sp, depth, li, direct);
+        } else if (area && chosen) {
+            chosen_light_packets(t, r, found, sp, &ll, depth, key);
+        } else if (area) {
+            area_light_packets(t, r, found, sp, &ll, depth, li, l,
+                               emitter ? scene->settings.emission_samples : li->desc.samples, key);
+        }
     }
-    if (t->choice && t->choice->count > 0 && !stopping(t))
-        chosen_light_packets(t, r, found, sp, depth, key, direct);
+    if (gathering)
+        lit_lanes_give(&ll, direct);
 }
 
 /* Adds to local[i] the ambient term of the hit sp[i] of each lane found[i]

@@ -134,34 +134,74 @@ bool light_surface_sample(const light *l, vec3 p, double u1, double u2, light_sa
     return light_surface_point(p, s.q, s.n, s.density, s.radiance, l->kind->in_scene, out);
 }
 
-void light_surface_lanes(const light *l, const vec3 p[RAY8], const double (*u)[2], const bool active[RAY8],
-                         light_sample out[RAY8], bool ok[RAY8])
+/* The surface points of lanes `first` to first + 3 for their samples u,
+ * into quads; an inactive lane's density is 0. */
+static void surface_points_quad(const light *l, const double u[2][RAY8], const bool active[RAY8], int first,
+                                quad_f64 q[3], quad_f64 n[3], quad_f64 *density, quad_f64 glow[3])
 {
-    surface_point s[RAY8];
-    for (int i = 0; i < RAY8; i++) {
-        if (active[i])
-            l->kind->surface(l, u[i][0], u[i][1], &s[i]);
-        else
-            memset(&s[i], 0, sizeof s[i]); /* density 0: nothing */
+    quad_mask on = quad_from_bools(active + first);
+    if (l->kind->surface_quad &&
+        l->kind->surface_quad(l, quad_load(u[0] + first), quad_load(u[1] + first), q, n, density, glow)) {
+        *density = quad_select(on, *density, quad_splat(0));
+        return;
     }
+    surface_point t[QUAD];
+    for (int k = 0; k < QUAD; k++) {
+        if (on[k])
+            l->kind->surface(l, u[0][first + k], u[1][first + k], &t[k]);
+        else
+            memset(&t[k], 0, sizeof t[k]); /* density 0: nothing */
+    }
+    for (int k = 0; k < QUAD; k++) {
+        q[0][k] = t[k].q.x;
+        q[1][k] = t[k].q.y;
+        q[2][k] = t[k].q.z;
+        n[0][k] = t[k].n.x;
+        n[1][k] = t[k].n.y;
+        n[2][k] = t[k].n.z;
+        (*density)[k] = t[k].density;
+        glow[0][k] = t[k].radiance.r;
+        glow[1][k] = t[k].radiance.g;
+        glow[2][k] = t[k].radiance.b;
+    }
+}
+
+void light_surface_lanes(const light *l, const double p[3][RAY8], const double u[2][RAY8], const bool active[RAY8],
+                         light_samples8 *out)
+{
     for (int i = 0; i < RAY8; i += QUAD) {
-        const surface_point *t = s + i;
-        const vec3 *at = p + i;
-        const quad_f64 pq[3] = {{at[0].x, at[1].x, at[2].x, at[3].x}, {at[0].y, at[1].y, at[2].y, at[3].y},
-                                {at[0].z, at[1].z, at[2].z, at[3].z}};
-        const quad_f64 qq[3] = {{t[0].q.x, t[1].q.x, t[2].q.x, t[3].q.x}, {t[0].q.y, t[1].q.y, t[2].q.y, t[3].q.y},
-                                {t[0].q.z, t[1].q.z, t[2].q.z, t[3].q.z}};
-        const quad_f64 nq[3] = {{t[0].n.x, t[1].n.x, t[2].n.x, t[3].n.x}, {t[0].n.y, t[1].n.y, t[2].n.y, t[3].n.y},
-                                {t[0].n.z, t[1].n.z, t[2].n.z, t[3].n.z}};
-        const quad_f64 density = {t[0].density, t[1].density, t[2].density, t[3].density};
+        const quad_f64 pq[3] = {quad_load(p[0] + i), quad_load(p[1] + i), quad_load(p[2] + i)};
+        quad_f64 qq[3], nq[3], density, glow[3];
+        surface_points_quad(l, u, active, i, qq, nq, &density, glow);
         quad_f64 to_light[3], distance, scale;
         quad_mask fine = surface_point_quad(pq, qq, nq, density, l->kind->in_scene, to_light, &distance, &scale);
-        for (int k = 0; k < QUAD; k++) {
-            ok[i + k] = active[i + k] && fine[k];
-            if (ok[i + k])
-                surface_sample_lane(to_light, distance, scale, k, t[k].radiance, &out[i + k]);
+        for (int c = 0; c < 3; c++) {
+            quad_store(out->to_light[c] + i, to_light[c]);
+            quad_store(out->radiance[c] + i, glow[c] * scale);
         }
+        quad_store(out->distance + i, distance);
+        for (int k = 0; k < QUAD; k++)
+            out->ok[i + k] = active[i + k] && fine[k];
     }
+}
+
+void light_parallelogram_quad(vec3 corner, vec3 edge1, vec3 edge2, quad_f64 u1, quad_f64 u2, quad_f64 q[3])
+{
+    const double c[3] = {corner.x, corner.y, corner.z}, e1[3] = {edge1.x, edge1.y, edge1.z},
+                 e2[3] = {edge2.x, edge2.y, edge2.z};
+    for (int k = 0; k < 3; k++)
+        q[k] = c[k] + (e1[k] * u1 + e2[k] * u2);
+}
+
+void light_area_quad(const light *l, quad_f64 n[3], quad_f64 *density, quad_f64 glow[3])
+{
+    n[0] = quad_splat(l->normal.x);
+    n[1] = quad_splat(l->normal.y);
+    n[2] = quad_splat(l->normal.z);
+    *density = quad_splat(l->density);
+    glow[0] = quad_splat(l->desc.color.r);
+    glow[1] = quad_splat(l->desc.color.g);
+    glow[2] = quad_splat(l->desc.color.b);
 }
 
 void light_area_point(const light *l, vec3 q, surface_point *out)

@@ -28,6 +28,7 @@
 
 #include <stdbool.h>
 #include "core/color.h"
+#include "core/lanes.h"
 #include "core/params.h"
 #include "core/vec.h"
 #include "geometry/mesh.h"
@@ -76,6 +77,16 @@ typedef struct light_sample {
                                  (docs/scene-format.md) */
 } light_sample;
 
+/* An area light's samples at the lanes of a packet, lane i of each
+ * array: what light_sample says, by coordinate and by channel. A lane
+ * that is not ok holds finite numbers or NaN, never uninitialised ones. */
+typedef struct light_samples8 {
+    double to_light[3][RAY8];
+    double distance[RAY8];
+    double radiance[3][RAY8];
+    bool ok[RAY8];
+} light_samples8;
+
 /* A point of the surface an area light or emitter glows over, chosen for
  * one sample: the same whatever point it lights. */
 typedef struct surface_point {
@@ -109,18 +120,28 @@ struct light_kind {
      * it gives p nothing. light_delta_sample for delta kinds;
      * light_surface_sample for kinds with a surface. */
     bool (*sample)(const light *l, vec3 p, double u1, double u2, light_sample *out);
-    /* An area light's sample for the lanes of a packet: ok[i] is sample's
-     * answer at p[i] with u[i] for each active lane, false for the rest.
-     * One call and one loop (light_surface_lanes, LIGHT_SAMPLE_LANES), so
-     * that the lanes' square roots and divisions overlap where a call a
-     * lane waited for each in turn. NULL for delta kinds. */
-    void (*sample_lanes)(const light *l, const vec3 p[RAY8], const double (*u)[2], const bool active[RAY8],
-                         light_sample out[RAY8], bool ok[RAY8]);
+    /* An area light's samples for the lanes of a packet: lane i of *out is
+     * sample's answer at lane i of p with lane i of u for each active
+     * lane, not ok for the rest. One call and one loop
+     * (light_surface_lanes, LIGHT_SAMPLE_LANES), so that the lanes' square
+     * roots and divisions overlap where a call a lane waited for each in
+     * turn; lanes in arrays, as the integrator works on them a quad at a
+     * time. NULL for delta kinds. */
+    void (*sample_lanes)(const light *l, const double p[3][RAY8], const double u[2][RAY8], const bool active[RAY8],
+                         light_samples8 *out);
     /* A kind sampled by area over the surface it glows over (all area
      * kinds but the sphere's, which samples the cone of directions it
      * fills): the point for (u1, u2), whose sample at any p
      * light_surface_sample and light_surface_lanes then work out. */
     void (*surface)(const light *l, double u1, double u2, surface_point *out);
+    /* surface for a quad of samples, lane k's (u1[k], u2[k]), into the
+     * quads q, n (the points and normals by coordinate), density and glow
+     * (the radiance by channel), the same bits as four calls of surface;
+     * false, with nothing written, when this light has no such shortcut,
+     * and surface then runs lane by lane. NULL: never. Four calls cost a
+     * tenth of a Cornell box; these lights, a quad in a few instructions. */
+    bool (*surface_quad)(const light *l, quad_f64 u1, quad_f64 u2, quad_f64 q[3], quad_f64 n[3], quad_f64 *density,
+                         quad_f64 glow[3]);
     /* The surface is in the scene (an emitter's), so that its shadow
      * segments stop just short of it. */
     bool in_scene;
@@ -130,19 +151,39 @@ struct light_kind {
  * surface's point for (u1, u2) seen from p, as light_surface_point makes
  * it; the lanes four at a time in vector instructions (the same bits). */
 bool light_surface_sample(const light *l, vec3 p, double u1, double u2, light_sample *out);
-void light_surface_lanes(const light *l, const vec3 p[RAY8], const double (*u)[2], const bool active[RAY8],
-                         light_sample out[RAY8], bool ok[RAY8]);
+void light_surface_lanes(const light *l, const double p[3][RAY8], const double u[2][RAY8], const bool active[RAY8],
+                         light_samples8 *out);
 
 /* Defines `name`, a light_kind.sample_lanes that runs the kind's own
  * sample function `one` (defined before it, in the same file) over the
  * lanes. */
 #define LIGHT_SAMPLE_LANES(name, one)                                                                        \
-    static void name(const light *l, const vec3 p[RAY8], const double (*u)[2], const bool active[RAY8],     \
-                     light_sample out[RAY8], bool ok[RAY8])                                                 \
+    static void name(const light *l, const double p[3][RAY8], const double u[2][RAY8], const bool active[RAY8], \
+                     light_samples8 *out)                                                                    \
     {                                                                                                        \
-        for (int i = 0; i < RAY8; i++)                                                                       \
-            ok[i] = active[i] && one(l, p[i], u[i][0], u[i][1], &out[i]);                                    \
+        for (int i = 0; i < RAY8; i++) {                                                                     \
+            light_sample s = {{0, 0, 0}, 0, {0, 0, 0}};                                                      \
+            out->ok[i] = active[i] && one(l, v3(p[0][i], p[1][i], p[2][i]), u[0][i], u[1][i], &s);           \
+            light_samples8_set(out, i, &s);                                                                  \
+        }                                                                                                    \
     }
+
+/* Lane i of *out becomes *s (its ok flag aside). */
+static inline void light_samples8_set(light_samples8 *out, int i, const light_sample *s)
+{
+    out->to_light[0][i] = s->to_light.x;
+    out->to_light[1][i] = s->to_light.y;
+    out->to_light[2][i] = s->to_light.z;
+    out->distance[i] = s->distance;
+    out->radiance[0][i] = s->radiance.r;
+    out->radiance[1][i] = s->radiance.g;
+    out->radiance[2][i] = s->radiance.b;
+}
+/* Lane i's radiance. */
+static inline color light_samples8_radiance(const light_samples8 *s, int i)
+{
+    return rgb(s->radiance[0][i], s->radiance[1][i], s->radiance[2][i]);
+}
 
 extern const light_kind point_light, spot_light, directional_light, sphere_light, rectangle_light, disk_light;
 
@@ -237,6 +278,13 @@ glint_status light_area_init(light *l, const glint_shape *glow, double area, gli
  * area over it) at q, field by field: a struct built and copied whole
  * waited on its parts' stores. */
 void light_area_point(const light *l, vec3 q, surface_point *out);
+
+/* Lane k of q becomes corner + (edge1 u1[k] + edge2 u2[k]): a point of a
+ * parallelogram, as v3_add and v3_scale give it, for a quad of samples. */
+void light_parallelogram_quad(vec3 corner, vec3 edge1, vec3 edge2, quad_f64 u1, quad_f64 u2, quad_f64 q[3]);
+
+/* light_area_point's normal, density and glow for a quad of points. */
+void light_area_quad(const light *l, quad_f64 n[3], quad_f64 *density, quad_f64 glow[3]);
 
 /* Whether ray r meets area light l's glowing side before tmax, and where:
  * *t. A camera, reflected or refracted ray that does sees desc.color. */

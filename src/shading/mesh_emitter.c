@@ -43,9 +43,29 @@ static void mesh_emitter_surface(const light *l, double u1, double u2, surface_p
     out->radiance = tri->radiance;
 }
 
+/* A lamp of one parallelogram, as the Cornell box's: mesh_emitter_surface
+ * for a quad of samples. Others go lane by lane. */
+static bool mesh_emitter_surface_quad(const light *l, quad_f64 u1, quad_f64 u2, quad_f64 q[3], quad_f64 n[3],
+                                      quad_f64 *density, quad_f64 glow[3])
+{
+    const emitter_triangle *tri = l->triangles;
+    if (l->triangle_count != 1 || !tri->parallelogram)
+        return false;
+    quad_f64 u = quad_select(u1 < 1, u1, quad_splat(0.99999999999999989));
+    light_parallelogram_quad(tri->a, v3_sub(tri->b, tri->a), v3_sub(tri->c, tri->a), u, u2, q);
+    n[0] = quad_splat(tri->normal.x);
+    n[1] = quad_splat(tri->normal.y);
+    n[2] = quad_splat(tri->normal.z);
+    *density = quad_splat(l->cumulative[0] / tri->area);
+    glow[0] = quad_splat(tri->radiance.r);
+    glow[1] = quad_splat(tri->radiance.g);
+    glow[2] = quad_splat(tri->radiance.b);
+    return true;
+}
+
 const light_kind mesh_emitter = {.name = "emissive mesh", .sample = light_surface_sample,
                                  .sample_lanes = light_surface_lanes, .surface = mesh_emitter_surface,
-                                 .in_scene = true};
+                                 .surface_quad = mesh_emitter_surface_quad, .in_scene = true};
 
 static bool same_point(vec3 p, vec3 q)
 {

@@ -30,6 +30,15 @@ static void rectangle_light_surface(const light *l, double u1, double u2, surfac
     light_area_point(l, v3_add(d->position, v3_add(v3_scale(d->edge1, u1), v3_scale(d->edge2, u2))), out);
 }
 
+static bool rectangle_light_surface_quad(const light *l, quad_f64 u1, quad_f64 u2, quad_f64 q[3], quad_f64 n[3],
+                                         quad_f64 *density, quad_f64 glow[3])
+{
+    const glint_light *d = &l->desc;
+    light_parallelogram_quad(d->position, d->edge1, d->edge2, u1, u2, q);
+    light_area_quad(l, n, density, glow);
+    return true;
+}
+
 static const param RECTANGLE_LIGHT_PARAMS[] = {
     {.key = "corner", .type = PARAM_VEC3, .offset = offsetof(light_spec, light.position), .required = true,
      .meaning = "one corner"},
@@ -44,4 +53,5 @@ const light_kind rectangle_light = {
     .name = "rectangle", .id = GLINT_LIGHT_RECTANGLE, .params = PARAM_TABLE(RECTANGLE_LIGHT_PARAMS),
     .init = rectangle_light_init, .one_sided = true, .sample = light_surface_sample,
     .sample_lanes = light_surface_lanes, .surface = rectangle_light_surface,
+    .surface_quad = rectangle_light_surface_quad,
 };

@@ -532,6 +532,84 @@ static void test_quad_lamp_sampled_whole(void **state)
     assert_true(error / renders <= 0.012);
 }
 
+/* A number in [lo, hi) from *state, a 64-bit LCG's high bits. */
+static double uniform(uint64_t *state, double lo, double hi)
+{
+    *state = *state * 6364136223846793005ULL + 1442695040888963407ULL;
+    return lo + (hi - lo) * (double)(*state >> 11) * 0x1.0p-53;
+}
+
+/* Each area light's samples for a packet's lanes (kind->sample_lanes,
+ * four lanes at a time in vector instructions, by the parallelogram
+ * shortcuts of the rectangle light and a one-quad lamp, or a lane at a
+ * time) are its samples one at a time (kind->sample), to the bit: the
+ * renders' samples, whichever way they are taken. */
+static void test_light_lanes_are_its_samples(void **state)
+{
+    (void)state;
+    glint_scene *s = floor_from_above(1, 1, 1);
+    glint_light lights[3] = {glint_light_default(GLINT_LIGHT_RECTANGLE), glint_light_default(GLINT_LIGHT_DISK),
+                             glint_light_default(GLINT_LIGHT_SPHERE)};
+    lights[0].position = (glint_vec3){-1, 3, -0.5};
+    lights[0].edge1 = (glint_vec3){2, 0.3, 0.4}; /* every coordinate a sum of three */
+    lights[0].edge2 = (glint_vec3){-0.25, 0.1, 1.5};
+    lights[1].position = (glint_vec3){0.5, 2, 1};
+    lights[1].direction = (glint_vec3){0.2, -1, 0.1};
+    lights[1].radius = 0.7;
+    lights[2].position = (glint_vec3){-2, 1.5, 0};
+    lights[2].radius = 0.4;
+    for (int k = 0; k < 3; k++)
+        assert_true(glint_scene_add_light(s, &lights[k], NULL) >= 0);
+    /* A tilted quad lamp (one parallelogram: the first and third corners
+     * add up to the others) facing down, and a lamp of three triangles. */
+    const float square[] = {-1, 0.1f, -1, 1, 0.3f, -0.9f, 1.2f, 0.5f, 1.1f, -0.8f, 0.3f, 1, 0, 0.2f, 2};
+    const uint32_t quad[] = {0, 1, 2, 0, 2, 3}, three[] = {0, 1, 2, 0, 2, 3, 3, 2, 4};
+    glint_transform up = {{{1, 0, 0, 0}, {0, 1, 0, 2.5}, {0, 0, 1, 0}}};
+    for (int k = 0; k < 2; k++) {
+        glint_mesh_data d = {.positions = square, .vertex_count = 5, .indices = k ? three : quad,
+                             .triangle_count = k ? 3 : 2, .material = glowing(s, 2)};
+        assert_true(glint_scene_add_instance(s, glint_scene_add_mesh(s, NULL, &d, NULL), -1, &up, NULL) >= 0);
+    }
+    assert_int_equal(s->light_count, 3);
+    assert_int_equal(s->emitter_count, 2);
+    assert_int_equal(s->emitters[0].triangle_count, 1); /* the parallelogram */
+    assert_int_equal(s->emitters[1].triangle_count, 2);
+    uint64_t rng = 7;
+    int compared = 0;
+    for (int l = 0; l < s->light_count + s->emitter_count; l++) {
+        const light *li = l < s->light_count ? &s->lights[l] : &s->emitters[l - s->light_count];
+        for (int round = 0; round < 500; round++) {
+            double p[3][RAY8], u[2][RAY8];
+            bool active[RAY8];
+            for (int i = 0; i < RAY8; i++) {
+                for (int c = 0; c < 3; c++)
+                    p[c][i] = uniform(&rng, -3, 4);
+                u[0][i] = uniform(&rng, 0, 1);
+                u[1][i] = uniform(&rng, 0, 1);
+                active[i] = uniform(&rng, 0, 1) < 0.8;
+            }
+            light_samples8 lanes;
+            li->kind->sample_lanes(li, p, u, active, &lanes);
+            for (int i = 0; i < RAY8; i++) {
+                light_sample one;
+                bool ok = active[i] && li->kind->sample(li, (vec3){p[0][i], p[1][i], p[2][i]}, u[0][i], u[1][i], &one);
+                assert_int_equal(lanes.ok[i], ok);
+                if (!ok)
+                    continue;
+                const double lane[7] = {lanes.to_light[0][i], lanes.to_light[1][i], lanes.to_light[2][i],
+                                        lanes.distance[i],    lanes.radiance[0][i], lanes.radiance[1][i],
+                                        lanes.radiance[2][i]};
+                const double alone[7] = {one.to_light.x, one.to_light.y, one.to_light.z, one.distance,
+                                         one.radiance.r, one.radiance.g, one.radiance.b};
+                assert_memory_equal(lane, alone, sizeof lane);
+                compared++;
+            }
+        }
+    }
+    assert_true(compared > 5 * 500 * RAY8 / 4); /* most lanes are lit */
+    glint_scene_free(s);
+}
+
 /* glint CornellBox-Original.obj: lit by its own ceiling lamp (MTL Ke 17
  * 12 4) alone, which the camera sees at that radiance (its ambient term,
  * 0.2 of its Kd, on top). */
@@ -621,6 +699,7 @@ int main(void)
         cmocka_unit_test(test_emissive_shapes_light_the_scene),
         cmocka_unit_test(test_emissive_meshes),
         cmocka_unit_test(test_quad_lamp_sampled_whole),
+        cmocka_unit_test(test_light_lanes_are_its_samples),
         cmocka_unit_test(test_many_lights_chosen_by_power),
         cmocka_unit_test(test_cornell_box_lit_by_its_lamp),
         cmocka_unit_test(test_ambient_occlusion_under_a_ball),
