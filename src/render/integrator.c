@@ -11,6 +11,7 @@
 #include "shading/environment.h"
 #include "shading/fog.h"
 #include "shading/optics.h"
+#include "geometry/shape_kind.h"
 
 /* New rays start this far off the surface, relative to the scene scale at
  * the point, so they do not hit the surface they leave. */
@@ -248,48 +249,68 @@ __attribute__((always_inline)) static inline void light_packet(tracer *t, const 
 }
 
 /* A packet's shading points as arrays of lanes, gathered once for all the
- * samples its lanes take of the area lights, and the direct light they
- * gather (lit_lanes_take, lit_lanes_give): each sample's steps then run a
- * quad of lanes at a time, where one lane at a time they were a quarter of
- * a Cornell box. A lane not found holds zeros. */
+ * lights and samples that light them, and the direct light they gather
+ * (lit_lanes_take, lit_lanes_give): each sample's steps then run a quad
+ * of lanes at a time, where one lane at a time they were a quarter of a
+ * Cornell box. A lane not found holds zeros. */
 typedef struct lit_lanes {
     double p[3][ACCEL_PACKET];        /* the hit */
     double origin[3][ACCEL_PACKET];   /* where its shadow segments start */
     double n[3][ACCEL_PACKET], ns[3][ACCEL_PACKET];
+    double surface_n[3][ACCEL_PACKET]; /* the surface's own normal, for hit_left_behind */
+    double to_eye[3][ACCEL_PACKET];
     double base[3][ACCEL_PACKET];     /* the surface colour */
-    double diffuse[ACCEL_PACKET];
+    double diffuse[ACCEL_PACKET], specular[ACCEL_PACKET], shininess[ACCEL_PACKET];
     bool warm[3][ACCEL_PACKET];       /* the diffuse term has channel c: diffuse and base's c above 0 */
-    bool lobe[ACCEL_PACKET];          /* a specular lobe too: that lane's light comes from light_share */
-    bool skips[ACCEL_PACKET];         /* the hit is on a shape, which a segment may leave behind */
-    bool plain[ACCEL_PACKET / QUAD];  /* no lane of quad q has a lobe or skips */
+    bool lobe[ACCEL_PACKET];          /* a specular lobe, of a whole exponent (lobe_pow's squarings) */
+    bool odd[ACCEL_PACKET];           /* a lobe of another exponent: light_share adds that lane's light */
+    bool any_odd;
+    int shape[ACCEL_PACKET];          /* the hit's shape, or -1 */
+    bool flat[ACCEL_PACKET];          /* a shape that a segment always leaves behind */
+    bool convex[ACCEL_PACKET];        /* a shape left behind by a segment that leaves its outside */
     double direct[3][ACCEL_PACKET];   /* the light gathered */
 } lit_lanes;
 
-/* Fills ll's description of the lanes' hits. */
-static void lit_lanes_describe(const shade_point sp[ACCEL_PACKET], const bool found[ACCEL_PACKET], lit_lanes *ll)
+/* Fills ll's description of the lanes' hits, seen along r. */
+static void lit_lanes_describe(const glint_scene *scene, const ray8 *r, const shade_point sp[ACCEL_PACKET],
+                               const bool found[ACCEL_PACKET], lit_lanes *ll)
 {
     memset(ll, 0, sizeof *ll);
     for (int i = 0; i < ACCEL_PACKET; i++) {
+        ll->shape[i] = -1;
         if (!found[i])
             continue;
         const shade_point *s = &sp[i];
+        const glint_material *m = s->m;
         const double p[3] = {s->s.p.x, s->s.p.y, s->s.p.z}, o[3] = {s->origin.x, s->origin.y, s->origin.z};
         const double n[3] = {s->n.x, s->n.y, s->n.z}, ns[3] = {s->ns.x, s->ns.y, s->ns.z};
+        const double sn[3] = {s->s.n.x, s->s.n.y, s->s.n.z}, eye[3] = {-r->dx[i], -r->dy[i], -r->dz[i]};
         const double base[3] = {s->base.r, s->base.g, s->base.b};
         for (int c = 0; c < 3; c++) {
             ll->p[c][i] = p[c];
             ll->origin[c][i] = o[c];
             ll->n[c][i] = n[c];
             ll->ns[c][i] = ns[c];
+            ll->surface_n[c][i] = sn[c];
+            ll->to_eye[c][i] = eye[c];
             ll->base[c][i] = base[c];
-            ll->warm[c][i] = s->m->diffuse > 0 && base[c] > 0;
+            ll->warm[c][i] = m->diffuse > 0 && base[c] > 0;
         }
-        ll->diffuse[i] = s->m->diffuse;
-        ll->lobe[i] = s->m->specular > 0;
-        ll->skips[i] = s->hit.shape >= 0;
+        ll->diffuse[i] = m->diffuse;
+        ll->specular[i] = m->specular;
+        ll->shininess[i] = m->shininess;
+        bool whole = m->shininess >= 0 && m->shininess <= 65536 && m->shininess == floor(m->shininess);
+        ll->lobe[i] = m->specular > 0 && whole;
+        ll->odd[i] = m->specular > 0 && !whole;
+        ll->any_odd |= ll->odd[i];
+        int k = s->hit.shape;
+        if (k >= 0) {
+            const shape_kind *kind = scene->shapes[k].kind;
+            ll->shape[i] = k;
+            ll->flat[i] = kind->flat;
+            ll->convex[i] = kind->max_crossings <= 2;
+        }
     }
-    for (int q = 0; q < ACCEL_PACKET / QUAD; q++)
-        ll->plain[q] = !quad_any(quad_from_bools(ll->lobe + q * QUAD) | quad_from_bools(ll->skips + q * QUAD));
 }
 
 /* ll's direct light starts from direct's. */
@@ -309,90 +330,139 @@ static void lit_lanes_give(const lit_lanes *ll, color direct[ACCEL_PACKET])
         direct[i] = rgb(ll->direct[0][i], ll->direct[1][i], ll->direct[2][i]);
 }
 
-/* Adds to ll's direct light the light of area light l that reaches each
- * lane's hit through its sample u (lane i of u[0] and u[1]) where lanes[i]
- * is set, weighed by `share`, as light_packet did lane by lane (the same
- * bits): one packet of shadow segments over the lanes it lights. */
-static void area_light_packet(tracer *t, const ray8 *r, const bool lanes[ACCEL_PACKET],
-                              const shade_point sp[ACCEL_PACKET], lit_lanes *ll, int depth, const light *l,
-                              const double u[2][ACCEL_PACKET], double share)
+/* The quad of lanes h to h + 3 of a lit_lanes array. */
+#define LANES(array, h) quad_load((array) + (h))
+
+/* rgb_max(c) > 0 for a quad of colours, NaN as there. */
+static inline quad_mask quad_rgb_max_positive(const quad_f64 c[3])
 {
-    const glint_scene *scene = t->scene;
-    light_samples8 ls;
-    l->kind->sample_lanes(l, ll->p, u, lanes, &ls);
+    quad_f64 m = quad_select(c[0] > c[1], c[0], c[1]);
+    return quad_select(m > c[2], m, c[2]) > 0;
+}
+
+/* lobe_pow(x, e) for a quad, each lane's e a whole number in [0, 65536]:
+ * the same squarings and products, so the same bits. */
+static inline quad_f64 quad_lobe_pow(quad_f64 x, quad_f64 e)
+{
+    quad_mask n = __builtin_convertvector(e, quad_mask);
+    quad_f64 result = quad_splat(1);
+    while (quad_any(n)) {
+        result = quad_select((n & 1) != 0, result * x, result);
+        x *= x;
+        n >>= 1;
+    }
+    return result;
+}
+
+/* lobe_cos for a quad: the cosine between the light's mirror direction
+ * about ns and the eye. */
+static inline quad_f64 quad_lobe_cos(const lit_lanes *ll, int h, const quad_f64 to_light[3])
+{
+    const quad_f64 ns[3] = {LANES(ll->ns[0], h), LANES(ll->ns[1], h), LANES(ll->ns[2], h)};
+    const quad_f64 from[3] = {-to_light[0], -to_light[1], -to_light[2]};
+    quad_f64 k = -2 * quad_dot(from[0], from[1], from[2], ns[0], ns[1], ns[2]);
+    return quad_dot(from[0] + ns[0] * k, from[1] + ns[1] * k, from[2] + ns[2] * k, LANES(ll->to_eye[0], h),
+                    LANES(ll->to_eye[1], h), LANES(ll->to_eye[2], h));
+}
+
+/* Adds to ll's direct light what one light's samples ls bring to each
+ * lane's hit (lane i where ls->ok[i]), their radiance weighed by `share`,
+ * as light_packet's steps lane by lane would (the same bits): one packet
+ * of shadow segments over the lanes they light, for hits of rays at
+ * recursion depth `depth`. */
+static void lit_packet(tracer *t, const ray8 *r, const shade_point sp[ACCEL_PACKET], lit_lanes *ll, int depth,
+                       const light_samples8 *ls, double share)
+{
     ray8 shadow;
-    double n_dot_l[ACCEL_PACKET];
+    double n_dot_l[ACCEL_PACKET], lobe_cosine[ACCEL_PACKET];
     int skip[ACCEL_PACKET];
     bool lit[ACCEL_PACKET];
     int count = 0;
     for (int h = 0; h < ACCEL_PACKET; h += QUAD) {
-        const quad_f64 d[3] = {quad_load(ls.to_light[0] + h), quad_load(ls.to_light[1] + h),
-                               quad_load(ls.to_light[2] + h)};
-        quad_f64 facing = quad_dot(quad_load(ll->n[0] + h), quad_load(ll->n[1] + h), quad_load(ll->n[2] + h), d[0],
-                                   d[1], d[2]);
-        quad_f64 shading = quad_dot(quad_load(ll->ns[0] + h), quad_load(ll->ns[1] + h), quad_load(ll->ns[2] + h),
-                                    d[0], d[1], d[2]);
-        /* shadow_segment's tests: NaN passes them as it did there. */
-        quad_mask faces = quad_from_bools(ls.ok + h) & ~(facing <= 0) & ~(shading <= 0);
-        quad_mask warm = (quad_from_bools(ll->warm[0] + h) & (quad_load(ls.radiance[0] + h) > 0)) |
-                         (quad_from_bools(ll->warm[1] + h) & (quad_load(ls.radiance[1] + h) > 0)) |
-                         (quad_from_bools(ll->warm[2] + h) & (quad_load(ls.radiance[2] + h) > 0));
+        const quad_f64 d[3] = {LANES(ls->to_light[0], h), LANES(ls->to_light[1], h), LANES(ls->to_light[2], h)};
+        const quad_f64 radiance[3] = {LANES(ls->radiance[0], h), LANES(ls->radiance[1], h),
+                                      LANES(ls->radiance[2], h)};
+        quad_f64 facing = quad_dot(LANES(ll->n[0], h), LANES(ll->n[1], h), LANES(ll->n[2], h), d[0], d[1], d[2]);
+        quad_f64 shading = quad_dot(LANES(ll->ns[0], h), LANES(ll->ns[1], h), LANES(ll->ns[2], h), d[0], d[1], d[2]);
+        quad_f64 cosine = quad_lobe_cos(ll, h, d);
+        /* shadow_segment's tests (NaN passes them as it did there), then
+         * phong_reaches's: the diffuse term, or else the lobe. */
+        quad_mask faces = quad_from_bools(ls->ok + h) & ~(facing <= 0) & ~(shading <= 0);
+        quad_mask warm = (quad_from_bools(ll->warm[0] + h) & (radiance[0] > 0)) |
+                         (quad_from_bools(ll->warm[1] + h) & (radiance[1] > 0)) |
+                         (quad_from_bools(ll->warm[2] + h) & (radiance[2] > 0));
+        quad_mask shiny = (quad_from_bools(ll->lobe + h) | quad_from_bools(ll->odd + h)) &
+                          quad_rgb_max_positive(radiance) & (cosine > 0);
+        quad_mask on = faces & (warm | shiny);
+        quad_mask_store(lit + h, on);
         quad_store(n_dot_l + h, shading);
-        /* A lane without a segment keeps its own ray. */
-        quad_store(shadow.ox + h, quad_select(faces, quad_load(ll->origin[0] + h), quad_load(r->ox + h)));
-        quad_store(shadow.oy + h, quad_select(faces, quad_load(ll->origin[1] + h), quad_load(r->oy + h)));
-        quad_store(shadow.oz + h, quad_select(faces, quad_load(ll->origin[2] + h), quad_load(r->oz + h)));
-        quad_store(shadow.dx + h, quad_select(faces, d[0], quad_load(r->dx + h)));
-        quad_store(shadow.dy + h, quad_select(faces, d[1], quad_load(r->dy + h)));
-        quad_store(shadow.dz + h, quad_select(faces, d[2], quad_load(r->dz + h)));
-        if (ll->plain[h / QUAD]) {
-            quad_mask on = faces & warm;
-            quad_mask_store(lit + h, on);
-            memcpy(skip + h, (const int[QUAD]){-1, -1, -1, -1}, sizeof(int[QUAD]));
-            count += (on[0] != 0) + (on[1] != 0) + (on[2] != 0) + (on[3] != 0);
-            continue;
-        }
+        quad_store(lobe_cosine + h, cosine);
+        /* hit_left_behind's shape to skip. */
+        quad_f64 leaving = quad_dot(LANES(ll->surface_n[0], h), LANES(ll->surface_n[1], h),
+                                    LANES(ll->surface_n[2], h), d[0], d[1], d[2]);
+        quad_mask behind = quad_from_bools(ll->flat + h) | (quad_from_bools(ll->convex + h) & (leaving > 0));
         for (int k = 0; k < QUAD; k++) {
-            int i = h + k;
-            lit[i] = faces[k] && (warm[k] || (ll->lobe[i] && phong_reaches(sp[i].m, sp[i].base, sp[i].ns,
-                                                                            ray8_dir(&shadow, i),
-                                                                            v3(-r->dx[i], -r->dy[i], -r->dz[i]),
-                                                                            light_samples8_radiance(&ls, i))));
-            skip[i] = lit[i] && ll->skips[i] ? hit_left_behind(scene, &sp[i].hit, sp[i].s.n, ray8_dir(&shadow, i)) : -1;
-            count += lit[i];
+            skip[h + k] = on[k] && behind[k] ? ll->shape[h + k] : -1;
+            count += on[k] != 0;
         }
+        /* A lane without a segment keeps its own ray. */
+        quad_store(shadow.ox + h, quad_select(on, LANES(ll->origin[0], h), LANES(r->ox, h)));
+        quad_store(shadow.oy + h, quad_select(on, LANES(ll->origin[1], h), LANES(r->oy, h)));
+        quad_store(shadow.oz + h, quad_select(on, LANES(ll->origin[2], h), LANES(r->oz, h)));
+        quad_store(shadow.dx + h, quad_select(on, d[0], LANES(r->dx, h)));
+        quad_store(shadow.dy + h, quad_select(on, d[1], LANES(r->dy, h)));
+        quad_store(shadow.dz + h, quad_select(on, d[2], LANES(r->dz, h)));
     }
     if (!count)
         return;
     t->rays += (unsigned)count;
     color through[ACCEL_PACKET];
-    accel_transmission8(t->acc, &shadow, ls.distance, skip, depth == 0, lit, shadow_filter, t, through);
+    accel_transmission8(t->acc, &shadow, ls->distance, skip, depth == 0, lit, shadow_filter, t, through);
     for (int h = 0; h < ACCEL_PACKET; h += QUAD) {
         const color *th = through + h;
         const quad_f64 passed[3] = {{th[0].r, th[1].r, th[2].r, th[3].r}, {th[0].g, th[1].g, th[2].g, th[3].g},
                                     {th[0].b, th[1].b, th[2].b, th[3].b}};
-        /* light_share's test, rgb_max(through) > 0, and phong_light's
-         * diffuse term: (base * (radiance * share * through)) * (diffuse * n . l). */
-        quad_mask adds = quad_from_bools(lit + h) & ~quad_from_bools(ll->lobe + h) &
-                         ((passed[0] > 0) | (passed[1] > 0) | (passed[2] > 0));
-        quad_f64 weight = quad_load(ll->diffuse + h) * quad_load(n_dot_l + h);
+        /* light_share: nothing unless something passed; then phong_light,
+         * (base * arriving) * (diffuse * n . l) + arriving * (specular *
+         * lobe_pow(cosine, shininess)) where the cosine is above 0, with
+         * arriving = radiance * share * through. */
+        quad_mask adds = quad_from_bools(lit + h) & ~quad_from_bools(ll->odd + h) & quad_rgb_max_positive(passed);
+        quad_f64 weight = LANES(ll->diffuse, h) * LANES(n_dot_l, h);
+        quad_f64 cosine = LANES(lobe_cosine, h);
+        quad_mask shines = quad_from_bools(ll->lobe + h) & (cosine > 0);
+        /* Other lanes' exponents are 0, not whatever a conversion makes of them. */
+        quad_f64 exponent = quad_select(shines, LANES(ll->shininess, h), quad_splat(0));
+        quad_f64 gloss = quad_any(shines) ? LANES(ll->specular, h) * quad_lobe_pow(cosine, exponent) : quad_splat(0);
         for (int c = 0; c < 3; c++) {
-            quad_f64 arriving = quad_load(ls.radiance[c] + h) * share * passed[c];
-            quad_f64 sum = quad_load(ll->direct[c] + h);
-            quad_store(ll->direct[c] + h, quad_select(adds, sum + quad_load(ll->base[c] + h) * arriving * weight, sum));
-        }
-        for (int k = 0; k < QUAD && !ll->plain[h / QUAD]; k++) {
-            int i = h + k;
-            if (!lit[i] || !ll->lobe[i])
-                continue;
-            light_sample one = {ray8_dir(&shadow, i), ls.distance[i],
-                                rgb_scale(light_samples8_radiance(&ls, i), share)};
-            color add = light_share(&sp[i], &one, through[i], v3(-r->dx[i], -r->dy[i], -r->dz[i]));
-            ll->direct[0][i] += add.r;
-            ll->direct[1][i] += add.g;
-            ll->direct[2][i] += add.b;
+            quad_f64 arriving = LANES(ls->radiance[c], h) * share * passed[c];
+            quad_f64 out = LANES(ll->base[c], h) * arriving * weight;
+            out = quad_select(shines, out + arriving * gloss, out);
+            quad_f64 sum = LANES(ll->direct[c], h);
+            quad_store(ll->direct[c] + h, quad_select(adds, sum + out, sum));
         }
     }
+    for (int i = 0; i < ACCEL_PACKET && ll->any_odd; i++) {
+        if (!lit[i] || !ll->odd[i])
+            continue;
+        light_sample one = {ray8_dir(&shadow, i), ls->distance[i],
+                            rgb_scale(light_samples8_radiance(ls, i), share)};
+        color add = light_share(&sp[i], &one, through[i], v3(-r->dx[i], -r->dy[i], -r->dz[i]));
+        ll->direct[0][i] += add.r;
+        ll->direct[1][i] += add.g;
+        ll->direct[2][i] += add.b;
+    }
+}
+
+/* Adds to ll's direct light the light of area light l that reaches each
+ * lane's hit through its sample u (lane i of u[0] and u[1]) where lanes[i]
+ * is set, weighed by `share`. */
+static void area_light_packet(tracer *t, const ray8 *r, const bool lanes[ACCEL_PACKET],
+                              const shade_point sp[ACCEL_PACKET], lit_lanes *ll, int depth, const light *l,
+                              const double u[2][ACCEL_PACKET], double share)
+{
+    light_samples8 ls;
+    l->kind->sample_lanes(l, ll->p, u, lanes, &ls);
+    lit_packet(t, r, sp, ll, depth, &ls, share);
 }
 
 /* Sample j of a point's 2-D pattern, scrambled by seeds (sobol2_seeds_of
@@ -516,7 +586,10 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
 {
     const glint_scene *scene = t->scene;
     /* The area lights' light gathers in ll from the first area light on,
-     * and goes back into direct before a delta light adds its own. */
+     * and goes back into direct before a delta light adds its own: their
+     * lanes one at a time, which four at a time were 6% slower on the
+     * depth of field and 12% on the seed room, gathering their hits for
+     * one or two lights. */
     lit_lanes ll;
     bool described = false, gathering = false;
     for (int l = 0; l < scene->light_count + scene->emitter_count + 1 && !stopping(t); l++) {
@@ -526,7 +599,7 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
         bool area = chosen ? t->choice && t->choice->count > 0 : !li->kind->delta && !t->choice;
         if (area && !gathering) {
             if (!described)
-                lit_lanes_describe(sp, found, &ll);
+                lit_lanes_describe(scene, r, sp, found, &ll);
             described = gathering = true;
             lit_lanes_take(&ll, direct);
         }
