@@ -112,8 +112,15 @@ for c in "${CASES[@]}"; do
     printf '%-8s %-10s %-12s %-10s %-12s %s\n' samples "glint s" "glint noise" "povray s" "povray noise" "povray/glint"
     : >"$WORK/rows"
     for s in 4 9 16 36 64 144 256; do
-        g=$(for _ in $(seq "$RUNS"); do glint_run "$c" "$s" "$WORK/glint.ppm"; done | median)
-        p=$(for _ in $(seq "$RUNS"); do povray_run "$c" "$s" "$WORK/povray.ppm"; done | median)
+        # Alternating, so that both see the same moods of a shared machine.
+        : >"$WORK/glint-times"
+        : >"$WORK/povray-times"
+        for _ in $(seq "$RUNS"); do
+            glint_run "$c" "$s" "$WORK/glint.ppm" >>"$WORK/glint-times"
+            povray_run "$c" "$s" "$WORK/povray.ppm" >>"$WORK/povray-times"
+        done
+        g=$(median <"$WORK/glint-times")
+        p=$(median <"$WORK/povray-times")
         row=$(printf '%-8s %-10s %-12s %-10s %-12s %s' "$s" "$g" "$("$WORK/bench_rmse" "$WORK/glint.ppm" "$WORK/glint-ref.ppm")" \
             "$p" "$("$WORK/bench_rmse" "$WORK/povray.ppm" "$WORK/povray-ref.ppm")" \
             "$(awk -v g="$g" -v p="$p" 'BEGIN { printf "%.2f", p / g }')")
