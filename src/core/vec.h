@@ -74,10 +74,10 @@ static inline ray ray8_get(const ray8 *p, int i)
     return r;
 }
 
-/* Stores r in lane i of a packet. */
 /* Lane i's direction. */
 static inline vec3 ray8_dir(const ray8 *p, int i) { return v3(p->dx[i], p->dy[i], p->dz[i]); }
 
+/* Stores r in lane i of a packet. */
 static inline void ray8_set(ray8 *p, int i, ray r)
 {
     p->ox[i] = r.o.x;

@@ -137,9 +137,17 @@ int shape_max_crossings(const shape *s)
     return s->kind->max_crossings;
 }
 
+void shape_left_behind_rule(const shape *s, bool *always, bool *when_leaving)
+{
+    *always = s->kind->flat;
+    *when_leaving = s->kind->max_crossings <= 2;
+}
+
 bool shape_is_left_behind(const shape *s, vec3 n, vec3 d)
 {
-    return s->kind->flat || (s->kind->max_crossings <= 2 && v3_dot(n, d) > 0);
+    bool always, when_leaving;
+    shape_left_behind_rule(s, &always, &when_leaving);
+    return always || (when_leaving && v3_dot(n, d) > 0);
 }
 
 double shape_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n)

@@ -127,6 +127,11 @@ int shape_max_crossings(const shape *s);
  * and s is convex (no line crosses it more than twice). */
 bool shape_is_left_behind(const shape *s, vec3 n, vec3 d);
 
+/* shape_is_left_behind's rule for s, for callers that apply it to many
+ * directions at once: *always (s is flat), or else *when_leaving (s is
+ * convex: left behind when n . d > 0). */
+void shape_left_behind_rule(const shape *s, bool *always, bool *when_leaving);
+
 /* A point of s's surface in world space for (u1, u2) in [0, 1)^2, *n its
  * unit outward (front) normal; returns the density of such points per
  * unit of world area (the same everywhere for a shape without a transform

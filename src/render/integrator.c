@@ -11,7 +11,6 @@
 #include "shading/environment.h"
 #include "shading/fog.h"
 #include "shading/optics.h"
-#include "geometry/shape_kind.h"
 
 /* New rays start this far off the surface, relative to the scene scale at
  * the point, so they do not hit the surface they leave. */
@@ -249,10 +248,10 @@ __attribute__((always_inline)) static inline void light_packet(tracer *t, const 
 }
 
 /* A packet's shading points as arrays of lanes, gathered once for all the
- * lights and samples that light them, and the direct light they gather
- * (lit_lanes_take, lit_lanes_give): each sample's steps then run a quad
- * of lanes at a time, where one lane at a time they were a quarter of a
- * Cornell box. A lane not found holds zeros. */
+ * samples its lanes take of the area lights, and the direct light they
+ * gather (lit_lanes_take, lit_lanes_give): each sample's steps then run a
+ * quad of lanes at a time, where one lane at a time they were a quarter of
+ * a Cornell box. A lane not found describes no hit: zeros, shape -1. */
 typedef struct lit_lanes {
     double p[3][ACCEL_PACKET];        /* the hit */
     double origin[3][ACCEL_PACKET];   /* where its shadow segments start */
@@ -261,13 +260,13 @@ typedef struct lit_lanes {
     double to_eye[3][ACCEL_PACKET];
     double base[3][ACCEL_PACKET];     /* the surface colour */
     double diffuse[ACCEL_PACKET], specular[ACCEL_PACKET], shininess[ACCEL_PACKET];
-    bool warm[3][ACCEL_PACKET];       /* the diffuse term has channel c: diffuse and base's c above 0 */
-    bool lobe[ACCEL_PACKET];          /* a specular lobe, of a whole exponent (lobe_pow's squarings) */
-    bool odd[ACCEL_PACKET];           /* a lobe of another exponent: light_share adds that lane's light */
-    bool any_odd;
+    bool diffuse_in[3][ACCEL_PACKET]; /* the diffuse term has channel c: diffuse and base's c above 0 */
+    bool lobe[ACCEL_PACKET];          /* a specular lobe of a whole exponent (lobe_pow's squarings) */
+    bool fractional[ACCEL_PACKET];    /* a lobe of another exponent: light_share adds that lane's light */
+    bool any_fractional;
     int shape[ACCEL_PACKET];          /* the hit's shape, or -1 */
-    bool flat[ACCEL_PACKET];          /* a shape that a segment always leaves behind */
-    bool convex[ACCEL_PACKET];        /* a shape left behind by a segment that leaves its outside */
+    bool always_behind[ACCEL_PACKET]; /* shape_left_behind_rule's answers for it */
+    bool behind_when_leaving[ACCEL_PACKET];
     double direct[3][ACCEL_PACKET];   /* the light gathered */
 } lit_lanes;
 
@@ -294,43 +293,43 @@ static void lit_lanes_describe(const glint_scene *scene, const ray8 *r, const sh
             ll->surface_n[c][i] = sn[c];
             ll->to_eye[c][i] = eye[c];
             ll->base[c][i] = base[c];
-            ll->warm[c][i] = m->diffuse > 0 && base[c] > 0;
+            ll->diffuse_in[c][i] = m->diffuse > 0 && base[c] > 0;
         }
         ll->diffuse[i] = m->diffuse;
         ll->specular[i] = m->specular;
         ll->shininess[i] = m->shininess;
         bool whole = m->shininess >= 0 && m->shininess <= 65536 && m->shininess == floor(m->shininess);
         ll->lobe[i] = m->specular > 0 && whole;
-        ll->odd[i] = m->specular > 0 && !whole;
-        ll->any_odd |= ll->odd[i];
+        ll->fractional[i] = m->specular > 0 && !whole;
+        ll->any_fractional |= ll->fractional[i];
         int k = s->hit.shape;
         if (k >= 0) {
-            const shape_kind *kind = scene->shapes[k].kind;
             ll->shape[i] = k;
-            ll->flat[i] = kind->flat;
-            ll->convex[i] = kind->max_crossings <= 2;
+            shape_left_behind_rule(&scene->shapes[k], &ll->always_behind[i], &ll->behind_when_leaving[i]);
         }
     }
 }
 
-/* ll's direct light starts from direct's. */
-static void lit_lanes_take(lit_lanes *ll, const color direct[ACCEL_PACKET])
+/* ll's direct light starts from direct's, lane i where found[i]. */
+static void lit_lanes_take(lit_lanes *ll, const bool found[ACCEL_PACKET], const color direct[ACCEL_PACKET])
 {
     for (int i = 0; i < ACCEL_PACKET; i++) {
-        ll->direct[0][i] = direct[i].r;
-        ll->direct[1][i] = direct[i].g;
-        ll->direct[2][i] = direct[i].b;
+        color d = found[i] ? direct[i] : rgb(0, 0, 0);
+        ll->direct[0][i] = d.r;
+        ll->direct[1][i] = d.g;
+        ll->direct[2][i] = d.b;
     }
 }
 
-/* direct becomes ll's direct light. */
-static void lit_lanes_give(const lit_lanes *ll, color direct[ACCEL_PACKET])
+/* direct[i] becomes ll's direct light where found[i]. */
+static void lit_lanes_give(const lit_lanes *ll, const bool found[ACCEL_PACKET], color direct[ACCEL_PACKET])
 {
     for (int i = 0; i < ACCEL_PACKET; i++)
-        direct[i] = rgb(ll->direct[0][i], ll->direct[1][i], ll->direct[2][i]);
+        if (found[i])
+            direct[i] = rgb(ll->direct[0][i], ll->direct[1][i], ll->direct[2][i]);
 }
 
-/* The quad of lanes h to h + 3 of a lit_lanes array. */
+/* The quad of lanes h to h + 3 of an array of a packet's lanes. */
 #define LANES(array, h) quad_load((array) + (h))
 
 /* rgb_max(c) > 0 for a quad of colours, NaN as there. */
@@ -388,19 +387,20 @@ static void lit_packet(tracer *t, const ray8 *r, const shade_point sp[ACCEL_PACK
         /* shadow_segment's tests (NaN passes them as it did there), then
          * phong_reaches's: the diffuse term, or else the lobe. */
         quad_mask faces = quad_from_bools(ls->ok + h) & ~(facing <= 0) & ~(shading <= 0);
-        quad_mask warm = (quad_from_bools(ll->warm[0] + h) & (radiance[0] > 0)) |
-                         (quad_from_bools(ll->warm[1] + h) & (radiance[1] > 0)) |
-                         (quad_from_bools(ll->warm[2] + h) & (radiance[2] > 0));
-        quad_mask shiny = (quad_from_bools(ll->lobe + h) | quad_from_bools(ll->odd + h)) &
+        quad_mask diffuse = (quad_from_bools(ll->diffuse_in[0] + h) & (radiance[0] > 0)) |
+                            (quad_from_bools(ll->diffuse_in[1] + h) & (radiance[1] > 0)) |
+                            (quad_from_bools(ll->diffuse_in[2] + h) & (radiance[2] > 0));
+        quad_mask shiny = (quad_from_bools(ll->lobe + h) | quad_from_bools(ll->fractional + h)) &
                           quad_rgb_max_positive(radiance) & (cosine > 0);
-        quad_mask on = faces & (warm | shiny);
+        quad_mask on = faces & (diffuse | shiny);
         quad_mask_store(lit + h, on);
         quad_store(n_dot_l + h, shading);
         quad_store(lobe_cosine + h, cosine);
         /* hit_left_behind's shape to skip. */
         quad_f64 leaving = quad_dot(LANES(ll->surface_n[0], h), LANES(ll->surface_n[1], h),
                                     LANES(ll->surface_n[2], h), d[0], d[1], d[2]);
-        quad_mask behind = quad_from_bools(ll->flat + h) | (quad_from_bools(ll->convex + h) & (leaving > 0));
+        quad_mask behind = quad_from_bools(ll->always_behind + h) |
+                           (quad_from_bools(ll->behind_when_leaving + h) & (leaving > 0));
         for (int k = 0; k < QUAD; k++) {
             skip[h + k] = on[k] && behind[k] ? ll->shape[h + k] : -1;
             count += on[k] != 0;
@@ -422,11 +422,12 @@ static void lit_packet(tracer *t, const ray8 *r, const shade_point sp[ACCEL_PACK
         const color *th = through + h;
         const quad_f64 passed[3] = {{th[0].r, th[1].r, th[2].r, th[3].r}, {th[0].g, th[1].g, th[2].g, th[3].g},
                                     {th[0].b, th[1].b, th[2].b, th[3].b}};
-        /* light_share: nothing unless something passed; then phong_light,
+        /* light_share: black unless something passed; then phong_light,
          * (base * arriving) * (diffuse * n . l) + arriving * (specular *
          * lobe_pow(cosine, shininess)) where the cosine is above 0, with
          * arriving = radiance * share * through. */
-        quad_mask adds = quad_from_bools(lit + h) & ~quad_from_bools(ll->odd + h) & quad_rgb_max_positive(passed);
+        quad_mask adds = quad_from_bools(lit + h) & ~quad_from_bools(ll->fractional + h);
+        quad_mask passes = quad_rgb_max_positive(passed);
         quad_f64 weight = LANES(ll->diffuse, h) * LANES(n_dot_l, h);
         quad_f64 cosine = LANES(lobe_cosine, h);
         quad_mask shines = quad_from_bools(ll->lobe + h) & (cosine > 0);
@@ -437,12 +438,14 @@ static void lit_packet(tracer *t, const ray8 *r, const shade_point sp[ACCEL_PACK
             quad_f64 arriving = LANES(ls->radiance[c], h) * share * passed[c];
             quad_f64 out = LANES(ll->base[c], h) * arriving * weight;
             out = quad_select(shines, out + arriving * gloss, out);
+            /* Black, not left out, where nothing passed: + 0 as there. */
+            out = quad_select(passes, out, quad_splat(0));
             quad_f64 sum = LANES(ll->direct[c], h);
             quad_store(ll->direct[c] + h, quad_select(adds, sum + out, sum));
         }
     }
-    for (int i = 0; i < ACCEL_PACKET && ll->any_odd; i++) {
-        if (!lit[i] || !ll->odd[i])
+    for (int i = 0; i < ACCEL_PACKET && ll->any_fractional; i++) {
+        if (!lit[i] || !ll->fractional[i])
             continue;
         light_sample one = {ray8_dir(&shadow, i), ls->distance[i],
                             rgb_scale(light_samples8_radiance(ls, i), share)};
@@ -513,8 +516,8 @@ static double radical_inverse3(uint32_t j)
  * at a time, before tracing them. */
 #define CHOICE_RUN 32
 
-/* Adds to direct[i] the light of the area lights and emitters that reaches
- * the hit sp[i] of each lane found[i] with settings.light_samples samples
+/* Adds to ll's direct light the light of the area lights and emitters that
+ * reaches the hit sp[i] of each lane found[i] with settings.light_samples samples
  * in all (light_choice.h): sample j of lane i goes to the light its
  * number chooses by power, counted divided by that light's chance. The
  * lanes choose their lights for a run of samples first; then each packet
@@ -601,11 +604,11 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
             if (!described)
                 lit_lanes_describe(scene, r, sp, found, &ll);
             described = gathering = true;
-            lit_lanes_take(&ll, direct);
+            lit_lanes_take(&ll, found, direct);
         }
         if (li && li->kind->delta) {
             if (gathering)
-                lit_lanes_give(&ll, direct);
+                lit_lanes_give(&ll, found, direct);
             gathering = false;
             light_packet(t, r, found, sp, depth, li, direct);
         } else if (area && chosen) {
@@ -616,7 +619,7 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
         }
     }
     if (gathering)
-        lit_lanes_give(&ll, direct);
+        lit_lanes_give(&ll, found, direct);
 }
 
 /* Adds to local[i] the ambient term of the hit sp[i] of each lane found[i]

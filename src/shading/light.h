@@ -79,7 +79,8 @@ typedef struct light_sample {
 
 /* An area light's samples at the lanes of a packet, lane i of each
  * array: what light_sample says, by coordinate and by channel. A lane
- * that is not ok holds finite numbers or NaN, never uninitialised ones. */
+ * that is not ok holds numbers (perhaps infinite or NaN), never
+ * uninitialised memory. */
 typedef struct light_samples8 {
     double to_light[3][RAY8];
     double distance[RAY8];
