@@ -542,7 +542,9 @@ static double uniform(uint64_t *state, double lo, double hi)
 /* Each area light's samples for a packet's lanes (kind->sample_lanes,
  * four lanes at a time in vector instructions, by the parallelogram
  * shortcuts of the rectangle light and a one-quad lamp, or a lane at a
- * time) are its samples one at a time (kind->sample), to the bit: the
+ * time: the disk and sphere lights, a lamp of three triangles, a glowing
+ * ball)
+ * are its samples one at a time (kind->sample), to the bit: the
  * renders' samples, whichever way they are taken. */
 static void test_light_lanes_are_its_samples(void **state)
 {
@@ -570,8 +572,11 @@ static void test_light_lanes_are_its_samples(void **state)
                              .triangle_count = k ? 3 : 2, .material = glowing(s, 2)};
         assert_true(glint_scene_add_instance(s, glint_scene_add_mesh(s, NULL, &d, NULL), -1, &up, NULL) >= 0);
     }
+    /* An emissive ball: a shape emitter, sampled by its surface lane by lane. */
+    glint_shape ball = {.kind = GLINT_SHAPE_SPHERE, .center = {1.5, 2, -1}, .radius = 0.5};
+    assert_true(glint_scene_add_shape(s, &ball, glowing(s, 3), NULL, NULL) >= 0);
     assert_int_equal(s->light_count, 3);
-    assert_int_equal(s->emitter_count, 2);
+    assert_int_equal(s->emitter_count, 3);
     assert_int_equal(s->emitters[0].triangle_count, 1); /* the parallelogram */
     assert_int_equal(s->emitters[1].triangle_count, 2);
     uint64_t rng = 7;
@@ -606,7 +611,7 @@ static void test_light_lanes_are_its_samples(void **state)
             }
         }
     }
-    assert_true(compared > 5 * 500 * RAY8 / 4); /* a quarter of the lanes, at least, compared */
+    assert_true(compared > 6 * 500 * RAY8 / 4); /* a quarter of the lanes, at least, compared */
     glint_scene_free(s);
 }
 
