@@ -539,13 +539,12 @@ static double uniform(uint64_t *state, double lo, double hi)
     return lo + (hi - lo) * (double)(*state >> 11) * 0x1.0p-53;
 }
 
-/* Each area light's samples for a packet's lanes (kind->sample_lanes,
- * four lanes at a time in vector instructions, by the parallelogram
- * shortcuts of the rectangle light and a one-quad lamp, or a lane at a
- * time: the disk and sphere lights, a lamp of three triangles, a glowing
- * ball)
- * are its samples one at a time (kind->sample), to the bit: the
- * renders' samples, whichever way they are taken. */
+/* Each area light's samples for a packet's lanes (kind->sample_lanes:
+ * four lanes at a time by the parallelogram shortcuts of the rectangle
+ * light and a one-quad lamp; a lane at a time for the disk and sphere
+ * lights, a lamp of three triangles and a glowing ball) are its samples
+ * one at a time (kind->sample), to the bit, whichever way a render takes
+ * them. */
 static void test_light_lanes_are_its_samples(void **state)
 {
     (void)state;
