@@ -2,6 +2,7 @@
  * through transparent objects, mirror reflection, straight-through
  * transparency, refraction with optional Fresnel, and fog per segment. */
 #include <math.h>
+#include <stddef.h>
 #include <string.h>
 #include "core/hash.h"
 #include "core/sobol.h"
@@ -267,14 +268,16 @@ typedef struct lit_lanes {
     int shape[ACCEL_PACKET];          /* the hit's shape, or -1 */
     bool always_behind[ACCEL_PACKET]; /* shape_left_behind_rule's answers for it */
     bool behind_when_leaving[ACCEL_PACKET];
-    double direct[3][ACCEL_PACKET];   /* the light gathered */
+    double direct[3][ACCEL_PACKET];   /* the light gathered, */
+    bool gathering;                   /* while this is set (lit_lanes_take to lit_lanes_give) */
+    bool described;                   /* the fields above direct are filled */
 } lit_lanes;
 
 /* Fills ll's description of the lanes' hits, seen along r. */
 static void lit_lanes_describe(const glint_scene *scene, const ray8 *r, const shade_point sp[ACCEL_PACKET],
                                const bool found[ACCEL_PACKET], lit_lanes *ll)
 {
-    memset(ll, 0, sizeof *ll);
+    memset(ll, 0, offsetof(lit_lanes, direct));
     for (int i = 0; i < ACCEL_PACKET; i++) {
         ll->shape[i] = -1;
         if (!found[i])
@@ -310,9 +313,16 @@ static void lit_lanes_describe(const glint_scene *scene, const ray8 *r, const sh
     }
 }
 
-/* ll's direct light starts from direct's, lane i where found[i]. */
-static void lit_lanes_take(lit_lanes *ll, const bool found[ACCEL_PACKET], const color direct[ACCEL_PACKET])
+/* Unless ll is gathering already, it starts from direct's light (lane i
+ * where found[i]), its hits described the first time. */
+static void lit_lanes_take(lit_lanes *ll, const glint_scene *scene, const ray8 *r, const shade_point sp[ACCEL_PACKET],
+                           const bool found[ACCEL_PACKET], const color direct[ACCEL_PACKET])
 {
+    if (ll->gathering)
+        return;
+    if (!ll->described)
+        lit_lanes_describe(scene, r, sp, found, ll);
+    ll->described = ll->gathering = true;
     for (int i = 0; i < ACCEL_PACKET; i++) {
         color d = found[i] ? direct[i] : rgb(0, 0, 0);
         ll->direct[0][i] = d.r;
@@ -321,9 +331,13 @@ static void lit_lanes_take(lit_lanes *ll, const bool found[ACCEL_PACKET], const 
     }
 }
 
-/* direct[i] becomes ll's direct light where found[i]. */
-static void lit_lanes_give(const lit_lanes *ll, const bool found[ACCEL_PACKET], color direct[ACCEL_PACKET])
+/* If ll is gathering, direct[i] becomes its light where found[i], and it
+ * stops. */
+static void lit_lanes_give(lit_lanes *ll, const bool found[ACCEL_PACKET], color direct[ACCEL_PACKET])
 {
+    if (!ll->gathering)
+        return;
+    ll->gathering = false;
     for (int i = 0; i < ACCEL_PACKET; i++)
         if (found[i])
             direct[i] = rgb(ll->direct[0][i], ll->direct[1][i], ll->direct[2][i]);
@@ -594,32 +608,24 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
      * depth of field and 12% on the seed room, gathering their hits for
      * one or two lights. */
     lit_lanes ll;
-    bool described = false, gathering = false;
-    for (int l = 0; l < scene->light_count + scene->emitter_count + 1 && !stopping(t); l++) {
-        bool chosen = l == scene->light_count + scene->emitter_count;
+    ll.described = ll.gathering = false;
+    for (int l = 0; l < scene->light_count + scene->emitter_count && !stopping(t); l++) {
         bool emitter = l >= scene->light_count;
-        const light *li = chosen ? NULL : emitter ? &scene->emitters[l - scene->light_count] : &scene->lights[l];
-        bool area = chosen ? t->choice && t->choice->count > 0 : !li->kind->delta && !t->choice;
-        if (area && !gathering) {
-            if (!described)
-                lit_lanes_describe(scene, r, sp, found, &ll);
-            described = gathering = true;
-            lit_lanes_take(&ll, found, direct);
-        }
-        if (li && li->kind->delta) {
-            if (gathering)
-                lit_lanes_give(&ll, found, direct);
-            gathering = false;
+        const light *li = emitter ? &scene->emitters[l - scene->light_count] : &scene->lights[l];
+        if (li->kind->delta) {
+            lit_lanes_give(&ll, found, direct);
             light_packet(t, r, found, sp, depth, li, direct);
-        } else if (area && chosen) {
-            chosen_light_packets(t, r, found, sp, &ll, depth, key);
-        } else if (area) {
+        } else if (!t->choice) {
+            lit_lanes_take(&ll, scene, r, sp, found, direct);
             area_light_packets(t, r, found, sp, &ll, depth, li, l,
                                emitter ? scene->settings.emission_samples : li->desc.samples, key);
         }
     }
-    if (gathering)
-        lit_lanes_give(&ll, found, direct);
+    if (t->choice && t->choice->count > 0 && !stopping(t)) {
+        lit_lanes_take(&ll, scene, r, sp, found, direct);
+        chosen_light_packets(t, r, found, sp, &ll, depth, key);
+    }
+    lit_lanes_give(&ll, found, direct);
 }
 
 /* Adds to local[i] the ambient term of the hit sp[i] of each lane found[i]

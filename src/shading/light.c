@@ -135,19 +135,16 @@ bool light_surface_sample(const light *l, vec3 p, double u1, double u2, light_sa
 }
 
 /* The surface points of lanes `first` to first + 3 for their samples u,
- * into quads; an inactive lane's density is 0. */
+ * into quads; an inactive lane's are any numbers (lane by lane, density 0). */
 static void surface_points_quad(const light *l, const double u[2][RAY8], const bool active[RAY8], int first,
                                 quad_f64 q[3], quad_f64 n[3], quad_f64 *density, quad_f64 glow[3])
 {
-    quad_mask on = quad_from_bools(active + first);
     if (l->kind->surface_quad &&
-        l->kind->surface_quad(l, quad_load(u[0] + first), quad_load(u[1] + first), q, n, density, glow)) {
-        *density = quad_select(on, *density, quad_splat(0));
-        return;
-    }
+        l->kind->surface_quad(l, quad_load(u[0] + first), quad_load(u[1] + first), q, n, density, glow))
+        return; /* an inactive lane's sample is not ok whatever it holds */
     surface_point t[QUAD];
     for (int k = 0; k < QUAD; k++) {
-        if (on[k])
+        if (active[first + k])
             l->kind->surface(l, u[0][first + k], u[1][first + k], &t[k]);
         else
             memset(&t[k], 0, sizeof t[k]); /* density 0: nothing */
