@@ -77,6 +77,39 @@ glint_transform glint_transform_scale(glint_transform t, double x, double y, dou
 /* Returns the point p mapped by t. */
 glint_vec3 glint_transform_point(const glint_transform *t, glint_vec3 p);
 
+/* -------------------------------------------------------------- keyframes */
+
+/* How a keyed value goes from one key to the next. */
+typedef enum glint_interpolation {
+    GLINT_INTERPOLATE_LINEAR = 0, /* in a straight line, at constant speed */
+    GLINT_INTERPOLATE_SMOOTH,     /* a cubic through every key with a continuous slope (C1)
+                                     that never overshoots: between two keys the value stays
+                                     between theirs (Steffen's monotone cubic); flat at the
+                                     first and last key, so it eases in and out */
+    GLINT_INTERPOLATE_STEP        /* each key's value holds until the next key */
+} glint_interpolation;
+
+/* The most numbers a keyed value has (a colour or a vector has 3). */
+#define GLINT_KEY_WIDTH_MAX 4
+
+/* A value that changes with time, given at keys: key i is at times[i]
+ * seconds and has the `width` numbers values[i * width ...]. Before the
+ * first key it is the first key's value, after the last the last's. */
+typedef struct glint_keys {
+    const double *times;      /* count times, finite and increasing */
+    const double *values;     /* count * width finite numbers */
+    int count;                /* at least 1 */
+    int width;                /* 1 to GLINT_KEY_WIDTH_MAX */
+    glint_interpolation interpolate;
+} glint_keys;
+
+/* Checks keys: GLINT_ERR_INVALID naming the first key whose time does not
+ * come after the one before, or the first number that is not finite. */
+glint_status glint_keys_check(const glint_keys *keys, glint_error *err);
+
+/* The value of checked keys at `time` seconds into out[0 .. width - 1]. */
+void glint_keys_value(const glint_keys *keys, double time, double *out);
+
 /* ------------------------------------------------------------------ scene */
 
 typedef struct glint_scene glint_scene;
