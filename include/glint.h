@@ -174,11 +174,15 @@ typedef struct glint_settings {
     int light_samples;         /* 0: each area light and emitter sends its own samples from each
                                   point lit; 1..4096: the point sends this many in all, each to
                                   one of them chosen by its power */
+    int frame_start, frame_end;/* the frames of an animation, 0..10,000,000, end >= start
+                                  (0 and 0: one still, frame 0) */
+    double fps;                /* frames a second, > 0 (24): frame f shows the scene at f / fps
+                                  seconds (glint_load_options.time) */
 } glint_settings;
 
 /* Returns the settings of a new scene: 640x480, 4 spp, regular, box
  * filter, no adaptive sampling, depth 5, black background, white ambient
- * light, seed 0. */
+ * light, seed 0, frame 0 alone at 24 frames a second. */
 glint_settings glint_settings_default(void);
 
 /* Replaces the scene's settings after checking every value. */
@@ -593,6 +597,8 @@ typedef struct glint_load_options {
     glint_report_fn report;   /* NULL: problems are only counted, and err gets the first */
     void *report_user;
     int max_errors;           /* stop after this many problems; 0 means 20 */
+    double time;              /* seconds: the scene as it is then, every keyed value
+                                 (docs/animation.md) at this time; finite */
 } glint_load_options;
 
 /* Loads a YAML scene file (docs/scene-format.md). Returns the scene, or NULL

@@ -60,6 +60,11 @@ static const char USAGE[] =
     "      --texture NAME=FILE\n"
     "                         replace the image of the scene's texture NAME (the seed\n"
     "                         room's is 'moon') with a PNG or JPEG file\n"
+    "      --frame N          render frame N of an animated scene (docs/animation.md)\n"
+    "      --frames A-B       render frames A to B, each to the output's name with its\n"
+    "                         #s replaced by the frame's number (-o out-####.png)\n"
+    "                         (default: the scene's frames, else frame 0)\n"
+    "      --resume           skip the frames whose image files are there and whole\n"
     "      --partial          when interrupted, write the finished tiles (the rest\n"
     "                         black) instead of nothing, and still exit 4\n"
     "      --display          show the image in a window as it renders, and keep it\n"
@@ -266,11 +271,37 @@ static int parse_format(cli_options *o, const char *v)
     return cli_complain(CLI_EXIT_USAGE, "--format needs %s, got '%s'", words, v);
 }
 
+/* --frame N and --frames A-B: frames numbered as settings.frames's. */
+static int parse_frames(cli_options *o, const char *flag, const char *v)
+{
+    const param *p = params_find(frames_params(), "end");
+    long long lo = (long long)p->lo, hi = (long long)p->hi, first, last;
+    char copy[48];
+    const char *dash = strchr(v, '-');
+    bool range = strcmp(flag, "--frames") == 0;
+    if (!range && parse_int(v, lo, hi, &first)) {
+        o->frame_first = o->frame_last = first;
+        return 0;
+    }
+    if (range && dash && (size_t)(dash - v) < sizeof copy) {
+        memcpy(copy, v, (size_t)(dash - v));
+        copy[dash - v] = '\0';
+        if (parse_int(copy, lo, hi, &first) && parse_int(dash + 1, lo, hi, &last) && last >= first) {
+            o->frame_first = first;
+            o->frame_last = last;
+            return 0;
+        }
+    }
+    return range ? cli_complain(CLI_EXIT_USAGE, "--frames needs FIRST-LAST, frames from %lld to %lld with LAST at "
+                                                "least FIRST, got '%s'", lo, hi, v)
+                 : cli_complain(CLI_EXIT_USAGE, "--frame needs a whole number from %lld to %lld, got '%s'", lo, hi, v);
+}
+
 /* Whether a is a flag that takes no value. */
 static bool is_switch(const char *a)
 {
     static const char *const SWITCHES[] = {"--help", "--version", "-q", "--quiet", "--check", "--partial",
-                                             "--print-scene", "--display"};
+                                             "--print-scene", "--display", "--resume"};
     for (size_t k = 0; k < sizeof SWITCHES / sizeof SWITCHES[0]; k++)
         if (strcmp(a, SWITCHES[k]) == 0)
             return true;
@@ -281,7 +312,7 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
 {
     *o = (cli_options){.width = -1, .height = -1, .spp = -1, .depth = -1,
                        .threads = -1, .seed = -1, .sampler = -1, .filter = -1, .exr_pixel = -1, .bit_depth = -1,
-                       .view = -1};
+                       .view = -1, .frame_first = -1, .frame_last = -1};
     /* The scene files move to argv[1] on: no slot is written before it is read. */
     int files = 0;
     for (int i = 1; i < argc; i++) {
@@ -329,6 +360,10 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
             o->display = true;
             continue;
         }
+        if (strcmp(a, "--resume") == 0) {
+            o->resume = true;
+            continue;
+        }
         if (a[0] != '-' || a[1] == '\0') {
             for (int k = 0; k < files; k++)
                 if (strcmp(a, "-") == 0 && strcmp(argv[1 + k], "-") == 0)
@@ -346,7 +381,8 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
             if (strcmp(a, WORD_FLAGS[k].name) == 0)
                 wf = &WORD_FLAGS[k];
         bool takes_value = nf || wf || strcmp(a, "-o") == 0 || strcmp(a, "--output") == 0 ||
-                           strcmp(a, "--texture") == 0 || strcmp(a, "--format") == 0 || strcmp(a, "--exposure") == 0;
+                           strcmp(a, "--texture") == 0 || strcmp(a, "--format") == 0 || strcmp(a, "--exposure") == 0 ||
+                           strcmp(a, "--frame") == 0 || strcmp(a, "--frames") == 0;
         if (!takes_value)
             return cli_complain(CLI_EXIT_USAGE, "unknown option '%s' (try 'glint --help')", a);
         if (!attached && i + 1 >= argc)
@@ -361,6 +397,10 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
             char what[160];
             if (!parse_word_flag(wf, v, (int *)((char *)o + wf->field), what, sizeof what))
                 return cli_complain(CLI_EXIT_USAGE, "%s needs %s, got '%s'", wf->name, what, v);
+        } else if (strcmp(a, "--frame") == 0 || strcmp(a, "--frames") == 0) {
+            int code = parse_frames(o, a, v);
+            if (code)
+                return code;
         } else if (strcmp(a, "--texture") == 0 || strcmp(a, "--format") == 0 || strcmp(a, "--exposure") == 0) {
             int code = strcmp(a, "--texture") == 0  ? parse_texture_swap(o, v)
                        : strcmp(a, "--format") == 0 ? parse_format(o, v)
@@ -390,6 +430,8 @@ int cli_parse_args(int argc, char **argv, cli_options *o)
     if (o->display && (o->check || o->print_scene))
         return cli_complain(CLI_EXIT_USAGE, "--display shows a render, and %s renders nothing",
                             o->check ? "--check" : "--print-scene");
+    if (o->display && o->frame_last > o->frame_first)
+        return cli_complain(CLI_EXIT_USAGE, "--display shows one frame: give --frame N");
     if (o->view >= 0 && !o->scene)
         return cli_complain(CLI_EXIT_USAGE, "--view needs a model file");
     if (o->view >= 0 && !glint_is_model_path(o->scene))

@@ -41,6 +41,8 @@ typedef struct cli_options {
     int view;                                           /* -1: not given, else a glint_model_view */
     bool exposure_given;
     double exposure;                                    /* --exposure, in stops, when given */
+    long long frame_first, frame_last; /* --frame, --frames: -1, the scene's own frames */
+    bool resume;                /* skip the frames whose files are there, complete */
     bool quiet;
     bool partial;
     bool display;               /* show the image in a window as it renders (display.h) */

@@ -11,6 +11,7 @@
 #include "glint.h"
 #include "cli/args.h"
 #include "cli/display.h"
+#include "cli/frames.h"
 #include "cli/reports.h"
 #include "cli/setup.h"
 
@@ -36,35 +37,16 @@ static void on_signal(int sig)
     }
 }
 
-static int run(const cli_options *o)
+/* Renders the run's scene to its destination, as frame `frame` of f when
+ * f has several (said in the progress line and the summary); the exit
+ * code. */
+static int render_one(const cli_options *o, cli_run *r, display *window, const cli_frames *f, int frame)
 {
-    /* Image bytes on a terminal are a mistake, found before the work. */
-    if (o->output && strcmp(o->output, "-") == 0 && isatty(STDOUT_FILENO))
-        return cli_complain(CLI_EXIT_USAGE, "will not write a%s %s image to a terminal; redirect stdout or give -o FILE",
-                            o->format && strchr("AEIOU", o->format->name[0]) ? "n" : "",
-                            o->format ? o->format->name : "PNG");
-    /* The window's SDL starts while the scene loads. */
-    int code;
-    display *window = NULL;
-    if (o->display && !(window = display_start(&interrupted, &code)))
-        return code;
-    cli_run r;
-    code = cli_prepare(o, true, &r);
-    if (code >= 0) {
-        display_close(window);
-        return code;
-    }
-    if (o->print_scene)
-        return cli_print_scene(r.scene, o->output);
-    if (window && !display_show(window, o, &r, &code)) {
-        glint_scene_free(r.scene);
-        return code;
-    }
-
     /* From here on a signal cancels the render (its BVH build included),
      * which then writes nothing, or with --partial its finished tiles. */
     rendering = 1;
-    cli_progress prog = {.last_print = -1};
+    cli_progress prog = {.last_print = -1, .frame = frame, .frames = f->last - f->first + 1,
+                         .frames_done = frame - f->first};
     clock_gettime(CLOCK_MONOTONIC, &prog.start);
     glint_render_options ro = {.threads = o->threads > 0 ? (int)o->threads : 0,
                                .cancel = (const volatile int *)&interrupted, .keep_partial = o->partial};
@@ -79,40 +61,124 @@ static int run(const cli_options *o)
     glint_image image;
     glint_render_stats stats;
     glint_error err = {0};
-    glint_status st = glint_render(r.scene, &ro, &image, &stats, &err);
+    glint_status st = glint_render(r->scene, &ro, &image, &stats, &err);
     if (ro.progress && st == GLINT_ERR_CANCELLED)
         fputs("\r\033[K", stderr); /* the progress line stopped short */
     if (st == GLINT_ERR_CANCELLED) {
-        display_close(window);
-        code = cli_interrupted(o, &r, &image, stats.tiles_done, stats.tiles_total);
+        int code = cli_interrupted(o, r, &image, stats.tiles_done, stats.tiles_total);
         glint_image_free(&image);
-        glint_scene_free(r.scene);
         return code;
     }
     if (!st)
-        st = cli_write_image(&r, &image, &err);
+        st = cli_write_image(r, &image, &err);
     glint_image_free(&image);
-    if (st) {
-        display_close(window);
-        glint_scene_free(r.scene);
+    if (st)
         return cli_complain(cli_exit_code_of(st), "%s", err.message);
-    }
     cli_warn_nan(stats.nan_samples);
     if (!o->quiet) {
-        const glint_settings *settings = &r.settings;
+        const glint_settings *settings = &r->settings;
         long threads = o->threads > 0 ? (long)o->threads : sysconf(_SC_NPROCESSORS_ONLN);
-        fprintf(stderr, "glint: %dx%d, %d spp, %ld thread%s: %.3f s, %llu samples, %llu rays, %.1f Mrays/s -> %s\n",
-                settings->width, settings->height, settings->samples_per_pixel, threads, threads == 1 ? "" : "s",
+        char which[64] = "";
+        if (f->last > f->first)
+            snprintf(which, sizeof which, "frame %d (%d of %d), ", frame, frame - f->first + 1, f->last - f->first + 1);
+        fprintf(stderr, "glint: %s%dx%d, %d spp, %ld thread%s: %.3f s, %llu samples, %llu rays, %.1f Mrays/s -> %s\n",
+                which, settings->width, settings->height, settings->samples_per_pixel, threads, threads == 1 ? "" : "s",
                 stats.seconds, (unsigned long long)stats.samples, (unsigned long long)stats.rays,
-                stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, r.dest.shown);
+                stats.seconds > 0 ? stats.rays / stats.seconds * 1e-6 : 0.0, r->dest.shown);
     }
-    /* The image is written: the window stays until the user closes it. */
-    if (window) {
+    if (window)
         display_finished(window, stats.seconds);
-        display_wait(window);
+    return CLI_EXIT_OK;
+}
+
+/* Points the run's destination at frame `frame`'s file, named from the
+ * output's pattern, and checks that it is none of the scene's inputs; -1 to
+ * go on, or the exit code after complaining. */
+static int aim_at_frame(cli_run *r, const char *pattern, int frame, char *path, size_t size)
+{
+    if (strcmp(pattern, "-") == 0)
+        return -1;
+    if (!cli_frame_path(pattern, frame, path, size))
+        return cli_complain(CLI_EXIT_USAGE, "the output name '%s' is too long", pattern);
+    r->dest.path = r->dest.shown = path;
+    glint_error err = {0};
+    if (glint_scene_check_output(r->scene, path, &err))
+        return cli_complain(CLI_EXIT_IO, "%s", err.message);
+    return -1;
+}
+
+static int run(const cli_options *o)
+{
+    /* Image bytes on a terminal are a mistake, found before the work. */
+    if (o->output && strcmp(o->output, "-") == 0 && isatty(STDOUT_FILENO))
+        return cli_complain(CLI_EXIT_USAGE, "will not write a%s %s image to a terminal; redirect stdout or give -o FILE",
+                            o->format && strchr("AEIOU", o->format->name[0]) ? "n" : "",
+                            o->format ? o->format->name : "PNG");
+    /* The window's SDL starts while the scene loads. */
+    int code;
+    display *window = NULL;
+    if (o->display && !(window = display_start(&interrupted, &code)))
+        return code;
+    /* Loaded at time 0 first: the frames and their rate are the scene's. */
+    cli_run r;
+    code = cli_prepare(o, true, 0, &r);
+    if (code >= 0) {
+        display_close(window);
+        return code;
+    }
+    cli_frames f;
+    char pattern[4096], path[4096];
+    snprintf(pattern, sizeof pattern, "%s", r.dest.path); /* the path may point into the scene */
+    if ((code = cli_frames_choose(o, &r.settings, pattern, &f)) >= 0 ||
+        (f.last > f.first && strcmp(o->scene ? o->scene : "", "-") == 0 &&
+         (code = cli_complain(CLI_EXIT_USAGE, "frames %d to %d need the scene in a file: standard input is read once",
+                              f.first, f.last)) >= 0)) {
+        display_close(window);
+        glint_scene_free(r.scene);
+        return code;
+    }
+    for (int frame = f.first; frame <= f.last; frame++) {
+        double time = cli_frame_time(&f, frame);
+        if (time != 0) {
+            glint_scene_free(r.scene);
+            r.scene = NULL;
+            if ((code = cli_prepare(o, true, time, &r)) >= 0)
+                break;
+        }
+        if (o->print_scene) {
+            /* This frame's scene, every keyed value fixed: a still. */
+            r.settings.frame_start = r.settings.frame_end = 0;
+            glint_error err = {0};
+            if (glint_scene_set_settings(r.scene, &r.settings, &err)) {
+                glint_scene_free(r.scene);
+                return cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
+            }
+            return cli_print_scene(r.scene, o->output); /* frees the scene */
+        }
+        if ((code = aim_at_frame(&r, pattern, frame, path, sizeof path)) >= 0)
+            break;
+        if (frame == f.first && window && !display_show(window, o, &r, &code)) {
+            window = NULL; /* closed */
+            break;
+        }
+        if (o->resume && strcmp(path, "-") != 0 && cli_frame_done(path)) {
+            if (!o->quiet)
+                fprintf(stderr, "glint: frame %d is done: %s\n", frame, path);
+            continue;
+        }
+        if ((code = render_one(o, &r, window, &f, frame)) != CLI_EXIT_OK)
+            break;
+    }
+    if (code < 0 || code == CLI_EXIT_OK) {
+        code = CLI_EXIT_OK;
+        /* The image is written: the window stays until the user closes it. */
+        if (window)
+            display_wait(window);
+    } else {
+        display_close(window);
     }
     glint_scene_free(r.scene); /* last: output may point into it */
-    return CLI_EXIT_OK;
+    return code;
 }
 
 int main(int argc, char **argv)

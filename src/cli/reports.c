@@ -31,7 +31,7 @@ static void print_count(const char *before, long long n, const char *one, const 
 static int check_one(const cli_options *o, const char *path)
 {
     int code;
-    glint_scene *scene = cli_load_scene(o, path, "not valid", true, &code);
+    glint_scene *scene = cli_load_scene(o, path, 0, "not valid", true, &code);
     if (!scene)
         return code;
     glint_scene_counts c = glint_scene_get_counts(scene);

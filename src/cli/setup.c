@@ -50,7 +50,8 @@ const char *cli_scene_name(const char *path)
     return strcmp(path, "-") == 0 ? "<stdin>" : path;
 }
 
-glint_scene *cli_load_scene(const cli_options *o, const char *path, const char *outcome, bool warnings, int *code)
+glint_scene *cli_load_scene(const cli_options *o, const char *path, double time, const char *outcome, bool warnings,
+                            int *code)
 {
     glint_error err = {0};
     glint_scene *scene;
@@ -68,7 +69,8 @@ glint_scene *cli_load_scene(const cli_options *o, const char *path, const char *
             cli_complain(CLI_EXIT_BAD_INPUT, "%s", err.message);
     } else {
         int problems = 0;
-        glint_load_options lo = {.report = print_problem, .report_user = &problems, .max_errors = MAX_PROBLEMS};
+        glint_load_options lo = {.report = print_problem, .report_user = &problems, .max_errors = MAX_PROBLEMS,
+                                 .time = time};
         scene = from_stdin ? glint_scene_load_stream(stdin, name, &lo, &err) : glint_scene_load_file(path, &lo, &err);
         if (!scene)
             cli_complain(CLI_EXIT_BAD_INPUT, "%s: %d problem%s%s; %s", name, problems, problems == 1 ? "" : "s",
@@ -139,17 +141,25 @@ void cli_show_progress(void *user, int done, int total)
         return;
     p->last_print = elapsed;
     double left = done > 0 ? elapsed * (total - done) / done : 0;
-    fprintf(stderr, "\r%3d%%  %.1f s elapsed, %.1f s left   ", (int)(100.0 * done / total), elapsed, left);
+    if (p->frames > 1) {
+        /* The frames after this one, each as long as this one looks to be. */
+        double frame = done > 0 ? elapsed * total / done : 0;
+        left += frame * (p->frames - p->frames_done - 1);
+        fprintf(stderr, "\rframe %d: %3d%%, %d of %d frames done, %.1f s left   ", p->frame,
+                (int)(100.0 * done / total), p->frames_done, p->frames, left);
+    } else {
+        fprintf(stderr, "\r%3d%%  %.1f s elapsed, %.1f s left   ", (int)(100.0 * done / total), elapsed, left);
+    }
     if (done == total)
         fputs("\r\033[K", stderr);
     fflush(stderr);
 }
 
-int cli_prepare(const cli_options *o, bool with_output, cli_run *r)
+int cli_prepare(const cli_options *o, bool with_output, double time, cli_run *r)
 {
     glint_error err = {0};
     int code = CLI_EXIT_INTERNAL;
-    glint_scene *scene = o->scene ? cli_load_scene(o, o->scene, "nothing rendered", with_output, &code)
+    glint_scene *scene = o->scene ? cli_load_scene(o, o->scene, time, "nothing rendered", with_output, &code)
                                   : glint_scene_seed_room(&err);
     if (!scene)
         return o->scene ? code : cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);

@@ -29,15 +29,19 @@ typedef struct cli_run {
 } cli_run;
 
 /* The progress line's state: when the render began and when the line was
- * last printed (-1: never). */
+ * last printed (-1: never); in a sequence of more than one frame, this
+ * render's frame, the frames in all and those done before it. */
 typedef struct cli_progress {
     struct timespec start;
     double last_print;
+    int frame, frames, frames_done;
 } cli_progress;
 
 /* A glint_progress_fn (user a cli_progress): the share done, the time
  * elapsed and the time left, on one line of stderr rewritten at most ten
- * times a second, and cleared once done == total. */
+ * times a second, and cleared once done == total; in a sequence, the
+ * frame, the frames done and the time left for the rest of the sequence,
+ * each frame taken to cost what this one does. */
 void cli_show_progress(void *user, int done, int total);
 
 /* The exit code for a failed library call's status (args.h's codes). */
@@ -46,16 +50,18 @@ int cli_exit_code_of(glint_status s);
 /* The name of a scene file in messages: "<stdin>" for '-'. */
 const char *cli_scene_name(const char *path);
 
-/* Loads the scene file, or standard input for '-' (or builds a scene
+/* Loads the scene file, or standard input for '-', as it is at `time`
+ * seconds (glint_load_options.time) (or builds a scene
  * around a model file, seen as o asks and framed for the image size it
  * gives), printing every problem and a last line saying what became of the
  * run (`outcome`); then the scene's warnings, when `warnings`. NULL after
  * reporting, with *code the exit code: bad input, or an internal failure
  * when memory ran out. */
-glint_scene *cli_load_scene(const cli_options *o, const char *path, const char *outcome, bool warnings, int *code);
+glint_scene *cli_load_scene(const cli_options *o, const char *path, double time, const char *outcome, bool warnings,
+                            int *code);
 
-/* Everything before rendering, as the flags in o ask: the scene (o's file,
- * else the seed room) loaded, the --texture swaps and the settings' flags
+/* Everything before rendering, as the flags in o ask: the scene (o's file
+ * as it is at `time` seconds, else the seed room) loaded, the --texture swaps and the settings' flags
  * applied, and, when `with_output`, the destination chosen and checked (a
  * --format agreeing with the path's extension, a path that can be written
  * and is none of the scene's inputs; the last not for --print-scene).
@@ -63,7 +69,7 @@ glint_scene *cli_load_scene(const cli_options *o, const char *path, const char *
  * scene's warnings are not printed either: rank 0 prints them. Returns -1
  * with *r filled, or the exit code after complaining on stderr with
  * nothing left to free. */
-int cli_prepare(const cli_options *o, bool with_output, cli_run *r);
+int cli_prepare(const cli_options *o, bool with_output, double time, cli_run *r);
 
 /* Writes the image to the run's destination (a file through a temporary
  * name and a rename, or standard output). */

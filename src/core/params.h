@@ -54,6 +54,8 @@ typedef struct param {
      * messages. */
     bool (*rule)(double v);
     const char *rule_text;
+    bool constant;            /* a number, vector or colour that cannot change with time
+                                 (keyed values: docs/animation.md) */
     const char *meaning;      /* one line, for the docs */
     /* The docs' words for a default that depends on more than the key (a
      * mapping centred on its shape), or NULL: def is shown. */

@@ -77,7 +77,7 @@ static int report_only(const cli_options *o)
     if (o->check)
         return cli_reported(cli_check_only(o));
     cli_run r;
-    int code = cli_prepare(o, true, &r);
+    int code = cli_prepare(o, true, 0, &r);
     return cli_reported(code >= 0 ? code : cli_print_scene(r.scene, o->output));
 }
 
@@ -189,7 +189,14 @@ static glint_status load_flags_scene(void *user, bool rank0, glint_error *err)
     else if (rank0 && l->o->display && !(l->window = display_start(&interrupted, &l->code)))
         ; /* said */
     else {
-        l->code = cli_prepare(l->o, rank0, l->run);
+        l->code = cli_prepare(l->o, rank0, 0, l->run);
+        const glint_settings *s = &l->run->settings;
+        if (l->code < 0 && (l->o->frame_first >= 0 || l->o->resume || s->frame_end > s->frame_start)) {
+            l->code = cli_complain(CLI_EXIT_USAGE, "glint-mpi renders one still, at time 0; render an animation's "
+                                                   "frames with glint");
+            glint_scene_free(l->run->scene);
+            l->run->scene = NULL;
+        }
         if (l->code >= 0)
             display_close(l->window);
         if (l->code >= 0 || (l->window && !display_show(l->window, l->o, l->run, &l->code)))

@@ -133,6 +133,11 @@ const char *sampling_rule_broken(const glint_settings *s, glint_error *err);
  * box by default, and the radius, 0 for the type's own. */
 param_table filter_params(void);
 
+/* The keys of settings.frames (offsets into glint_settings): the first
+ * and last frame of a sequence, 0 and 0 by default, and the frames a
+ * second, 24. */
+param_table frames_params(void);
+
 /* The keys of settings.adaptive (offsets into glint_settings), with the
  * defaults they have when it is given: threshold 0.05, 64 samples at most. */
 param_table adaptive_params(void);

@@ -126,6 +126,24 @@ static const param ADAPTIVE_PARAMS[] = {
      .hi = 4096, .meaning = "the most samples a pixel takes, at least samples"},
 };
 
+/* The most frames a sequence's numbers reach: ten million, over four
+ * days at 24 frames a second. */
+#define MAX_FRAME 10000000
+
+static const param FRAMES_PARAMS[] = {
+    {.key = "start", .type = PARAM_INTEGER, SETTING(frame_start), .lo = 0, .hi = MAX_FRAME,
+     .meaning = "the first frame"},
+    {.key = "end", .type = PARAM_INTEGER, SETTING(frame_end), .lo = 0, .hi = MAX_FRAME,
+     .meaning = "the last frame, at least start"},
+    {.key = "fps", .type = PARAM_NUMBER, SETTING(fps), .def = {24}, .lo = 0, .hi = 1e6, .bounds = PARAM_OPEN_LOW,
+     .constant = true, .meaning = "frames a second: frame f shows the scene at f / fps seconds"},
+};
+
+param_table frames_params(void)
+{
+    return PARAM_TABLE(FRAMES_PARAMS);
+}
+
 param_table adaptive_params(void)
 {
     return PARAM_TABLE(ADAPTIVE_PARAMS);
@@ -164,6 +182,7 @@ glint_settings glint_settings_default(void)
     glint_settings s;
     memset(&s, 0, sizeof s);
     params_defaults(settings_params(), &s);
+    params_defaults(frames_params(), &s);
     return s;
 }
 
@@ -209,6 +228,11 @@ glint_status settings_validate(const glint_settings *s, glint_error *err)
         st = params_check(filter_params(), s, "filter", err);
     if (!st && s->adaptive_max_samples != 0)
         st = params_check(adaptive_params(), s, "adaptive", err);
+    if (!st)
+        st = params_check(frames_params(), s, "frames", err);
+    if (!st && s->frame_end < s->frame_start)
+        st = error_set(err, GLINT_ERR_INVALID, "frames: 'end' (%d) comes before 'start' (%d)", s->frame_end,
+                       s->frame_start);
     if (st)
         return st;
     if (sampling_rule_broken(s, err))

@@ -40,6 +40,7 @@ typedef struct loader {
     long alias_nodes;                            /* nodes the aliases of all files add */
     char **paths;                                /* files named by keys, resolved: freed at the end */
     size_t path_count, path_cap;
+    double time;                                 /* seconds: keyed values are read as they are then */
     bool streaming;                              /* objects read while parsed: an attempt, silent,
                                                     given up at any problem (scene_file.c) */
 } loader;
@@ -72,6 +73,14 @@ static inline bool ok(const loader *l)
 }
 
 /* ------------------------------------------------------ read_values.c */
+
+/* Whether n is a keyed value: a map with 'keys' (read_param reads it as
+ * it is at the loader's time). */
+bool is_keyed(loader *l, const ynode *n);
+
+/* Reads n, the value of parameter p, into its field of obj (at p->offset),
+ * checked against p; as it is at the loader's time when keyed. */
+bool read_param(loader *l, const ynode *n, const param *p, void *obj);
 
 /* A required number, reported where it is missing or not a number. */
 bool need_number(loader *l, const ynode *map, const char *key, const char *what, double *out);

@@ -1,6 +1,7 @@
 /* read_objects.c - the scene file's objects: shapes of every registered
  * kind, groups with their transforms and materials, and model files. */
 #include <errno.h>
+#include <float.h>
 #include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -40,7 +41,36 @@ static glint_transform then(const glint_transform *t, const glint_transform *m)
     return xf_is_identity(t) ? *m : xf_is_identity(m) ? *t : xf_mul(m, t);
 }
 
-/* One step of a transform, applied to *t; false after a report. */
+/* The value v of a transform step's `key`, a number or a vector (type),
+ * keyed or not. */
+static bool step_value(loader *l, const ynode *v, const char *key, param_type type, void *out)
+{
+    const param p = {.key = key, .type = type, .lo = -DBL_MAX, .hi = DBL_MAX};
+    return read_param(l, v, &p, out);
+}
+
+/* A step's scale: one number for all three axes, or a vector; keyed, the
+ * first key's value says which. */
+static bool step_scale(loader *l, const ynode *v, vec3 *out)
+{
+    const ynode *first = v;
+    if (is_keyed(l, v)) {
+        const ynode *keys = yr_get(&l->r, v, "keys");
+        if (keys->kind == YNODE_SEQUENCE && keys->count > 0 && keys->items[0]->kind == YNODE_SEQUENCE &&
+            keys->items[0]->count == 2)
+            first = keys->items[0]->items[1];
+    }
+    if (first->kind != YNODE_SCALAR)
+        return step_value(l, v, "scale", PARAM_VEC3, out);
+    double a;
+    if (!step_value(l, v, "scale", PARAM_NUMBER, &a))
+        return false;
+    *out = v3(a, a, a);
+    return true;
+}
+
+/* One step of a transform, applied to *t, with keyed values as they are at
+ * the loader's time; false after a report. */
 static bool read_step(loader *l, const ynode *step, glint_transform *t)
 {
     static const char *const steps[] = {"translate", "rotate", "rotate_x", "rotate_y", "rotate_z", "scale", "matrix"};
@@ -55,7 +85,7 @@ static bool read_step(loader *l, const ynode *step, glint_transform *t)
     vec3 vec;
     double a;
     if (k == 0) {
-        if (!yr_vec3(&l->r, v, "translate", &vec))
+        if (!step_value(l, v, "translate", PARAM_VEC3, &vec))
             return false;
         *t = glint_transform_translate(*t, vec.x, vec.y, vec.z);
     } else if (k == 1) {
@@ -63,27 +93,22 @@ static bool read_step(loader *l, const ynode *step, glint_transform *t)
             return false;
         yr_check_keys(&l->r, v, "rotate", rotate_keys, COUNT(rotate_keys));
         const ynode *axis = yr_need(&l->r, v, "axis", "rotate"), *angle = yr_need(&l->r, v, "angle", "rotate");
-        bool good = axis && yr_vec3(&l->r, axis, "axis", &vec);
+        bool good = axis && step_value(l, axis, "axis", PARAM_VEC3, &vec);
         if (good && v3_length(vec) == 0) {
             diag_at(&l->d, axis, "'axis' must not be zero");
             good = false;
         }
-        if (!(angle && yr_number(&l->r, angle, "angle", &a)) || !good)
+        if (!(angle && step_value(l, angle, "angle", PARAM_NUMBER, &a)) || !good)
             return false;
         *t = glint_transform_rotate(*t, vec, a);
     } else if (k >= 2 && k <= 4) {
-        if (!yr_number(&l->r, v, steps[k], &a))
+        if (!step_value(l, v, steps[k], PARAM_NUMBER, &a))
             return false;
         vec3 axis = v3(k == 2, k == 3, k == 4);
         *t = glint_transform_rotate(*t, axis, a);
     } else if (k == 5) {
-        if (v->kind == YNODE_SCALAR) {
-            if (!yr_number(&l->r, v, "scale", &a))
-                return false;
-            vec = v3(a, a, a);
-        } else if (!yr_vec3(&l->r, v, "scale", &vec)) {
+        if (!step_scale(l, v, &vec))
             return false;
-        }
         if (vec.x == 0 || vec.y == 0 || vec.z == 0) {
             diag_at(&l->d, v, "'scale' must not be zero");
             return false;
@@ -91,6 +116,10 @@ static bool read_step(loader *l, const ynode *step, glint_transform *t)
         *t = glint_transform_scale(*t, vec.x, vec.y, vec.z);
     } else if (k == 6) {
         glint_transform m;
+        if (is_keyed(l, v)) {
+            diag_at(&l->d, v, "'matrix' cannot change with time: key its steps (translate, rotate, scale)");
+            return false;
+        }
         if (!read_matrix(l, v, &m))
             return false;
         *t = then(t, &m);

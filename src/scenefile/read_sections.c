@@ -24,7 +24,7 @@ static void read_settings_map(loader *l, const ynode *settings, const char *key,
 
 void read_settings(loader *l, const ynode *n)
 {
-    static const char *const extra_keys[] = {"output", "ambient_occlusion", "filter", "adaptive"};
+    static const char *const extra_keys[] = {"output", "ambient_occlusion", "filter", "adaptive", "frames"};
     if (!yr_is_map(&l->r, n, "settings"))
         return;
     l->settings_node = n;
@@ -35,6 +35,11 @@ void read_settings(loader *l, const ynode *n)
     read_settings_map(l, n, "ambient_occlusion", occlusion_params());
     read_settings_map(l, n, "filter", filter_params());
     read_settings_map(l, n, "adaptive", adaptive_params());
+    read_settings_map(l, n, "frames", frames_params());
+    const ynode *frames = yr_get(&l->r, n, "frames");
+    if (frames && l->settings.frame_end < l->settings.frame_start)
+        diag_at(&l->d, frames, "frames: 'end' (%d) comes before 'start' (%d)", l->settings.frame_end,
+                l->settings.frame_start);
     /* Told at the key it is about, and mended so that it is told once. */
     glint_error err;
     const char *key = sampling_rule_broken(&l->settings, &err);
@@ -70,7 +75,8 @@ void read_camera(loader *l, const ynode *n)
     yr_check_keys(&l->r, n, "camera", keys, count);
     read_params(l, n, camera_params(), "camera", &l->camera);
     const ynode *focus = yr_get(&l->r, n, "focus_on");
-    if (focus && yr_vec3(&l->r, focus, "focus_on", &l->focus_on))
+    static const param focus_on = {.key = "focus_on", .type = PARAM_VEC3};
+    if (focus && read_param(l, focus, &focus_on, &l->focus_on))
         l->focus_on_node = focus;
 }
 

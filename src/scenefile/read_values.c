@@ -65,10 +65,88 @@ char *relative_to(const char *from, const char *path)
 }
 
 
-/* Reads n, the value of parameter p, into its field of obj. */
-static bool read_param(loader *l, const ynode *n, const param *p, void *obj)
+bool is_keyed(loader *l, const ynode *n)
+{
+    return n->kind == YNODE_MAPPING && yr_get(&l->r, n, "keys");
+}
+
+/* The numbers of a value of p's type (a number, vector or colour), and
+ * how many: 0 for a type that cannot be keyed. */
+static int value_numbers(const param *p, void *field, double **numbers)
+{
+    *numbers = field;
+    return p->type == PARAM_NUMBER ? 1 : p->type == PARAM_VEC3 || p->type == PARAM_DIRECTION || p->type == PARAM_COLOR ? 3 : 0;
+}
+
+/* A keyed value of parameter p, `{keys: [[time, value], ...], interpolate}`
+ * (n, is_keyed), into *field as it is at the loader's time: each value
+ * read and checked as p's own, the times increasing. */
+static bool read_keyed(loader *l, const ynode *n, const param *p, void *field)
+{
+    static const char *const keyed_keys[] = {"keys", "interpolate"};
+    static const char *const ways[] = {"linear", "smooth", "step"};
+    double *numbers;
+    int width = value_numbers(p, field, &numbers);
+    if (!width || p->constant) {
+        diag_at(&l->d, n, "'%s' cannot change with time", p->key);
+        return false;
+    }
+    yr_check_keys(&l->r, n, p->key, keyed_keys, COUNT(keyed_keys));
+    const ynode *list = yr_get(&l->r, n, "keys"), *how = yr_get(&l->r, n, "interpolate");
+    int way = how ? word(l, how, "interpolate", ways, COUNT(ways)) : GLINT_INTERPOLATE_LINEAR;
+    if (!yr_is_list(&l->r, list, "'keys'") || way < 0)
+        return false;
+    if (list->count == 0) {
+        diag_at(&l->d, list, "'keys' needs at least one [time, value]");
+        return false;
+    }
+    double *times = malloc(sizeof *times * (size_t)list->count);
+    double *values = malloc(sizeof *values * (size_t)list->count * (size_t)width);
+    if (!times || !values) {
+        free(times);
+        free(values);
+        diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
+        return false;
+    }
+    param one = *p;
+    one.offset = 0;
+    bool good = true;
+    for (int i = 0; i < list->count; i++) {
+        const ynode *key = list->items[i];
+        if (key->kind != YNODE_SEQUENCE || key->count != 2) {
+            diag_at(&l->d, key, "each of '%s''s keys is [time in seconds, value], got %s", p->key, ynode_describe(key));
+            good = false;
+            continue;
+        }
+        double value[GLINT_KEY_WIDTH_MAX];
+        if (!yr_number(&l->r, key->items[0], "time", &times[i]) || !read_param(l, key->items[1], &one, value)) {
+            good = false;
+            continue;
+        }
+        if (i > 0 && good && !(times[i] > times[i - 1])) {
+            diag_at(&l->d, key->items[0], "key times must increase: %g s comes after %g s", times[i], times[i - 1]);
+            good = false;
+        }
+        memcpy(values + i * width, value, sizeof *values * (size_t)width);
+    }
+    if (good) {
+        glint_keys keys = {times, values, list->count, width, (glint_interpolation)way};
+        glint_keys_value(&keys, l->time, numbers);
+        if (p->type == PARAM_DIRECTION && numbers[0] == 0 && numbers[1] == 0 && numbers[2] == 0) {
+            diag_at(&l->d, n, "'%s' is zero at %g s, where its keys pass through zero", p->key, l->time);
+            good = false;
+        }
+    }
+    free(times);
+    free(values);
+    return good;
+}
+
+bool read_param(loader *l, const ynode *n, const param *p, void *obj)
 {
     void *f = (char *)obj + p->offset;
+    if (is_keyed(l, n))
+        return read_keyed(l, n, p, f);
     switch (p->type) {
     case PARAM_NUMBER: {
         double v;

@@ -13,6 +13,7 @@
  * same order, as one with whole trees. */
 #include <errno.h>
 #include <limits.h>
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -396,6 +397,7 @@ static glint_scene *load_once(const glint_load_options *o, glint_error *err, con
         l.d = (diag){.report = o ? o->report : NULL, .user = o ? o->report_user : NULL,
                      .max = o && o->max_errors > 0 ? o->max_errors : 20, .first = err};
     l.streaming = streaming;
+    l.time = o ? o->time : 0;
     l.r.d = &l.d;
     l.settings = glint_scene_get_settings(l.scene);
     l.camera = glint_scene_get_camera(l.scene);
@@ -426,6 +428,10 @@ static glint_scene *load(const glint_load_options *o, glint_error *err, const ch
                          void (*body)(loader *, const void *, size_t, const char *), const void *data, size_t size)
 {
     glint_error attempt;
+    if (o && !isfinite(o->time)) {
+        error_set(err, GLINT_ERR_INVALID, "the time to load '%s' at must be a finite number of seconds", name);
+        return NULL;
+    }
     if (mode == SCENE_FILE_STREAMED_ONLY)
         return load_once(o, err, name, body, data, size, true);
     glint_scene *scene = mode == SCENE_FILE_STREAMED ? load_once(o, &attempt, name, body, data, size, true) : NULL;

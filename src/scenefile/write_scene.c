@@ -181,6 +181,8 @@ static void write_settings(const plan *p)
         write_settings_map(p, &m, "filter", filter_params(), &s->settings);
     if (s->settings.adaptive_max_samples > 0)
         write_settings_map(p, &m, "adaptive", adaptive_params(), &s->settings);
+    if (s->settings.frame_start != 0 || s->settings.frame_end != 0 || s->settings.fps != 24)
+        write_settings_map(p, &m, "frames", frames_params(), &s->settings);
     if (s->output) {
         ymap_key(&m, "output");
         yw_text(p->f, s->output);

@@ -27,7 +27,8 @@ for scene in "$here"/scenes/*.yaml; do
     name=$(basename "$scene" .yaml)
     count=$((count + 1))
     check "$name: --check" "$GLINT" --check "$scene"
-    check "$name: renders" "$GLINT" "$scene" -w 64 -h 48 --spp 1 -q -o "$work/$name.png"
+    # One frame of an animated scene (a still ignores --frame).
+    check "$name: renders" "$GLINT" "$scene" -w 64 -h 48 --spp 1 --frame 12 -q -o "$work/$name.png"
 done
 if [ "$count" -lt 6 ]; then
     echo "FAIL: expected the seed room and at least five example scenes, found $count"
@@ -39,7 +40,8 @@ if [ -d "$here/../shared/data" ]; then
     for scene in "$here"/scenes/models/*.yaml; do
         name=models-$(basename "$scene" .yaml)
         check "$name: --check" "$GLINT" --check "$scene"
-        check "$name: renders" "$GLINT" "$scene" -w 64 -h 48 --spp 1 -q -o "$work/$name.png"
+        # One frame of an animated scene (a still ignores --frame).
+    check "$name: renders" "$GLINT" "$scene" -w 64 -h 48 --spp 1 --frame 12 -q -o "$work/$name.png"
     done
 else
     echo "skipped scenes/models/: ../shared/data is absent"

@@ -898,6 +898,61 @@ static const bad_scene BAD[] = {
      "  a: *shiny\n"
      "  b: &shiny {specular: 1}\n",
      "bad.yaml:2:6: unknown anchor 'shiny': '&shiny' comes later, at line 3, and an anchor must come before its aliases", 1},
+    /* Keyed values (docs/animation.md): each bad key told where it is. */
+    {"keys_unsorted",
+     "camera:\n"
+     "  fov: {keys: [[0, 40], [2, 50], [1, 60]]}\n",
+     "bad.yaml:2:35: key times must increase: 1 s comes after 2 s", 1},
+    {"keys_same_time",
+     "camera:\n"
+     "  fov: {keys: [[1, 40], [1, 50]]}\n",
+     "bad.yaml:2:26: key times must increase: 1 s comes after 1 s", 1},
+    {"keys_vector_for_number",
+     "camera:\n"
+     "  fov: {keys: [[0, 40], [1, [1, 2, 3]]]}\n",
+     "bad.yaml:2:29: 'fov' must be a number, got a list", 1},
+    {"keys_mixed_in_translate",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: 1, transform: [{translate: {keys: [[0, [0, 0, 0]], [1, 4]]}}]}\n",
+     "bad.yaml:3:96: 'translate' must be a list of 3 finite numbers [x, y, z]", 1},
+    {"keys_value_out_of_range",
+     "materials:\n"
+     "  glass: {transparency: {keys: [[0, 0.5], [1, 1.5]]}}\n",
+     "bad.yaml:2:47: 'transparency' must be from 0 to 1, got 1.5", 1},
+    {"keys_not_a_pair",
+     "camera:\n"
+     "  fov: {keys: [[0, 40, 1]]}\n",
+     "bad.yaml:2:16: each of 'fov''s keys is [time in seconds, value], got a list", 1},
+    {"keys_empty",
+     "camera:\n"
+     "  fov: {keys: []}\n",
+     "bad.yaml:2:15: 'keys' needs at least one [time, value]", 1},
+    {"keys_unknown_interpolation",
+     "camera:\n"
+     "  fov: {keys: [[0, 40]], interpolate: cubic}\n",
+     "bad.yaml:2:39: 'interpolate' must be linear, smooth or step, got 'cubic'", 1},
+    {"keys_unknown_key",
+     "camera:\n"
+     "  fov: {keys: [[0, 40]], interpolation: step}\n",
+     "bad.yaml:2:26: unknown key 'interpolation' in fov", 1},
+    {"keys_on_a_whole_number",
+     "settings:\n"
+     "  width: {keys: [[0, 40]]}\n",
+     "bad.yaml:2:10: 'width' cannot change with time", 1},
+    {"keys_on_the_frame_rate",
+     "settings:\n"
+     "  frames: {end: 10, fps: {keys: [[0, 24]]}}\n",
+     "bad.yaml:2:26: 'fps' cannot change with time", 1},
+    {"keys_on_a_matrix",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: sphere, material: m, radius: 1, transform: [{matrix: {keys: [[0, 1]]}}]}\n",
+     "bad.yaml:3:65: 'matrix' cannot change with time: key its steps (translate, rotate, scale)", 1},
+    {"frames_end_before_start",
+     "settings:\n"
+     "  frames: {start: 5, end: 2}\n",
+     "bad.yaml:2:11: frames: 'end' (2) comes before 'start' (5)", 1},
 };
 
 static void test_bad_scene(void **state)
