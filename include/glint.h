@@ -178,7 +178,17 @@ typedef struct glint_settings {
                                   (0 and 0: one still, frame 0) */
     double fps;                /* frames a second, > 0 (24): frame f shows the scene at f / fps
                                   seconds (glint_load_options.time) */
+    int frame;                 /* the frame being rendered, 0..10,000,000 (0: a still): it moves
+                                  every random pattern (glint_settings_random_seed), so that a
+                                  sequence's noise changes from frame to frame as film grain
+                                  does; the glint command sets it for each frame */
 } glint_settings;
+
+/* The seed every random number of a render with settings s comes from:
+ * the seed itself for frame 0, else the seed moved by the frame. A scene
+ * rendered as frame f makes the bytes it makes as frame 0 with this as its
+ * seed. */
+uint32_t glint_settings_random_seed(const glint_settings *s);
 
 /* Returns the settings of a new scene: 640x480, 4 spp, regular, box
  * filter, no adaptive sampling, depth 5, black background, white ambient

@@ -146,7 +146,9 @@ static int run(const cli_options *o)
                 break;
         }
         if (o->print_scene) {
-            /* This frame's scene, every keyed value fixed: a still. */
+            /* This frame's scene, every keyed value fixed: a still, whose
+             * seed is the frame's, so that it renders the frame's bytes. */
+            r.settings.seed = glint_settings_random_seed(&(glint_settings){.seed = r.settings.seed, .frame = frame});
             r.settings.frame_start = r.settings.frame_end = 0;
             glint_error err = {0};
             if (glint_scene_set_settings(r.scene, &r.settings, &err)) {
@@ -154,6 +156,13 @@ static int run(const cli_options *o)
                 return cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
             }
             return cli_print_scene(r.scene, o->output); /* frees the scene */
+        }
+        /* The frame moves the random patterns: its noise is its own. */
+        r.settings.frame = frame;
+        glint_error err = {0};
+        if (glint_scene_set_settings(r.scene, &r.settings, &err)) {
+            code = cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
+            break;
         }
         if ((code = aim_at_frame(&r, pattern, frame, path, sizeof path)) >= 0)
             break;

@@ -5,7 +5,7 @@
 
 void pixel_sampler_init(pixel_sampler *ps, const glint_settings *s, bool lens)
 {
-    *ps = (pixel_sampler){.kind = s->sampler, .seed = s->seed, .lens = lens, .grid = 1};
+    *ps = (pixel_sampler){.kind = s->sampler, .seed = glint_settings_random_seed(s), .lens = lens, .grid = 1};
     while (ps->grid * ps->grid < s->samples_per_pixel)
         ps->grid++;
     pixel_filter_init(&ps->filter, s->filter, s->filter_radius);

@@ -34,6 +34,7 @@ typedef struct job {
     int samples;                  /* each pixel's, before adaptive sampling adds any */
     bool signed_film;             /* pixels take the film's signed path (film.h) */
     bool keys;                    /* tracing uses the samples' keys: tracer_needs_keys */
+    uint32_t key_seed;            /* what they are hashed with: the frame's random seed */
     light_choice choice;          /* with settings.light_samples: the area lights and emitters by power */
     int tiles_done;               /* under progress_lock */
     pthread_mutex_t progress_lock;
@@ -86,7 +87,7 @@ __attribute__((always_inline)) static inline void trace_sample(tracer *t, const 
     uint32_t key[ACCEL_PACKET] = {0};
     if (j->keys)
         for (int i = 0; i < ACCEL_PACKET; i++)
-            key[i] = hash4((uint32_t)bs->px[i], (uint32_t)bs->py[i], (uint32_t)k, j->scene->settings.seed ^ 0x4b455953U);
+            key[i] = hash4((uint32_t)bs->px[i], (uint32_t)bs->py[i], (uint32_t)k, j->key_seed);
     tracer_trace8(t, &rays, traced, key, c);
     if (j->signed_film)
         film_block_add_signed(b, traced, c, negative, careful);
@@ -360,6 +361,7 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
     }
     j.film.exposure_scale = exp2(s->exposure);
     j.keys = tracer_needs_keys(scene);
+    j.key_seed = glint_settings_random_seed(&scene->settings) ^ 0x4b455953U;
     camera_init(&j.cam, &scene->camera, s->width, s->height);
     pixel_sampler_init(&j.sampler, s, j.cam.uses_lens);
     j.signed_film = s->adaptive_max_samples != 0 || j.sampler.filter.has_negative_lobes;

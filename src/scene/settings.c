@@ -7,6 +7,7 @@
 #include <stddef.h>
 #include <string.h>
 #include "core/error.h"
+#include "core/hash.h"
 #include "scene/scene.h"
 
 static bool is_square(double v)
@@ -177,6 +178,11 @@ param_table camera_params(void)
     return PARAM_TABLE(CAMERA_PARAMS);
 }
 
+uint32_t glint_settings_random_seed(const glint_settings *s)
+{
+    return s->frame == 0 ? s->seed : s->seed ^ hash_u32((uint32_t)s->frame * 0x9e3779b9U ^ 0x46524d45U);
+}
+
 glint_settings glint_settings_default(void)
 {
     glint_settings s;
@@ -230,6 +236,8 @@ glint_status settings_validate(const glint_settings *s, glint_error *err)
         st = params_check(adaptive_params(), s, "adaptive", err);
     if (!st)
         st = params_check(frames_params(), s, "frames", err);
+    if (!st && (s->frame < 0 || s->frame > MAX_FRAME))
+        st = error_set(err, GLINT_ERR_INVALID, "frame %d is not from 0 to %d", s->frame, MAX_FRAME);
     if (!st && s->frame_end < s->frame_start)
         st = error_set(err, GLINT_ERR_INVALID, "frames: 'end' (%d) comes before 'start' (%d)", s->frame_end,
                        s->frame_start);

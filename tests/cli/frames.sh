@@ -6,7 +6,8 @@
 # (and a scene file, not standard input); --resume renders only the frames
 # whose files are missing or cut short, an interrupted sequence leaves no
 # half-written frame under its final name, and a scene without keys makes
-# the same image at every frame.
+# the same image at every frame, but for its noise, which each frame has
+# its own of (the random seed moved by the frame).
 # Usage: frames.sh PATH/TO/glint
 . "$(dirname "$0")/lib/harness.sh"
 
@@ -114,5 +115,24 @@ objects: [{type: sphere, radius: 1, material: m}]
 EOF
 expect 0 "" -- still.yaml -q -o still-#.png
 check "a scene without keys is the same at every frame" cmp -s still-0.png still-2.png
+
+# Random patterns move with the frame (noise changes as film grain does),
+# frame 0 keeping a still's; --print-scene's still of a frame carries the
+# frame's seed, and renders its bytes.
+cat >grain.yaml <<'EOF2'
+settings: {width: 32, height: 24, samples: 3, sampler: sobol, frames: {start: 0, end: 1}}
+camera: {type: thin_lens, position: [0, 0, 4], look_at: [0, 0, 0], aperture: 0.3, focus_distance: 2}
+materials: {m: {}}
+lights: [{type: sphere, position: [0, 3, 3], radius: 1, samples: 2}]
+objects: [{type: sphere, radius: 1, material: m}]
+EOF2
+expect 0 "" -- grain.yaml -q -o grain-#.png
+check "each frame's noise is its own" differ grain-0.png grain-1.png
+sed 's/, frames: {start: 0, end: 1}//' grain.yaml >grain-still.yaml
+expect 0 "" -- grain-still.yaml -q -o grain-still.png
+check "frame 0's noise is a still's" cmp -s grain-0.png grain-still.png
+"$GLINT" grain.yaml --print-scene --frame 1 >grain-1.yaml
+expect 0 "" -- grain-1.yaml -q -o grain-printed.png
+check "the printed still of frame 1 renders frame 1" cmp -s grain-printed.png grain-1.png
 
 finish
