@@ -178,6 +178,11 @@ typedef struct glint_settings {
                                   (0 and 0: one still, frame 0) */
     double fps;                /* frames a second, > 0 (24): frame f shows the scene at f / fps
                                   seconds (glint_load_options.time) */
+    double shutter_open, shutter_close; /* when the shutter opens and closes, in frames from
+                                  the frame's time, -1..1, open <= close (0 and 0: no motion
+                                  blur); each sample is at a time between them */
+    int shutter_steps;         /* moving things' poses over the shutter, 2..64 (2): they move
+                                  in straight lines from one to the next */
     int frame;                 /* the frame being rendered, 0..10,000,000 (0: a still): it moves
                                   every random pattern (glint_settings_random_seed), so that a
                                   sequence's noise changes from frame to frame as film grain
@@ -635,6 +640,24 @@ glint_scene *glint_scene_load_stream(FILE *in, const char *name, const glint_loa
 
 /* Sets the output image path a scene file asked for (NULL clears it). */
 glint_status glint_scene_set_output(glint_scene *scene, const char *path, glint_error *err);
+
+/* Whether some value of a scene file was keyed (docs/animation.md), so
+ * that the scene changes with the time it is loaded at. */
+bool glint_scene_is_animated(const glint_scene *scene);
+
+/* Motion over the shutter (settings.shutter_open and _close): the shape's
+ * world transform goes through `count` poses, 2..64, evenly spaced from
+ * the shutter's opening to its closing, in straight lines between them
+ * (each number of the matrix interpolated linearly), replacing the
+ * transform it was added with. Each must be invertible and finite. */
+glint_status glint_scene_move_shape(glint_scene *scene, int shape, int count, const glint_transform *poses,
+                                    glint_error *err);
+
+/* The camera's motion over the shutter, as glint_scene_move_shape's: each
+ * lane's ray goes in a straight line from its ray through cameras[k] to
+ * its ray through cameras[k + 1]. Each camera must pass
+ * glint_scene_set_camera's checks and be of the scene's camera's kind. */
+glint_status glint_scene_move_camera(glint_scene *scene, int count, const glint_camera *cameras, glint_error *err);
 
 /* Returns the output path a scene file asked for, or NULL. */
 const char *glint_scene_get_output(const glint_scene *scene);

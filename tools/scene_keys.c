@@ -34,6 +34,7 @@ static int sections(section *out, int room)
     ADD("filter", filter_params());
     ADD("adaptive", adaptive_params());
     ADD("frames", frames_params());
+    ADD("shutter", shutter_params());
     ADD("camera", camera_params());
     ADD("fog", fog_params());
     ADD("environment", environment_params());

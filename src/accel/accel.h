@@ -23,6 +23,7 @@ typedef struct accel_hit {
     int instance;             /* meshes: the instance index */
     unsigned triangle;        /* meshes: the triangle in the instance's mesh */
     double b1, b2;            /* meshes: barycentric coordinates of vertices 1 and 2 */
+    double time;              /* when over the shutter, in [0, 1]: where a moving shape was */
 } accel_hit;
 
 /* The geometry an accelerator is built over; it must outlive it. */
@@ -66,21 +67,23 @@ void accel_free(accel *a);
 typedef color (*accel_filter_fn)(void *user, const ray *r, const accel_hit *hit);
 
 /* Finds the nearest hit of each of up to ACCEL_PACKET rays, the lanes of
- * *r, with t in (0, tmax) (tmax may be INFINITY): found[i] says whether
+ * *r, at time[i] over the shutter (where moving shapes are then; NULL:
+ * nothing moves), with t in (0, tmax) (tmax may be INFINITY): found[i] says whether
  * ray i, if active[i], hit, and hit[i] is then its nearest hit. Inactive
  * lanes find nothing. skip[i] is a shape ray i cannot meet (the one it
  * leaves, when shape_is_left_behind says so), which is then not tested at
  * all, or -1. `coherent` says the rays are neighbours (a camera's, and
  * their shadow rays), which Embree's packet traversal can exploit. */
-void accel_intersect8(const accel *a, const ray8 *r, double tmax, const int skip[ACCEL_PACKET], bool coherent,
+void accel_intersect8(const accel *a, const ray8 *r, const double *time, double tmax, const int skip[ACCEL_PACKET],
+                      bool coherent,
                       const bool active[ACCEL_PACKET], accel_hit hit[ACCEL_PACKET], bool found[ACCEL_PACKET]);
 
 /* The light that survives each of up to ACCEL_PACKET shadow segments
- * (0, tmax[i]) along the lanes of *r: the product of filter() over the
+ * (0, tmax[i]) along the lanes of *r, at time[i] as for accel_intersect8: the product of filter() over the
  * surface crossings of segment i, black as soon as something opaque blocks
  * it, and black for inactive lanes. skip[i] and `coherent` as for
  * accel_intersect8. */
-void accel_transmission8(const accel *a, const ray8 *r, const double tmax[ACCEL_PACKET],
+void accel_transmission8(const accel *a, const ray8 *r, const double *time, const double tmax[ACCEL_PACKET],
                          const int skip[ACCEL_PACKET], bool coherent, const bool active[ACCEL_PACKET],
                          accel_filter_fn filter, void *user, color through[ACCEL_PACKET]);
 

@@ -64,6 +64,7 @@ typedef struct query {
     accel_filter_fn filter;
     void *user;
     const ray8 *r;            /* the packet's rays */
+    const double *time;       /* and their times over the shutter, or NULL: nothing moves */
     double tmax[ACCEL_PACKET];   /* every query starts at t = 0 */
     int skip[ACCEL_PACKET];      /* a shape lane i cannot meet, or -1 */
     int index[ACCEL_PACKET];     /* the shape lane i hit, or -1 */

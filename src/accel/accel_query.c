@@ -24,6 +24,7 @@ void accel_triangle_occluded(const struct RTCFilterFunctionNArguments *args)
             .triangle = hit_lane_uint(args->hit, args->N, HIT_PRIM, i),
             .b1 = hit_lane_float(args->hit, args->N, HIT_U, i),
             .b2 = hit_lane_float(args->hit, args->N, HIT_V, i),
+            .time = q->time ? q->time[i] : 0,
         };
         uint64_t key = (uint64_t)(h.instance + 1) << 32 | h.triangle;
         if (!seen_add(&q->seen[i], key) || pass_through(q, i, &h))
@@ -37,6 +38,7 @@ void accel_triangle_occluded(const struct RTCFilterFunctionNArguments *args)
  * in one, which waits for the stores (1-2% of a depth of field's time). */
 static void lane_hit(const query *q, const struct RTCRayHit8 *rh, unsigned i, bool triangle, accel_hit *out)
 {
+    out->time = q->time ? q->time[i] : 0;
     if (!triangle) {
         out->t = out->on_shape.t = q->hit_t[i];
         out->shape = q->index[i];
@@ -69,7 +71,9 @@ static inline quad_mask plane_quad(const query *q, int k, int first, quad_f64 tm
         for (int j = 0; j < QUAD; j++) {
             ray r = ray8_get(q->r, first + j);
             shape_hit h = {0, 0};
-            hit[j] = shape_intersect(s, &r, 0, tmax[j], &h) ? -1 : 0;
+            shape moved;
+            const shape *at = q->time ? shape_at(s, q->time[first + j], &moved) : s;
+            hit[j] = shape_intersect(at, &r, 0, tmax[j], &h) ? -1 : 0;
             (*t)[j] = h.t;
         }
     } else {
@@ -126,7 +130,8 @@ static void through_planes(query *q, int valid[ACCEL_PACKET], struct RTCRay8 *p)
             for (int j = 0; j < QUAD; j++) {
                 if (!hit[j] || !valid[i + j])
                     continue;
-                accel_hit h = {.t = t[j], .shape = a->planes[k], .on_shape = {t[j], 0}, .instance = -1};
+                accel_hit h = {.t = t[j], .shape = a->planes[k], .on_shape = {t[j], 0}, .instance = -1,
+                               .time = q->time ? q->time[i + j] : 0};
                 if (shape_opaque(a, h.shape) || !pass_through(q, (unsigned)(i + j), &h)) {
                     valid[i + j] = 0;
                     p->tfar[i + j] = -INFINITY;
@@ -191,8 +196,9 @@ static void packet_init(query *q, const ray8 *r, const double tmax[ACCEL_PACKET]
     memset(p->flags, 0, sizeof p->flags);
 }
 
-void accel_intersect8(const accel *a, const ray8 *r, double tmax, const int skip[ACCEL_PACKET], bool coherent,
-                      const bool active[ACCEL_PACKET], accel_hit hit[ACCEL_PACKET], bool found[ACCEL_PACKET])
+void accel_intersect8(const accel *a, const ray8 *r, const double *time, double tmax, const int skip[ACCEL_PACKET],
+                      bool coherent, const bool active[ACCEL_PACKET], accel_hit hit[ACCEL_PACKET],
+                      bool found[ACCEL_PACKET])
 {
     double far[ACCEL_PACKET];
     for (int i = 0; i < ACCEL_PACKET; i++)
@@ -201,6 +207,7 @@ void accel_intersect8(const accel *a, const ray8 *r, double tmax, const int skip
     _Alignas(32) int valid[ACCEL_PACKET];
     struct RTCRayHit8 rh;
     q.acc = a;
+    q.time = time;
     packet_init(&q, r, far, skip, coherent, active, valid, &rh.ray);
     for (unsigned i = 0; i < ACCEL_PACKET; i++)
         rh.hit.geomID[i] = rh.hit.primID[i] = rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
@@ -227,7 +234,7 @@ void accel_intersect8(const accel *a, const ray8 *r, double tmax, const int skip
     }
 }
 
-void accel_transmission8(const accel *a, const ray8 *r, const double tmax[ACCEL_PACKET],
+void accel_transmission8(const accel *a, const ray8 *r, const double *time, const double tmax[ACCEL_PACKET],
                          const int skip[ACCEL_PACKET], bool coherent, const bool active[ACCEL_PACKET],
                          accel_filter_fn filter, void *user, color through[ACCEL_PACKET])
 {
@@ -236,6 +243,7 @@ void accel_transmission8(const accel *a, const ray8 *r, const double tmax[ACCEL_
     _Alignas(32) int valid[ACCEL_PACKET];
     struct RTCRay8 p;
     q.acc = a;
+    q.time = time;
     packet_init(&q, r, tmax, skip, coherent, active, valid, &p);
     q.filter = filter;
     q.user = user;

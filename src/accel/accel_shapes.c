@@ -59,7 +59,8 @@ static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *
         /* A triangle found first may have shortened the ray below q->tmax. */
         double tmax = q->tmax[i] < tfar ? q->tmax[i] : (double)tfar;
         ray r = ray8_get(q->r, (int)i);
-        if (shape_intersect(s, &r, 0, tmax, &h))
+        shape moved;
+        if (shape_intersect(q->time ? shape_at(s, q->time[i], &moved) : s, &r, 0, tmax, &h))
             record_hit(args, n, i, index, h.t, h.part);
     }
 }
@@ -129,19 +130,21 @@ void accel_shape_occluded(const struct RTCOccludedFunctionNArguments *args)
         if (!args->valid[i] || q->skip[i] == index)
             continue;
         ray r = ray8_get(q->r, (int)i);
+        shape moved;
+        const shape *at = q->time ? shape_at(s, q->time[i], &moved) : s;
         if (opaque) {
             /* Blocking twice is harmless, so no record of it is kept. */
             shape_hit h;
-            if (shape_intersect(s, &r, 0, q->tmax[i], &h))
+            if (shape_intersect(at, &r, 0, q->tmax[i], &h))
                 *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
             continue;
         }
         if (!seen_add(&q->seen[i], (uint64_t)index))
             continue;
         double tmin = 0;
-        accel_hit h = {.shape = index, .instance = -1};
+        accel_hit h = {.shape = index, .instance = -1, .time = q->time ? q->time[i] : 0};
         int crossings = shape_max_crossings(s);
-        for (int crossing = 0; crossing < crossings && shape_intersect(s, &r, tmin, q->tmax[i], &h.on_shape);
+        for (int crossing = 0; crossing < crossings && shape_intersect(at, &r, tmin, q->tmax[i], &h.on_shape);
              crossing++) {
             h.t = h.on_shape.t;
             if (!pass_through(q, i, &h)) {

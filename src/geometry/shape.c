@@ -47,6 +47,45 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
     return st;
 }
 
+bool shape_move(shape *s, transform *poses, int count, glint_error *err)
+{
+    for (int k = 0; k < count; k++) {
+        transform inverse;
+        if (!xf_invert(&poses[k], &inverse)) {
+            error_set(err, GLINT_ERR_INVALID, "pose %d's transform is singular or not finite", k + 1);
+            return false;
+        }
+    }
+    s->poses = poses;
+    s->pose_count = count;
+    s->to_world = poses[0];
+    xf_invert(&s->to_world, &s->to_object);
+    s->has_transform = true;
+    s->quad = s->flat = false;
+    return true;
+}
+
+const shape *shape_at(const shape *s, double time, shape *out)
+{
+    if (!s->pose_count)
+        return s;
+    *out = *s;
+    double at = time * (s->pose_count - 1);
+    int k = at >= s->pose_count - 1 ? s->pose_count - 2 : at > 0 ? (int)at : 0;
+    double w = at - k;
+    const transform *a = &s->poses[k], *b = &s->poses[k + 1];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            out->to_world.m[i][j] = a->m[i][j] + (b->m[i][j] - a->m[i][j]) * w;
+    /* Between two invertible poses the blend may not be; that instant's
+     * shape is then its nearer pose. */
+    if (!xf_invert(&out->to_world, &out->to_object)) {
+        out->to_world = w < 0.5 ? *a : *b;
+        xf_invert(&out->to_world, &out->to_object);
+    }
+    return out;
+}
+
 /* For a shape with a transform. The direction is mapped but not
  * normalised, so a point's ray parameter t is the same in both spaces and
  * hits need no conversion back. */
@@ -122,13 +161,18 @@ void shape_bounds(const shape *s, vec3 *lo, vec3 *hi)
         return;
     }
     /* An affine map sends the object box to a parallelepiped whose extremes
-     * are among the images of its eight corners. */
+     * are among the images of its eight corners. Between two poses each
+     * corner moves in a straight line, so the poses' boxes hold it. */
     *lo = v3(INFINITY, INFINITY, INFINITY);
     *hi = v3(-INFINITY, -INFINITY, -INFINITY);
-    for (int i = 0; i < 8; i++) {
-        vec3 c = xf_point(&s->to_world, v3(i & 1 ? b.x : a.x, i & 2 ? b.y : a.y, i & 4 ? b.z : a.z));
-        *lo = min3(*lo, c);
-        *hi = max3(*hi, c);
+    int poses = s->pose_count ? s->pose_count : 1;
+    for (int k = 0; k < poses; k++) {
+        const transform *m = s->pose_count ? &s->poses[k] : &s->to_world;
+        for (int i = 0; i < 8; i++) {
+            vec3 c = xf_point(m, v3(i & 1 ? b.x : a.x, i & 2 ? b.y : a.y, i & 4 ? b.z : a.z));
+            *lo = min3(*lo, c);
+            *hi = max3(*hi, c);
+        }
     }
 }
 

@@ -54,6 +54,8 @@ typedef struct shape {
     vec3 flat_n;              /* its surface normal, the same at every hit */
     vec3 center;              /* shape_center's */
     int material;
+    transform *poses;         /* moving (shape_move): its world transforms over the shutter, */
+    int pose_count;           /* evenly spaced (0: it stands still); owned by the scene */
 } shape;
 
 /* A hit found by shape_intersect: the ray parameter and which part of the
@@ -84,6 +86,17 @@ typedef struct surface {
 glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform *transform,
                         int material, glint_error *err);
 
+/* Makes s move over the shutter through `count` (2 or more) world
+ * transforms, evenly spaced, in straight lines between them (each number
+ * interpolated): s keeps `poses`, which the caller frees after s; false,
+ * with err filled, when one is not invertible. A moving shape takes the
+ * general paths: it has a transform, no quad test, no fixed normal. */
+bool shape_move(shape *s, transform *poses, int count, glint_error *err);
+
+/* The shape s is at `time` in [0, 1] over the shutter, into *out: a copy
+ * of s with the transform its poses give then (s itself when still). */
+const shape *shape_at(const shape *s, double time, shape *out);
+
 /* Finds the nearest hit of world ray r with t in (tmin, tmax). A ray that
  * starts inside a closed shape finds the surface on its way out. */
 bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
@@ -111,8 +124,9 @@ void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *
  * surface filled by shape_surface. */
 void shape_surface_uv(const shape *s, surface *out);
 
-/* World-space axis-aligned bounds; for an unbounded shape (a plane) a box
- * SHAPE_PLANE_EXTENT from the origin each way. */
+/* World-space axis-aligned bounds, over all its poses for a moving shape;
+ * for an unbounded shape (a plane) a box SHAPE_PLANE_EXTENT from the origin
+ * each way. */
 void shape_bounds(const shape *s, vec3 *lo, vec3 *hi);
 
 /* False for shapes with no bounds (planes): the accelerator tests those

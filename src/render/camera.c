@@ -61,3 +61,36 @@ void camera_rays8(const camera *c, const double x[RAY8], const double y[RAY8], c
 {
     c->kind->rays8(c, x, y, lens, time, out);
 }
+
+void camera_moving_rays8(const camera *poses, int count, const double x[RAY8], const double y[RAY8],
+                         const camera_lens8 *lens, const double time[RAY8], ray8 *out)
+{
+    int pose[RAY8];
+    double w[RAY8];
+    for (int i = 0; i < RAY8; i++) {
+        double at = time[i] * (count - 1);
+        pose[i] = at >= count - 1 ? count - 2 : at > 0 ? (int)at : 0;
+        w[i] = at - pose[i];
+    }
+    /* Each stretch between two poses that some lane is in: both poses'
+     * rays for the packet, blended in the lanes there. */
+    for (int k = 0; k < count - 1; k++) {
+        bool any = false;
+        for (int i = 0; i < RAY8; i++)
+            any |= pose[i] == k;
+        if (!any)
+            continue;
+        ray8 a, b;
+        camera_rays8(&poses[k], x, y, lens, time, &a);
+        camera_rays8(&poses[k + 1], x, y, lens, time, &b);
+        for (int i = 0; i < RAY8; i++) {
+            if (pose[i] != k)
+                continue;
+            ray ra = ray8_get(&a, i), rb = ray8_get(&b, i);
+            ray blend = {v3_add(ra.o, v3_scale(v3_sub(rb.o, ra.o), w[i])),
+                         v3_normalize(v3_add(ra.d, v3_scale(v3_sub(rb.d, ra.d), w[i])))};
+            ray8_set(out, i, blend);
+        }
+    }
+}
+

@@ -45,6 +45,16 @@ void camera_init(camera *c, const glint_camera *desc, int width, int height);
 void camera_rays8(const camera *c, const double x[RAY8], const double y[RAY8], const camera_lens8 *lens,
                   const double time[RAY8], ray8 *out);
 
+/* The most poses a moving camera takes over the shutter. */
+#define CAMERA_MAX_POSES 64
+
+/* camera_rays8 for a camera moving through `count` poses (2 or more),
+ * evenly spaced over the shutter: lane i's ray goes in a straight line
+ * from its ray through the pose before time[i] to its ray through the one
+ * after (the origin blended, the direction blended and made unit). */
+void camera_moving_rays8(const camera *poses, int count, const double x[RAY8], const double y[RAY8],
+                         const camera_lens8 *lens, const double time[RAY8], ray8 *out);
+
 /* The lens's centre and the shutter's middle in every lane: what a caller
  * that samples neither passes to camera_rays8. */
 extern const camera_lens8 camera_lens_centre;

@@ -43,7 +43,8 @@ static __attribute__((unused)) const glint_material *hit_material(const glint_sc
 static __attribute__((unused)) void hit_surface(const glint_scene *scene, const ray *r, accel_hit *h, surface *s)
 {
     if (h->shape >= 0) {
-        shape_surface(&scene->shapes[h->shape], r, &h->on_shape, s);
+        shape moved;
+        shape_surface(shape_at(&scene->shapes[h->shape], h->time, &moved), r, &h->on_shape, s);
         return;
     }
     mesh_surface(hit_mesh(scene, h), &scene->instances[h->instance], r, h->triangle, h->b1, h->b2, &h->t, s);
@@ -57,7 +58,8 @@ static __attribute__((unused)) color hit_texture_color(const glint_scene *scene,
     if (h->shape < 0)
         return texture_eval(t, s, mesh_center(hit_mesh(scene, h)));
     /* Meshes carry their uv already; shapes compute it only when asked. */
-    const shape *sh = &scene->shapes[h->shape];
+    shape moved;
+    const shape *sh = shape_at(&scene->shapes[h->shape], h->time, &moved);
     if (t->mapping.kind == GLINT_MAP_UV)
         shape_surface_uv(sh, s);
     return texture_eval(t, s, shape_center(sh));

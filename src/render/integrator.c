@@ -242,7 +242,7 @@ __attribute__((always_inline)) static inline void light_packet(tracer *t, const 
     if (!any)
         return;
     color through[ACCEL_PACKET];
-    accel_transmission8(t->acc, &shadow, dist, skip, depth == 0, lit, shadow_filter, t, through);
+    accel_transmission8(t->acc, &shadow, t->time, dist, skip, depth == 0, lit, shadow_filter, t, through);
     for (int i = 0; i < ACCEL_PACKET; i++)
         if (lit[i])
             direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i], v3(-r->dx[i], -r->dy[i], -r->dz[i])));
@@ -431,7 +431,7 @@ static void lit_packet(tracer *t, const ray8 *r, const shade_point sp[ACCEL_PACK
         return;
     t->rays += (unsigned)count;
     color through[ACCEL_PACKET];
-    accel_transmission8(t->acc, &shadow, ls->distance, skip, depth == 0, lit, shadow_filter, t, through);
+    accel_transmission8(t->acc, &shadow, t->time, ls->distance, skip, depth == 0, lit, shadow_filter, t, through);
     for (int h = 0; h < ACCEL_PACKET; h += QUAD) {
         const color *th = through + h;
         const quad_f64 passed[3] = {{th[0].r, th[1].r, th[2].r, th[3].r}, {th[0].g, th[1].g, th[2].g, th[3].g},
@@ -684,7 +684,7 @@ __attribute__((noinline)) static void ambient_occlusion8(tracer *t, const bool f
         if (!any)
             continue;
         color through[ACCEL_PACKET];
-        accel_transmission8(t->acc, &shadow, dist, skip, depth == 0, lit, shadow_filter, t, through);
+        accel_transmission8(t->acc, &shadow, t->time, dist, skip, depth == 0, lit, shadow_filter, t, through);
         for (int i = 0; i < ACCEL_PACKET; i++)
             if (lit[i])
                 seen[i] = rgb_add(seen[i], rgb_scale(through[i], 1.0 / rays[i]));
@@ -795,7 +795,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     shade_point sp[ACCEL_PACKET];
     color local[ACCEL_PACKET];
     branches b[ACCEL_PACKET];
-    accel_intersect8(t->acc, r, t->reach, skip, depth == 0, active, hits, found);
+    accel_intersect8(t->acc, r, t->time, t->reach, skip, depth == 0, active, hits, found);
     /* A large mesh's vertices are seldom in cache: fetch every lane's
      * together rather than one lane's at a time. */
     if (scene->instance_count > 0)
@@ -895,9 +895,10 @@ double tracer_reach(const glint_scene *scene)
     return reach > 0 ? reach : 0;
 }
 
-void tracer_trace8(tracer *t, const ray8 *r, const bool active[ACCEL_PACKET], const uint32_t key[ACCEL_PACKET],
-                   color out[ACCEL_PACKET])
+void tracer_trace8(tracer *t, const ray8 *r, const double *time, const bool active[ACCEL_PACKET],
+                   const uint32_t key[ACCEL_PACKET], color out[ACCEL_PACKET])
 {
+    t->time = time;
     static const int none[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
     color whole[ACCEL_PACKET];
     for (int i = 0; i < ACCEL_PACKET; i++) {

@@ -36,6 +36,8 @@ typedef struct tracer {
     bool keys;                /* tracer_needs_keys: without, no key is hashed, no ray spread */
     const light_choice *choice; /* settings.light_samples: the area lights and emitters by power; else NULL */
     int budget[ACCEL_PACKET]; /* each lane's branch rays left in its sample */
+    const double *time;       /* each lane's time over the shutter, where moving shapes are
+                                 (tracer_trace8's), or NULL: nothing moves */
 } tracer;
 
 /* How far along a ray a tracer of the scene needs to look for hits: past
@@ -51,7 +53,8 @@ double tracer_reach(const glint_scene *scene);
 bool tracer_needs_keys(const glint_scene *scene);
 
 /* The colours seen along up to ACCEL_PACKET unit-direction camera rays, the
- * lanes of *r (recursion depth 0): out[i] for each active[i]. Every random
+ * lanes of *r (recursion depth 0), lane i at time[i] over the shutter (NULL:
+ * nothing moves): out[i] for each active[i]. Every random
  * number lane i uses (an area light's samples, at every surface its rays
  * meet) is a hash of key[i], which the caller makes from the pixel, the
  * sample and the seed. The rays, their shadow
@@ -61,7 +64,7 @@ bool tracer_needs_keys(const glint_scene *scene);
  * each lane traces at most TRACER_MAX_BRANCH_RAYS of them. Once *t->cancel
  * is set, every packet still to trace returns at once with meaningless
  * colours (the caller drops them): a stop never waits for a deep tree. */
-void tracer_trace8(tracer *t, const ray8 *r, const bool active[ACCEL_PACKET], const uint32_t key[ACCEL_PACKET],
-                   color out[ACCEL_PACKET]);
+void tracer_trace8(tracer *t, const ray8 *r, const double *time, const bool active[ACCEL_PACKET],
+                   const uint32_t key[ACCEL_PACKET], color out[ACCEL_PACKET]);
 
 #endif

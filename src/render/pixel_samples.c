@@ -3,9 +3,10 @@
 #include "core/hash.h"
 #include "render/pixel_samples.h"
 
-void pixel_sampler_init(pixel_sampler *ps, const glint_settings *s, bool lens)
+void pixel_sampler_init(pixel_sampler *ps, const glint_settings *s, bool lens, bool motion)
 {
-    *ps = (pixel_sampler){.kind = s->sampler, .seed = glint_settings_random_seed(s), .lens = lens, .grid = 1};
+    *ps = (pixel_sampler){.kind = s->sampler, .seed = glint_settings_random_seed(s), .lens = lens, .grid = 1,
+                          .motion = motion};
     while (ps->grid * ps->grid < s->samples_per_pixel)
         ps->grid++;
     pixel_filter_init(&ps->filter, s->filter, s->filter_radius);
@@ -29,6 +30,8 @@ void pixel_samples_start(const pixel_sampler *ps, const int px[RAY8], const int 
     for (int i = 0; i < RAY8; i++) {
         b->px[i] = px[i];
         b->py[i] = py[i];
+        if (ps->motion)
+            b->time_scramble[i] = hash4((uint32_t)px[i], (uint32_t)py[i], 0x54494d45U, ps->seed);
         if (!patterned)
             continue;
         uint32_t h = hash4((uint32_t)px[i], (uint32_t)py[i], 0, ps->seed ^ 0x4c454e53U);
@@ -113,4 +116,9 @@ void pixel_samples_at_any(const pixel_sampler *ps, const pixel_block_samples *b,
     }
     if (ps->lens)
         points_on_lenses(ps, b, k, lens);
+}
+
+void pixel_samples_time(const pixel_block_samples *b, int k, double time[RAY8])
+{
+    sobol_scrambled8(sobol_same((uint32_t)k), b->time_scramble, time);
 }

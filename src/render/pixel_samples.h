@@ -27,6 +27,7 @@ typedef struct pixel_sampler {
     uint32_t seed;
     bool lens;              /* the camera takes lens samples */
     bool plain_box;         /* the default box of radius 0.5: a sample's position is its point in the pixel */
+    bool motion;            /* samples take times over the shutter (pixel_samples_time) */
     pixel_filter filter;
 } pixel_sampler;
 
@@ -36,12 +37,20 @@ typedef struct pixel_block_samples {
     int px[RAY8], py[RAY8];
     uint32_t pattern[RAY8];        /* the pixel's own scramble (sobol, and the lens cells' points) */
     sobol_lanes scramble[4];       /* sobol: the scrambles of the four dimensions (image x, y; lens u, v) */
+    sobol_lanes time_scramble;     /* with motion: the scramble of the samples' times */
     uint32_t shuffle_a[RAY8], shuffle_b[RAY8]; /* the grid's lens cells: k goes to (a k + b) mod n^2 */
 } pixel_block_samples;
 
 /* Sets ps up for the settings (which must have passed validation), for a
- * camera that takes lens samples or not. */
-void pixel_sampler_init(pixel_sampler *ps, const glint_settings *s, bool lens);
+ * camera that takes lens samples or not, and for a scene where something
+ * moves over the shutter or not. */
+void pixel_sampler_init(pixel_sampler *ps, const glint_settings *s, bool lens, bool motion);
+
+/* Sample k's time over the shutter in each lane's pixel, in [0, 1): point
+ * k of the pixel's own scrambled van der Corput sequence (Owen's
+ * scrambling, core/sobol.h), so that any number of samples spread evenly
+ * over the shutter, whatever the sampler. Needs ps->motion. */
+void pixel_samples_time(const pixel_block_samples *b, int k, double time[RAY8]);
 
 /* Starts the block of pixels (px[i], py[i]). */
 void pixel_samples_start(const pixel_sampler *ps, const int px[RAY8], const int py[RAY8], pixel_block_samples *b);

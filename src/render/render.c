@@ -26,6 +26,9 @@ typedef struct job {
     const glint_scene *scene;
     const accel *acc;
     camera cam;
+    camera poses[CAMERA_MAX_POSES]; /* a moving camera's, pose_count of them (0: it stands still) */
+    int pose_count;
+    bool motion;                  /* something moves over the shutter: each sample has a time */
     const glint_render_options *opts;
     const render_feed *feed;
     film film;
@@ -81,14 +84,21 @@ __attribute__((always_inline)) static inline void trace_sample(tracer *t, const 
     ray8 rays;
     color c[ACCEL_PACKET];
     pixel_samples_at(&j->sampler, bs, k, x, y, &lens, negative);
-    /* Every ray is at the shutter's middle. */
-    camera_rays8(&j->cam, x, y, j->cam.uses_lens ? &lens : &camera_lens_centre, camera_shutter_middle, &rays);
+    /* Without motion, every ray is at the shutter's middle. */
+    double time[ACCEL_PACKET];
+    if (j->motion)
+        pixel_samples_time(bs, k, time);
+    const camera_lens8 *through = j->cam.uses_lens ? &lens : &camera_lens_centre;
+    if (j->pose_count)
+        camera_moving_rays8(j->poses, j->pose_count, x, y, through, time, &rays);
+    else
+        camera_rays8(&j->cam, x, y, through, j->motion ? time : camera_shutter_middle, &rays);
     /* What every other random number of the sample is hashed from. */
     uint32_t key[ACCEL_PACKET] = {0};
     if (j->keys)
         for (int i = 0; i < ACCEL_PACKET; i++)
             key[i] = hash4((uint32_t)bs->px[i], (uint32_t)bs->py[i], (uint32_t)k, j->key_seed);
-    tracer_trace8(t, &rays, traced, key, c);
+    tracer_trace8(t, &rays, j->motion ? time : NULL, traced, key, c);
     if (j->signed_film)
         film_block_add_signed(b, traced, c, negative, careful);
     else
@@ -363,7 +373,15 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
     j.keys = tracer_needs_keys(scene);
     j.key_seed = glint_settings_random_seed(&scene->settings) ^ 0x4b455953U;
     camera_init(&j.cam, &scene->camera, s->width, s->height);
-    pixel_sampler_init(&j.sampler, s, j.cam.uses_lens);
+    /* Motion blur only with a shutter open for a while. */
+    bool shutter = s->shutter_close > s->shutter_open;
+    j.pose_count = shutter ? scene->camera_pose_count : 0;
+    for (int k = 0; k < j.pose_count; k++)
+        camera_init(&j.poses[k], &scene->camera_poses[k], s->width, s->height);
+    j.motion = j.pose_count > 0;
+    for (int i = 0; shutter && i < scene->shape_count; i++)
+        j.motion |= scene->shapes[i].pose_count > 0;
+    pixel_sampler_init(&j.sampler, s, j.cam.uses_lens, j.motion);
     j.signed_film = s->adaptive_max_samples != 0 || j.sampler.filter.has_negative_lobes;
     /* Embree builds with every thread asked for; tracing needs no more
      * threads than tiles. */

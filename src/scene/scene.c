@@ -42,6 +42,7 @@ void glint_scene_free(glint_scene *s)
     free(s->materials);
     id_table_free(&s->texture_names);
     id_table_free(&s->material_names);
+    scene_motion_free(s);
     free(s->shapes);
     free(s->lights);
     free(s->area_lights);
@@ -92,8 +93,13 @@ glint_settings glint_scene_get_settings(const glint_scene *scene)
 glint_status glint_scene_set_camera(glint_scene *scene, const glint_camera *cam, glint_error *err)
 {
     glint_status s = camera_validate(cam, err);
-    if (s == GLINT_OK)
+    if (s == GLINT_OK) {
         scene->camera = *cam;
+        /* Poses of the camera it replaces are not this camera's. */
+        free(scene->camera_poses);
+        scene->camera_poses = NULL;
+        scene->camera_pose_count = 0;
+    }
     return s;
 }
 

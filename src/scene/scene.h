@@ -53,6 +53,9 @@ struct glint_scene {
     texture_image *images;    /* and its pixels, at the same index */
     size_t image_cap;
     unsigned long long image_bytes; /* their pixels' bytes, within SCENE_MAX_IMAGE_BYTES */
+    glint_camera *camera_poses; /* the camera's over the shutter (glint_scene_move_camera), */
+    int camera_pose_count;    /* or 0: it stands still */
+    bool animated;            /* read with keyed values (glint_scene_is_animated) */
     char **warnings;          /* what it went on without, for the user */
     int warning_count;
     size_t warning_cap;
@@ -94,6 +97,9 @@ void scene_free_images(glint_scene *scene);
 glint_status scene_warn(glint_scene *scene, glint_error *err, const char *format, ...)
     __attribute__((format(printf, 3, 4)));
 
+/* Frees what scene_motion.c keeps (by glint_scene_free). */
+void scene_motion_free(glint_scene *scene);
+
 /* Frees what scene_files.c keeps (by glint_scene_free). */
 void scene_files_free(glint_scene *scene);
 
@@ -132,6 +138,11 @@ const char *sampling_rule_broken(const glint_settings *s, glint_error *err);
 /* The keys of settings.filter (offsets into glint_settings): the type,
  * box by default, and the radius, 0 for the type's own. */
 param_table filter_params(void);
+
+/* The keys of settings.shutter (offsets into glint_settings): when it
+ * opens and closes, in frames (0 and 0.5 when given), and the poses of a
+ * moving thing over it (2). */
+param_table shutter_params(void);
 
 /* The keys of settings.frames (offsets into glint_settings): the first
  * and last frame of a sequence, 0 and 0 by default, and the frames a

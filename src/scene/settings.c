@@ -140,6 +140,21 @@ static const param FRAMES_PARAMS[] = {
      .constant = true, .meaning = "frames a second: frame f shows the scene at f / fps seconds"},
 };
 
+static const param SHUTTER_PARAMS[] = {
+    {.key = "open", .type = PARAM_NUMBER, SETTING(shutter_open), .lo = -1, .hi = 1, .unit = "frames",
+     .meaning = "when the shutter opens, from the frame's time"},
+    {.key = "close", .type = PARAM_NUMBER, SETTING(shutter_close), .def = {0.5}, .lo = -1, .hi = 1, .unit = "frames",
+     .meaning = "when it closes, at least open: 0.5 is a film camera's 180-degree shutter"},
+    {.key = "steps", .type = PARAM_INTEGER, SETTING(shutter_steps), .def = {2}, .lo = 2, .hi = 64,
+     .meaning = "poses a moving thing takes over the shutter, moving in straight lines between them; more "
+                "follow a curved path closer"},
+};
+
+param_table shutter_params(void)
+{
+    return PARAM_TABLE(SHUTTER_PARAMS);
+}
+
 param_table frames_params(void)
 {
     return PARAM_TABLE(FRAMES_PARAMS);
@@ -189,6 +204,8 @@ glint_settings glint_settings_default(void)
     memset(&s, 0, sizeof s);
     params_defaults(settings_params(), &s);
     params_defaults(frames_params(), &s);
+    params_defaults(shutter_params(), &s);
+    s.shutter_close = 0; /* no motion blur until a shutter is given */
     return s;
 }
 
@@ -236,6 +253,11 @@ glint_status settings_validate(const glint_settings *s, glint_error *err)
         st = params_check(adaptive_params(), s, "adaptive", err);
     if (!st)
         st = params_check(frames_params(), s, "frames", err);
+    if (!st)
+        st = params_check(shutter_params(), s, "shutter", err);
+    if (!st && s->shutter_close < s->shutter_open)
+        st = error_set(err, GLINT_ERR_INVALID, "shutter: 'close' (%g) comes before 'open' (%g)", s->shutter_close,
+                       s->shutter_open);
     if (!st && (s->frame < 0 || s->frame > MAX_FRAME))
         st = error_set(err, GLINT_ERR_INVALID, "frame %d is not from 0 to %d", s->frame, MAX_FRAME);
     if (!st && s->frame_end < s->frame_start)

@@ -41,6 +41,7 @@ typedef struct loader {
     char **paths;                                /* files named by keys, resolved: freed at the end */
     size_t path_count, path_cap;
     double time;                                 /* seconds: keyed values are read as they are then */
+    bool keyed;                                  /* some value was keyed */
     bool streaming;                              /* objects read while parsed: an attempt, silent,
                                                     given up at any problem (scene_file.c) */
 } loader;

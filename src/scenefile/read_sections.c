@@ -24,7 +24,7 @@ static void read_settings_map(loader *l, const ynode *settings, const char *key,
 
 void read_settings(loader *l, const ynode *n)
 {
-    static const char *const extra_keys[] = {"output", "ambient_occlusion", "filter", "adaptive", "frames"};
+    static const char *const extra_keys[] = {"output", "ambient_occlusion", "filter", "adaptive", "frames", "shutter"};
     if (!yr_is_map(&l->r, n, "settings"))
         return;
     l->settings_node = n;
@@ -36,6 +36,11 @@ void read_settings(loader *l, const ynode *n)
     read_settings_map(l, n, "filter", filter_params());
     read_settings_map(l, n, "adaptive", adaptive_params());
     read_settings_map(l, n, "frames", frames_params());
+    read_settings_map(l, n, "shutter", shutter_params());
+    const ynode *shutter = yr_get(&l->r, n, "shutter");
+    if (shutter && l->settings.shutter_close < l->settings.shutter_open)
+        diag_at(&l->d, shutter, "shutter: 'close' (%g) comes before 'open' (%g)", l->settings.shutter_close,
+                l->settings.shutter_open);
     const ynode *frames = yr_get(&l->r, n, "frames");
     if (frames && l->settings.frame_end < l->settings.frame_start)
         diag_at(&l->d, frames, "frames: 'end' (%d) comes before 'start' (%d)", l->settings.frame_end,

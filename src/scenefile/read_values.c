@@ -91,6 +91,7 @@ static bool read_keyed(loader *l, const ynode *n, const param *p, void *field)
         diag_at(&l->d, n, "'%s' cannot change with time", p->key);
         return false;
     }
+    l->keyed = true;
     yr_check_keys(&l->r, n, p->key, keyed_keys, COUNT(keyed_keys));
     const ynode *list = yr_get(&l->r, n, "keys"), *how = yr_get(&l->r, n, "interpolate");
     int way = how ? word(l, how, "interpolate", ways, COUNT(ways)) : GLINT_INTERPOLATE_LINEAR;

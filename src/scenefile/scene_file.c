@@ -418,24 +418,91 @@ static glint_scene *load_once(const glint_load_options *o, glint_error *err, con
         glint_scene_free(l.scene);
         return NULL;
     }
+    l.scene->animated = l.keyed;
     return l.scene;
 }
 
 /* Reads a scene streamed and, when that attempt gives up, again with whole
  * trees (scene_file_mode): the bytes of `data` are read twice then, and
  * a file's again. */
-static glint_scene *load(const glint_load_options *o, glint_error *err, const char *name,
-                         void (*body)(loader *, const void *, size_t, const char *), const void *data, size_t size)
+static glint_scene *load_at(const glint_load_options *o, glint_error *err, const char *name,
+                            void (*body)(loader *, const void *, size_t, const char *), const void *data, size_t size)
 {
     glint_error attempt;
-    if (o && !isfinite(o->time)) {
-        error_set(err, GLINT_ERR_INVALID, "the time to load '%s' at must be a finite number of seconds", name);
-        return NULL;
-    }
     if (mode == SCENE_FILE_STREAMED_ONLY)
         return load_once(o, err, name, body, data, size, true);
     glint_scene *scene = mode == SCENE_FILE_STREAMED ? load_once(o, &attempt, name, body, data, size, true) : NULL;
     return scene ? scene : load_once(o, err, name, body, data, size, false);
+}
+
+/* Whether two transforms are the same, bit for bit. */
+static bool same_transform(const glint_transform *a, const glint_transform *b)
+{
+    return memcmp(a, b, sizeof *a) == 0;
+}
+
+/* Gives an animated scene with a shutter its motion (docs/animation.md):
+ * the scene read again at each of its shutter's poses, evenly spaced from
+ * the opening to the closing, and each shape whose transform changes and
+ * a camera that does moved through them. The scene itself, or NULL after
+ * a failure (reported, and in err), freed. */
+static glint_scene *add_motion(glint_scene *scene, const glint_load_options *o, glint_error *err, const char *name,
+                               void (*body)(loader *, const void *, size_t, const char *), const void *data,
+                               size_t size)
+{
+    const glint_settings s = scene->settings;
+    if (!scene->animated || !(s.shutter_close > s.shutter_open))
+        return scene;
+    int poses = s.shutter_steps, shapes = scene->shape_count;
+    glint_transform *xf = malloc(sizeof *xf * (size_t)poses * (size_t)(shapes ? shapes : 1));
+    glint_camera cameras[64];
+    bool good = xf != NULL;
+    if (!good)
+        error_set(err, GLINT_ERR_NOMEM, "out of memory for the scene's motion");
+    for (int k = 0; k < poses && good; k++) {
+        glint_load_options at = o ? *o : (glint_load_options){0};
+        at.time += (s.shutter_open + (s.shutter_close - s.shutter_open) * k / (poses - 1)) / s.fps;
+        glint_scene *pose = load_at(&at, err, name, body, data, size);
+        good = pose && pose->shape_count == shapes;
+        if (pose && !good)
+            error_set(err, GLINT_ERR_INVALID, "'%s' has %d shapes at %g s but %d at %g s", name, shapes,
+                      o ? o->time : 0, pose->shape_count, at.time);
+        for (int i = 0; good && i < shapes; i++)
+            xf[(size_t)i * poses + k] = pose->shapes[i].to_world;
+        if (good)
+            cameras[k] = pose->camera;
+        glint_scene_free(pose);
+    }
+    for (int i = 0; good && i < shapes; i++) {
+        const glint_transform *mine = &xf[(size_t)i * poses];
+        bool moves = false;
+        for (int k = 1; k < poses; k++)
+            moves |= !same_transform(&mine[k], &mine[0]);
+        good = !moves || glint_scene_move_shape(scene, i, poses, mine, err) == GLINT_OK;
+    }
+    bool camera_moves = false;
+    for (int k = 1; good && k < poses; k++)
+        camera_moves |= memcmp(&cameras[k], &cameras[0], sizeof cameras[0]) != 0;
+    if (good && camera_moves)
+        good = glint_scene_move_camera(scene, poses, cameras, err) == GLINT_OK;
+    free(xf);
+    if (!good) {
+        glint_scene_free(scene);
+        return NULL;
+    }
+    return scene;
+}
+
+/* A scene as it is at o's time, with the motion over its shutter. */
+static glint_scene *load(const glint_load_options *o, glint_error *err, const char *name,
+                         void (*body)(loader *, const void *, size_t, const char *), const void *data, size_t size)
+{
+    if (o && !isfinite(o->time)) {
+        error_set(err, GLINT_ERR_INVALID, "the time to load '%s' at must be a finite number of seconds", name);
+        return NULL;
+    }
+    glint_scene *scene = load_at(o, err, name, body, data, size);
+    return scene ? add_motion(scene, o, err, name, body, data, size) : NULL;
 }
 
 static void body_file(loader *l, const void *data, size_t size, const char *name)

@@ -183,6 +183,8 @@ static void write_settings(const plan *p)
         write_settings_map(p, &m, "adaptive", adaptive_params(), &s->settings);
     if (s->settings.frame_start != 0 || s->settings.frame_end != 0 || s->settings.fps != 24)
         write_settings_map(p, &m, "frames", frames_params(), &s->settings);
+    if (s->settings.shutter_open != s->settings.shutter_close)
+        write_settings_map(p, &m, "shutter", shutter_params(), &s->settings);
     if (s->output) {
         ymap_key(&m, "output");
         yw_text(p->f, s->output);

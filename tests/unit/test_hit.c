@@ -72,7 +72,7 @@ static void find_hits(const glint_scene *scene, ray8 *r, accel_hit hits[ACCEL_PA
     int skip[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
     for (int i = 0; i < ACCEL_PACKET; i++)
         ray8_set(r, i, (ray){v3(0, 0, 0), d[i < 3 ? i : 0]});
-    accel_intersect8(a, r, INFINITY, skip, true, active, hits, found);
+    accel_intersect8(a, r, NULL, INFINITY, skip, true, active, hits, found);
     assert_true(found[0] && found[1] && found[2]);
     accel_free(a);
     free(shape_opaque);

@@ -333,7 +333,7 @@ static void test_smooth_normals_and_per_triangle_materials(void **state)
     bool active[ACCEL_PACKET] = {true}, found[ACCEL_PACKET];
     accel_hit hits[ACCEL_PACKET];
     int skip[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
-    accel_intersect8(a, &rays, INFINITY, skip, false, active, hits, found);
+    accel_intersect8(a, &rays, NULL, INFINITY, skip, false, active, hits, found);
     assert_true(found[0]);
     assert_false(found[1]);
     accel_hit h = hits[0];

@@ -1,0 +1,73 @@
+/* scene_motion.c - what moves over the shutter (settings.shutter_open to
+ * _close): a shape's poses and the camera's, evenly spaced over it, each
+ * moving in straight lines between them; and whether the scene was read
+ * with keyed values at all (docs/animation.md). */
+#include <stdlib.h>
+#include <string.h>
+#include "core/error.h"
+#include "scene/scene.h"
+
+/* The most poses over one shutter. */
+#define MAX_POSES 64
+
+bool glint_scene_is_animated(const glint_scene *scene)
+{
+    return scene->animated;
+}
+
+static glint_status check_count(int count, glint_error *err)
+{
+    if (count < 2 || count > MAX_POSES)
+        return error_set(err, GLINT_ERR_INVALID, "motion takes 2 to %d poses, got %d", MAX_POSES, count);
+    return GLINT_OK;
+}
+
+glint_status glint_scene_move_shape(glint_scene *scene, int index, int count, const glint_transform *poses,
+                                    glint_error *err)
+{
+    if (index < 0 || index >= scene->shape_count)
+        return error_set(err, GLINT_ERR_INVALID, "shape %d does not exist", index);
+    glint_status st = check_count(count, err);
+    if (st)
+        return st;
+    shape *s = &scene->shapes[index];
+    transform *copy = malloc(sizeof *copy * (size_t)count);
+    if (!copy)
+        return error_set(err, GLINT_ERR_NOMEM, "out of memory for a shape's motion");
+    memcpy(copy, poses, sizeof *copy * (size_t)count);
+    shape moved = *s;
+    if (!shape_move(&moved, copy, count, err)) {
+        free(copy);
+        return GLINT_ERR_INVALID;
+    }
+    free(s->poses);
+    *s = moved;
+    return GLINT_OK;
+}
+
+glint_status glint_scene_move_camera(glint_scene *scene, int count, const glint_camera *cameras, glint_error *err)
+{
+    glint_status st = check_count(count, err);
+    for (int k = 0; k < count && !st; k++) {
+        st = camera_validate(&cameras[k], err);
+        if (!st && cameras[k].kind != scene->camera.kind)
+            st = error_set(err, GLINT_ERR_INVALID, "camera pose %d is of another kind than the scene's camera", k + 1);
+    }
+    if (st)
+        return st;
+    glint_camera *copy = malloc(sizeof *copy * (size_t)count);
+    if (!copy)
+        return error_set(err, GLINT_ERR_NOMEM, "out of memory for the camera's motion");
+    memcpy(copy, cameras, sizeof *copy * (size_t)count);
+    free(scene->camera_poses);
+    scene->camera_poses = copy;
+    scene->camera_pose_count = count;
+    return GLINT_OK;
+}
+
+void scene_motion_free(glint_scene *scene)
+{
+    for (int i = 0; i < scene->shape_count; i++)
+        free(scene->shapes[i].poses);
+    free(scene->camera_poses);
+}

@@ -1,0 +1,148 @@
+/* test_motion_blur.c - a shutter open while things move: a small ball
+ * moving sideways at a known speed leaves a streak whose ends (where it is
+ * half as bright as along its middle) lie where the pinhole projects the
+ * ball's path's ends, within a pixel; a ball that stands still in the same
+ * image is bit for bit what it is without a shutter; a camera panning
+ * streaks a still ball by as much as the ball moving past a still camera;
+ * the same bytes for any thread count; and a shutter with nothing keyed
+ * changes nothing. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include "glint.h"
+
+enum { WIDTH = 400, HEIGHT = 120 };
+
+/* tan(15 degrees): half the 30-degree view's height at distance 1. */
+#define TAN15 0.2679491924311227
+
+/* The camera: at z = 10 looking down -z, 30 degrees high: a point (x, y, 0)
+ * is at pixel column WIDTH / 2 + x / (10 tan 15) * HEIGHT / 2. */
+static double column_of(double x)
+{
+    return WIDTH / 2.0 + x / (10 * TAN15) * HEIGHT / 2.0;
+}
+
+static glint_image render(const char *yaml, int threads)
+{
+    glint_error err = {0};
+    glint_scene *scene = glint_scene_load_memory(yaml, strlen(yaml), "motion.yaml", NULL, &err);
+    if (!scene)
+        fail_msg("the scene did not load: %s", err.message);
+    glint_render_options o = {.threads = threads};
+    glint_image image;
+    assert_int_equal(glint_render(scene, &o, &image, NULL, &err), GLINT_OK);
+    glint_scene_free(scene);
+    return image;
+}
+
+/* The shutter open a whole second (fps 1) or, with `shutter` false, not at
+ * all; the moving ball's translate and the camera's position and look_at
+ * as given. */
+static char *scene_text(bool shutter, const char *moving_ball, const char *camera)
+{
+    static char text[2048];
+    snprintf(text, sizeof text,
+             "settings: {width: %d, height: %d, samples: 256, sampler: sobol, frames: {fps: 1}%s}\n"
+             "camera: {position: %s, fov: 30}\n"
+             "materials: {white: {color: {linear: [1, 1, 1]}, ambient: 1, diffuse: 0, specular: 0}}\n"
+             "objects:\n"
+             "  - {type: sphere, radius: 0.25, material: white, transform: [{translate: %s}]}\n"
+             "  - {type: sphere, radius: 0.25, center: [0, -0.8, 0], material: white}\n",
+             WIDTH, HEIGHT, shutter ? ", shutter: {open: 0, close: 1}" : "", camera, moving_ball);
+    return text;
+}
+
+static const char STILL_CAMERA[] = "[0, 0, 10], look_at: [0, 0, 0]";
+static const char MOVING[] = "{keys: [[0, [-2, 0.8, 0]], [1, [2, 0.8, 0]]]}";
+
+/* Where along row y the brightness first rises through, and last falls
+ * through, half of its value at the row's middle: linearly between pixels. */
+static void half_max_ends(const glint_image *im, int y, double *left, double *right)
+{
+    const float *row = im->pixels + (size_t)y * WIDTH * 3;
+    double half = row[(WIDTH / 2) * 3] / 2;
+    assert_true(half > 0.01);
+    int a = 0, b = WIDTH - 1;
+    while (row[a * 3] < half)
+        a++;
+    while (row[b * 3] < half)
+        b--;
+    *left = a - (row[a * 3] - half) / (row[a * 3] - row[(a - 1) * 3]) + 0.5;
+    *right = b + (row[b * 3] - half) / (row[b * 3] - row[(b + 1) * 3]) + 0.5;
+}
+
+/* The row through the moving ball's centre (y = 0.8). */
+static int streak_row(void)
+{
+    return (int)(HEIGHT / 2.0 - 0.8 / (10 * TAN15) * HEIGHT / 2.0);
+}
+
+static void test_streak_length(void **state)
+{
+    glint_image im = render(scene_text(true, MOVING, STILL_CAMERA), 2);
+    double left, right;
+    half_max_ends(&im, streak_row(), &left, &right);
+    assert_true(fabs(left - column_of(-2)) < 1);
+    assert_true(fabs(right - column_of(2)) < 1);
+    /* Along the middle the ball covers a point for 0.5 of the 4 units it
+     * moves: an eighth of the time, so an eighth of its light. */
+    double middle = im.pixels[((size_t)streak_row() * WIDTH + WIDTH / 2) * 3];
+    assert_true(fabs(middle - 0.125) < 0.02);
+    glint_image_free(&im);
+}
+
+/* The still ball's pixels are those of the same scene without a shutter,
+ * bit for bit; the moving ball's path is lit only with the shutter. */
+static void test_still_ball_unchanged(void **state)
+{
+    glint_image blurred = render(scene_text(true, MOVING, STILL_CAMERA), 2);
+    glint_image sharp = render(scene_text(false, MOVING, STILL_CAMERA), 2);
+    size_t half = (size_t)WIDTH * HEIGHT / 2 * 3; /* the lower half: the still ball */
+    assert_memory_equal(blurred.pixels + half, sharp.pixels + half, half * sizeof(float));
+    size_t at = ((size_t)streak_row() * WIDTH + WIDTH / 2) * 3;
+    assert_true(blurred.pixels[at] > 0.1 && sharp.pixels[at] == 0);
+    glint_image_free(&blurred);
+    glint_image_free(&sharp);
+}
+
+/* The camera moving 4 units to the left over the shutter streaks the
+ * still ball at (0, 0.8) as the ball moving 4 to the right did. */
+static void test_camera_pan(void **state)
+{
+    glint_image im = render(scene_text(true, "[0, 0.8, 0]", "{keys: [[0, [2, 0, 10]], [1, [-2, 0, 10]]]}, "
+                                                            "look_at: {keys: [[0, [2, 0, 0]], [1, [-2, 0, 0]]]}"),
+                            2);
+    double left, right;
+    half_max_ends(&im, streak_row(), &left, &right);
+    assert_true(fabs(left - column_of(-2)) < 1);
+    assert_true(fabs(right - column_of(2)) < 1);
+    glint_image_free(&im);
+}
+
+/* The same bytes with 1 and 3 threads. */
+static void test_threads(void **state)
+{
+    const char *yaml = scene_text(true, MOVING, STILL_CAMERA);
+    glint_image a = render(yaml, 1), b = render(yaml, 3);
+    assert_memory_equal(a.pixels, b.pixels, sizeof(float) * WIDTH * HEIGHT * 3);
+    glint_image_free(&a);
+    glint_image_free(&b);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_streak_length),
+        cmocka_unit_test(test_still_ball_unchanged),
+        cmocka_unit_test(test_camera_pan),
+        cmocka_unit_test(test_threads),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
