@@ -653,6 +653,14 @@ bool glint_scene_is_animated(const glint_scene *scene);
 glint_status glint_scene_move_shape(glint_scene *scene, int shape, int count, const glint_transform *poses,
                                     glint_error *err);
 
+/* A point, spot or directional light's motion over the shutter, as
+ * glint_scene_move_shape's: its position, direction, colour and cone go in
+ * straight lines from each of `count` poses (each checked as
+ * glint_scene_add_light checks, of the light's kind) to the next. Area
+ * lights do not move (GLINT_ERR_INVALID). */
+glint_status glint_scene_move_light(glint_scene *scene, int light, int count, const glint_light *poses,
+                                    glint_error *err);
+
 /* The camera's motion over the shutter, as glint_scene_move_shape's: each
  * lane's ray goes in a straight line from its ray through cameras[k] to
  * its ray through cameras[k + 1]. Each camera must pass

@@ -2,6 +2,7 @@
  * parameter table and rules, then sends rays and results between world
  * space and the object space where each kind works. */
 #include <string.h>
+#include "core/poses.h"
 #include "geometry/shape_kind.h"
 #include "geometry/shape_math.h"
 
@@ -70,9 +71,9 @@ const shape *shape_at(const shape *s, double time, shape *out)
     if (!s->pose_count)
         return s;
     *out = *s;
-    double at = time * (s->pose_count - 1);
-    int k = at >= s->pose_count - 1 ? s->pose_count - 2 : at > 0 ? (int)at : 0;
-    double w = at - k;
+    int k;
+    double w;
+    pose_stretch(time, s->pose_count, &k, &w);
     const transform *a = &s->poses[k], *b = &s->poses[k + 1];
     for (int i = 0; i < 3; i++)
         for (int j = 0; j < 4; j++)

@@ -3,6 +3,7 @@
  * those samples pass. */
 #include <math.h>
 #include <string.h>
+#include "core/poses.h"
 #include "render/camera_kind.h"
 
 static const camera_kind *const KINDS[] = {
@@ -67,11 +68,8 @@ void camera_moving_rays8(const camera *poses, int count, const double x[RAY8], c
 {
     int pose[RAY8];
     double w[RAY8];
-    for (int i = 0; i < RAY8; i++) {
-        double at = time[i] * (count - 1);
-        pose[i] = at >= count - 1 ? count - 2 : at > 0 ? (int)at : 0;
-        w[i] = at - pose[i];
-    }
+    for (int i = 0; i < RAY8; i++)
+        pose_stretch(time[i], count, &pose[i], &w[i]);
     /* Each stretch between two poses that some lane is in: both poses'
      * rays for the packet, blended in the lanes there. */
     for (int k = 0; k < count - 1; k++) {

@@ -229,7 +229,9 @@ __attribute__((always_inline)) static inline void light_packet(tracer *t, const 
         if (!found[i])
             continue;
         ray ri = ray8_get(r, i), si;
-        if (!light_delta_sample(l, sp[i].s.p, &ls[i]) || !shadow_segment(&ri, &sp[i], &ls[i], &si))
+        light moved;
+        const light *at = t->time ? light_at(l, t->time[i], &moved) : l;
+        if (!light_delta_sample(at, sp[i].s.p, &ls[i]) || !shadow_segment(&ri, &sp[i], &ls[i], &si))
             continue;
         if (!any)
             shadow = *r;

@@ -1,5 +1,5 @@
 /* scene_motion.c - what moves over the shutter (settings.shutter_open to
- * _close): a shape's poses and the camera's, evenly spaced over it, each
+ * _close): a shape's poses, a delta light's and the camera's, evenly spaced over it, each
  * moving in straight lines between them; and whether the scene was read
  * with keyed values at all (docs/animation.md). */
 #include <stdlib.h>
@@ -65,8 +65,39 @@ glint_status glint_scene_move_camera(glint_scene *scene, int count, const glint_
     return GLINT_OK;
 }
 
+glint_status glint_scene_move_light(glint_scene *scene, int index, int count, const glint_light *poses,
+                                    glint_error *err)
+{
+    if (index < 0 || index >= scene->light_count)
+        return error_set(err, GLINT_ERR_INVALID, "light %d does not exist", index);
+    light *l = &scene->lights[index];
+    if (!l->kind->delta)
+        return error_set(err, GLINT_ERR_INVALID, "a %s light cannot move: only point, spot and directional lights do",
+                         l->kind->name);
+    glint_status st = check_count(count, err);
+    if (st)
+        return st;
+    light *made = malloc(sizeof *made * (size_t)count);
+    if (!made)
+        return error_set(err, GLINT_ERR_NOMEM, "out of memory for a light's motion");
+    for (int k = 0; k < count && !st; k++) {
+        st = light_init(&made[k], &poses[k], err);
+        if (!st && made[k].kind != l->kind)
+            st = error_set(err, GLINT_ERR_INVALID, "light pose %d is of another kind than the light", k + 1);
+    }
+    if (st) {
+        free(made);
+        return st;
+    }
+    free(l->poses);
+    light_move(l, made, count);
+    return GLINT_OK;
+}
+
 void scene_motion_free(glint_scene *scene)
 {
+    for (int i = 0; i < scene->light_count; i++)
+        free(scene->lights[i].poses);
     for (int i = 0; i < scene->shape_count; i++)
         free(scene->shapes[i].poses);
     free(scene->camera_poses);

@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/poses.h"
 #include "core/error.h"
 #include "core/lanes.h"
 #include "core/registry.h"
@@ -59,6 +60,41 @@ double spot_factor(const light *l, double cos_angle)
         return 1;
     double t = (cos_angle - l->cos_outer) / (l->cos_inner - l->cos_outer);
     return t * t * (3 - 2 * t);
+}
+
+void light_move(light *l, light *poses, int count)
+{
+    *l = poses[0];
+    l->poses = poses;
+    l->pose_count = count;
+}
+
+static double blend(double a, double b, double w)
+{
+    return a + (b - a) * w;
+}
+
+const light *light_at(const light *l, double time, light *out)
+{
+    if (!l->pose_count)
+        return l;
+    int k;
+    double w;
+    pose_stretch(time, l->pose_count, &k, &w);
+    const light *a = &l->poses[k], *b = &l->poses[k + 1];
+    *out = *a;
+    out->desc.position = v3(blend(a->desc.position.x, b->desc.position.x, w),
+                            blend(a->desc.position.y, b->desc.position.y, w),
+                            blend(a->desc.position.z, b->desc.position.z, w));
+    out->desc.color = rgb(blend(a->desc.color.r, b->desc.color.r, w), blend(a->desc.color.g, b->desc.color.g, w),
+                          blend(a->desc.color.b, b->desc.color.b, w));
+    vec3 dir = v3(blend(a->dir.x, b->dir.x, w), blend(a->dir.y, b->dir.y, w), blend(a->dir.z, b->dir.z, w));
+    /* Opposite directions blend through nothing: that instant keeps the nearer. */
+    out->dir = v3_length(dir) > 0 ? v3_normalize(dir) : w < 0.5 ? a->dir : b->dir;
+    out->cos_outer = blend(a->cos_outer, b->cos_outer, w);
+    out->cos_inner = blend(a->cos_inner, b->cos_inner, w);
+    out->pose_count = 0;
+    return out;
 }
 
 bool light_delta_sample_fn(const light *l, vec3 p, double u1, double u2, light_sample *out)

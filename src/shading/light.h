@@ -64,6 +64,8 @@ typedef struct light {
     int triangle_count;       /* and their number */
     double power;             /* an area light's or emitter's brightness (rgb_mean) times the area
                                  it glows over, to choose among them by (light_choice.h) */
+    struct light *poses;      /* a moving delta light's over the shutter (light_move), evenly */
+    int pose_count;           /* spaced, or 0: it stands still; owned by the scene */
 } light;
 
 /* What a light offers to point p for one sample. */
@@ -247,6 +249,16 @@ static inline bool light_delta_sample(const light *l, vec3 p, light_sample *out)
     out->radiance = rgb_scale(l->desc.color, factor);
     return factor > 0;
 }
+
+/* Makes delta light l move over the shutter through `count` (2 or more)
+ * initialised lights of its kind, evenly spaced: l keeps `poses`, which
+ * the caller frees after it, and takes the first's place. */
+void light_move(light *l, light *poses, int count);
+
+/* The delta light l is at `time` in [0, 1] over the shutter, into *out: a
+ * copy whose position, direction, colour and cone are blended in a
+ * straight line between the poses about that time (l itself when still). */
+const light *light_at(const light *l, double time, light *out);
 
 /* light_delta_sample as a light_kind.sample, for the records of delta
  * kinds (the sample (u1, u2) is not used). */

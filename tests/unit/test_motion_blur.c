@@ -4,6 +4,7 @@
  * ball's path's ends, within a pixel; a ball that stands still in the same
  * image is bit for bit what it is without a shutter; a camera panning
  * streaks a still ball by as much as the ball moving past a still camera;
+ * a light changing colour or moving lights by its mean over the shutter;
  * the same bytes for any thread count; and a shutter with nothing keyed
  * changes nothing. */
 #include <stdarg.h>
@@ -136,6 +137,48 @@ static void test_threads(void **state)
     glint_image_free(&b);
 }
 
+/* A point light over a white floor, seen from above. */
+static const char *lit_floor(bool shutter, const char *light)
+{
+    static char text[1024];
+    snprintf(text, sizeof text,
+             "settings: {width: 16, height: 16, samples: 256, sampler: sobol, frames: {fps: 1}%s}\n"
+             "camera: {position: [0, 10, 0], look_at: [0, 0, 0], up: [0, 0, -1], fov: 2}\n"
+             "materials: {floor: {color: {linear: [1, 1, 1]}, ambient: 0, diffuse: 1, specular: 0}}\n"
+             "lights: [%s]\n"
+             "objects: [{type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: floor}]\n",
+             shutter ? ", shutter: {open: 0, close: 1}" : "", light);
+    return text;
+}
+
+/* A light whose colour rises from black to white over the shutter lights
+ * as much as half the white light; one moving from 4 units straight above
+ * the floor's middle to 4 units aside lights it by the cosine's mean over
+ * its path, worked out below by the midpoint rule (no falloff: only the
+ * cosine changes). */
+static void test_moving_light(void **state)
+{
+    glint_image full = render(lit_floor(false, "{type: point, position: [0, 4, 0], color: {linear: [1, 1, 1]}}"), 2);
+    glint_image rising = render(lit_floor(true, "{type: point, position: [0, 4, 0], "
+                                                "color: {keys: [[0, {linear: [0, 0, 0]}], [1, {linear: [1, 1, 1]}]]}}"),
+                                2);
+    glint_image moving = render(lit_floor(true, "{type: point, position: {keys: [[0, [0, 4, 0]], [1, [4, 4, 0]]]}, "
+                                                "color: {linear: [1, 1, 1]}}"),
+                                2);
+    size_t middle = (8 * 16 + 8) * 3;
+    assert_true(fabs(rising.pixels[middle] / full.pixels[middle] - 0.5) < 0.01);
+    /* The floor's point seen at the middle pixel, a hair off the centre. */
+    double mean = 0;
+    for (int i = 0; i < 10000; i++) {
+        double x = 4 * (i + 0.5) / 10000;
+        mean += 4 / sqrt(x * x + 16) / 10000;
+    }
+    assert_true(fabs(moving.pixels[middle] / full.pixels[middle] - mean) < 0.01);
+    glint_image_free(&full);
+    glint_image_free(&rising);
+    glint_image_free(&moving);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -143,6 +186,7 @@ int main(void)
         cmocka_unit_test(test_still_ball_unchanged),
         cmocka_unit_test(test_camera_pan),
         cmocka_unit_test(test_threads),
+        cmocka_unit_test(test_moving_light),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
