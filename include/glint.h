@@ -653,6 +653,11 @@ bool glint_scene_is_animated(const glint_scene *scene);
 glint_status glint_scene_move_shape(glint_scene *scene, int shape, int count, const glint_transform *poses,
                                     glint_error *err);
 
+/* A placed mesh's motion over the shutter, as glint_scene_move_shape's:
+ * Embree's instance motion blur, one time step a pose. */
+glint_status glint_scene_move_instance(glint_scene *scene, int instance, int count, const glint_transform *poses,
+                                       glint_error *err);
+
 /* A point, spot or directional light's motion over the shutter, as
  * glint_scene_move_shape's: its position, direction, colour and cone go in
  * straight lines from each of `count` poses (each checked as

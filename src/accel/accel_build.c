@@ -92,15 +92,22 @@ static RTCScene mesh_scene(accel *a, const mesh *m, bool opaque)
     return s;
 }
 
+/* An Embree instance of the mesh's scene; a moving placement with one
+ * time step a pose, which Embree blends as instance_at does. */
 static void add_instance(accel *a, const instance *inst, unsigned id)
 {
-    float m[12];
-    for (int row = 0; row < 3; row++)
-        for (int col = 0; col < 4; col++)
-            m[row * 4 + col] = (float)inst->to_world.m[row][col];
     RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_INSTANCE);
     rtcSetGeometryInstancedScene(g, a->mesh_scenes[inst->mesh]);
-    rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
+    int steps = inst->pose_count ? inst->pose_count : 1;
+    rtcSetGeometryTimeStepCount(g, (unsigned)steps);
+    for (int k = 0; k < steps; k++) {
+        const transform *xf = inst->pose_count ? &inst->poses[k] : &inst->to_world;
+        float m[12];
+        for (int row = 0; row < 3; row++)
+            for (int col = 0; col < 4; col++)
+                m[row * 4 + col] = (float)xf->m[row][col];
+        rtcSetGeometryTransform(g, (unsigned)k, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, m);
+    }
     rtcCommitGeometry(g);
     rtcAttachGeometryByID(a->scene, g, id);
     rtcReleaseGeometry(g);
@@ -145,7 +152,8 @@ static bool add_meshes(accel *a, const accel_geometry *geo)
     bool *see_through = calloc((size_t)geo->mesh_count + 1, sizeof *see_through);
     bool ok = uses && see_through;
     for (int i = 0; ok && i < geo->instance_count; i++) {
-        uses[geo->instances[i].mesh]++;
+        /* A moving placement is an instance, whose transform Embree moves. */
+        uses[geo->instances[i].mesh] += geo->instances[i].pose_count ? 2 : 1;
         see_through[geo->instances[i].mesh] |= !(geo->instance_opaque && geo->instance_opaque[i]);
     }
     for (; ok && a->mesh_count < geo->mesh_count; a->mesh_count++)
@@ -153,7 +161,7 @@ static bool add_meshes(accel *a, const accel_geometry *geo)
             a->mesh_scenes[a->mesh_count] = mesh_scene(a, &geo->meshes[a->mesh_count], !see_through[a->mesh_count]);
     for (int i = 0; ok && i < geo->instance_count; i++) {
         const instance *inst = &geo->instances[i];
-        if (uses[inst->mesh] == 1) {
+        if (uses[inst->mesh] == 1 && !inst->pose_count) {
             ok = add_flat(a, &geo->meshes[inst->mesh], inst, i, !see_through[inst->mesh]);
         } else {
             add_instance(a, inst, 1u + (unsigned)i);

@@ -1,6 +1,7 @@
 /* transform.c - building and inverting affine transforms (public API part). */
 #include <math.h>
 #include <string.h>
+#include "core/poses.h"
 #include "core/transform.h"
 
 glint_transform glint_transform_identity(void)
@@ -101,4 +102,19 @@ bool xf_is_identity(const transform *t)
 {
     transform id = glint_transform_identity();
     return memcmp(t, &id, sizeof id) == 0;
+}
+
+void xf_between(const transform *poses, int count, double time, transform *to_world, transform *to_object)
+{
+    int k;
+    double w;
+    pose_stretch(time, count, &k, &w);
+    const transform *a = &poses[k], *b = &poses[k + 1];
+    for (int i = 0; i < 3; i++)
+        for (int j = 0; j < 4; j++)
+            to_world->m[i][j] = a->m[i][j] + (b->m[i][j] - a->m[i][j]) * w;
+    if (!xf_invert(to_world, to_object)) {
+        *to_world = w < 0.5 ? *a : *b;
+        xf_invert(to_world, to_object);
+    }
 }

@@ -14,6 +14,12 @@ transform xf_mul(const transform *a, const transform *b);
 /* Inverts t into *inv; false when t is singular or not finite. */
 bool xf_invert(const transform *t, transform *inv);
 
+/* The transform `count` poses (evenly spaced over time [0, 1]) give at
+ * `time`, each number blended in a straight line between the poses about
+ * it, into *to_world, and its inverse into *to_object; where the blend is
+ * not invertible, the nearer pose. */
+void xf_between(const transform *poses, int count, double time, transform *to_world, transform *to_object);
+
 /* True when t is the identity exactly. */
 bool xf_is_identity(const transform *t);
 

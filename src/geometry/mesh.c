@@ -103,6 +103,16 @@ void mesh_prefetch(const mesh *m, unsigned tri)
     }
 }
 
+const instance *instance_at(const instance *inst, double time, instance *out)
+{
+    if (!inst->pose_count)
+        return inst;
+    *out = *inst;
+    xf_between(inst->poses, inst->pose_count, time, &out->to_world, &out->to_object);
+    out->has_transform = true;
+    return out;
+}
+
 void mesh_surface(const mesh *m, const instance *inst, const ray *r, unsigned tri, double b1, double b2, double *t,
                   surface *out)
 {

@@ -39,7 +39,14 @@ typedef struct instance {
     int material;             /* -1: the mesh's own */
     transform to_world, to_object;
     bool has_transform;       /* false: to_world is the identity */
+    transform *poses;         /* moving: its world transforms over the shutter, evenly spaced */
+    int pose_count;           /* (0: it stands still), which Embree blends as shape_at does; owned by the scene */
 } instance;
+
+/* The placement inst is at `time` in [0, 1] over the shutter, into *out: a
+ * copy with the transform its poses blend to then (inst itself when
+ * still), as Embree's instance motion blur places it. */
+const instance *instance_at(const instance *inst, double time, instance *out);
 
 /* Copies and checks d (finite positions, indices in range, materials below
  * material_count) into *m. */

@@ -2,7 +2,6 @@
  * parameter table and rules, then sends rays and results between world
  * space and the object space where each kind works. */
 #include <string.h>
-#include "core/poses.h"
 #include "geometry/shape_kind.h"
 #include "geometry/shape_math.h"
 
@@ -48,22 +47,14 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
     return st;
 }
 
-bool shape_move(shape *s, transform *poses, int count, glint_error *err)
+void shape_move(shape *s, transform *poses, int count)
 {
-    for (int k = 0; k < count; k++) {
-        transform inverse;
-        if (!xf_invert(&poses[k], &inverse)) {
-            error_set(err, GLINT_ERR_INVALID, "pose %d's transform is singular or not finite", k + 1);
-            return false;
-        }
-    }
     s->poses = poses;
     s->pose_count = count;
     s->to_world = poses[0];
     xf_invert(&s->to_world, &s->to_object);
     s->has_transform = true;
     s->quad = s->flat = false;
-    return true;
 }
 
 const shape *shape_at(const shape *s, double time, shape *out)
@@ -71,19 +62,7 @@ const shape *shape_at(const shape *s, double time, shape *out)
     if (!s->pose_count)
         return s;
     *out = *s;
-    int k;
-    double w;
-    pose_stretch(time, s->pose_count, &k, &w);
-    const transform *a = &s->poses[k], *b = &s->poses[k + 1];
-    for (int i = 0; i < 3; i++)
-        for (int j = 0; j < 4; j++)
-            out->to_world.m[i][j] = a->m[i][j] + (b->m[i][j] - a->m[i][j]) * w;
-    /* Between two invertible poses the blend may not be; that instant's
-     * shape is then its nearer pose. */
-    if (!xf_invert(&out->to_world, &out->to_object)) {
-        out->to_world = w < 0.5 ? *a : *b;
-        xf_invert(&out->to_world, &out->to_object);
-    }
+    xf_between(s->poses, s->pose_count, time, &out->to_world, &out->to_object);
     return out;
 }
 

@@ -86,12 +86,12 @@ typedef struct surface {
 glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform *transform,
                         int material, glint_error *err);
 
-/* Makes s move over the shutter through `count` (2 or more) world
- * transforms, evenly spaced, in straight lines between them (each number
- * interpolated): s keeps `poses`, which the caller frees after s; false,
- * with err filled, when one is not invertible. A moving shape takes the
- * general paths: it has a transform, no quad test, no fixed normal. */
-bool shape_move(shape *s, transform *poses, int count, glint_error *err);
+/* Makes s move over the shutter through `count` (2 or more) invertible
+ * world transforms, evenly spaced, in straight lines between them (each
+ * number interpolated): s keeps `poses`, which the caller frees after s.
+ * A moving shape takes the general paths: it has a transform, no quad
+ * test, no fixed normal. */
+void shape_move(shape *s, transform *poses, int count);
 
 /* The shape s is at `time` in [0, 1] over the shutter, into *out: a copy
  * of s with the transform its poses give then (s itself when still). */

@@ -47,7 +47,9 @@ static __attribute__((unused)) void hit_surface(const glint_scene *scene, const 
         shape_surface(shape_at(&scene->shapes[h->shape], h->time, &moved), r, &h->on_shape, s);
         return;
     }
-    mesh_surface(hit_mesh(scene, h), &scene->instances[h->instance], r, h->triangle, h->b1, h->b2, &h->t, s);
+    instance moved;
+    mesh_surface(hit_mesh(scene, h), instance_at(&scene->instances[h->instance], h->time, &moved), r, h->triangle, h->b1,
+                 h->b2, &h->t, s);
 }
 
 /* hit_color for a textured material (most materials have none). */

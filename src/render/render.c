@@ -383,6 +383,8 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
         j.motion |= scene->shapes[i].pose_count > 0;
     for (int i = 0; shutter && i < scene->light_count; i++)
         j.motion |= scene->lights[i].pose_count > 0;
+    for (int i = 0; shutter && i < scene->instance_count; i++)
+        j.motion |= scene->instances[i].pose_count > 0;
     pixel_sampler_init(&j.sampler, s, j.cam.uses_lens, j.motion);
     j.signed_film = s->adaptive_max_samples != 0 || j.sampler.filter.has_negative_lobes;
     /* Embree builds with every thread asked for; tracing needs no more

@@ -1,10 +1,12 @@
 /* scene_motion.c - what moves over the shutter (settings.shutter_open to
- * _close): a shape's poses, a delta light's and the camera's, evenly spaced over it, each
+ * _close): a shape's poses, a placed mesh's, a delta light's and the
+ * camera's, evenly spaced over it, each
  * moving in straight lines between them; and whether the scene was read
  * with keyed values at all (docs/animation.md). */
 #include <stdlib.h>
 #include <string.h>
 #include "core/error.h"
+#include "core/transform.h"
 #include "scene/scene.h"
 
 /* The most poses over one shutter. */
@@ -22,26 +24,54 @@ static glint_status check_count(int count, glint_error *err)
     return GLINT_OK;
 }
 
+/* *out becomes a copy of `count` poses, each checked invertible, for a
+ * thing moving over the shutter. */
+static glint_status copy_poses(int count, const glint_transform *poses, transform **out, glint_error *err)
+{
+    glint_status st = check_count(count, err);
+    for (int k = 0; k < count && !st; k++) {
+        transform inverse;
+        if (!xf_invert(&poses[k], &inverse))
+            st = error_set(err, GLINT_ERR_INVALID, "pose %d's transform is singular or not finite", k + 1);
+    }
+    if (!st && !(*out = malloc(sizeof **out * (size_t)count)))
+        st = error_set(err, GLINT_ERR_NOMEM, "out of memory for a thing's motion");
+    if (!st)
+        memcpy(*out, poses, sizeof **out * (size_t)count);
+    return st;
+}
+
 glint_status glint_scene_move_shape(glint_scene *scene, int index, int count, const glint_transform *poses,
                                     glint_error *err)
 {
     if (index < 0 || index >= scene->shape_count)
         return error_set(err, GLINT_ERR_INVALID, "shape %d does not exist", index);
-    glint_status st = check_count(count, err);
+    transform *copy;
+    glint_status st = copy_poses(count, poses, &copy, err);
     if (st)
         return st;
     shape *s = &scene->shapes[index];
-    transform *copy = malloc(sizeof *copy * (size_t)count);
-    if (!copy)
-        return error_set(err, GLINT_ERR_NOMEM, "out of memory for a shape's motion");
-    memcpy(copy, poses, sizeof *copy * (size_t)count);
-    shape moved = *s;
-    if (!shape_move(&moved, copy, count, err)) {
-        free(copy);
-        return GLINT_ERR_INVALID;
-    }
     free(s->poses);
-    *s = moved;
+    shape_move(s, copy, count);
+    return GLINT_OK;
+}
+
+glint_status glint_scene_move_instance(glint_scene *scene, int index, int count, const glint_transform *poses,
+                                       glint_error *err)
+{
+    if (index < 0 || index >= scene->instance_count)
+        return error_set(err, GLINT_ERR_INVALID, "instance %d does not exist", index);
+    transform *copy;
+    glint_status st = copy_poses(count, poses, &copy, err);
+    if (st)
+        return st;
+    instance *inst = &scene->instances[index];
+    free(inst->poses);
+    inst->poses = copy;
+    inst->pose_count = count;
+    inst->to_world = copy[0];
+    xf_invert(&inst->to_world, &inst->to_object);
+    inst->has_transform = true;
     return GLINT_OK;
 }
 
@@ -96,6 +126,8 @@ glint_status glint_scene_move_light(glint_scene *scene, int index, int count, co
 
 void scene_motion_free(glint_scene *scene)
 {
+    for (int i = 0; i < scene->instance_count; i++)
+        free(scene->instances[i].poses);
     for (int i = 0; i < scene->light_count; i++)
         free(scene->lights[i].poses);
     for (int i = 0; i < scene->shape_count; i++)

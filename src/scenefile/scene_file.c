@@ -443,8 +443,9 @@ static bool same_transform(const glint_transform *a, const glint_transform *b)
 
 /* Gives an animated scene with a shutter its motion (docs/animation.md):
  * the scene read again at each of its shutter's poses, evenly spaced from
- * the opening to the closing, and each shape whose transform changes, each
- * delta light and a camera that do, moved through them. The scene itself, or NULL after
+ * the opening to the closing, and each shape and placed mesh whose
+ * transform changes, each delta light and a camera that do, moved through
+ * them. The scene itself, or NULL after
  * a failure (reported, and in err), freed. */
 static glint_scene *add_motion(glint_scene *scene, const glint_load_options *o, glint_error *err, const char *name,
                                void (*body)(loader *, const void *, size_t, const char *), const void *data,
@@ -454,7 +455,8 @@ static glint_scene *add_motion(glint_scene *scene, const glint_load_options *o, 
     if (!scene->animated || !(s.shutter_close > s.shutter_open))
         return scene;
     int poses = s.shutter_steps, shapes = scene->shape_count, lights = scene->light_count;
-    glint_transform *xf = malloc(sizeof *xf * (size_t)poses * (size_t)(shapes ? shapes : 1));
+    int placed = scene->instance_count;
+    glint_transform *xf = malloc(sizeof *xf * (size_t)poses * (size_t)(shapes + placed + 1));
     glint_light *lamp = malloc(sizeof *lamp * (size_t)poses * (size_t)(lights ? lights : 1));
     glint_camera cameras[64];
     bool good = xf && lamp;
@@ -464,24 +466,25 @@ static glint_scene *add_motion(glint_scene *scene, const glint_load_options *o, 
         glint_load_options at = o ? *o : (glint_load_options){0};
         at.time += (s.shutter_open + (s.shutter_close - s.shutter_open) * k / (poses - 1)) / s.fps;
         glint_scene *pose = load_at(&at, err, name, body, data, size);
-        good = pose && pose->shape_count == shapes && pose->light_count == lights;
+        good = pose && pose->shape_count == shapes && pose->light_count == lights && pose->instance_count == placed;
         if (pose && !good)
             error_set(err, GLINT_ERR_INVALID, "'%s' has other shapes or lights at %g s than at %g s", name, at.time,
                       o ? o->time : 0);
-        for (int i = 0; good && i < shapes; i++)
-            xf[(size_t)i * poses + k] = pose->shapes[i].to_world;
+        for (int i = 0; good && i < shapes + placed; i++)
+            xf[(size_t)i * poses + k] = i < shapes ? pose->shapes[i].to_world : pose->instances[i - shapes].to_world;
         for (int i = 0; good && i < lights; i++)
             lamp[(size_t)i * poses + k] = pose->lights[i].desc;
         if (good)
             cameras[k] = pose->camera;
         glint_scene_free(pose);
     }
-    for (int i = 0; good && i < shapes; i++) {
+    for (int i = 0; good && i < shapes + placed; i++) {
         const glint_transform *mine = &xf[(size_t)i * poses];
         bool moves = false;
         for (int k = 1; k < poses; k++)
             moves |= !same_transform(&mine[k], &mine[0]);
-        good = !moves || glint_scene_move_shape(scene, i, poses, mine, err) == GLINT_OK;
+        good = !moves || (i < shapes ? glint_scene_move_shape(scene, i, poses, mine, err)
+                                     : glint_scene_move_instance(scene, i - shapes, poses, mine, err)) == GLINT_OK;
     }
     /* Area lights stand still (docs/animation.md). */
     for (int i = 0; good && i < lights; i++) {

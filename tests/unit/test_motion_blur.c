@@ -5,6 +5,7 @@
  * image is bit for bit what it is without a shutter; a camera panning
  * streaks a still ball by as much as the ball moving past a still camera;
  * a light changing colour or moving lights by its mean over the shutter;
+ * a mesh moved as Embree moves instances streaks as the ball does;
  * the same bytes for any thread count; and a shutter with nothing keyed
  * changes nothing. */
 #include <stdarg.h>
@@ -179,6 +180,41 @@ static void test_moving_light(void **state)
     glint_image_free(&moving);
 }
 
+/* A mesh moved through the C API (Embree's instance motion blur): a small
+ * square of two triangles crossing the view as the ball did leaves a
+ * streak whose ends are the projected ends of its path. */
+static void test_moving_mesh(void **state)
+{
+    glint_error err = {0};
+    glint_scene *scene = glint_scene_load_memory(scene_text(true, "[0, -5, 0]", STILL_CAMERA),
+                                                 strlen(scene_text(true, "[0, -5, 0]", STILL_CAMERA)), "mesh.yaml",
+                                                 NULL, &err);
+    assert_non_null(scene);
+    static const float square[] = {-0.25f, -0.25f, 0, 0.25f, -0.25f, 0, 0.25f, 0.25f, 0, -0.25f, 0.25f, 0};
+    static const uint32_t corners[] = {0, 1, 2, 0, 2, 3};
+    glint_mesh_data data = {.positions = square, .vertex_count = 4, .indices = corners, .triangle_count = 2};
+    int mesh = glint_scene_add_mesh(scene, "square", &data, &err);
+    assert_true(mesh >= 0);
+    int placed = glint_scene_add_instance(scene, mesh, 0, NULL, &err);
+    assert_true(placed >= 0);
+    glint_transform poses[2] = {glint_transform_translate(glint_transform_identity(), -2, 0.8, 0),
+                                glint_transform_translate(glint_transform_identity(), 2, 0.8, 0)};
+    assert_int_equal(glint_scene_move_instance(scene, placed, 2, poses, &err), GLINT_OK);
+    glint_render_options o = {.threads = 2};
+    glint_image im;
+    assert_int_equal(glint_render(scene, &o, &im, NULL, &err), GLINT_OK);
+    double left, right;
+    half_max_ends(&im, streak_row(), &left, &right);
+    assert_true(fabs(left - column_of(-2)) < 1);
+    assert_true(fabs(right - column_of(2)) < 1);
+    glint_image_free(&im);
+    glint_transform singular = {{{0}}};
+    poses[1] = singular;
+    assert_int_equal(glint_scene_move_instance(scene, placed, 2, poses, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "pose 2's transform is singular or not finite");
+    glint_scene_free(scene);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -187,6 +223,7 @@ int main(void)
         cmocka_unit_test(test_camera_pan),
         cmocka_unit_test(test_threads),
         cmocka_unit_test(test_moving_light),
+        cmocka_unit_test(test_moving_mesh),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
