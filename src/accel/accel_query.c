@@ -190,8 +190,11 @@ static void packet_init(query *q, const ray8 *r, const double tmax[ACCEL_PACKET]
         q->index[i] = -1;
     packet_far(q, p);
     memset(p->tnear, 0, sizeof p->tnear);
-    for (int i = 0; i < ACCEL_PACKET; i++)
-        p->time[i] = q->time ? (float)q->time[i] : 0; /* where Embree's moving instances are */
+    if (q->time) /* where Embree's moving instances are */
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            p->time[i] = (float)q->time[i];
+    else
+        memset(p->time, 0, sizeof p->time);
     memset(p->mask, 0xFF, sizeof p->mask);
     memset(p->id, 0, sizeof p->id);
     memset(p->flags, 0, sizeof p->flags);

@@ -103,10 +103,8 @@ void mesh_prefetch(const mesh *m, unsigned tri)
     }
 }
 
-const instance *instance_at(const instance *inst, double time, instance *out)
+const instance *instance_moved(const instance *inst, double time, instance *out)
 {
-    if (!inst->pose_count)
-        return inst;
     *out = *inst;
     xf_between(inst->poses, inst->pose_count, time, &out->to_world, &out->to_object);
     out->has_transform = true;
@@ -154,4 +152,11 @@ void mesh_surface(const mesh *m, const instance *inst, const ray *r, unsigned tr
         out->u = b0 * uv[2 * idx[0]] + b1 * uv[2 * idx[1]] + b2 * uv[2 * idx[2]];
         out->v = b0 * uv[2 * idx[0] + 1] + b1 * uv[2 * idx[1] + 1] + b2 * uv[2 * idx[2] + 1];
     }
+}
+
+__attribute__((noinline)) void mesh_surface_moved(const mesh *m, const instance *inst, double time, const ray *r,
+                                                  unsigned tri, double b1, double b2, double *t, surface *out)
+{
+    instance moved;
+    mesh_surface(m, instance_moved(inst, time, &moved), r, tri, b1, b2, t, out);
 }

@@ -43,10 +43,17 @@ typedef struct instance {
     int pose_count;           /* (0: it stands still), which Embree blends as shape_at does; owned by the scene */
 } instance;
 
-/* The placement inst is at `time` in [0, 1] over the shutter, into *out: a
- * copy with the transform its poses blend to then (inst itself when
- * still), as Embree's instance motion blur places it. */
-const instance *instance_at(const instance *inst, double time, instance *out);
+/* instance_at for a moving placement (pose_count > 0): *out, a copy with
+ * the transform its poses blend to at `time`, as Embree's instance motion
+ * blur places it. */
+const instance *instance_moved(const instance *inst, double time, instance *out);
+
+/* The placement inst is at `time` in [0, 1] over the shutter: inst itself
+ * when it stands still, else instance_moved's copy in *out. */
+static inline const instance *instance_at(const instance *inst, double time, instance *out)
+{
+    return inst->pose_count ? instance_moved(inst, time, out) : inst;
+}
 
 /* Copies and checks d (finite positions, indices in range, materials below
  * material_count) into *m. */
@@ -77,5 +84,10 @@ void mesh_prefetch(const mesh *m, unsigned tri);
  * texture coordinates. */
 void mesh_surface(const mesh *m, const instance *inst, const ray *r, unsigned tri, double b1, double b2, double *t,
                   surface *out);
+
+/* mesh_surface for a moving placement (pose_count > 0) as it is at
+ * `time`: apart, so that the common path keeps no room for a moved copy. */
+void mesh_surface_moved(const mesh *m, const instance *inst, double time, const ray *r, unsigned tri, double b1,
+                        double b2, double *t, surface *out);
 
 #endif

@@ -57,10 +57,8 @@ void shape_move(shape *s, transform *poses, int count)
     s->quad = s->flat = false;
 }
 
-const shape *shape_at(const shape *s, double time, shape *out)
+const shape *shape_moved(const shape *s, double time, shape *out)
 {
-    if (!s->pose_count)
-        return s;
     *out = *s;
     xf_between(s->poses, s->pose_count, time, &out->to_world, &out->to_object);
     return out;
@@ -202,4 +200,11 @@ vec3 shape_bounds_middle(const shape *s)
     vec3 lo, hi;
     s->kind->bounds(s, &lo, &hi);
     return v3_scale(v3_add(lo, hi), 0.5);
+}
+
+__attribute__((noinline)) void shape_surface_moved(const shape *s, double time, const ray *r, const shape_hit *hit,
+                                                   surface *out)
+{
+    shape moved;
+    shape_surface(shape_moved(s, time, &moved), r, hit, out);
 }

@@ -93,9 +93,16 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
  * test, no fixed normal. */
 void shape_move(shape *s, transform *poses, int count);
 
-/* The shape s is at `time` in [0, 1] over the shutter, into *out: a copy
- * of s with the transform its poses give then (s itself when still). */
-const shape *shape_at(const shape *s, double time, shape *out);
+/* shape_at for a moving shape (pose_count > 0): *out, a copy of s with the
+ * transform its poses give at `time`. */
+const shape *shape_moved(const shape *s, double time, shape *out);
+
+/* The shape s is at `time` in [0, 1] over the shutter: s itself when it
+ * stands still, else shape_moved's copy in *out. Inline: every hit asks. */
+static inline const shape *shape_at(const shape *s, double time, shape *out)
+{
+    return s->pose_count ? shape_moved(s, time, out) : s;
+}
 
 /* Finds the nearest hit of world ray r with t in (tmin, tmax). A ray that
  * starts inside a closed shape finds the surface on its way out. */
@@ -119,6 +126,10 @@ quad_mask shape_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tm
 
 /* Describes the surface at hit on world ray r, all but u and v. */
 void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *out);
+
+/* shape_surface for a moving shape (pose_count > 0) as it is at `time`:
+ * apart, so that the common path keeps no room for a moved copy. */
+void shape_surface_moved(const shape *s, double time, const ray *r, const shape_hit *hit, surface *out);
 
 /* Fills out->u and out->v, the shape's own texture coordinates, for a
  * surface filled by shape_surface. */

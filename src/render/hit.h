@@ -43,13 +43,18 @@ static __attribute__((unused)) const glint_material *hit_material(const glint_sc
 static __attribute__((unused)) void hit_surface(const glint_scene *scene, const ray *r, accel_hit *h, surface *s)
 {
     if (h->shape >= 0) {
-        shape moved;
-        shape_surface(shape_at(&scene->shapes[h->shape], h->time, &moved), r, &h->on_shape, s);
+        const shape *sh = &scene->shapes[h->shape];
+        if (sh->pose_count)
+            shape_surface_moved(sh, h->time, r, &h->on_shape, s);
+        else
+            shape_surface(sh, r, &h->on_shape, s);
         return;
     }
-    instance moved;
-    mesh_surface(hit_mesh(scene, h), instance_at(&scene->instances[h->instance], h->time, &moved), r, h->triangle, h->b1,
-                 h->b2, &h->t, s);
+    const instance *inst = &scene->instances[h->instance];
+    if (inst->pose_count)
+        mesh_surface_moved(hit_mesh(scene, h), inst, h->time, r, h->triangle, h->b1, h->b2, &h->t, s);
+    else
+        mesh_surface(hit_mesh(scene, h), inst, r, h->triangle, h->b1, h->b2, &h->t, s);
 }
 
 /* hit_color for a textured material (most materials have none). */

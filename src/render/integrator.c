@@ -224,14 +224,14 @@ __attribute__((always_inline)) static inline void light_packet(tracer *t, const 
     ray8 shadow;
     double dist[ACCEL_PACKET] = {0};
     int skip[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
-    bool lit[ACCEL_PACKET] = {false}, any = false;
+    bool lit[ACCEL_PACKET] = {false}, any = false, moving = t->time && l->pose_count;
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (!found[i])
             continue;
         ray ri = ray8_get(r, i), si;
-        light moved;
-        const light *at = t->time ? light_at(l, t->time[i], &moved) : l;
-        if (!light_delta_sample(at, sp[i].s.p, &ls[i]) || !shadow_segment(&ri, &sp[i], &ls[i], &si))
+        bool sampled = moving ? light_moved_sample(l, t->time[i], sp[i].s.p, &ls[i])
+                              : light_delta_sample(l, sp[i].s.p, &ls[i]);
+        if (!sampled || !shadow_segment(&ri, &sp[i], &ls[i], &si))
             continue;
         if (!any)
             shadow = *r;

@@ -74,10 +74,8 @@ static double blend(double a, double b, double w)
     return a + (b - a) * w;
 }
 
-const light *light_at(const light *l, double time, light *out)
+const light *light_moved(const light *l, double time, light *out)
 {
-    if (!l->pose_count)
-        return l;
     int k;
     double w;
     pose_stretch(time, l->pose_count, &k, &w);
@@ -95,6 +93,12 @@ const light *light_at(const light *l, double time, light *out)
     out->cos_inner = blend(a->cos_inner, b->cos_inner, w);
     out->pose_count = 0;
     return out;
+}
+
+__attribute__((noinline)) bool light_moved_sample(const light *l, double time, vec3 p, light_sample *out)
+{
+    light moved;
+    return light_delta_sample(light_moved(l, time, &moved), p, out);
 }
 
 bool light_delta_sample_fn(const light *l, vec3 p, double u1, double u2, light_sample *out)

@@ -255,10 +255,15 @@ static inline bool light_delta_sample(const light *l, vec3 p, light_sample *out)
  * the caller frees after it, and takes the first's place. */
 void light_move(light *l, light *poses, int count);
 
-/* The delta light l is at `time` in [0, 1] over the shutter, into *out: a
- * copy whose position, direction, colour and cone are blended in a
- * straight line between the poses about that time (l itself when still). */
-const light *light_at(const light *l, double time, light *out);
+/* The moving delta light l (pose_count > 0) as it is at `time` in [0, 1]
+ * over the shutter, into *out, which it returns: a copy whose position,
+ * direction, colour and cone are blended in a straight line between the
+ * poses about that time. */
+const light *light_moved(const light *l, double time, light *out);
+
+/* light_delta_sample of the moving delta light l as it is at `time`:
+ * apart, so that the common path keeps no room for a moved copy. */
+bool light_moved_sample(const light *l, double time, vec3 p, light_sample *out);
 
 /* light_delta_sample as a light_kind.sample, for the records of delta
  * kinds (the sample (u1, u2) is not used). */
