@@ -92,12 +92,15 @@ static int render_one(const cli_options *o, cli_run *r, display *window, const c
 }
 
 /* Points the run's destination at frame `frame`'s file, named from the
- * output's pattern, and checks that it is none of the scene's inputs; -1 to
- * go on, or the exit code after complaining. */
+ * output's pattern into path ("-" stays standard output), and checks that
+ * it is none of the scene's inputs; -1 to go on, or the exit code after
+ * complaining. */
 static int aim_at_frame(cli_run *r, const char *pattern, int frame, char *path, size_t size)
 {
-    if (strcmp(pattern, "-") == 0)
+    if (strcmp(pattern, "-") == 0) {
+        snprintf(path, size, "-");
         return -1;
+    }
     if (!cli_frame_path(pattern, frame, path, size))
         return cli_complain(CLI_EXIT_USAGE, "the output name '%s' is too long", pattern);
     r->dest.path = r->dest.shown = path;

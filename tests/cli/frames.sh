@@ -83,6 +83,8 @@ check "--resume renders a frame cut short again" cmp -s resume/seq-004.png seq-0
 check "--resume renders a PPM header alone again" cmp -s resume/seq-005.png seq-005.png
 check "--resume renders a missing frame" cmp -s resume/seq-003.png seq-003.png
 check "--resume renders only the frames it must" [ "$(grep -c ' is done: ' resumed)" -eq 2 ]
+"$GLINT" ball.yaml --resume --frame 2 -q -o - >stdout.png
+check "--resume writes one frame to standard output, which it cannot find done" cmp -s stdout.png seq-002.png
 
 # An interrupted sequence: the frames finished are whole, the one it
 # stopped in is not there at all, under its name or a temporary one.
