@@ -114,6 +114,12 @@ static inline bool pass_through(query *q, unsigned i, const accel_hit *h)
     return rgb_max(q->through[i]) >= TRANSMISSION_CUTOFF;
 }
 
+/* Lane i's time over the shutter: 0 when nothing moves. */
+static inline double lane_time(const query *q, unsigned i)
+{
+    return q->time ? q->time[i] : 0;
+}
+
 /* The instance of a triangle hit: an Embree instance's ID, or for a mesh
  * placed flat its geometry's ID, is 1 + the instance index. */
 static inline int instance_of(unsigned geom, unsigned inst)

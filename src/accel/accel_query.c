@@ -24,7 +24,7 @@ void accel_triangle_occluded(const struct RTCFilterFunctionNArguments *args)
             .triangle = hit_lane_uint(args->hit, args->N, HIT_PRIM, i),
             .b1 = hit_lane_float(args->hit, args->N, HIT_U, i),
             .b2 = hit_lane_float(args->hit, args->N, HIT_V, i),
-            .time = q->time ? q->time[i] : 0,
+            .time = lane_time(q, i),
         };
         uint64_t key = (uint64_t)(h.instance + 1) << 32 | h.triangle;
         if (!seen_add(&q->seen[i], key) || pass_through(q, i, &h))
@@ -38,7 +38,7 @@ void accel_triangle_occluded(const struct RTCFilterFunctionNArguments *args)
  * in one, which waits for the stores (1-2% of a depth of field's time). */
 static void lane_hit(const query *q, const struct RTCRayHit8 *rh, unsigned i, bool triangle, accel_hit *out)
 {
-    out->time = q->time ? q->time[i] : 0;
+    out->time = lane_time(q, i);
     if (!triangle) {
         out->t = out->on_shape.t = q->hit_t[i];
         out->shape = q->index[i];
@@ -72,7 +72,7 @@ static inline quad_mask plane_quad(const query *q, int k, int first, quad_f64 tm
             ray r = ray8_get(q->r, first + j);
             shape_hit h = {0, 0};
             shape moved;
-            const shape *at = q->time ? shape_at(s, q->time[first + j], &moved) : s;
+            const shape *at = shape_at(s, lane_time(q, (unsigned)(first + j)), &moved);
             hit[j] = shape_intersect(at, &r, 0, tmax[j], &h) ? -1 : 0;
             (*t)[j] = h.t;
         }
@@ -131,7 +131,7 @@ static void through_planes(query *q, int valid[ACCEL_PACKET], struct RTCRay8 *p)
                 if (!hit[j] || !valid[i + j])
                     continue;
                 accel_hit h = {.t = t[j], .shape = a->planes[k], .on_shape = {t[j], 0}, .instance = -1,
-                               .time = q->time ? q->time[i + j] : 0};
+                               .time = lane_time(q, (unsigned)(i + j))};
                 if (shape_opaque(a, h.shape) || !pass_through(q, (unsigned)(i + j), &h)) {
                     valid[i + j] = 0;
                     p->tfar[i + j] = -INFINITY;

@@ -60,7 +60,7 @@ static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *
         double tmax = q->tmax[i] < tfar ? q->tmax[i] : (double)tfar;
         ray r = ray8_get(q->r, (int)i);
         shape moved;
-        if (shape_intersect(q->time ? shape_at(s, q->time[i], &moved) : s, &r, 0, tmax, &h))
+        if (shape_intersect(shape_at(s, lane_time(q, i), &moved), &r, 0, tmax, &h))
             record_hit(args, n, i, index, h.t, h.part);
     }
 }
@@ -131,7 +131,7 @@ void accel_shape_occluded(const struct RTCOccludedFunctionNArguments *args)
             continue;
         ray r = ray8_get(q->r, (int)i);
         shape moved;
-        const shape *at = q->time ? shape_at(s, q->time[i], &moved) : s;
+        const shape *at = shape_at(s, lane_time(q, i), &moved);
         if (opaque) {
             /* Blocking twice is harmless, so no record of it is kept. */
             shape_hit h;
@@ -142,7 +142,7 @@ void accel_shape_occluded(const struct RTCOccludedFunctionNArguments *args)
         if (!seen_add(&q->seen[i], (uint64_t)index))
             continue;
         double tmin = 0;
-        accel_hit h = {.shape = index, .instance = -1, .time = q->time ? q->time[i] : 0};
+        accel_hit h = {.shape = index, .instance = -1, .time = lane_time(q, i)};
         int crossings = shape_max_crossings(s);
         for (int crossing = 0; crossing < crossings && shape_intersect(at, &r, tmin, q->tmax[i], &h.on_shape);
              crossing++) {

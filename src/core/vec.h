@@ -32,6 +32,11 @@ static inline vec3 v3_normalize(vec3 a)
     double l = v3_length(a);
     return l > 0 ? v3_scale(a, 1.0 / l) : a;
 }
+/* The point a fraction t of the way from a to b: a + (b - a) t. */
+static inline vec3 v3_lerp(vec3 a, vec3 b, double t)
+{
+    return v3(a.x + (b.x - a.x) * t, a.y + (b.y - a.y) * t, a.z + (b.z - a.z) * t);
+}
 /* a + b * s, the step along a ray. */
 static inline vec3 v3_madd(vec3 a, vec3 b, double s) { return v3(a.x + b.x * s, a.y + b.y * s, a.z + b.z * s); }
 static inline vec3 ray_at(const ray *r, double t) { return v3_madd(r->o, r->d, t); }

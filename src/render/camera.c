@@ -85,8 +85,7 @@ void camera_moving_rays8(const camera *poses, int count, const double x[RAY8], c
             if (pose[i] != k)
                 continue;
             ray ra = ray8_get(&a, i), rb = ray8_get(&b, i);
-            ray blend = {v3_add(ra.o, v3_scale(v3_sub(rb.o, ra.o), w[i])),
-                         v3_normalize(v3_add(ra.d, v3_scale(v3_sub(rb.d, ra.d), w[i])))};
+            ray blend = {v3_lerp(ra.o, rb.o, w[i]), v3_normalize(v3_lerp(ra.d, rb.d, w[i]))};
             ray8_set(out, i, blend);
         }
     }

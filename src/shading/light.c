@@ -69,11 +69,6 @@ void light_move(light *l, light *poses, int count)
     l->pose_count = count;
 }
 
-static double blend(double a, double b, double w)
-{
-    return a + (b - a) * w;
-}
-
 const light *light_moved(const light *l, double time, light *out)
 {
     int k;
@@ -81,16 +76,13 @@ const light *light_moved(const light *l, double time, light *out)
     pose_stretch(time, l->pose_count, &k, &w);
     const light *a = &l->poses[k], *b = &l->poses[k + 1];
     *out = *a;
-    out->desc.position = v3(blend(a->desc.position.x, b->desc.position.x, w),
-                            blend(a->desc.position.y, b->desc.position.y, w),
-                            blend(a->desc.position.z, b->desc.position.z, w));
-    out->desc.color = rgb(blend(a->desc.color.r, b->desc.color.r, w), blend(a->desc.color.g, b->desc.color.g, w),
-                          blend(a->desc.color.b, b->desc.color.b, w));
-    vec3 dir = v3(blend(a->dir.x, b->dir.x, w), blend(a->dir.y, b->dir.y, w), blend(a->dir.z, b->dir.z, w));
+    out->desc.position = v3_lerp(a->desc.position, b->desc.position, w);
+    out->desc.color = rgb_lerp(a->desc.color, b->desc.color, w);
+    vec3 dir = v3_lerp(a->dir, b->dir, w);
     /* Opposite directions blend through nothing: that instant keeps the nearer. */
     out->dir = v3_length(dir) > 0 ? v3_normalize(dir) : w < 0.5 ? a->dir : b->dir;
-    out->cos_outer = blend(a->cos_outer, b->cos_outer, w);
-    out->cos_inner = blend(a->cos_inner, b->cos_inner, w);
+    out->cos_outer = a->cos_outer + (b->cos_outer - a->cos_outer) * w;
+    out->cos_inner = a->cos_inner + (b->cos_inner - a->cos_inner) * w;
     out->pose_count = 0;
     return out;
 }
