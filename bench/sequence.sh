@@ -3,9 +3,13 @@
 # frames (640x360, 16 samples, a half-frame shutter) rendered as one run,
 # the whole command's wall time and each frame's (reading the scene again
 # at the frame's time and at the shutter's poses, building, rendering,
-# writing); then motion blur's cost a sample: frame 22 with its shutter
-# against the same frame without one, in alternating runs, each run's
-# render time over its samples, medians.
+# writing), by glint on 2 threads and, when glint-mpi is beside glint and
+# mpirun is found, by glint-mpi on 2 ranks of 1 thread (whole frames to
+# each rank; every frame compared byte for byte with glint's), in turn in
+# each round, with the median of the rounds' speed-ups; then motion
+# blur's cost a sample: frame 22 with its shutter against the same frame
+# without one, in alternating runs, each run's render time over its
+# samples, medians.
 #
 #   GLINT_BIN=/path/to/glint bench/sequence.sh      BENCH_RUNS=5 (default 3)
 #
@@ -17,12 +21,45 @@ trap 'rm -rf "$work"' EXIT
 scene=$REPO/scenes/bouncing-ball.yaml
 grep -v '^  shutter:' "$scene" >"$work/still.yaml"
 
-start=$(date +%s.%N)
-"$GLINT" "$scene" --threads 2 -q -o "$work/f-####.png"
-end=$(date +%s.%N)
-frames=$(find "$work" -name 'f-*.png' | wc -l)
-awk -v s="$start" -v e="$end" -v n="$frames" \
-    'BEGIN { printf "sequence: %d frames in %.2f s, %.3f s a frame (2 threads, whole command)\n", n, e - s, (e - s) / n }'
+GLINT_MPI=$(dirname "$GLINT")/glint-mpi
+with_mpi=0
+if [[ -x "$GLINT_MPI" ]] && command -v mpirun >/dev/null; then
+    with_mpi=1
+    export OMPI_ALLOW_RUN_AS_ROOT=1 OMPI_ALLOW_RUN_AS_ROOT_CONFIRM=1
+fi
+
+# whole OUT COMMAND...: the sequence into $work/OUT/, its wall seconds
+# appended to $work/OUT.times.
+whole() {
+    local out=$1 start end
+    shift
+    rm -rf "${work:?}/$out"
+    mkdir "$work/$out"
+    start=$(date +%s.%N)
+    "$@" "$scene" -q -o "$work/$out/f-####.png" || die "$* failed"
+    end=$(date +%s.%N)
+    echo "$end - $start" | bc >>"$work/$out.times"
+}
+: >"$work/ratios"
+for _ in $(seq "$RUNS"); do
+    whole glint "$GLINT" --threads 2
+    [ "$with_mpi" -eq 1 ] || continue
+    whole mpi mpirun -np 2 "$GLINT_MPI" --threads 1
+    for f in "$work"/glint/f-*.png; do
+        cmp -s "$f" "$work/mpi/${f##*/}" || die "glint-mpi's ${f##*/} differs from glint's"
+    done
+    paste <(tail -n 1 "$work/glint.times") <(tail -n 1 "$work/mpi.times") | awk '{ print $1 / $2 }' >>"$work/ratios"
+done
+frames=$(find "$work/glint" -name 'f-*.png' | wc -l)
+glint_s=$(median <"$work/glint.times")
+awk -v s="$glint_s" -v n="$frames" -v r="$RUNS" \
+    'BEGIN { printf "sequence: %d frames in %.2f s, %.3f s a frame (glint, 2 threads, whole command, median of %d)\n", n, s, s / n, r }'
+if [ "$with_mpi" -eq 1 ]; then
+    mpi_s=$(median <"$work/mpi.times")
+    ratio=$(median <"$work/ratios")
+    awk -v s="$mpi_s" -v n="$frames" -v q="$ratio" \
+        'BEGIN { printf "glint-mpi, 2 ranks x 1 thread: %.2f s, %.3f s a frame, %.2fx glint (median of the rounds; every frame the same bytes)\n", s, s / n, q }'
+fi
 
 # ns_per_sample SCENE: one render of frame 22, its nanoseconds a sample.
 ns_per_sample() {

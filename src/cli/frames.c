@@ -12,6 +12,9 @@ int cli_frames_choose(const cli_options *o, const glint_settings *s, const char 
     f->fps = s->fps;
     if (f->last == f->first)
         return -1;
+    if (o->scene && strcmp(o->scene, "-") == 0)
+        return cli_complain(CLI_EXIT_USAGE, "frames %d to %d need the scene in a file: standard input is read once",
+                            f->first, f->last);
     if (strcmp(output, "-") == 0)
         return cli_complain(CLI_EXIT_USAGE, "frames %d to %d go to files, not standard output: give -o NAME-####.png",
                             f->first, f->last);

@@ -132,10 +132,7 @@ static int run(const cli_options *o)
     cli_frames f;
     char pattern[4096], path[4096];
     snprintf(pattern, sizeof pattern, "%s", r.dest.path); /* the path may point into the scene */
-    if ((code = cli_frames_choose(o, &r.settings, pattern, &f)) >= 0 ||
-        (f.last > f.first && strcmp(o->scene ? o->scene : "", "-") == 0 &&
-         (code = cli_complain(CLI_EXIT_USAGE, "frames %d to %d need the scene in a file: standard input is read once",
-                              f.first, f.last)) >= 0)) {
+    if ((code = cli_frames_choose(o, &r.settings, pattern, &f)) >= 0) {
         display_close(window);
         glint_scene_free(r.scene);
         return code;

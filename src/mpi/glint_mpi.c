@@ -2,17 +2,15 @@
  * (include/glint_mpi.h): the scene loaded everywhere from rank 0's files
  * (load_everywhere.c), and the render split between rank 0 (lead.c) and
  * the others (follow.c), every rank returning rank 0's outcome. */
-#define _GNU_SOURCE /* sched_getaffinity */
-#include <sched.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include "core/error.h"
-#include "core/processors.h"
 #include "glint_mpi.h"
 #include "mpi/agree.h"
 #include "mpi/follow.h"
 #include "mpi/lead.h"
 #include "mpi/load_everywhere.h"
+#include "mpi/rank_threads.h"
 #include "mpi/same_build.h"
 
 /* What a scene_loader of glint_mpi_scene_load_file needs. */
@@ -40,25 +38,13 @@ glint_scene *glint_mpi_scene_load_file(MPI_Comm comm, const char *path, const gl
     glint_error mine = {0};
     file_load f = {.path = path, .options = options};
     int failed_rank;
-    if (!check_same_build(comm, &mine) && load_everywhere(comm, load_file, &f, false, true, &failed_rank, &mine)) {
+    if (!check_same_build(comm, &mine) && load_everywhere(comm, load_file, &f, false, true, NULL, &failed_rank, &mine)) {
         glint_scene_free(f.scene);
         f.scene = NULL;
     }
     if (err)
         *err = mine;
     return f.scene;
-}
-
-/* The render threads of a rank not told how many: one per processor it
- * may run on. mpirun binds each rank to one core by default when there
- * are at most two ranks, to a socket beyond: a thread per core of the
- * machine would then share the cores bound to. */
-static int threads_available(void)
-{
-    cpu_set_t set;
-    CPU_ZERO(&set);
-    int n = sched_getaffinity(0, sizeof set, &set) == 0 ? CPU_COUNT(&set) : 0;
-    return n > 0 ? n : processors_online(1024);
 }
 
 /* Rank 0's share and the whole render's outcome on rank 0. */
@@ -96,7 +82,7 @@ glint_status glint_mpi_render(MPI_Comm comm, const glint_scene *scene, const gli
     glint_error outcome = {0};
     glint_render_options o = options ? *options : (glint_render_options){0};
     if (o.threads <= 0)
-        o.threads = threads_available();
+        o.threads = rank_threads();
     /* No collective before the render: rank 0 begins at once, while the
      * others may still be loading the scene. */
     if (rank == 0) {

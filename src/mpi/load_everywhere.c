@@ -13,8 +13,10 @@
 #include "mpi/load_everywhere.h"
 #include "mpi/ship_files.h"
 
-/* Rank 0's load, its files sent to the others as it reads them. */
-static glint_status load_sending(MPI_Comm comm, scene_loader load, void *user, bool with_stdin, glint_error *err)
+/* Rank 0's load, its files sent to the others as it reads them, and kept
+ * in *kept when it is not NULL. */
+static glint_status load_sending(MPI_Comm comm, scene_loader load, void *user, bool with_stdin, file_log **kept,
+                                 glint_error *err)
 {
     glint_error told = {0};
     if (with_stdin && send_stdin(comm, keep_stdin(&told), &told)) {
@@ -22,9 +24,10 @@ static glint_status load_sending(MPI_Comm comm, scene_loader load, void *user, b
         return told.status;
     }
     file_log *log = file_log_new();
+    file_log *keep = kept ? file_log_new() : NULL;
     file_sender sender;
-    glint_status began = send_files_begin(&sender, comm, log);
-    if (!log)
+    glint_status began = send_files_begin(&sender, comm, log, keep);
+    if (!log || (kept && !keep))
         error_set(&told, GLINT_ERR_NOMEM, "out of memory");
     else if (!began) {
         file_log_record(log);
@@ -33,6 +36,10 @@ static glint_status load_sending(MPI_Comm comm, scene_loader load, void *user, b
     }
     glint_status status = send_files_end(&sender, &told, err);
     file_log_free(log);
+    if (kept && !status)
+        *kept = keep;
+    else
+        file_log_free(keep);
     return status;
 }
 
@@ -54,9 +61,10 @@ static void *load_replaying(void *arg)
     return NULL;
 }
 
-/* A worker's load from rank 0's files; *by_rank0 when rank 0 failed. */
-static glint_status load_receiving(MPI_Comm comm, scene_loader load, void *user, bool with_stdin, bool *by_rank0,
-                                   glint_error *err)
+/* A worker's load from rank 0's files, kept in *kept when it is not NULL;
+ * *by_rank0 when rank 0 failed. */
+static glint_status load_receiving(MPI_Comm comm, scene_loader load, void *user, bool with_stdin, file_log **kept,
+                                   bool *by_rank0, glint_error *err)
 {
     glint_status status = with_stdin ? receive_stdin(comm, by_rank0, err) : GLINT_OK;
     if (*by_rank0)
@@ -73,28 +81,32 @@ static glint_status load_receiving(MPI_Comm comm, scene_loader load, void *user,
     glint_status received = receive_files(comm, status ? NULL : r.log, by_rank0, &received_err);
     if (started)
         pthread_join(thread, NULL);
-    file_log_free(r.log);
     /* Rank 0's failure first, then the rank's own, receiving or loading. */
     if (*by_rank0 || (!status && received)) {
         *err = received_err;
-        return received;
-    }
-    if (!status && r.status) {
+        status = received;
+    } else if (!status && r.status) {
         *err = r.err;
-        return r.status;
+        status = r.status;
     }
+    if (kept && !status)
+        *kept = r.log;
+    else
+        file_log_free(r.log);
     return status;
 }
 
 glint_status load_everywhere(MPI_Comm comm, scene_loader load, void *user, bool with_stdin, bool wait_for_all,
-                             int *failed_rank, glint_error *err)
+                             file_log **kept, int *failed_rank, glint_error *err)
 {
     *failed_rank = 0;
+    if (kept)
+        *kept = NULL;
     int rank;
     MPI_Comm_rank(comm, &rank);
     bool by_rank0 = rank == 0;
-    glint_status status = rank == 0 ? load_sending(comm, load, user, with_stdin, err)
-                                    : load_receiving(comm, load, user, with_stdin, &by_rank0, err);
+    glint_status status = rank == 0 ? load_sending(comm, load, user, with_stdin, kept, err)
+                                    : load_receiving(comm, load, user, with_stdin, kept, &by_rank0, err);
     if (status && by_rank0)
         return status;
     if (!wait_for_all) {
@@ -111,5 +123,13 @@ glint_status load_everywhere(MPI_Comm comm, scene_loader load, void *user, bool 
     agree_on_max(comm, &why);
     if (rank != first)
         status = error_set(err, (glint_status)why, "rank %d could not load the scene rank 0 loaded", first);
+    return status;
+}
+
+glint_status load_again(file_log *log, scene_loader load, void *user, bool rank0, glint_error *err)
+{
+    file_log_replay(log);
+    glint_status status = load(user, rank0, err);
+    file_log_stop();
     return status;
 }

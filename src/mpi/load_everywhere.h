@@ -9,6 +9,8 @@
 
 #include <mpi.h>
 #include <stdbool.h>
+#include "core/file_log.h"
+#include "core/file_log.h"
 #include "glint.h"
 
 /* Loads the scene into the caller's `user`, on rank 0 (`rank0` true) or on
@@ -28,8 +30,17 @@ typedef glint_status (*scene_loader)(void *user, bool rank0, glint_error *err);
  * each other rank returns its own outcome (it must then tell rank 0 of a
  * failure itself). *failed_rank is the rank that failed (0 for rank 0). A
  * rank whose own load succeeded keeps what it loaded, for the caller to
- * free, even when another failed. */
+ * free, even when another failed. With `kept`, a rank whose own load
+ * succeeded also gets the files rank 0 sent, as a whole log for
+ * load_again (rank 0 too: the bytes it sent, not its files again), to
+ * free with file_log_free; else *kept is NULL. */
 glint_status load_everywhere(MPI_Comm comm, scene_loader load, void *user, bool with_stdin, bool wait_for_all,
-                             int *failed_rank, glint_error *err);
+                             file_log **kept, int *failed_rank, glint_error *err);
+
+/* Runs `load` again on the calling thread (of any rank, as rank 0 when
+ * `rank0`), its files answered from a log load_everywhere kept, so that it
+ * reads the bytes rank 0 sent and no file of its own: the scene as it is
+ * at another time, say. Returns what `load` returns. */
+glint_status load_again(file_log *log, scene_loader load, void *user, bool rank0, glint_error *err);
 
 #endif

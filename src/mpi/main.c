@@ -14,13 +14,15 @@
 #include <unistd.h>
 #include "cli/args.h"
 #include "cli/display.h"
+#include "cli/frames.h"
 #include "cli/reports.h"
 #include "cli/setup.h"
 #include "core/error.h"
-#include "glint_mpi.h"
 #include "mpi/agree.h"
 #include "mpi/load_everywhere.h"
+#include "mpi/render_across.h"
 #include "mpi/same_build.h"
+#include "mpi/sequence.h"
 
 /* Runs parse with stdout and stderr sent nowhere: the other ranks read the
  * same flags as rank 0, which alone prints the help or their faults. */
@@ -81,95 +83,16 @@ static int report_only(const cli_options *o)
     return cli_reported(code >= 0 ? code : cli_print_scene(r.scene, o->output));
 }
 
-/* The summary: the run as glint says it, with the ranks and their threads
- * (rank 0's count, when every rank has as many), and for each rank how
- * busy its threads were (their time on tiles over the render's time) and
- * how many tiles it rendered. */
-static void print_summary(const cli_run *r, int ranks, const glint_render_stats *total,
-                          const glint_mpi_rank_stats *each)
-{
-    bool same_threads = true;
-    for (int i = 0; i < ranks; i++)
-        same_threads = same_threads && each[i].threads == each[0].threads;
-    const glint_settings *s = &r->settings;
-    fprintf(stderr, "glint-mpi: %dx%d, %d spp, %d rank%s x ", s->width, s->height, s->samples_per_pixel, ranks,
-            ranks == 1 ? "" : "s");
-    if (same_threads)
-        fprintf(stderr, "%d thread%s", each[0].threads, each[0].threads == 1 ? "" : "s");
-    else
-        fputs("their threads", stderr);
-    fprintf(stderr, ": %.3f s, %llu samples, %llu rays, %.1f Mrays/s -> %s; busy:", total->seconds,
-            (unsigned long long)total->samples, (unsigned long long)total->rays,
-            total->seconds > 0 ? total->rays / total->seconds * 1e-6 : 0.0, r->dest.shown);
-    for (int i = 0; i < ranks; i++) {
-        const glint_mpi_rank_stats *p = &each[i];
-        double busy = p->seconds > 0 && p->threads > 0 ? p->busy / (p->seconds * p->threads) : 0;
-        fprintf(stderr, "%s rank %d %.0f%% (%d tile%s", i ? "," : "", i, 100 * (busy < 1 ? busy : 1), p->tiles,
-                p->tiles == 1 ? "" : "s");
-        if (!same_threads)
-            fprintf(stderr, ", %d thread%s", p->threads, p->threads == 1 ? "" : "s");
-        fputc(')', stderr);
-    }
-    fputc('\n', stderr);
-}
-
-/* Renders and, on rank 0, writes the image, shown in the window when there
- * is one (rank 0's); the exit code. Every rank has loaded the scene into r. */
-static int render(const cli_options *o, cli_run *r, int rank, int ranks, display *window)
-{
-    cli_progress prog = {.last_print = -1};
-    clock_gettime(CLOCK_MONOTONIC, &prog.start);
-    glint_render_options ro = {.threads = o->threads > 0 ? (int)o->threads : 0,
-                               .cancel = (const volatile int *)&interrupted,
-                               .keep_partial = o->partial};
-    if (rank == 0 && !o->quiet) {
-        ro.progress = cli_show_progress;
-        ro.progress_user = &prog;
-    }
-    if (window) {
-        ro.tile_done = display_tile;
-        ro.tile_user = window;
-    }
-    glint_mpi_rank_stats *each = rank == 0 ? calloc((size_t)ranks, sizeof *each) : NULL;
-    if (rank == 0 && !each) {
-        fputs("glint-mpi: out of memory for the ranks' reports\n", stderr);
-        MPI_Abort(MPI_COMM_WORLD, CLI_EXIT_INTERNAL); /* the others cannot be told */
-    }
-    glint_image image;
-    glint_render_stats total;
-    glint_error err = {0};
-    glint_status st = glint_mpi_render(MPI_COMM_WORLD, r->scene, &ro, &image, &total, each, &err);
-    if (ro.progress && st)
-        fputs("\r\033[K", stderr); /* the progress line stopped short */
-    int code = CLI_EXIT_OK;
-    if (rank != 0)
-        code = cli_exit_code_of(st);
-    else if (st == GLINT_ERR_CANCELLED)
-        code = cli_interrupted(o, r, &image, total.tiles_done, total.tiles_total);
-    else if (st)
-        code = cli_complain(cli_exit_code_of(st), "%s", err.message);
-    else if ((st = cli_write_image(r, &image, &err)))
-        code = cli_complain(cli_exit_code_of(st), "%s", err.message);
-    else {
-        cli_warn_nan(total.nan_samples);
-        if (!o->quiet)
-            print_summary(r, ranks, &total, each);
-        if (window)
-            display_finished(window, total.seconds);
-    }
-    glint_image_free(&image);
-    free(each);
-    return code;
-}
-
 /* What the loader of the scene needs: the flags (on the other ranks,
  * whether they were rank 0's), and where the scene goes, with the exit
- * code of a failure; on the other ranks, where the load's messages wait. */
+ * code of a failure and, on rank 0, the frames the run renders; on the
+ * other ranks, where the load's messages wait. */
 typedef struct flag_load {
     const cli_options *o;
     bool other_flags;
     cli_run *run;
     int code;
+    cli_frames frames;        /* rank 0's: the frames to render */
     FILE *messages;
     display *window;
 } flag_load;
@@ -190,10 +113,9 @@ static glint_status load_flags_scene(void *user, bool rank0, glint_error *err)
         ; /* said */
     else {
         l->code = cli_prepare(l->o, rank0, 0, l->run);
-        const glint_settings *s = &l->run->settings;
-        if (l->code < 0 && (l->o->frame_first >= 0 || l->o->resume || s->frame_end > s->frame_start)) {
-            l->code = cli_complain(CLI_EXIT_USAGE, "glint-mpi renders one still, at time 0; render an animation's "
-                                                   "frames with glint");
+        /* Frames that cannot be rendered fail the load, before any is. */
+        if (l->code < 0 && rank0 && (l->code = cli_frames_choose(l->o, &l->run->settings, l->run->dest.path,
+                                                                 &l->frames)) >= 0) {
             glint_scene_free(l->run->scene);
             l->run->scene = NULL;
         }
@@ -247,6 +169,7 @@ int main(int argc, char **argv)
     }
     cli_run r = {0};
     flag_load load = {.o = &o, .run = &r, .code = -1};
+    file_log *log = NULL; /* the files rank 0 sent, to load the frames of a sequence from */
     /* mpirun gives every rank the same arguments. */
     if (code < 0 && rank != 0)
         load.other_flags = parse_silently(argc, argv, &o) >= 0;
@@ -266,7 +189,7 @@ int main(int argc, char **argv)
         if (rank != 0 && !(load.messages = open_memstream(&kept, &kept_size)))
             load.messages = fopen("/dev/null", "w");
         glint_status st =
-            load_everywhere(MPI_COMM_WORLD, load_flags_scene, &load, with_stdin, false, &failed_rank, &err);
+            load_everywhere(MPI_COMM_WORLD, load_flags_scene, &load, with_stdin, false, &log, &failed_rank, &err);
         if (load.messages && fclose(load.messages) == 0 && kept && st && failed_rank == rank)
             fputs(kept, stderr);
         free(kept);
@@ -280,9 +203,19 @@ int main(int argc, char **argv)
     rendering = joins;
     if (joins) {
         int own = code;
-        code = render(&o, &r, rank, ranks, load.window);
+        agree_on_rank0_bytes(MPI_COMM_WORLD, &load.frames, (int)sizeof load.frames);
+        const volatile int *cancel = (const volatile int *)&interrupted;
+        if (sequence_wanted(&o, &load.frames)) {
+            code = sequence_render(&o, &r, &load.frames, log, rank, ranks, load.window, cancel);
+        } else {
+            /* A still needs the files no more. */
+            file_log_free(log);
+            log = NULL;
+            code = render_across(&o, &r, rank, ranks, load.window, cancel, NULL);
+        }
         code = own >= 0 ? own : code;
     }
+    file_log_free(log);
     rendered = rendering;
     rendering = 0;
     /* Every rank exits with the worst code: a rank that ran out of memory

@@ -204,6 +204,19 @@ static void send_message(MPI_Comm comm, unsigned char *answers, size_t answer_by
         broadcast(comm, outcome, sizeof *outcome);
 }
 
+/* Adds what was just sent to the log rank 0 keeps, when it keeps one, as
+ * the other ranks add it to theirs; a failure to keep it is the load's. */
+static void keep_sent(file_sender *s, const unsigned char *answers, size_t answer_bytes, const unsigned char *bytes,
+                      size_t byte_count)
+{
+    if (!s->keep || s->status)
+        return;
+    if (answer_bytes > 0)
+        s->status = file_log_take_answers(s->keep, answers, answer_bytes, &s->err);
+    if (!s->status && byte_count > 0)
+        s->status = file_log_take_bytes(s->keep, bytes, byte_count, &s->err);
+}
+
 /* The open hook of rank 0's log: the answers noted so far and a copy of
  * the opened file's bytes, sent at once; the load reads the copy, so that
  * it reads what was sent. After a failure nothing more is sent: the last
@@ -229,6 +242,7 @@ static int send_open(void *user, const char *path, int fd, uint64_t size)
             break;
         }
         send_message(s->comm, answers, answer_bytes, s->chunk, n, NULL);
+        keep_sent(s, answers, answer_bytes, s->chunk, n);
         free(answers);
         answers = NULL;
         answer_bytes = 0;
@@ -240,9 +254,9 @@ static int send_open(void *user, const char *path, int fd, uint64_t size)
     return copy;
 }
 
-glint_status send_files_begin(file_sender *s, MPI_Comm comm, file_log *log)
+glint_status send_files_begin(file_sender *s, MPI_Comm comm, file_log *log, file_log *keep)
 {
-    *s = (file_sender){.comm = comm, .log = log, .chunk = malloc(CHUNK_BYTES)};
+    *s = (file_sender){.comm = comm, .log = log, .keep = keep, .chunk = malloc(CHUNK_BYTES)};
     if (!s->chunk)
         s->status = error_set(&s->err, GLINT_ERR_NOMEM, "out of memory sending the scene's files");
     if (log)
@@ -256,6 +270,9 @@ glint_status send_files_end(file_sender *s, const glint_error *told, glint_error
     size_t answer_bytes = 0;
     if (!s->status && s->log)
         s->status = file_log_pack(s->log, &answers, &answer_bytes, &s->err);
+    keep_sent(s, answers, answer_bytes, NULL, 0);
+    if (s->keep)
+        file_log_complete(s->keep);
     glint_error outcome = told->status ? *told : s->status ? s->err : (glint_error){0};
     send_message(s->comm, answers, answer_bytes, NULL, 0, &outcome);
     free(answers);

@@ -32,6 +32,7 @@ glint_status receive_stdin(MPI_Comm comm, bool *by_rank0, glint_error *err);
 typedef struct file_sender {
     MPI_Comm comm;
     file_log *log;
+    file_log *keep;           /* what is sent, kept for rank 0 to replay too; NULL: not kept */
     unsigned char *chunk;     /* a file's bytes on their way */
     glint_status status;      /* the first failure to send: nothing more is */
     glint_error err;          /* what it was */
@@ -39,9 +40,13 @@ typedef struct file_sender {
 
 /* Rank 0 of comm, before its load: makes `log` (NULL when it could not be
  * had), which the load records into, send the other ranks what it notes
- * and each file's bytes as the load opens them. Returns a failure the
- * load may as well not begin with (memory); it is sent by send_files_end. */
-glint_status send_files_begin(file_sender *s, MPI_Comm comm, file_log *log);
+ * and each file's bytes as the load opens them; with `keep`, a log to
+ * replay, rank 0 takes what it sends into it as the others do (a failure
+ * to keep it is the load's), so that it can load the scene again from the
+ * same bytes (the frames of a sequence). Returns a failure the load may
+ * as well not begin with (memory); it is sent by send_files_end, which
+ * completes `keep`. */
+glint_status send_files_begin(file_sender *s, MPI_Comm comm, file_log *log, file_log *keep);
 
 /* Rank 0, after its load: sends the answers left and the outcome, `told`
  * (the load's failure, or status GLINT_OK), or else the failure to send.

@@ -69,7 +69,7 @@ same 7 1 anti-aliasing.png anti-aliasing.yaml
 i=0
 for scene in "$here"/scenes/*.yaml; do
     [ "$full" -eq 1 ] || [ "$i" -lt 2 ] || break
-    # glint-mpi renders stills: an animation's frames are glint's (below).
+    # An animation's frames: mpi_frames.sh.
     grep -q '^  frames:' "$scene" && continue
     same "${ranks[$((i % 5))]}" "${threads[$(((i + 1) % 5))]}" "$(basename "$scene" .yaml).png" "$scene"
     i=$((i + 1))
@@ -104,9 +104,6 @@ expect_failure() {
 
 printf 'glint: 1\nsettings: { width: 16, heigth: 8 }\n' >bad.yaml
 expect_failure 3 1 "a scene error" bad.yaml -q
-printf 'settings: {width: 16, height: 8, frames: {end: 3}}\n' >frames.yaml
-mpi 2 frames.yaml -q -o 'f-#.png' >/dev/null 2>mpi.err
-check "glint-mpi refuses an animation's frames, saying so" grep -qxF "glint: glint-mpi renders one still, at time 0; render an animation's frames with glint" mpi.err
 if [ "$full" -eq 1 ]; then
     expect_failure 4 1 "a missing scene" no-such-scene.yaml -q
     expect_failure 2 2 "a bad flag" --threads -3 -q
