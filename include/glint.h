@@ -658,11 +658,12 @@ glint_status glint_scene_move_shape(glint_scene *scene, int shape, int count, co
 glint_status glint_scene_move_instance(glint_scene *scene, int instance, int count, const glint_transform *poses,
                                        glint_error *err);
 
-/* A point, spot or directional light's motion over the shutter, as
- * glint_scene_move_shape's: its position, direction, colour and cone go in
- * straight lines from each of `count` poses (each checked as
- * glint_scene_add_light checks, of the light's kind) to the next. Area
- * lights do not move (GLINT_ERR_INVALID). */
+/* A light's motion over the shutter, as glint_scene_move_shape's: its
+ * position, direction, colour, a spot's cone, an area light's edges and
+ * radius go in straight lines from each of `count` poses (each checked as
+ * glint_scene_add_light checks, of the light's kind) to the next, an area
+ * light's surface with them. (An emissive shape's light moves with the
+ * shape, glint_scene_move_shape.) */
 glint_status glint_scene_move_light(glint_scene *scene, int light, int count, const glint_light *poses,
                                     glint_error *err);
 

@@ -480,7 +480,10 @@ static void area_light_packet(tracer *t, const ray8 *r, const bool lanes[ACCEL_P
                               const double u[2][ACCEL_PACKET], double share)
 {
     light_samples8 ls;
-    l->kind->sample_lanes(l, ll->p, u, lanes, &ls);
+    if (t->time && light_moves(l))
+        light_moved_lanes(l, t->time, ll->p, u, lanes, &ls);
+    else
+        l->kind->sample_lanes(l, ll->p, u, lanes, &ls);
     lit_packet(t, r, sp, ll, depth, &ls, share);
 }
 
@@ -713,6 +716,9 @@ __attribute__((noinline)) static void area_lights_seen(const tracer *t, const ra
         double nearest = found[i] ? sp[i].hit.t : t->reach, at;
         for (int l = 0; l < scene->area_light_count; l++) {
             const light *li = &scene->lights[scene->area_lights[l]];
+            light moved;
+            if (t->time && li->pose_count)
+                li = light_moved(li, t->time[i], &moved);
             if (light_seen(li, &ri, nearest, &at)) {
                 nearest = sp[i].hit.t = at;
                 glows[i] = true;

@@ -333,7 +333,7 @@ int glint_scene_add_shape(glint_scene *scene, const glint_shape *desc, int mat, 
     if (rgb_max(glow) > 0) {
         light emitter;
         const shape *s = &scene->shapes[scene->shape_count];
-        if (!emitter_for_shape(&emitter, s, glow)) {
+        if (!emitter_for_shape(&emitter, s, scene->shape_count, glow)) {
             if (scene_warn(scene, err, "an emissive %s glows but lights nothing: it has no end (a polygon or "
                            "disk does)", s->kind->name))
                 return -1;

@@ -1,6 +1,6 @@
 /* scene_motion.c - what moves over the shutter (settings.shutter_open to
- * _close): a shape's poses, a placed mesh's, a delta light's and the
- * camera's, evenly spaced over it, each
+ * _close): a shape's poses (and its light's, when it glows), a placed
+ * mesh's, a light's and the camera's, evenly spaced over it, each
  * moving in straight lines between them; and whether the scene was read
  * with keyed values at all (docs/animation.md). */
 #include <stdlib.h>
@@ -53,6 +53,8 @@ glint_status glint_scene_move_shape(glint_scene *scene, int index, int count, co
     shape *s = &scene->shapes[index];
     free(s->poses);
     shape_move(s, copy, count);
+    /* Its light moves with it. */
+    emitters_follow_shape(scene->emitters, scene->emitter_count, index, s);
     return GLINT_OK;
 }
 
@@ -101,9 +103,6 @@ glint_status glint_scene_move_light(glint_scene *scene, int index, int count, co
     if (index < 0 || index >= scene->light_count)
         return error_set(err, GLINT_ERR_INVALID, "light %d does not exist", index);
     light *l = &scene->lights[index];
-    if (!l->kind->delta)
-        return error_set(err, GLINT_ERR_INVALID, "a %s light cannot move: only point, spot and directional lights do",
-                         l->kind->name);
     glint_status st = check_count(count, err);
     if (st)
         return st;

@@ -444,7 +444,7 @@ static bool same_transform(const glint_transform *a, const glint_transform *b)
 /* Gives an animated scene with a shutter its motion (docs/animation.md):
  * the scene read again at each of its shutter's poses, evenly spaced from
  * the opening to the closing, and each shape and placed mesh whose
- * transform changes, each delta light and a camera that do, moved through
+ * transform changes, each light and a camera that do, moved through
  * them. The scene itself, or NULL after
  * a failure (reported, and in err), freed. */
 static glint_scene *add_motion(glint_scene *scene, const glint_load_options *o, glint_error *err, const char *name,
@@ -486,13 +486,12 @@ static glint_scene *add_motion(glint_scene *scene, const glint_load_options *o, 
         good = !moves || (i < shapes ? glint_scene_move_shape(scene, i, poses, mine, err)
                                      : glint_scene_move_instance(scene, i - shapes, poses, mine, err)) == GLINT_OK;
     }
-    /* Area lights stand still (docs/animation.md). */
     for (int i = 0; good && i < lights; i++) {
         const glint_light *mine = &lamp[(size_t)i * poses];
         bool moves = false;
         for (int k = 1; k < poses; k++)
             moves |= memcmp(&mine[k], &mine[0], sizeof mine[0]) != 0;
-        good = !moves || !scene->lights[i].kind->delta || glint_scene_move_light(scene, i, poses, mine, err) == GLINT_OK;
+        good = !moves || glint_scene_move_light(scene, i, poses, mine, err) == GLINT_OK;
     }
     bool camera_moves = false;
     for (int k = 1; good && k < poses; k++)

@@ -69,8 +69,44 @@ void light_move(light *l, light *poses, int count)
     l->pose_count = count;
 }
 
+/* A moving area light as it is at `time`: its description blended
+ * between the poses about that time, and its surface made from that. */
+static const light *area_light_moved(const light *l, double time, light *out)
+{
+    int k;
+    double w;
+    pose_stretch(time, l->pose_count, &k, &w);
+    const light *a = &l->poses[k], *b = &l->poses[k + 1];
+    *out = *a;
+    glint_light *d = &out->desc;
+    d->position = v3_lerp(a->desc.position, b->desc.position, w);
+    d->color = rgb_lerp(a->desc.color, b->desc.color, w);
+    d->radius = a->desc.radius + (b->desc.radius - a->desc.radius) * w;
+    d->edge1 = v3_lerp(a->desc.edge1, b->desc.edge1, w);
+    d->edge2 = v3_lerp(a->desc.edge2, b->desc.edge2, w);
+    d->direction = v3_lerp(a->desc.direction, b->desc.direction, w);
+    glint_error ignored;
+    /* A surface that blends through nothing (a half turn's edges, a
+     * direction through zero) has none at that instant: the nearer pose
+     * stands in. */
+    if (out->kind->init(out, &ignored) != GLINT_OK)
+        *out = w < 0.5 ? *a : *b;
+    out->pose_count = 0;
+    return out;
+}
+
 const light *light_moved(const light *l, double time, light *out)
 {
+    if (!l->pose_count) {
+        /* An emitter glowing over a moving shape. */
+        shape glow;
+        const shape *at = shape_at(&l->glow, time, &glow);
+        *out = *l;
+        out->glow = *at;
+        return out;
+    }
+    if (!l->kind->delta)
+        return area_light_moved(l, time, out);
     int k;
     double w;
     pose_stretch(time, l->pose_count, &k, &w);
@@ -91,6 +127,24 @@ __attribute__((noinline)) bool light_moved_sample(const light *l, double time, v
 {
     light moved;
     return light_delta_sample(light_moved(l, time, &moved), p, out);
+}
+
+__attribute__((noinline)) void light_moved_lanes(const light *l, const double *time, const double p[3][RAY8],
+                                                const double u[2][RAY8], const bool active[RAY8], light_samples8 *out)
+{
+    for (int i = 0; i < RAY8; i++) {
+        light moved;
+        light_sample s = {{0, 0, 0}, 0, {0, 0, 0}};
+        const light *m = active[i] ? light_moved(l, time[i], &moved) : NULL;
+        out->ok[i] = m && m->kind->sample(m, v3(p[0][i], p[1][i], p[2][i]), u[0][i], u[1][i], &s);
+        const double to_light[3] = {s.to_light.x, s.to_light.y, s.to_light.z}, glow[3] = {s.radiance.r, s.radiance.g,
+                                                                                           s.radiance.b};
+        for (int c = 0; c < 3; c++) {
+            out->to_light[c][i] = to_light[c];
+            out->radiance[c][i] = glow[c];
+        }
+        out->distance[i] = s.distance;
+    }
 }
 
 bool light_delta_sample_fn(const light *l, vec3 p, double u1, double u2, light_sample *out)

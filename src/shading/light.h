@@ -64,8 +64,9 @@ typedef struct light {
     int triangle_count;       /* and their number */
     double power;             /* an area light's or emitter's brightness (rgb_mean) times the area
                                  it glows over, to choose among them by (light_choice.h) */
-    struct light *poses;      /* a moving delta light's over the shutter (light_move), evenly */
+    struct light *poses;      /* a moving light's over the shutter (light_move), evenly */
     int pose_count;           /* spaced, or 0: it stands still; owned by the scene */
+    int shape_index;          /* an emissive shape's: the scene's shape it glows over */
 } light;
 
 /* What a light offers to point p for one sample. */
@@ -250,16 +251,31 @@ static inline bool light_delta_sample(const light *l, vec3 p, light_sample *out)
     return factor > 0;
 }
 
-/* Makes delta light l move over the shutter through `count` (2 or more)
+/* Makes light l move over the shutter through `count` (2 or more)
  * initialised lights of its kind, evenly spaced: l keeps `poses`, which
  * the caller frees after it, and takes the first's place. */
 void light_move(light *l, light *poses, int count);
 
-/* The moving delta light l (pose_count > 0) as it is at `time` in [0, 1]
- * over the shutter, into *out, which it returns: a copy whose position,
- * direction, colour and cone are blended in a straight line between the
- * poses about that time. */
+/* Whether l moves over the shutter: a light with poses, or an emitter
+ * glowing over a moving shape. */
+static inline bool light_moves(const light *l)
+{
+    return l->pose_count > 0 || l->glow.pose_count > 0;
+}
+
+/* The moving light l (light_moves) as it is at `time` in [0, 1] over the
+ * shutter, into *out, which it returns: a delta light's position,
+ * direction, colour and cone, an area light's position, direction, edges,
+ * radius and colour, blended in a straight line between the poses about
+ * that time (an area light's surface made anew from them); an emitter's
+ * surface, its shape as shape_at gives it. */
 const light *light_moved(const light *l, double time, light *out);
+
+/* An area light's or emitter's samples for a packet, as sample_lanes, of
+ * the moving light l, lane i's as it is at time[i]: one lane at a time,
+ * through its kind's sample. */
+void light_moved_lanes(const light *l, const double *time, const double p[3][RAY8], const double u[2][RAY8],
+                       const bool active[RAY8], light_samples8 *out);
 
 /* light_delta_sample of the moving delta light l as it is at `time`:
  * apart, so that the common path keeps no room for a moved copy. */
@@ -315,9 +331,14 @@ bool light_seen(const light *l, const ray *r, double tmax, double *t);
 bool light_surface_point(vec3 p, vec3 q, vec3 n_q, double density, color radiance, bool in_scene,
                          light_sample *out);
 
-/* The light of shape s glowing with `radiance` from its front (an emitter):
- * false, and *l untouched, for a shape of no finite area (a plane). */
-bool emitter_for_shape(light *l, const shape *s, color radiance);
+/* The light of shape s, the scene's shape number `index`, glowing with
+ * `radiance` from its front (an emitter): false, and *l untouched, for a
+ * shape of no finite area (a plane). */
+bool emitter_for_shape(light *l, const shape *s, int index, color radiance);
+
+/* Makes every emitter of the `count` at `emitters` that glows over the
+ * scene's shape number `index` glow over s, as it now is: moving with it. */
+void emitters_follow_shape(light *emitters, int count, int index, const shape *s);
 
 /* The light of the triangles of mesh m placed by inst whose materials
  * (materials[i].m) emit: false when none does, or when out of memory

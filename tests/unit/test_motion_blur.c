@@ -5,7 +5,10 @@
  * image is bit for bit what it is without a shutter; a camera panning
  * streaks a still ball by as much as the ball moving past a still camera;
  * a light changing colour or moving lights by its mean over the shutter;
- * a mesh moved as Embree moves instances streaks as the ball does;
+ * so do a moving area light and a moving emissive ball (their light the
+ * mean of stills along the path), and a visible lamp moving streaks as
+ * the ball does; a mesh moved as Embree moves instances streaks as the
+ * ball does;
  * the same bytes for any thread count; and a shutter with nothing keyed
  * changes nothing. */
 #include <stdarg.h>
@@ -180,6 +183,82 @@ static void test_moving_light(void **state)
     glint_image_free(&moving);
 }
 
+/* The floor under a small sphere light at `where`. */
+static const char *sphere_light_over(bool shutter, const char *where)
+{
+    char light[256];
+    snprintf(light, sizeof light, "{type: sphere, position: %s, radius: 0.05, samples: 4}", where);
+    return lit_floor(shutter, light);
+}
+
+/* The floor under a small ball at `where` glowing by its material. */
+static const char *glowing_ball_over(bool shutter, const char *where)
+{
+    static char text[1024];
+    snprintf(text, sizeof text,
+             "settings: {width: 16, height: 16, samples: 256, sampler: sobol, frames: {fps: 1}%s}\n"
+             "camera: {position: [0, 10, 0], look_at: [0, 0, 0], up: [0, 0, -1], fov: 2}\n"
+             "materials: {floor: {color: {linear: [1, 1, 1]}, ambient: 0, diffuse: 1, specular: 0},\n"
+             "            glow: {color: [0, 0, 0], emission: {linear: [20, 20, 20]}}}\n"
+             "objects: [{type: plane, point: [0, 0, 0], normal: [0, 1, 0], material: floor},\n"
+             "          {type: sphere, radius: 0.05, material: glow, transform: [{translate: %s}]}]\n",
+             shutter ? ", shutter: {open: 0, close: 1}" : "", where);
+    return text;
+}
+
+/* The floor's middle pixel with scene(shutter, where) moving from (0.5, 4,
+ * 0) to (4.5, 4, 0) over the shutter (aside from the camera's view of the
+ * floor, so that it is not seen), and the mean of `stills` stills at the
+ * midpoints of the path. */
+static void moving_and_stills(const char *(*scene)(bool, const char *), int stills, double *moving, double *mean)
+{
+    size_t middle = (8 * 16 + 8) * 3;
+    glint_image im = render(scene(true, "{keys: [[0, [0.5, 4, 0]], [1, [4.5, 4, 0]]]}"), 2);
+    *moving = im.pixels[middle];
+    glint_image_free(&im);
+    *mean = 0;
+    for (int k = 0; k < stills; k++) {
+        char where[64];
+        snprintf(where, sizeof where, "[%.17g, 4, 0]", 0.5 + 4 * (k + 0.5) / stills);
+        im = render(scene(false, where), 2);
+        *mean += im.pixels[middle] / stills;
+        glint_image_free(&im);
+    }
+}
+
+/* A small sphere light moving 4 units over the floor lights it by the
+ * mean of its light over the path (stills at 32 points of it), within 1%;
+ * so does a small ball glowing by its material's emission, its light
+ * moving with it. */
+static void test_moving_area_light(void **state)
+{
+    double moving, mean;
+    moving_and_stills(sphere_light_over, 32, &moving, &mean);
+    assert_true(mean > 0);
+    assert_true(fabs(moving / mean - 1) < 0.01);
+    moving_and_stills(glowing_ball_over, 32, &moving, &mean);
+    assert_true(mean > 0);
+    assert_true(fabs(moving / mean - 1) < 0.01);
+}
+
+/* A lamp seen by the camera, a disk light facing it, moving as the ball
+ * did, leaves the same streak. */
+static void test_moving_lamp_seen(void **state)
+{
+    char text[1024];
+    snprintf(text, sizeof text,
+             "settings: {width: %d, height: %d, samples: 256, sampler: sobol, frames: {fps: 1}, shutter: {open: 0, close: 1}}\n"
+             "camera: {position: %s, fov: 30}\n"
+             "lights: [{type: disk, position: %s, direction: [0, 0, 1], radius: 0.25, color: {linear: [1, 1, 1]}}]\n",
+             WIDTH, HEIGHT, STILL_CAMERA, MOVING);
+    glint_image im = render(text, 2);
+    double left, right;
+    half_max_ends(&im, streak_row(), &left, &right);
+    assert_true(fabs(left - column_of(-2)) < 1);
+    assert_true(fabs(right - column_of(2)) < 1);
+    glint_image_free(&im);
+}
+
 /* A mesh moved through the C API (Embree's instance motion blur): a small
  * square of two triangles crossing the view as the ball did leaves a
  * streak whose ends are the projected ends of its path. */
@@ -223,6 +302,8 @@ int main(void)
         cmocka_unit_test(test_camera_pan),
         cmocka_unit_test(test_threads),
         cmocka_unit_test(test_moving_light),
+        cmocka_unit_test(test_moving_area_light),
+        cmocka_unit_test(test_moving_lamp_seen),
         cmocka_unit_test(test_moving_mesh),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
