@@ -10,7 +10,8 @@ int cli_frames_choose(const cli_options *o, const glint_settings *s, const char 
     f->first = o->frame_first >= 0 ? (int)o->frame_first : s->frame_start;
     f->last = o->frame_first >= 0 ? (int)o->frame_last : s->frame_end;
     f->fps = s->fps;
-    if (f->last == f->first)
+    /* --print-scene prints the first frame alone. */
+    if (f->last == f->first || o->print_scene)
         return -1;
     if (o->scene && strcmp(o->scene, "-") == 0)
         return cli_complain(CLI_EXIT_USAGE, "frames %d to %d need the scene in a file: standard input is read once",

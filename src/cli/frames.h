@@ -18,7 +18,8 @@ typedef struct cli_frames {
 /* The frames o asks for (--frame, --frames), else those of the scene's
  * settings s; -1 to go on, or the exit code after complaining: several
  * frames need the scene in a file (standard input is read once) and an
- * output name with #s (not standard output). */
+ * output name with #s (not standard output), unless o prints the scene
+ * (--print-scene: the first frame alone). */
 int cli_frames_choose(const cli_options *o, const glint_settings *s, const char *output, cli_frames *f);
 
 /* The time of frame `frame` in seconds: frame / fps. */

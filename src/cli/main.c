@@ -145,18 +145,6 @@ static int run(const cli_options *o)
             if ((code = cli_prepare(o, true, time, &r)) >= 0)
                 break;
         }
-        if (o->print_scene) {
-            /* This frame's scene, every keyed value fixed: a still, whose
-             * seed is the frame's, so that it renders the frame's bytes. */
-            r.settings.seed = glint_settings_random_seed(&(glint_settings){.seed = r.settings.seed, .frame = frame});
-            r.settings.frame_start = r.settings.frame_end = 0;
-            glint_error err = {0};
-            if (glint_scene_set_settings(r.scene, &r.settings, &err)) {
-                glint_scene_free(r.scene);
-                return cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
-            }
-            return cli_print_scene(r.scene, o->output); /* frees the scene */
-        }
         /* The frame moves the random patterns: its noise is its own. */
         r.settings.frame = frame;
         glint_error err = {0};
@@ -203,6 +191,7 @@ int main(int argc, char **argv)
     cli_catch_signals(on_signal);
     if (o.check)
         return cli_reported(cli_check_only(&o));
-    code = run(&o);
-    return o.print_scene ? cli_reported(code) : code;
+    if (o.print_scene)
+        return cli_reported(cli_print_frame(&o));
+    return run(&o);
 }

@@ -4,6 +4,7 @@
 #include <errno.h>
 #include <stdio.h>
 #include <string.h>
+#include "cli/frames.h"
 #include "cli/report_flush.h"
 #include "cli/reports.h"
 #include "cli/setup.h"
@@ -66,7 +67,9 @@ int cli_check_only(const cli_options *o)
     return worst;
 }
 
-int cli_print_scene(glint_scene *scene, const char *output)
+/* The scene, with the output `output` names (when not NULL), as a scene
+ * file on stdout; frees the scene. The exit code. */
+static int print_scene(glint_scene *scene, const char *output)
 {
     glint_error err = {0};
     glint_status st = output ? glint_scene_set_output(scene, output, &err) : GLINT_OK;
@@ -74,5 +77,34 @@ int cli_print_scene(glint_scene *scene, const char *output)
         st = glint_scene_write_yaml(scene, stdout, &err);
     glint_scene_free(scene);
     return st ? cli_complain(cli_exit_code_of(st), "%s", err.message) : CLI_EXIT_OK;
+}
+
+int cli_print_frame(const cli_options *o)
+{
+    cli_run r;
+    int code = cli_prepare(o, true, 0, &r);
+    if (code >= 0)
+        return code;
+    cli_frames f;
+    if ((code = cli_frames_choose(o, &r.settings, r.dest.path, &f)) >= 0) {
+        glint_scene_free(r.scene);
+        return code;
+    }
+    double time = cli_frame_time(&f, f.first);
+    if (time != 0) {
+        glint_scene_free(r.scene);
+        if ((code = cli_prepare(o, true, time, &r)) >= 0)
+            return code;
+    }
+    /* Every keyed value fixed at the frame's time: a still, whose seed is
+     * the frame's, so that it renders the frame's bytes. */
+    r.settings.seed = glint_settings_random_seed(&(glint_settings){.seed = r.settings.seed, .frame = f.first});
+    r.settings.frame_start = r.settings.frame_end = 0;
+    glint_error err = {0};
+    if (glint_scene_set_settings(r.scene, &r.settings, &err)) {
+        glint_scene_free(r.scene);
+        return cli_complain(CLI_EXIT_INTERNAL, "%s", err.message);
+    }
+    return print_scene(r.scene, o->output);
 }
 

@@ -13,9 +13,11 @@
  * the highest: 5 (out of memory) over 1 (not valid) over 0. */
 int cli_check_only(const cli_options *o);
 
-/* --print-scene: the scene, with the output `output` names (when not
- * NULL), as a scene file on stdout; frees the scene. The exit code. */
-int cli_print_scene(glint_scene *scene, const char *output);
+/* --print-scene: the scene o names (its first frame, or --frame N's) as a
+ * still on stdout, every keyed value fixed at that frame's time and the
+ * seed the frame's, so that it renders the frame's bytes, with the output
+ * o names (when given). The exit code. */
+int cli_print_frame(const cli_options *o);
 
 /* The exit code of a run that reports on stdout, with its problems on
  * stderr (the help, the version, --check, --print-scene): `code`, or 3

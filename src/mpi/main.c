@@ -76,11 +76,7 @@ static void on_signal(int sig)
 /* --check and --print-scene, on rank 0 alone, as glint does them. */
 static int report_only(const cli_options *o)
 {
-    if (o->check)
-        return cli_reported(cli_check_only(o));
-    cli_run r;
-    int code = cli_prepare(o, true, 0, &r);
-    return cli_reported(code >= 0 ? code : cli_print_scene(r.scene, o->output));
+    return cli_reported(o->check ? cli_check_only(o) : cli_print_frame(o));
 }
 
 /* What the loader of the scene needs: the flags (on the other ranks,

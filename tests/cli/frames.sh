@@ -139,5 +139,8 @@ check "frame 0's noise is a still's" cmp -s grain-0.png grain-still.png
 "$GLINT" grain.yaml --print-scene --frame 1 >grain-1.yaml
 expect 0 "" -- grain-1.yaml -q -o grain-printed.png
 check "the printed still of frame 1 renders frame 1" cmp -s grain-printed.png grain-1.png
+"$GLINT" grain.yaml --print-scene >grain-first.yaml 2>err
+check "--print-scene of a sequence prints its first frame, with no output named" \
+    cmp -s grain-first.yaml <("$GLINT" grain.yaml --print-scene --frame 0)
 
 finish

@@ -126,6 +126,11 @@ refused "frames to standard output" ball.yaml -q -o -
 [ $? -eq 2 ] && grep -qxF "glint: frames 1 to 2 need the scene in a file: standard input is read once" mpi.err
 verdict $? "frames from standard input are refused: $(head -c 300 mpi.err)"
 
+# --print-scene prints a frame's still as glint does.
+(cd lead && "$GLINT" ball.yaml --print-scene --frame 3 >../glint.yaml && mpi 2 ball.yaml --print-scene --frame 3 >../mpi.yaml)
+cmp -s glint.yaml mpi.yaml && grep -q 'seed' mpi.yaml
+verdict $? "--print-scene --frame 3 prints glint's still of frame 3"
+
 # A signal to one rank stops every rank: exit 4, every frame file whole
 # (glint's bytes), none cut short, no temporary file; with --partial the
 # frames being rendered are written as far as they got, and said.
