@@ -5,8 +5,9 @@
 # at the frame's time and at the shutter's poses, building, rendering,
 # writing), by glint on 2 threads and, when glint-mpi is beside glint and
 # mpirun is found, by glint-mpi on 2 ranks of 1 thread (whole frames to
-# each rank; every frame compared byte for byte with glint's), in turn in
-# each round, with the median of the rounds' speed-ups; then motion
+# each rank; every frame compared byte for byte with glint's) and by glint
+# on 1 thread (one rank's share of the machine), in turn in each round,
+# with the medians of the rounds' speed-ups; then motion
 # blur's cost a sample: frame 22 with its shutter against the same frame
 # without one, in alternating runs, each run's render time over its
 # samples, medians.
@@ -41,6 +42,11 @@ whole() {
     echo "$end - $start" | bc >>"$work/$out.times"
 }
 : >"$work/ratios"
+# ratio A B FILE: the last round's time of A over B's, appended to FILE.
+ratio() {
+    paste <(tail -n 1 "$work/$1.times") <(tail -n 1 "$work/$2.times") | awk '{ print $1 / $2 }' >>"$work/$3"
+}
+: >"$work/ratios_one"
 for _ in $(seq "$RUNS"); do
     whole glint "$GLINT" --threads 2
     [ "$with_mpi" -eq 1 ] || continue
@@ -48,7 +54,9 @@ for _ in $(seq "$RUNS"); do
     for f in "$work"/glint/f-*.png; do
         cmp -s "$f" "$work/mpi/${f##*/}" || die "glint-mpi's ${f##*/} differs from glint's"
     done
-    paste <(tail -n 1 "$work/glint.times") <(tail -n 1 "$work/mpi.times") | awk '{ print $1 / $2 }' >>"$work/ratios"
+    whole one "$GLINT" --threads 1
+    ratio glint mpi ratios
+    ratio one mpi ratios_one
 done
 frames=$(find "$work/glint" -name 'f-*.png' | wc -l)
 glint_s=$(median <"$work/glint.times")
@@ -57,8 +65,10 @@ awk -v s="$glint_s" -v n="$frames" -v r="$RUNS" \
 if [ "$with_mpi" -eq 1 ]; then
     mpi_s=$(median <"$work/mpi.times")
     ratio=$(median <"$work/ratios")
-    awk -v s="$mpi_s" -v n="$frames" -v q="$ratio" \
-        'BEGIN { printf "glint-mpi, 2 ranks x 1 thread: %.2f s, %.3f s a frame, %.2fx glint (median of the rounds; every frame the same bytes)\n", s, s / n, q }'
+    one_s=$(median <"$work/one.times")
+    ratio_one=$(median <"$work/ratios_one")
+    awk -v s="$mpi_s" -v n="$frames" -v q="$ratio" -v o="$one_s" -v qo="$ratio_one" \
+        'BEGIN { printf "glint-mpi, 2 ranks x 1 thread: %.2f s, %.3f s a frame: %.2fx glint on 2 threads (the same cores), %.2fx glint on 1 thread (%.2f s: one rank'"'"'s core) (medians of the rounds; every frame the same bytes)\n", s, s / n, q, qo, o }'
 fi
 
 # ns_per_sample SCENE: one render of frame 22, its nanoseconds a sample.
