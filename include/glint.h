@@ -406,7 +406,9 @@ typedef enum glint_shape_kind {
     GLINT_SHAPE_BOX,        /* axis-aligned box between min and max */
     GLINT_SHAPE_CYLINDER,   /* about +y from centre of base, radius, height, optional caps */
     GLINT_SHAPE_CONE,       /* apex above the centre of base at height; optional base cap */
-    GLINT_SHAPE_DISK        /* disc (or, with inner_radius, a ring) about center, facing normal */
+    GLINT_SHAPE_DISK,       /* disc (or, with inner_radius, a ring) about center, facing normal */
+    GLINT_SHAPE_TORUS       /* ring about +y through center in the xz plane: radius (major) to the
+                               middle of its tube, minor_radius the tube's */
 } glint_shape_kind;
 
 /* A shape's description: each kind reads the fields named beside them.
@@ -416,7 +418,7 @@ typedef enum glint_shape_kind {
 typedef struct glint_shape {
     glint_shape_kind kind;
     glint_vec3 center;        /* sphere and disk centre; cylinder and cone base centre; plane point */
-    double radius;            /* sphere, cylinder, cone base, disk (outer) */
+    double radius;            /* sphere, cylinder, cone base, disk (outer), torus (major) */
     double height;            /* cylinder, cone */
     bool capped;              /* cylinder: both caps; cone: base cap */
     glint_vec3 normal;        /* plane, disk: the side it faces */
@@ -424,6 +426,7 @@ typedef struct glint_shape {
     int point_count;          /* polygon: 3 or 4 */
     glint_vec3 min, max;      /* box */
     double inner_radius;      /* disk: 0, or the radius of its hole (a ring), below radius */
+    double minor_radius;      /* torus: the tube's radius, below radius (the major radius) */
 } glint_shape;
 
 /* Returns a description of the given kind with every field at its default

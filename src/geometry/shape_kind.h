@@ -54,7 +54,8 @@ struct shape_kind {
     double (*sample)(const shape *s, double u1, double u2, vec3 *p, vec3 *n);
 };
 
-extern const shape_kind sphere_kind, plane_kind, polygon_kind, box_kind, cylinder_kind, cone_kind, disk_kind;
+extern const shape_kind sphere_kind, plane_kind, polygon_kind, box_kind, cylinder_kind, cone_kind, disk_kind,
+    torus_kind;
 
 /* The `center` of kinds whose description has no centre (boxes,
  * polygons): the middle of their object-space bounds. */

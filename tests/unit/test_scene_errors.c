@@ -472,13 +472,14 @@ static const bad_scene BAD[] = {
      "  m: {}\n"
      "objects:\n"
      "  - {type: sphear, material: m, radius: 1}\n",
-     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, group or mesh, got 'sphear' (did you mean 'sphere'?)", 1},
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, group or mesh, got 'sphear' (did you mean 'sphere'?)", 1},
     {"object_type_no_hint",
      "materials:\n"
      "  m: {}\n"
      "objects:\n"
-     "  - {type: torus, material: m, radius: 1}\n",
-     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, group or mesh, got 'torus'", 1},
+     "  - {type: superellipsoid, material: m, radius: 1}\n",
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, group or mesh, got "
+     "'superellipsoid'", 1},
     {"rectangle_light_flat",
      "lights:\n"
      "  - {type: rectangle, corner: [0, 1, 0], edge1: [1, 0, 0], edge2: [2, 0, 0]}\n",
@@ -668,6 +669,12 @@ static const bad_scene BAD[] = {
      "objects:\n"
      "  - {type: disk, material: m, radius: 1, inner_radius: 1.5}\n",
      "bad.yaml:4:5: disk inner_radius must be below its radius 1, got 1.5", 1},
+    {"torus_tube_too_thick",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: torus, material: m, major_radius: 1, minor_radius: 1}\n",
+     "bad.yaml:4:5: torus minor_radius must be below its major_radius 1, got 1", 1},
     {"disk_every_problem",
      "materials:\n"
      "  m: {}\n"

@@ -186,9 +186,26 @@ static void test_load_stream(void **state)
     fclose(in);
 }
 
+/* Renders s (21x21, 20 degrees from 10 units, a blue background) and
+ * checks the middle row shows a red ring about the centre, reaching from
+ * within 1.01 units of it to within 1.68, then frees s. Pixels are
+ * 2 tan(10 deg) 10 / 21 = 0.168 units across: the centre pixel looks
+ * through the hole, pixel 16 lands 1.01 from the centre, pixel 20 1.68. */
+static void shows_a_ring(glint_scene *s)
+{
+    glint_image img = render(s);
+    const float *centre = img.pixels + 3 * (10 * 21 + 10), *on = img.pixels + 3 * (10 * 21 + 16),
+                *off = img.pixels + 3 * (10 * 21 + 20);
+    assert_true(centre[0] == 0 && centre[1] == 0 && centre[2] == 1);
+    assert_true(on[0] == 1 && on[1] == 0 && on[2] == 0);
+    assert_true(off[0] == 0 && off[1] == 0 && off[2] == 1);
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
 /* A ring facing the camera: the hole and the outside show the background,
- * the ring its colour; the file's keys reach the shape, the defaults fill
- * the rest. */
+ * the ring its colour (shows_a_ring); the file's keys reach the shape, the
+ * defaults fill the rest. */
 static void test_disk_ring(void **state)
 {
     glint_scene *s = load_good("settings: {width: 21, height: 21, background: [0, 0, 1]}\n"
@@ -205,17 +222,26 @@ static void test_disk_ring(void **state)
     assert_vec(ring->normal, 0, 0, 1, 0);
     assert_vec(disc->normal, 0, 1, 0, 0); /* the default: facing up */
     assert_exact(disc->inner_radius, 0);
-    glint_image img = render(s);
-    /* Pixels are 2 tan(10 deg) 10 / 21 = 0.168 units across: the centre
-     * pixel looks through the hole, pixel 16 lands 1.01 from the centre on
-     * the ring, pixel 20 at 1.68 beyond it. */
-    const float *centre = img.pixels + 3 * (10 * 21 + 10), *on = img.pixels + 3 * (10 * 21 + 16),
-                *off = img.pixels + 3 * (10 * 21 + 20);
-    assert_true(centre[0] == 0 && centre[1] == 0 && centre[2] == 1);
-    assert_true(on[0] == 1 && on[1] == 0 && on[2] == 0);
-    assert_true(off[0] == 0 && off[1] == 0 && off[2] == 1);
-    glint_image_free(&img);
-    glint_scene_free(s);
+    shows_a_ring(s);
+}
+
+/* A torus turned to face the camera: the hole shows the background, the
+ * tube its colour, the outside the background again (shows_a_ring). */
+static void test_torus_ring(void **state)
+{
+    glint_scene *s = load_good("settings: {width: 21, height: 21, background: [0, 0, 1]}\n"
+                               "camera: {position: [0, 0, 10], look_at: [0, 0, 0], fov: 20}\n"
+                               "materials: {red: {color: [1, 0, 0], ambient: 1, diffuse: 0, specular: 0}}\n"
+                               "objects:\n"
+                               "  - {type: torus, major_radius: 1, minor_radius: 0.3, material: red,\n"
+                               "     transform: [{rotate_x: 90}]}\n");
+    assert_int_equal(s->shape_count, 1);
+    const glint_shape *ring = &s->shapes[0].desc;
+    assert_int_equal(ring->kind, GLINT_SHAPE_TORUS);
+    assert_exact(ring->radius, 1);
+    assert_exact(ring->minor_radius, 0.3);
+    /* The tube spans 0.7 to 1.3 from the centre. */
+    shows_a_ring(s);
 }
 
 static void test_camera_every_key(void **state)
@@ -1230,6 +1256,7 @@ int main(void)
         cmocka_unit_test(test_empty_file_holds_no_scene),
         cmocka_unit_test(test_load_stream),
         cmocka_unit_test(test_disk_ring),
+        cmocka_unit_test(test_torus_ring),
         cmocka_unit_test(test_camera_every_key),
         cmocka_unit_test(test_fog_none),
         cmocka_unit_test(test_fog_linear),
