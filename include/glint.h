@@ -405,7 +405,8 @@ typedef enum glint_shape_kind {
                                which the points run anticlockwise */
     GLINT_SHAPE_BOX,        /* axis-aligned box between min and max */
     GLINT_SHAPE_CYLINDER,   /* about +y from centre of base, radius, height, optional caps */
-    GLINT_SHAPE_CONE,       /* apex above the centre of base at height; optional base cap */
+    GLINT_SHAPE_CONE,       /* apex above the centre of base at height, or cut off there at
+                               top_radius; optional caps */
     GLINT_SHAPE_DISK,       /* disc (or, with inner_radius, a ring) about center, facing normal */
     GLINT_SHAPE_TORUS       /* ring about +y through center in the xz plane: radius (major) to the
                                middle of its tube, minor_radius the tube's */
@@ -421,6 +422,8 @@ typedef struct glint_shape {
     double radius;            /* sphere, cylinder, cone base, disk (outer), torus (major) */
     double height;            /* cylinder, cone */
     bool capped;              /* cylinder: both caps; cone: base cap */
+    double top_radius;        /* cone: 0 (a point), or the radius where it is cut off at height */
+    bool top_capped;          /* cone with a top_radius: the top cap */
     glint_vec3 normal;        /* plane, disk: the side it faces */
     glint_vec3 points[4];     /* polygon */
     int point_count;          /* polygon: 3 or 4 */

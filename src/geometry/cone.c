@@ -1,13 +1,17 @@
 /* cone.c - cones in object space: base centre, base radius and height, the
- * apex straight above the base centre; optionally capped at the base.
+ * apex straight above the base centre; or, with a top radius, a cone cut
+ * off at the height (a frustum: the NFF and Tachyon cone, a lamp shade),
+ * narrower or wider at the top; optionally capped at the base and the top.
  *
- * Part 0 is the side, 1 the base cap. Only the nappe between base and apex
- * is part of the shape. */
+ * Part 0 is the side, 1 the base cap, 2 the top cap. Only the piece of the
+ * nappe between base and top is part of the shape. The radius at height y
+ * is k (H - y): the apex at height H, above the base for a top narrower
+ * than the base, below it for a wider one. */
 #include <stddef.h>
 #include "geometry/shape_kind.h"
 #include "geometry/shape_math.h"
 
-/* The coefficients and roots of F(t) = x^2 + z^2 - k^2 (h - y)^2 along the
+/* The coefficients and roots of F(t) = x^2 + z^2 - k^2 (H - y)^2 along the
  * ray, F <= 0 being inside the double cone through the apex. */
 typedef struct cone_roots {
     double a, b, c, t0, t1;
@@ -32,8 +36,9 @@ static bool cone_intersect(const shape *s, const ray *r, double tmin, double tma
 {
     const glint_shape *d = &s->desc;
     vec3 o = v3_sub(r->o, d->center), dir = r->d;
-    double k2 = (d->radius / d->height) * (d->radius / d->height);
-    double below_apex = d->height - o.y;
+    double k = (d->radius - d->top_radius) / d->height, k2 = k * k;
+    /* r / (r - 0) is 1 exactly: a pointed cone's apex is at its height. */
+    double below_apex = d->height * (d->radius / (d->radius - d->top_radius)) - o.y;
     double y_in, y_out;
     if (!slab(o.y, dir.y, 0, d->height, &y_in, &y_out))
         return false;
@@ -53,6 +58,11 @@ static bool cone_intersect(const shape *s, const ray *r, double tmin, double tma
         if (inside_at(&q, t_base))
             hit_offer(&best, tmin, t_base, 1);
     }
+    if (d->top_capped && d->top_radius > 0) {
+        double t_top = dir.y > 0 ? y_out : y_in;
+        if (inside_at(&q, t_top))
+            hit_offer(&best, tmin, t_top, 2);
+    }
     return hit_take(&best, tmax, hit);
 }
 
@@ -62,22 +72,22 @@ static void cone_surface(const shape *s, int part, surface *out)
 {
     const glint_shape *d = &s->desc;
     vec3 l = v3_sub(out->p_obj, d->center);
-    if (part == 1) {
-        out->n = v3(0, -1, 0);
+    if (part > 0) {
+        out->n = v3(0, part == 1 ? -1 : 1, 0);
         return;
     }
-    /* grad F = 2 (x, k^2 (h - y), z), and on the surface k (h - y) = r, so
+    /* grad F = 2 (x, k^2 (H - y), z), and on the surface k (H - y) = r, so
      * it is parallel to (x / r, k, z / r). The apex has no gradient. */
     double r = sqrt(l.x * l.x + l.z * l.z);
-    out->n = r > 0 ? v3(l.x / r, d->radius / d->height, l.z / r) : v3(0, 1, 0);
+    out->n = r > 0 ? v3(l.x / r, (d->radius - d->top_radius) / d->height, l.z / r) : v3(0, 1, 0);
 }
 
 static void cone_uv(const shape *s, int part, surface *out)
 {
     const glint_shape *d = &s->desc;
     vec3 l = v3_sub(out->p_obj, d->center);
-    if (part == 1) {
-        disc_uv(l, d->radius, out);
+    if (part > 0) {
+        disc_uv(l, part == 1 ? d->radius : d->top_radius, out);
         return;
     }
     out->u = polar_u(l.x, l.z);
@@ -86,37 +96,58 @@ static void cone_uv(const shape *s, int part, surface *out)
 
 static void cone_bounds(const shape *s, vec3 *lo, vec3 *hi)
 {
-    axial_bounds(&s->desc, lo, hi);
+    glint_shape widest = s->desc;
+    widest.radius = fmax(widest.radius, widest.top_radius);
+    axial_bounds(&widest, lo, hi);
+}
+
+static glint_status cone_init(shape *s, glint_error *err)
+{
+    const glint_shape *d = &s->desc;
+    if (d->top_radius == d->radius)
+        return error_set(err, GLINT_ERR_INVALID, "cone top_radius must differ from its radius %g (one radius all "
+                         "the way up is a cylinder)", d->radius);
+    return GLINT_OK;
 }
 
 static const param CONE_PARAMS[] = {
     AXIAL_PARAMS,
     {.key = "capped", .type = PARAM_BOOL, .offset = offsetof(glint_shape, capped), .def = {1},
      .meaning = "whether it has the base cap"},
+    {.key = "top_radius", .type = PARAM_NUMBER, .offset = offsetof(glint_shape, top_radius), .lo = 0,
+     .hi = DBL_MAX, .meaning = "the radius at the top: 0 for a point, more for a cone cut off there (a frustum), not radius"},
+    {.key = "top_capped", .type = PARAM_BOOL, .offset = offsetof(glint_shape, top_capped), .def = {1},
+     .meaning = "whether a cut-off cone has the top cap"},
 };
 
-/* The side, then the base cap when it has one, by area. A point of the
- * side at fraction t of the way down from the apex lies on a circle of
- * radius t r, so t goes as the square root to be uniform by area. */
+/* The side, then the caps it has, by area. The side's radius grows
+ * linearly along it, so its points are uniform by area when the radius
+ * squared is uniform between the ends': radius t r, t^2 uniform between
+ * 1 and (top / r)^2 (from 0 for a pointed cone). */
 static double cone_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n)
 {
     const glint_shape *d = &s->desc;
-    double r = d->radius, h = d->height, slant = sqrt(r * r + h * h), total;
-    double area[2] = {M_PI * r * slant, d->capped ? M_PI * r * r : 0};
-    int part = pick_by_area(area, 2, &u1, &total);
-    double phi = 2 * M_PI * u2, c = cos(phi), sn = sin(phi), t = sqrt(u1);
+    double r = d->radius, top = d->top_radius, h = d->height, drop = r - top;
+    double slant = sqrt(drop * drop + h * h), total, q = (top / r) * (top / r);
+    double area[3] = {M_PI * (r + top) * slant, d->capped ? M_PI * r * r : 0,
+                      d->top_capped ? M_PI * top * top : 0};
+    int part = pick_by_area(area, 3, &u1, &total);
+    double phi = 2 * M_PI * u2, c = cos(phi), sn = sin(phi);
     if (part == 0) {
-        *n = v3_scale(v3(h * c, r, h * sn), 1 / slant);
-        *p = v3_add(d->center, v3(t * r * c, (1 - t) * h, t * r * sn));
+        double t = sqrt(u1 + (1 - u1) * q);
+        *n = v3_scale(v3(h * c, drop, h * sn), 1 / slant);
+        /* The height where the radius is t r: (1 - t) of the apex's. */
+        *p = v3_add(d->center, v3(t * r * c, (1 - t) * (h * (r / drop)), t * r * sn));
     } else {
-        *n = v3(0, -1, 0);
-        *p = v3_add(d->center, v3(t * r * c, 0, t * r * sn));
+        double rim = part == 1 ? r : top, t = sqrt(u1);
+        *n = v3(0, part == 1 ? -1 : 1, 0);
+        *p = v3_add(d->center, v3(t * rim * c, part == 1 ? 0 : h, t * rim * sn));
     }
     return total;
 }
 
 const shape_kind cone_kind = {
     .name = "cone", .id = GLINT_SHAPE_CONE, .params = PARAM_TABLE(CONE_PARAMS), .max_crossings = 2,
-    .intersect = cone_intersect, .surface = cone_surface, .uv = cone_uv,
+    .init = cone_init, .intersect = cone_intersect, .surface = cone_surface, .uv = cone_uv,
     .bounds = cone_bounds, .sample = cone_sample,
 };

@@ -1228,6 +1228,82 @@ static void test_bounds_transformed_sphere(void **state)
     }
 }
 
+/* ---------------------------------------------------------------- frustum */
+
+/* A cone cut off at height 2 with radius 0.5 there, base radius 1: the
+ * radius at height y is 1 - y / 4, the slope (R - top) / h 0.25. */
+static glint_shape test_frustum(bool capped, bool top_capped)
+{
+    glint_shape d = axial_d(GLINT_SHAPE_CONE, v3(0, 0, 0), 1, 2, capped);
+    d.top_radius = 0.5;
+    d.top_capped = top_capped;
+    return d;
+}
+
+static void test_frustum_side_and_caps(void **state)
+{
+    shape s = MAKE(test_frustum(true, true), NULL);
+    /* At y = 1 the radius is 0.75. */
+    surface sf = HIT(s, R(v3(5, 1, 0), v3(-1, 0, 0)), 4.25, 0, v3(0.75, 1, 0), v3_normalize(v3(1, 0.25, 0)));
+    NEAR(sf.v, 0.5);
+    /* Down onto the top cap, and out through the base cap. */
+    sf = HIT(s, R(v3(0.2, 5, 0), v3(0, -1, 0)), 3, 2, v3(0.2, 2, 0), v3(0, 1, 0));
+    NEAR(sf.u, 0.5 + 0.2 / 1.0);
+    NEAR(sf.v, 0.5);
+    HIT_WITHIN(s, R(v3(0.2, 5, 0), v3(0, -1, 0)), 3, INFINITY, 5, 1, v3(0.2, 0, 0), v3(0, -1, 0));
+    /* Past the top's rim (0.6 from the axis at y = 2 is outside 0.5) to
+     * the side below: at x = 0.6 the radius is 0.6 at y = 1.6. */
+    HIT(s, R(v3(0.6, 5, 0), v3(0, -1, 0)), 3.4, 0, v3(0.6, 1.6, 0), v3_normalize(v3(1, 0.25, 0)));
+    /* Without the top cap a ray down the axis meets the base cap from
+     * inside; without either cap it passes through. */
+    shape open_top = MAKE(test_frustum(true, false), NULL);
+    HIT(open_top, R(v3(0, 5, 0), v3(0, -1, 0)), 5, 1, v3(0, 0, 0), v3(0, -1, 0));
+    shape open = MAKE(test_frustum(false, false), NULL);
+    MISS(open, R(v3(0, 5, 0), v3(0, -1, 0)));
+    bounds_are(&s, v3(-1, 0, -1), v3(1, 2, 1));
+}
+
+/* Wider at the top (0.5 at the base, 1 at height 2): the slope turns, and
+ * the bounds take the top's radius. */
+static void test_frustum_wider_at_top(void **state)
+{
+    glint_shape d = axial_d(GLINT_SHAPE_CONE, v3(0, 0, 0), 0.5, 2, true);
+    d.top_radius = 1;
+    d.top_capped = true;
+    shape s = MAKE(d, NULL);
+    HIT(s, R(v3(5, 1, 0), v3(-1, 0, 0)), 4.25, 0, v3(0.75, 1, 0), v3_normalize(v3(1, -0.25, 0)));
+    HIT(s, R(v3(0.9, 5, 0), v3(0, -1, 0)), 3, 2, v3(0.9, 2, 0), v3(0, 1, 0));
+    bounds_are(&s, v3(-1, 0, -1), v3(1, 2, 1));
+}
+
+/* Points sampled by area lie on the frustum's side or caps, with the
+ * density 1 / (pi (R + top) slant + pi R^2 + pi top^2); the side gets its
+ * share of them, and its points spread by area: the lower half of its
+ * height (radii 1 to 0.75) holds (1 + 0.75) / (1 + 0.5) of half of it. */
+static void test_frustum_sample(void **state)
+{
+    shape s = MAKE(test_frustum(true, true), NULL);
+    double slant = sqrt(0.25 + 4), side = M_PI * 1.5 * slant, all = side + M_PI + M_PI * 0.25;
+    int n = 200, on_side = 0, low = 0;
+    for (int i = 0; i < n; i++) {
+        for (int j = 0; j < n; j++) {
+            vec3 p, normal;
+            NEAR(shape_sample(&s, (i + 0.5) / n, (j + 0.5) / n, &p, &normal), 1 / all);
+            double axis = sqrt(p.x * p.x + p.z * p.z);
+            if (fabs(p.y) < 1e-12 || fabs(p.y - 2) < 1e-12) {
+                assert_true(axis <= (p.y < 1 ? 1 : 0.5) + 1e-12);
+                continue;
+            }
+            assert_true(fabs(axis - (1 - p.y / 4)) < 1e-12);
+            on_side++;
+            low += p.y < 1;
+        }
+    }
+    /* Within a step of the grid, 1 / n. */
+    assert_true(fabs((double)on_side / (n * n) - side / all) < 1.0 / n);
+    assert_true(fabs((double)low / on_side - 1.75 / 3) < 1.0 / n);
+}
+
 /* ------------------------------------------------------------------ torus */
 
 /* Major radius 2, minor 0.5, about +y through the origin: along the x
@@ -1354,6 +1430,9 @@ static void test_torus_validation(void **state)
 static void test_validation(void **state)
 {
     REJECTS(sphere_d(v3(0, 0, 0), -1), NULL, "sphere radius must be positive, got -1");
+    glint_shape same = test_frustum(true, true);
+    same.top_radius = 1;
+    REJECTS(same, NULL, "cone top_radius must differ from its radius 1 (one radius all the way up is a cylinder)");
     REJECTS(sphere_d(v3(0, 0, 0), 0), NULL, "sphere radius must be positive, got 0");
     REJECTS(sphere_d(v3(0, 0, 0), NAN), NULL, "sphere radius is not finite");
     REJECTS(sphere_d(v3(0, INFINITY, 0), 1), NULL, "sphere center is not finite");
@@ -1486,6 +1565,9 @@ int main(void)
         cmocka_unit_test(test_cone_parallel_to_slant),
         cmocka_unit_test(test_cone_beside_base),
         cmocka_unit_test(test_cone_offset),
+        cmocka_unit_test(test_frustum_side_and_caps),
+        cmocka_unit_test(test_frustum_wider_at_top),
+        cmocka_unit_test(test_frustum_sample),
         cmocka_unit_test(test_torus_crossings),
         cmocka_unit_test(test_torus_grazing),
         cmocka_unit_test(test_torus_far),

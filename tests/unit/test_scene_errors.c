@@ -669,6 +669,12 @@ static const bad_scene BAD[] = {
      "objects:\n"
      "  - {type: disk, material: m, radius: 1, inner_radius: 1.5}\n",
      "bad.yaml:4:5: disk inner_radius must be below its radius 1, got 1.5", 1},
+    {"cone_top_as_wide_as_base",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: cone, material: m, radius: 1, height: 2, top_radius: 1}\n",
+     "bad.yaml:4:5: cone top_radius must differ from its radius 1 (one radius all the way up is a cylinder)", 1},
     {"torus_tube_too_thick",
      "materials:\n"
      "  m: {}\n"
