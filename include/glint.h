@@ -304,6 +304,13 @@ typedef enum glint_texture_kind {
 /* A texture's description: each kind reads the fields named beside them
  * (docs/scene-format.md lists each kind's keys, defaults and ranges; start
  * from glint_texture_default). */
+/* How an image texture continues past its edges, along u or along v. */
+typedef enum glint_wrap {
+    GLINT_WRAP_REPEAT = 0,    /* tiles: 1.25 reads as 0.25 */
+    GLINT_WRAP_CLAMP,         /* the edge's texels go on: 1.25 reads as 1 */
+    GLINT_WRAP_MIRROR         /* tiles, every other tile flipped: 1.25 reads as 0.75 */
+} glint_wrap;
+
 typedef struct glint_texture {
     glint_texture_kind kind;
     glint_mapping mapping;
@@ -312,7 +319,9 @@ typedef struct glint_texture {
     double size;              /* checker: cell size in texture units, > 0 */
     const char *file;         /* image: a PNG or JPEG file (sRGB, converted to linear) or an
                                  OpenEXR file (linear, high dynamic range); u runs
-                                 left to right, v top to bottom, repeating in u, clamped in v */
+                                 left to right, v top to bottom */
+    glint_wrap wrap_u, wrap_v; /* image: past its edges (glint_texture_default: u repeats,
+                                  v clamps) */
 } glint_texture;
 
 /* Returns a description of the given kind with every field at its default

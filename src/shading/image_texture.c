@@ -1,4 +1,5 @@
-/* image_texture.c - a PNG, JPEG or OpenEXR picture, bilinearly filtered. */
+/* image_texture.c - a PNG, JPEG or OpenEXR picture, bilinearly filtered,
+ * repeated, clamped or mirrored past its edges along u and along v. */
 #include <stddef.h>
 #include "shading/texture.h"
 
@@ -9,13 +10,19 @@ static glint_status image_init(texture *t, const glint_texture *d, image_load_fn
 
 static color image_at(const texture *t, double u, double v)
 {
-    return image_eval(&t->image, u, v);
+    return image_eval(&t->image, u, v, t->desc.wrap_u, t->desc.wrap_v);
 }
+
+static const char *const WRAPS[] = {"repeat", "clamp", "mirror"}; /* glint_wrap's order */
 
 static const param IMAGE_PARAMS[] = {
     {.key = "file", .type = PARAM_PATH, .offset = offsetof(glint_texture, file), .required = true,
      .meaning = "a PNG or JPEG file (sRGB), or an OpenEXR file (linear, high dynamic range), relative to the "
                 "scene file"},
+    {.key = "wrap_u", .type = PARAM_CHOICE, .offset = offsetof(glint_texture, wrap_u), .def = {GLINT_WRAP_REPEAT},
+     .words = WRAPS, .word_count = 3, .meaning = "past its left and right edges: repeat, clamp (the edge goes on) or mirror"},
+    {.key = "wrap_v", .type = PARAM_CHOICE, .offset = offsetof(glint_texture, wrap_v), .def = {GLINT_WRAP_CLAMP},
+     .words = WRAPS, .word_count = 3, .meaning = "past its top and bottom edges: repeat, clamp or mirror"},
 };
 
 const texture_kind image_texture = {

@@ -166,20 +166,38 @@ static color texel(const texture_image *img, int x, int y)
     return rgb(texture_image_at(img, i), texture_image_at(img, i + 1), texture_image_at(img, i + 2));
 }
 
-color image_eval(const texture_image *img, double u, double v)
+/* Along an axis of n texels wrapped by w, the texels *i0 and *i1 either
+ * side of coordinate c and the weight *t of *i1. A mirrored coordinate is
+ * first folded into [0, 1], where it then reads as clamped. */
+static void wrap_axis(double c, int n, glint_wrap w, int *i0, int *i1, double *t)
+{
+    if (w == GLINT_WRAP_MIRROR) {
+        double folded = c - 2 * floor(0.5 * c);
+        c = folded <= 1 ? folded : 2 - folded;
+    }
+    double f = (w == GLINT_WRAP_REPEAT ? c - floor(c) : c < 0 ? 0 : c > 1 ? 1 : c) * n - 0.5;
+    double f0 = floor(f);
+    *t = f - f0;
+    int a = (int)f0, b = a + 1;
+    if (w == GLINT_WRAP_REPEAT) {
+        a = (a % n + n) % n;
+        b = b % n;
+    } else {
+        a = a < 0 ? 0 : a;
+        b = b >= n ? n - 1 : b;
+    }
+    *i0 = a;
+    *i1 = b;
+}
+
+color image_eval(const texture_image *img, double u, double v, glint_wrap wrap_u, glint_wrap wrap_v)
 {
     if (!isfinite(u) || !isfinite(v))
         return rgb(0, 0, 0);
-    double fx = (u - floor(u)) * img->width - 0.5;
-    double fy = (v < 0 ? 0 : v > 1 ? 1 : v) * img->height - 0.5;
-    double x0f = floor(fx), y0f = floor(fy);
-    double tx = fx - x0f, ty = fy - y0f;
-    int x0 = (int)x0f, y0 = (int)y0f;
-    int x1 = x0 + 1, y1 = y0 + 1;
-    x0 = (x0 % img->width + img->width) % img->width;
-    x1 = x1 % img->width;
-    y0 = y0 < 0 ? 0 : y0;
-    y1 = y1 >= img->height ? img->height - 1 : y1;
+    int x0, x1, y0, y1;
+    double tx, ty;
+    wrap_axis(u, img->width, wrap_u, &x0, &x1, &tx);
+    wrap_axis(v, img->height, wrap_v, &y0, &y1, &ty);
     color top = rgb_lerp(texel(img, x0, y0), texel(img, x1, y0), tx);
     color bottom = rgb_lerp(texel(img, x0, y1), texel(img, x1, y1), tx);
     return rgb_lerp(top, bottom, ty);

@@ -77,9 +77,9 @@ void mapping_apply(const glint_mapping *m, const surface *s, vec3 center, double
 /* The colour of checker cells at (u, v): a where floor(u/cell) + floor(v/cell) is even. */
 color checker_eval(color a, color b, double cell, double u, double v);
 
-/* Bilinearly filtered colour of an image at (u, v): u wraps, v clamps;
- * v = 0 is the top row. */
-color image_eval(const texture_image *img, double u, double v);
+/* Bilinearly filtered colour of an image at (u, v), past its edges as
+ * wrap_u and wrap_v say; v = 0 is the top row. */
+color image_eval(const texture_image *img, double u, double v, glint_wrap wrap_u, glint_wrap wrap_v);
 
 /* The colour of texture t at surface s of a thing whose centre is center
  * (as for mapping_apply). The checker, the texture of most floors, is

@@ -669,6 +669,9 @@ static const bad_scene BAD[] = {
      "objects:\n"
      "  - {type: disk, material: m, radius: 1, inner_radius: 1.5}\n",
      "bad.yaml:4:5: disk inner_radius must be below its radius 1, got 1.5", 1},
+    {"image_wrap_unknown",
+     "textures: {t: {type: image, file: x.png, wrap_u: tile}}\n",
+     "bad.yaml:1:50: 'wrap_u' must be repeat, clamp or mirror, got 'tile'", 1},
     {"cone_top_as_wide_as_base",
      "materials:\n"
      "  m: {}\n"

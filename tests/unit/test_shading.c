@@ -304,29 +304,60 @@ static void test_mapping_centred_on_the_shape(void **state)
     assert_string_equal(err.message, "mapping center is set but center_given is false");
 }
 
-static void test_image_lookup(void **state)
+static const glint_wrap R = GLINT_WRAP_REPEAT, C = GLINT_WRAP_CLAMP, M = GLINT_WRAP_MIRROR;
+
+/* Two texels, red then blue, as a width x height image (2x1 or 1x2). Its
+ * bytes map to linear values through the image's own table. */
+static texture_image red_then_blue(int width, int height)
 {
-    /* A 2x1 image: red then blue. Texel centres are at u = 0.25 and 0.75.
-     * Its bytes map to linear values through the image's own table. */
-    unsigned char px[6] = {255, 0, 0, 0, 0, 255};
-    float linear[256];
+    static const unsigned char px[6] = {255, 0, 0, 0, 0, 255};
+    static float linear[256];
     for (int i = 0; i < 256; i++)
         linear[i] = (float)i / 255;
-    texture_image img = {.width = 2, .height = 1, .srgb = px, .linear = linear};
-    color c = image_eval(&img, 0.25, 0.5);
+    return (texture_image){.width = width, .height = height, .srgb = px, .linear = linear};
+}
+
+static void test_image_lookup(void **state)
+{
+    /* Red then blue along u: texel centres at u = 0.25 and 0.75. */
+    texture_image img = red_then_blue(2, 1);
+    color c = image_eval(&img, 0.25, 0.5, R, C);
     assert_near(c.r, 1, 1e-7);
     assert_near(c.b, 0, 1e-7);
-    c = image_eval(&img, 0.5, 0.5);
+    c = image_eval(&img, 0.5, 0.5, R, C);
     assert_near(c.r, 0.5, 1e-7);
     assert_near(c.b, 0.5, 1e-7);
     /* u wraps: 0 sits halfway between the last and first texel. */
-    c = image_eval(&img, 0, 0.5);
+    c = image_eval(&img, 0, 0.5, R, C);
     assert_near(c.r, 0.5, 1e-7);
-    c = image_eval(&img, 1.25, 0.5);
+    c = image_eval(&img, 1.25, 0.5, R, C);
     assert_near(c.r, 1, 1e-7);
     /* v clamps. */
-    c = image_eval(&img, 0.75, -3);
+    c = image_eval(&img, 0.75, -3, R, C);
     assert_near(c.b, 1, 1e-7);
+}
+
+/* Past the edges, each wrap: a 2x1 image red then blue along u, a 1x2 one
+ * red over blue along v; texel centres at 0.25 and 0.75. */
+static void test_image_wraps(void **state)
+{
+    texture_image wide = red_then_blue(2, 1), tall = red_then_blue(1, 2);
+    /* 1.25: repeat reads 0.25 (red), clamp the edge (blue), mirror 0.75
+     * (blue); -0.25: repeat reads 0.75, clamp the first edge, mirror 0.25;
+     * 2.25: mirror reads 0.25 again. */
+    const struct {
+        double at;
+        glint_wrap wrap;
+        double red;
+    } cases[] = {{1.25, R, 1}, {1.25, C, 0}, {1.25, M, 0}, {-0.25, R, 0}, {-0.25, C, 1},
+                 {-0.25, M, 1}, {2.25, M, 1}, {1.75, M, 1}, {-0.75, R, 1}};
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        color along_u = image_eval(&wide, cases[i].at, 0.5, cases[i].wrap, C);
+        color along_v = image_eval(&tall, 0.5, cases[i].at, R, cases[i].wrap);
+        assert_near(along_u.r, cases[i].red, 1e-7);
+        assert_near(along_v.r, cases[i].red, 1e-7);
+        assert_near(along_u.b, 1 - cases[i].red, 1e-7);
+    }
 }
 
 static void test_fog(void **state)
@@ -484,6 +515,7 @@ int main(void)
         cmocka_unit_test(test_planar_and_cylindrical_mapping),
         cmocka_unit_test(test_mapping_centred_on_the_shape),
         cmocka_unit_test(test_image_lookup),
+        cmocka_unit_test(test_image_wraps),
         cmocka_unit_test(test_fog),
         cmocka_unit_test(test_fog_hides),
         cmocka_unit_test(test_phong),
