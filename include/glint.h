@@ -298,7 +298,8 @@ typedef struct glint_mapping {
 
 typedef enum glint_texture_kind {
     GLINT_TEXTURE_CHECKER = 0,  /* two colours in square cells */
-    GLINT_TEXTURE_IMAGE         /* a PNG, JPEG or OpenEXR picture */
+    GLINT_TEXTURE_IMAGE,        /* a PNG, JPEG or OpenEXR picture */
+    GLINT_TEXTURE_CHECKER_3D    /* two colours in cubic cells filling space (a solid texture) */
 } glint_texture_kind;
 
 /* A texture's description: each kind reads the fields named beside them
@@ -315,8 +316,10 @@ typedef struct glint_texture {
     glint_texture_kind kind;
     glint_mapping mapping;
     glint_color colors[2];    /* checker: cells where floor(u/size) + floor(v/size) is even
-                                 show colors[0], the others colors[1] */
-    double size;              /* checker: cell size in texture units, > 0 */
+                                 show colors[0], the others colors[1]; checker_3d: cells where
+                                 floor(x/size) + floor(y/size) + floor(z/size) is even, (x, y, z)
+                                 the point in the thing's own coordinates */
+    double size;              /* checker, checker_3d: cell size, > 0 */
     const char *file;         /* image: a PNG or JPEG file (sRGB, converted to linear) or an
                                  OpenEXR file (linear, high dynamic range); u runs
                                  left to right, v top to bottom */

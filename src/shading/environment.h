@@ -16,7 +16,7 @@ param_table environment_params(void);
 glint_status environment_validate(const glint_environment *env, int texture_count, glint_error *err);
 
 /* The colour of texture t wrapped around the scene, as env says, seen
- * along unit direction d. */
+ * along unit direction d (a solid texture: its colour at d). */
 color environment_color(const glint_environment *env, const texture *t, vec3 d);
 
 #endif

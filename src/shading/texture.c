@@ -10,7 +10,7 @@
 #include "geometry/shape_math.h"
 #include "shading/texture.h"
 
-static const texture_kind *const KINDS[] = {&checker_texture, &image_texture};
+static const texture_kind *const KINDS[] = {&checker_texture, &image_texture, &checker_3d_texture};
 
 REGISTRY_LOOKUPS(texture_kind, texture_kind, glint_texture_kind, KINDS)
 

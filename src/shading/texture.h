@@ -43,9 +43,13 @@ struct texture_kind {
     glint_status (*init)(texture *t, const glint_texture *desc, image_load_fn load, void *user, glint_error *err);
     /* The colour at texture coordinates (u, v). */
     color (*eval)(const texture *t, double u, double v);
+    /* A solid texture's colour at point p of the thing, in its own
+     * coordinates, where the mapping has no say; NULL: eval at the
+     * mapping's (u, v). */
+    color (*solid)(const texture *t, vec3 p);
 };
 
-extern const texture_kind checker_texture, image_texture;
+extern const texture_kind checker_texture, image_texture, checker_3d_texture;
 
 /* The kind with that public id, or NULL. */
 const texture_kind *texture_kind_of(glint_texture_kind id);
@@ -82,11 +86,13 @@ color checker_eval(color a, color b, double cell, double u, double v);
 color image_eval(const texture_image *img, double u, double v, glint_wrap wrap_u, glint_wrap wrap_v);
 
 /* The colour of texture t at surface s of a thing whose centre is center
- * (as for mapping_apply). The checker, the texture of most floors, is
+ * (as for mapping_apply), or a solid texture's at s's point. The checker, the texture of most floors, is
  * looked up inline: through its record it cost the seed room 0.4% of its
  * instructions. */
 static inline color texture_eval(const texture *t, const surface *s, vec3 center)
 {
+    if (t->kind->solid)
+        return t->kind->solid(t, s->p_obj);
     double u, v;
     mapping_apply(&t->mapping, s, center, &u, &v);
     if (t->kind == &checker_texture)

@@ -534,7 +534,7 @@ static const bad_scene BAD[] = {
     {"texture_type_no_hint",
      "textures:\n"
      "  t: {type: noise}\n",
-     "bad.yaml:2:13: 'type' must be checker or image, got 'noise'", 1},
+     "bad.yaml:2:13: 'type' must be checker, image or checker_3d, got 'noise'", 1},
     {"mapping_hint",
      "textures:\n"
      "  t: {type: checker, mapping: sphericl}\n",

@@ -7,6 +7,7 @@
 #include <cmocka.h>
 #include <math.h>
 #include <string.h>
+#include "shading/environment.h"
 #include "shading/fog.h"
 #include "shading/light.h"
 #include "shading/material.h"
@@ -360,6 +361,40 @@ static void test_image_wraps(void **state)
     }
 }
 
+/* The solid checker, cells of 0.25: the parity of the sum of the three
+ * cell indices of the point in the thing's own coordinates, whatever the
+ * mapping says; as a sky, its colour at the direction. */
+static void test_checker_3d(void **state)
+{
+    glint_texture d = glint_texture_default(GLINT_TEXTURE_CHECKER_3D);
+    d.colors[0] = (glint_color){1, 0, 0};
+    d.colors[1] = (glint_color){0, 0, 1};
+    d.size = 0.25;
+    d.mapping.kind = GLINT_MAP_PLANAR;
+    texture t;
+    glint_error err = {0};
+    assert_int_equal(texture_init(&t, &d, NULL, NULL, &err), GLINT_OK);
+    const struct {
+        vec3 p;
+        double red;
+    } cases[] = {{{0.1, 0.1, 0.1}, 1},  /* 0 + 0 + 0 */
+                 {{0.3, 0.1, 0.1}, 0},  /* 1 + 0 + 0 */
+                 {{-0.1, 0.1, 0.1}, 0}, /* -1 + 0 + 0 */
+                 {{0.3, 0.3, 0.1}, 1},  /* 1 + 1 + 0 */
+                 {{0.3, 0.3, 0.3}, 0},  /* 1 + 1 + 1 */
+                 {{-0.3, 0.6, 0.1}, 1}}; /* -2 + 2 + 0 */
+    for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
+        surface sf = {.p_obj = cases[i].p, .u = 0.1, .v = 0.1};
+        color c = texture_eval(&t, &sf, v3(0, 0, 0));
+        assert_true(c.r == cases[i].red && c.b == 1 - cases[i].red);
+    }
+    /* Straight up, (0, 1, 0): cell indices 0, 4 and 0. */
+    glint_environment sky = {.texture = 0, .intensity = 2};
+    color up = environment_color(&sky, &t, v3(0, 1, 0));
+    assert_true(up.r == 2 && up.b == 0);
+    texture_release(&t);
+}
+
 static void test_fog(void **state)
 {
     glint_fog f = {.kind = GLINT_FOG_LINEAR, .color = {0.8, 0.8, 0.8}, .start = -16, .end = 284};
@@ -516,6 +551,7 @@ int main(void)
         cmocka_unit_test(test_mapping_centred_on_the_shape),
         cmocka_unit_test(test_image_lookup),
         cmocka_unit_test(test_image_wraps),
+        cmocka_unit_test(test_checker_3d),
         cmocka_unit_test(test_fog),
         cmocka_unit_test(test_fog_hides),
         cmocka_unit_test(test_phong),
