@@ -299,8 +299,23 @@ typedef struct glint_mapping {
 typedef enum glint_texture_kind {
     GLINT_TEXTURE_CHECKER = 0,  /* two colours in square cells */
     GLINT_TEXTURE_IMAGE,        /* a PNG, JPEG or OpenEXR picture */
-    GLINT_TEXTURE_CHECKER_3D    /* two colours in cubic cells filling space (a solid texture) */
+    GLINT_TEXTURE_CHECKER_3D,   /* two colours in cubic cells filling space (a solid texture) */
+    GLINT_TEXTURE_NOISE,        /* solid: fractal gradient noise through a colour map (POV-Ray's bozo) */
+    GLINT_TEXTURE_MARBLE,       /* solid: bands across x, swirled by turbulence */
+    GLINT_TEXTURE_WOOD,         /* solid: rings around the y axis, swirled by turbulence */
+    GLINT_TEXTURE_GRANITE       /* solid: sharp-creased turbulence at four times the frequency */
 } glint_texture_kind;
+
+/* One stop of a colour map: the colour at value `at`, from 0 to 1. Between
+ * stops the colour is blended linearly; before the first and past the last
+ * it is the end stop's. */
+typedef struct glint_color_stop {
+    double at;
+    glint_color color;
+} glint_color_stop;
+
+/* The most stops a colour map holds. */
+#define GLINT_MAX_COLOR_STOPS 16
 
 /* A texture's description: each kind reads the fields named beside them
  * (docs/scene-format.md lists each kind's keys, defaults and ranges; start
@@ -325,6 +340,20 @@ typedef struct glint_texture {
                                  left to right, v top to bottom */
     glint_wrap wrap_u, wrap_v; /* image: past its edges (glint_texture_default: u repeats,
                                   v clamps) */
+    /* noise, marble, wood, granite: the pattern's value v (0 to 1) at a point
+     * p of the thing's own space, q = p / scale, through the colour map. */
+    glint_color_stop stops[GLINT_MAX_COLOR_STOPS]; /* ascending `at`, from 0 to 1 */
+    int stop_count;           /* 2 to GLINT_MAX_COLOR_STOPS */
+    double scale;             /* > 0: the size of the pattern's features */
+    int octaves;              /* 1 to 16: layers of noise, each at lacunarity times the
+                                 frequency and gain times the amplitude of the last */
+    double lacunarity, gain;  /* lacunarity > 1, gain from 0 to 1 */
+    double turbulence;        /* marble, wood: how far the bands are swirled, >= 0 */
+    /* Every kind: where the texture sits on the thing. A point (solid kinds)
+     * or (u, v, 0) (the others) is carried through the inverse of this
+     * before the look-up, so a scale of 2 makes the pattern twice as large.
+     * All zeros is taken as the identity, for zero-initialised structs. */
+    glint_transform transform;
 } glint_texture;
 
 /* Returns a description of the given kind with every field at its default

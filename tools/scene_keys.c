@@ -78,6 +78,8 @@ static const char *type_name(const param *p)
         return "boolean";
     case PARAM_POINTS:
         return "list of vectors";
+    case PARAM_COLOR_STOPS:
+        return "list of [number, colour]";
     case PARAM_PATH:
         return "path";
     }
@@ -111,6 +113,9 @@ static void default_text(const param *p, char *buf, size_t size)
     case PARAM_COLOR_PAIR:
         snprintf(buf, size, "`[[%g, %g, %g], [%g, %g, %g]]`", d[0], d[1], d[2], d[3], d[4], d[5]);
         return;
+    case PARAM_COLOR_STOPS:
+        snprintf(buf, size, "`[[0, [%g, %g, %g]], [1, [%g, %g, %g]]]`", d[0], d[1], d[2], d[3], d[4], d[5]);
+        return;
     case PARAM_POINTS:
     case PARAM_PATH:
         snprintf(buf, size, "none");
@@ -143,6 +148,9 @@ static void range_text(const param *p, char *buf, size_t size)
         snprintf(buf, size, "%d %s %d points", p->min_count, p->max_count == p->min_count + 1 ? "or" : "to",
                  p->max_count);
         return;
+    case PARAM_COLOR_STOPS:
+        snprintf(buf, size, "%d to %d stops, values from 0 to 1 in order", p->min_count, p->max_count);
+        return;
     default:
         return;
     }
@@ -153,7 +161,7 @@ static void print_table(param_table t)
     printf("| key | type | default | range | meaning |\n| --- | --- | --- | --- | --- |\n");
     for (int i = 0; i < t.count; i++) {
         const param *p = &t.params[i];
-        char def[96], range[160];
+        char def[160], range[160];
         default_text(p, def, sizeof def);
         range_text(p, range, sizeof range);
         printf("| `%s` | %s | %s | %s | %s |\n", p->key, type_name(p), def, range, p->meaning ? p->meaning : "");

@@ -44,6 +44,11 @@ void params_defaults(param_table t, void *obj)
         case PARAM_POINTS:
             *(int *)field(obj, p->count_offset) = 0;
             break;
+        case PARAM_COLOR_STOPS:
+            ((glint_color_stop *)f)[0] = (glint_color_stop){0, {p->def[0], p->def[1], p->def[2]}};
+            ((glint_color_stop *)f)[1] = (glint_color_stop){1, {p->def[3], p->def[4], p->def[5]}};
+            *(int *)field(obj, p->count_offset) = 2;
+            break;
         }
     }
 }
@@ -109,6 +114,12 @@ static glint_status out_of_range(const param *p, const char *what, double v, gli
 
 static bool vec_finite(glint_vec3 v) { return isfinite(v.x) && isfinite(v.y) && isfinite(v.z); }
 
+/* Whether every channel of c lies in p's range. */
+static bool color_in_range(const param *p, glint_color c)
+{
+    return param_in_range(p, c.r) && param_in_range(p, c.g) && param_in_range(p, c.b);
+}
+
 /* Checks one field of obj. */
 static glint_status check_one(const param *p, const void *obj, const char *what, glint_error *err)
 {
@@ -145,12 +156,25 @@ static glint_status check_one(const param *p, const void *obj, const char *what,
     case PARAM_COLOR:
     case PARAM_COLOR_PAIR: {
         const glint_color *c = f;
-        for (int i = 0; i < (p->type == PARAM_COLOR ? 1 : 2); i++) {
-            double channels[3] = {c[i].r, c[i].g, c[i].b};
-            for (int k = 0; k < 3; k++)
-                if (!param_in_range(p, channels[k]))
-                    return error_set(err, GLINT_ERR_INVALID, "%s %s must be finite and not negative", what,
-                                     p->key);
+        for (int i = 0; i < (p->type == PARAM_COLOR ? 1 : 2); i++)
+            if (!color_in_range(p, c[i]))
+                return error_set(err, GLINT_ERR_INVALID, "%s %s must be finite and not negative", what, p->key);
+        return GLINT_OK;
+    }
+    case PARAM_COLOR_STOPS: {
+        int n = *(const int *)cfield(obj, p->count_offset);
+        if (n < p->min_count || n > p->max_count)
+            return error_set(err, GLINT_ERR_INVALID, "%s %s needs %d to %d stops, got %d", what, p->key,
+                             p->min_count, p->max_count, n);
+        const glint_color_stop *stops = f;
+        for (int k = 0; k < n; k++) {
+            double at = stops[k].at, before = k ? stops[k - 1].at : 0;
+            if (!(at >= before && at <= 1))
+                return error_set(err, GLINT_ERR_INVALID, "%s %s stop %d is at %g: stops go from 0 to 1, in order",
+                                 what, p->key, k, at);
+            if (!color_in_range(p, stops[k].color))
+                return error_set(err, GLINT_ERR_INVALID, "%s %s stop %d's colour must be finite and not negative",
+                                 what, p->key, k);
         }
         return GLINT_OK;
     }
@@ -212,6 +236,11 @@ bool param_is_default(const param *p, const void *obj)
         return same_doubles(f, p->def, 3);
     case PARAM_COLOR_PAIR:
         return same_doubles(f, p->def, 6);
+    case PARAM_COLOR_STOPS: {
+        const glint_color_stop *stops = f;
+        return *(const int *)cfield(obj, p->count_offset) == 2 && stops[0].at == 0 && stops[1].at == 1 &&
+               same_doubles(&stops[0].color, p->def, 3) && same_doubles(&stops[1].color, p->def + 3, 3);
+    }
     case PARAM_PATH:
     case PARAM_POINTS:
         return false;

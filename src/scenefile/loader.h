@@ -144,6 +144,10 @@ void read_light(loader *l, const ynode *n);
 /* Adds each object of the list, inside context ctx. */
 void read_objects(loader *l, const ynode *list, const context *ctx);
 
+/* A `transform`, a list of steps (translate, rotate, scale, matrix...),
+ * applied to *t in order; every step is read, so each bad one is reported. */
+bool read_transform(loader *l, const ynode *n, glint_transform *t);
+
 /* Adds one object (a shape, a group or a mesh), inside context outer. */
 void read_object(loader *l, const ynode *n, const context *outer);
 

@@ -60,7 +60,7 @@ static void add_texture(loader *l, const char *name, const ynode *n)
     if (k < 0)
         return;
     const texture_kind *kind = texture_kind_at(k);
-    static const char *const common[] = {"type", "mapping"};
+    static const char *const common[] = {"type", "mapping", "transform"};
     const char *keys[24];
     int key_count = param_keys(kind->params, common, COUNT(common), keys, COUNT(keys));
     yr_check_keys(&l->r, n, what, keys, key_count);
@@ -70,8 +70,9 @@ static void add_texture(loader *l, const char *name, const ynode *n)
         return;
     }
     /* A bad mapping does not hide the other keys' problems. */
-    const ynode *m = yr_get(&l->r, n, "mapping");
+    const ynode *m = yr_get(&l->r, n, "mapping"), *place = yr_get(&l->r, n, "transform");
     bool good = !m || read_mapping(l, m, &t.mapping);
+    good = (!place || read_transform(l, place, &t.transform)) && good;
     if (!read_params(l, n, kind->params, what, &t) || !good)
         return;
     glint_error err;

@@ -127,8 +127,7 @@ static bool read_step(loader *l, const ynode *step, glint_transform *t)
     return k >= 0;
 }
 
-/* A transform: every step is read, so that each bad one is reported. */
-static bool read_transform(loader *l, const ynode *n, glint_transform *t)
+bool read_transform(loader *l, const ynode *n, glint_transform *t)
 {
     if (!yr_is_list(&l->r, n, "'transform'"))
         return false;

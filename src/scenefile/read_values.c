@@ -78,6 +78,36 @@ static int value_numbers(const param *p, void *field, double **numbers)
     return p->type == PARAM_NUMBER ? 1 : p->type == PARAM_VEC3 || p->type == PARAM_DIRECTION || p->type == PARAM_COLOR ? 3 : 0;
 }
 
+
+/* A colour map: a list of [value, colour] stops, their values ascending
+ * from 0 to 1. */
+static bool read_stops(loader *l, const ynode *n, const param *p, void *obj)
+{
+    bool shaped = n->kind == YNODE_SEQUENCE && n->count >= p->min_count && n->count <= p->max_count;
+    for (int i = 0; shaped && i < n->count; i++)
+        shaped = n->items[i]->kind == YNODE_SEQUENCE && n->items[i]->count == 2;
+    if (!shaped) {
+        diag_at(&l->d, n, "'%s' must be a list of %d to %d stops, each [value, colour]", p->key, p->min_count,
+                p->max_count);
+        return false;
+    }
+    glint_color_stop *stops = (glint_color_stop *)((char *)obj + p->offset);
+    for (int i = 0; i < n->count; i++) {
+        const ynode *at = n->items[i]->items[0];
+        if (!yr_number(&l->r, at, p->key, &stops[i].at) ||
+            !yr_color(&l->r, n->items[i]->items[1], p->key, (color *)&stops[i].color))
+            return false;
+        double before = i ? stops[i - 1].at : 0;
+        if (!(stops[i].at >= before && stops[i].at <= 1)) {
+            diag_at(&l->d, at, "'%s' stop values must go from 0 to 1 in order, got %g after %g", p->key,
+                    stops[i].at, before);
+            return false;
+        }
+    }
+    *(int *)((char *)obj + p->count_offset) = n->count;
+    return true;
+}
+
 /* A keyed value of parameter p, `{keys: [[time, value], ...], interpolate}`
  * (n, is_keyed), into *field as it is at the loader's time: each value
  * read and checked as p's own, the times increasing. */
@@ -240,6 +270,8 @@ bool read_param(loader *l, const ynode *n, const param *p, void *obj)
         *(int *)((char *)obj + p->count_offset) = n->count;
         return true;
     }
+    case PARAM_COLOR_STOPS:
+        return read_stops(l, n, p, obj);
     }
     return false;
 }

@@ -260,6 +260,22 @@ static void write_mapping(const plan *p, ymap *m, const glint_mapping *given)
     ymap_end(&keys);
 }
 
+/* An object's or texture's transform, the last key of block map m, as one matrix step
+ * with a row a line. */
+static void write_transform(const plan *p, ymap *m, const glint_transform *t)
+{
+    ymap_key_block(m, "transform");
+    fprintf(p->f, "\n%*s- matrix:", m->indent + 2, "");
+    for (int i = 0; i < 3; i++) {
+        fprintf(p->f, "\n%*s- [", m->indent + 6, "");
+        for (int j = 0; j < 4; j++) {
+            fputs(j ? ", " : "", p->f);
+            yw_number(p->f, t->m[i][j]);
+        }
+        fputc(']', p->f);
+    }
+}
+
 static void write_textures(const plan *p)
 {
     const glint_scene *s = p->scene;
@@ -271,14 +287,18 @@ static void write_textures(const plan *p)
         fputs(any ? "  " : "textures:\n  ", p->f);
         any = true;
         yw_text(p->f, p->texture_names[i]);
-        fputs(": ", p->f);
-        ymap m = ymap_begin(p->f, true, 0);
+        /* On one line, or with a transform, a key a line. */
+        fputs(t->placed ? ":\n    " : ": ", p->f);
+        ymap m = ymap_begin(p->f, !t->placed, 4);
         ymap_key(&m, "type");
         fputs(t->kind->name, p->f);
         write_mapping(p, &m, &t->desc.mapping);
         yw_params(&m, t->kind->params, &t->desc, false);
+        if (t->placed)
+            write_transform(p, &m, &t->desc.transform);
         ymap_end(&m);
-        fputc('\n', p->f);
+        if (!t->placed)
+            fputc('\n', p->f);
     }
 }
 
@@ -314,22 +334,6 @@ static void write_lights(const plan *p)
         yw_params(&m, l->kind->params, &spec, false);
         ymap_end(&m);
         fputc('\n', p->f);
-    }
-}
-
-/* An object's transform, the last key of block map m, as one matrix step
- * with a row a line. */
-static void write_transform(const plan *p, ymap *m, const glint_transform *t)
-{
-    ymap_key_block(m, "transform");
-    fprintf(p->f, "\n%*s- matrix:", m->indent + 2, "");
-    for (int i = 0; i < 3; i++) {
-        fprintf(p->f, "\n%*s- [", m->indent + 6, "");
-        for (int j = 0; j < 4; j++) {
-            fputs(j ? ", " : "", p->f);
-            yw_number(p->f, t->m[i][j]);
-        }
-        fputc(']', p->f);
     }
 }
 

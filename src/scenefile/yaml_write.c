@@ -202,6 +202,20 @@ void yw_param(FILE *f, const param *p, const void *obj)
         fputc(']', f);
         return;
     }
+    case PARAM_COLOR_STOPS: {
+        int n = *(const int *)((const char *)obj + p->count_offset);
+        const glint_color_stop *stops = v;
+        fputc('[', f);
+        for (int i = 0; i < n; i++) {
+            fputs(i ? ", [" : "[", f);
+            yw_number(f, stops[i].at);
+            fputs(", ", f);
+            yw_color(f, stops[i].color);
+            fputc(']', f);
+        }
+        fputc(']', f);
+        return;
+    }
     }
 }
 

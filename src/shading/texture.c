@@ -10,7 +10,8 @@
 #include "geometry/shape_math.h"
 #include "shading/texture.h"
 
-static const texture_kind *const KINDS[] = {&checker_texture, &image_texture, &checker_3d_texture};
+static const texture_kind *const KINDS[] = {&checker_texture, &image_texture, &checker_3d_texture, &noise_texture,
+                                            &marble_texture, &wood_texture, &granite_texture};
 
 REGISTRY_LOOKUPS(texture_kind, texture_kind, glint_texture_kind, KINDS)
 
@@ -21,6 +22,7 @@ glint_texture glint_texture_default(glint_texture_kind kind)
     t.kind = kind;
     t.mapping.kind = GLINT_MAP_UV;
     t.mapping.scale = 1;
+    t.transform = glint_transform_identity();
     const texture_kind *k = texture_kind_of(kind);
     if (k)
         params_defaults(k->params, &t);
@@ -91,8 +93,16 @@ glint_status texture_init(texture *t, const glint_texture *desc, image_load_fn l
         s = mapping_validate(&desc->mapping, err);
     if (s)
         return s;
+    transform place = desc->transform;
+    static const transform unset;
+    if (memcmp(&place, &unset, sizeof place) == 0)
+        place = glint_transform_identity();
+    if (!xf_invert(&place, &t->to_texture))
+        return error_set(err, GLINT_ERR_INVALID, "%s transform is singular or not finite", what);
+    t->placed = !xf_is_identity(&place);
     t->mapping = desc->mapping;
     t->desc = *desc;
+    t->desc.transform = place;
     t->desc.file = NULL;
     if (!texture_set_file(t, desc->file))
         return error_set(err, GLINT_ERR_NOMEM, "out of memory");

@@ -11,6 +11,7 @@
 
 #include "core/color.h"
 #include "core/params.h"
+#include "core/transform.h"
 #include "geometry/shape.h"
 #include "image/texture_image.h"
 
@@ -28,6 +29,8 @@ typedef struct texture {
     color a, b;                /* checker colours */
     double cell;               /* checker cell size */
     texture_image image;       /* image texture, linear RGB */
+    bool placed;               /* the description's transform is not the identity */
+    transform to_texture;      /* its inverse: from the thing's space (or uv) to the texture's */
     /* What it was made from, for writing the scene back as a file
      * (glint_scene_write_yaml); desc.file is owned, and NULL for an image
      * decoded from memory. */
@@ -49,7 +52,8 @@ struct texture_kind {
     color (*solid)(const texture *t, vec3 p);
 };
 
-extern const texture_kind checker_texture, image_texture, checker_3d_texture;
+extern const texture_kind checker_texture, image_texture, checker_3d_texture, noise_texture, marble_texture,
+    wood_texture, granite_texture;
 
 /* The kind with that public id, or NULL. */
 const texture_kind *texture_kind_of(glint_texture_kind id);
@@ -85,19 +89,33 @@ color checker_eval(color a, color b, double cell, double u, double v);
  * wrap_u and wrap_v say; v = 0 is the top row. */
 color image_eval(const texture_image *img, double u, double v, glint_wrap wrap_u, glint_wrap wrap_v);
 
+/* Point p (a solid texture's) or (u, v, 0) carried into texture t's own
+ * space, when it is placed. */
+static inline vec3 texture_place(const texture *t, vec3 p)
+{
+    return t->placed ? xf_point(&t->to_texture, p) : p;
+}
+
+/* The colour of texture t at texture coordinates (u, v), placed. */
+static inline color texture_at_uv(const texture *t, double u, double v)
+{
+    vec3 q = texture_place(t, v3(u, v, 0));
+    if (t->kind == &checker_texture)
+        return checker_eval(t->a, t->b, t->cell, q.x, q.y);
+    return t->kind->eval(t, q.x, q.y);
+}
+
 /* The colour of texture t at surface s of a thing whose centre is center
- * (as for mapping_apply), or a solid texture's at s's point. The checker, the texture of most floors, is
- * looked up inline: through its record it cost the seed room 0.4% of its
- * instructions. */
+ * (as for mapping_apply), or a solid texture's at s's point. The checker,
+ * the texture of most floors, is looked up inline: through its record it
+ * cost the seed room 0.4% of its instructions. */
 static inline color texture_eval(const texture *t, const surface *s, vec3 center)
 {
     if (t->kind->solid)
-        return t->kind->solid(t, s->p_obj);
+        return t->kind->solid(t, texture_place(t, s->p_obj));
     double u, v;
     mapping_apply(&t->mapping, s, center, &u, &v);
-    if (t->kind == &checker_texture)
-        return checker_eval(t->a, t->b, t->cell, u, v);
-    return t->kind->eval(t, u, v);
+    return texture_at_uv(t, u, v);
 }
 
 /* Replaces the file name t->desc remembers with a copy of path (NULL:

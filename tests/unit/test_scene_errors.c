@@ -533,8 +533,28 @@ static const bad_scene BAD[] = {
      "bad.yaml:2:12: 'type' must be point, spot, directional, sphere, rectangle or disk, got 'area'", 1},
     {"texture_type_no_hint",
      "textures:\n"
-     "  t: {type: noise}\n",
-     "bad.yaml:2:13: 'type' must be checker, image or checker_3d, got 'noise'", 1},
+     "  t: {type: clouds}\n",
+     "bad.yaml:2:13: 'type' must be checker, image, checker_3d, noise, marble, wood or granite, got 'clouds'", 1},
+    {"stops_not_pairs",
+     "textures:\n"
+     "  t: {type: marble, colors: [[0, [1, 1, 1]], [1]]}\n",
+     "bad.yaml:2:29: 'colors' must be a list of 2 to 16 stops, each [value, colour]", 1},
+    {"stops_out_of_order",
+     "textures:\n"
+     "  t: {type: wood, colors: [[0.5, [1, 1, 1]], [0.25, [0, 0, 0]]]}\n",
+     "bad.yaml:2:47: 'colors' stop values must go from 0 to 1 in order, got 0.25 after 0.5", 1},
+    {"stop_colour_bad",
+     "textures:\n"
+     "  t: {type: noise, colors: [[0, [1, 1, 1]], [1, red]]}\n",
+     "bad.yaml:2:49: 'colors' must be a colour: [r, g, b], \"#rrggbb\" or {linear: [r, g, b]}", 1},
+    {"octaves_too_many",
+     "textures:\n"
+     "  t: {type: granite, octaves: 17}\n",
+     "bad.yaml:2:31: 'octaves' must be a whole number from 1 to 16, got '17'", 1},
+    {"texture_transform_singular",
+     "textures:\n"
+     "  t: {type: marble, transform: [{matrix: [[1, 0, 0, 0], [0, 0, 0, 0], [0, 0, 1, 0]]}]}\n",
+     "bad.yaml:2:6: marble texture transform is singular or not finite", 1},
     {"mapping_hint",
      "textures:\n"
      "  t: {type: checker, mapping: sphericl}\n",

@@ -241,6 +241,40 @@ static void test_mapping_center(void **state)
     glint_scene_free(s);
 }
 
+/* A solid texture's colour map and a texture's transform come back bit
+ * for bit; an unplaced texture writes no transform. */
+static void test_color_map_and_placement(void **state)
+{
+    (void)state;
+    glint_scene *s = glint_scene_new();
+    glint_error err;
+    glint_texture m = glint_texture_default(GLINT_TEXTURE_MARBLE);
+    m.stop_count = 3;
+    m.stops[0] = (glint_color_stop){0.1, {0.9, 0.85, 0.8}};
+    m.stops[1] = (glint_color_stop){1.0 / 3, {0.123456789, 0.2, 0.3}};
+    m.stops[2] = (glint_color_stop){1, {0, 0, 0.05}};
+    m.turbulence = 0.7;
+    m.transform = glint_transform_rotate(glint_transform_scale(glint_transform_identity(), 2, 1, 3),
+                                         (glint_vec3){1, 2, 3}, 37);
+    assert_true(glint_scene_add_texture(s, "veins", &m, &err) >= 0);
+    glint_texture w = glint_texture_default(GLINT_TEXTURE_WOOD);
+    assert_true(glint_scene_add_texture(s, "plain", &w, &err) >= 0);
+    glint_status st;
+    char *text = written(s, &st, &err);
+    assert_non_null(text);
+    assert_non_null(strstr(text, "  plain: {type: wood}\n"));
+    free(text);
+    glint_scene *back = round_trip(s);
+    const glint_texture *b = &back->textures[0].desc;
+    assert_int_equal(b->stop_count, 3);
+    assert_same_bits(b->stops, m.stops, sizeof m.stops[0] * 3);
+    assert_same_bits(&b->turbulence, &m.turbulence, sizeof m.turbulence);
+    assert_same_bits(&b->transform, &m.transform, sizeof m.transform);
+    assert_true(back->textures[0].placed && !back->textures[1].placed);
+    glint_scene_free(back);
+    glint_scene_free(s);
+}
+
 static void test_refusals(void **state)
 {
     (void)state;
@@ -297,6 +331,7 @@ int main(void)
         cmocka_unit_test(test_names),
         cmocka_unit_test(test_matrix_step),
         cmocka_unit_test(test_mapping_center),
+        cmocka_unit_test(test_color_map_and_placement),
         cmocka_unit_test(test_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
