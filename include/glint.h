@@ -405,6 +405,14 @@ glint_status glint_scene_replace_image(glint_scene *scene, const char *name, con
  * share is split between the refracted and reflected rays by the dielectric
  * Fresnel equations; total internal reflection always sends it to the
  * reflected ray. */
+/* Beer-Lambert absorption inside a thing: light that has travelled
+ * `distance` through it keeps `color` of itself, so length L keeps
+ * color^(L / distance) (a channel of 0 is taken as 1e-12). */
+typedef struct glint_absorption {
+    glint_color color;        /* channels from 0 to 1 */
+    double distance;          /* > 0; 0: no absorption */
+} glint_absorption;
+
 typedef struct glint_material {
     glint_color color;        /* base colour */
     int texture;              /* texture index replacing color, or -1 */
@@ -423,6 +431,9 @@ typedef struct glint_material {
     double roughness;         /* 0..1: reflection and refraction blurred over a lobe (0: sharp) */
     int glossy_samples;       /* 1..1024: rays a camera ray's blurred reflection or refraction
                                  is spread over */
+    double metallic;          /* 0..1: reflections and highlights take the base colour, white at
+                                 0, the base colour (or texture) at 1, as a metal's do */
+    glint_absorption absorption; /* what light loses travelling inside (distance 0: nothing) */
 } glint_material;
 
 /* Returns a matte white material: ambient 0.2, diffuse 1, specular 1,

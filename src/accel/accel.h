@@ -63,8 +63,12 @@ glint_status accel_build(accel **out, const accel_geometry *g, glint_error *err)
 /* Releases the Embree objects. NULL is allowed. */
 void accel_free(accel *a);
 
-/* Returns what a surface crossing lets through: black for opaque. */
-typedef color (*accel_filter_fn)(void *user, const ray *r, const accel_hit *hit);
+/* Returns what a surface crossing lets through: black for opaque. A
+ * crossing into or out of an absorbing thing adds to *depth, the lane's
+ * optical depth, what the segment keeps of it being exp(-depth): crossings
+ * come in any order, and a sum of depths needs none, where the product of
+ * their exponentials could overflow on the way. */
+typedef color (*accel_filter_fn)(void *user, const ray *r, const accel_hit *hit, color *depth);
 
 /* Finds the nearest hit of each of up to ACCEL_PACKET rays, the lanes of
  * *r, at time[i] over the shutter (where moving shapes are then; NULL:
@@ -80,8 +84,9 @@ void accel_intersect8(const accel *a, const ray8 *r, const double *time, double 
 
 /* The light that survives each of up to ACCEL_PACKET shadow segments
  * (0, tmax[i]) along the lanes of *r, at time[i] as for accel_intersect8: the product of filter() over the
- * surface crossings of segment i, black as soon as something opaque blocks
- * it, and black for inactive lanes. skip[i] and `coherent` as for
+ * surface crossings of segment i, times exp(-depth) of the optical depth
+ * they add up, black as soon as something opaque blocks it, and black for
+ * inactive lanes. skip[i] and `coherent` as for
  * accel_intersect8. */
 void accel_transmission8(const accel *a, const ray8 *r, const double *time, const double tmax[ACCEL_PACKET],
                          const int skip[ACCEL_PACKET], bool coherent, const bool active[ACCEL_PACKET],

@@ -71,6 +71,7 @@ typedef struct query {
     double hit_t[ACCEL_PACKET];  /* and where: its shape_hit, by field */
     int hit_part[ACCEL_PACKET];
     color through[ACCEL_PACKET];
+    color depth[ACCEL_PACKET];   /* optical depth each lane's crossings add up */
     seen_set *seen;           /* shadow queries: what each lane was filtered by */
 } query;
 
@@ -110,7 +111,7 @@ static inline unsigned hit_lane_uint(const struct RTCHitN *hit, unsigned n, unsi
 static inline bool pass_through(query *q, unsigned i, const accel_hit *h)
 {
     ray r = ray8_get(q->r, (int)i);
-    q->through[i] = rgb_mul(q->through[i], q->filter(q->user, &r, h));
+    q->through[i] = rgb_mul(q->through[i], q->filter(q->user, &r, h, &q->depth[i]));
     return rgb_max(q->through[i]) >= TRANSMISSION_CUTOFF;
 }
 

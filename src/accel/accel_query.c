@@ -5,6 +5,7 @@
  * at a time, and lets Embree look only nearer; shadow segments are filtered
  * through the planes, the shapes (accel_shapes.c) and the triangles they
  * cross, each surface once. */
+#include <math.h>
 #include <string.h>
 #include "accel/accel_internal.h"
 
@@ -254,13 +255,18 @@ void accel_transmission8(const accel *a, const ray8 *r, const double *time, cons
     q.seen = seen;
     for (unsigned i = 0; i < ACCEL_PACKET; i++) {
         q.through[i] = rgb(1, 1, 1);
+        q.depth[i] = rgb(0, 0, 0);
         seen_init(&seen[i]);
     }
     if (a->plane_count > 0)
         through_planes(&q, valid, &p);
     rtcOccluded8(valid, a->scene, &q.ctx, &p);
-    for (int i = 0; i < ACCEL_PACKET; i++)
+    for (int i = 0; i < ACCEL_PACKET; i++) {
         seen_free(&seen[i]);
+        color d = q.depth[i];
+        if (d.r != 0 || d.g != 0 || d.b != 0) /* a sum of rounded depths may fall a hair below 0 */
+            q.through[i] = rgb_mul(q.through[i], rgb(exp(-fmax(d.r, 0)), exp(-fmax(d.g, 0)), exp(-fmax(d.b, 0))));
+    }
     /* What passed, or black: each channel's bits kept or cleared to +0 by
      * the lane's mask, without a branch. */
     for (int i = 0; i < ACCEL_PACKET; i += QUAD) {

@@ -49,7 +49,8 @@ static bool is_made_up(const struct aiScene *ai, unsigned i, const model_format 
     return true;
 }
 
-/* glTF metallic-roughness: base colour is linear already; metals mirror,
+/* glTF metallic-roughness: base colour is linear already; metals mirror
+ * in their own colour,
  * roughness widens and dims the highlight, transmission refracts, the
  * emissive factor glows (times the emissive strength, which Assimp does
  * not read: the caller sets it). */
@@ -62,7 +63,7 @@ static glint_material from_gltf(const struct aiMaterial *a)
     m.color = base;
     double metallic = model_clamp(get_float(a, AI_MATKEY_METALLIC_FACTOR, 0), 0, 1);
     double rough = model_clamp(get_float(a, AI_MATKEY_ROUGHNESS_FACTOR, 1), 0, 1);
-    m.reflectivity = metallic;
+    m.reflectivity = m.metallic = metallic;
     m.diffuse = 1 - metallic;
     m.ambient = 0.2 * (1 - metallic);
     m.specular = 1 - rough;

@@ -28,20 +28,29 @@ static vec3 offset_point(vec3 p, vec3 n)
 /* What one surface crossing passes to a shadow ray: every crossing
  * filters, on the way into a thing and on the way out, as a camera ray
  * through it is filtered at both surfaces (shade_local's branches), so a
- * glass ball's shadow is as dark as the ball looks against the sky. Only a
- * textured surface needs its point described. */
-static color shadow_filter(void *user, const ray *r, const accel_hit *hit)
+ * glass ball's shadow is as dark as the ball looks against the sky. Inside
+ * an absorbing thing, the segment from where the ray goes in (or starts)
+ * to where it comes out absorbs: its optical depth is the exit's distance
+ * less the entry's, so the exit adds the depth of its distance and the
+ * entry takes away the depth of its own. Only a textured or absorbing
+ * surface needs its point described. */
+static color shadow_filter(void *user, const ray *r, const accel_hit *hit, color *depth)
 {
     const glint_scene *scene = ((tracer *)user)->scene;
     const glint_material *m = hit_material(scene, hit);
     if (material_is_opaque(m))
         return rgb(0, 0, 0);
     color base = m->color;
-    if (m->texture >= 0) {
+    if (m->texture >= 0 || material_absorbs(m)) {
         accel_hit h = *hit;
         surface s;
         hit_surface(scene, r, &h, &s);
-        base = hit_texture_color(scene, &h, m, &s);
+        if (m->texture >= 0)
+            base = hit_texture_color(scene, &h, m, &s);
+        if (material_absorbs(m)) {
+            color d = material_optical_depth(m, h.t);
+            *depth = rgb_madd(*depth, d, v3_dot(r->d, s.n) > 0 ? 1 : -1);
+        }
     }
     return rgb_scale(material_filter(m, base), m->transparency + m->refraction);
 }
@@ -172,8 +181,10 @@ static color shade_local(const glint_scene *scene, const ray *r, const shade_poi
             branch(scene, sp, b, BRANCH_REFRACT, dir, filter, m->refraction * share, weight);
         mirror += m->refraction * (1 - share);
     }
-    if (mirror > 0)
-        branch(scene, sp, b, BRANCH_MIRROR, optics_reflect(r->d, bend), rgb(1, 1, 1), mirror, weight);
+    if (mirror > 0) {
+        color tint = m->metallic > 0 ? material_metal_tint(m, sp->base) : rgb(1, 1, 1);
+        branch(scene, sp, b, BRANCH_MIRROR, optics_reflect(r->d, bend), tint, mirror, weight);
+    }
     return kept;
 }
 
@@ -867,6 +878,11 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
         for (int j = 0; j < most && !stopping(t); j++)
             trace_branch(t, r, found, sp, b, k, j, rays, depth, weight, key, local);
     }
+    /* A ray that reaches a surface from inside an absorbing thing has
+     * crossed it: what it brings back is dimmed by that length. */
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        if (found[i] && !sp[i].front && material_absorbs(sp[i].m))
+            local[i] = rgb_mul(local[i], material_absorbed(sp[i].m, sp[i].hit.t));
     if (scene->area_light_count > 0)
         for (int i = 0; i < ACCEL_PACKET; i++)
             found[i] |= glows[i];

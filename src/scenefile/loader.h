@@ -105,6 +105,12 @@ char *relative_to(const char *from, const char *path);
  * True when all were good. */
 bool read_params(loader *l, const ynode *map, param_table t, const char *what, void *obj);
 
+/* A map of table t's keys under `key` of map parent (settings'
+ * ambient_occlusion, a material's absorption): when given, obj's fields of
+ * t start from their defaults and take its keys. Returns whether it was
+ * given and read without a problem. */
+bool read_sub_map(loader *l, const ynode *parent, const char *key, param_table t, void *obj);
+
 /* The keys of table t after `common`, into keys (room for `room`); returns
  * how many, for yr_check_keys. */
 int param_keys(param_table t, const char *const *common, int common_count, const char **keys, int room);

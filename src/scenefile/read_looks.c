@@ -144,14 +144,15 @@ void read_environment(loader *l, const ynode *n)
 /* Reads a material map's keys over *m (which holds the defaults). */
 static bool read_material_keys(loader *l, const ynode *n, const char *what, glint_material *m)
 {
-    static const char *const texture_key[] = {"texture"};
+    static const char *const own_keys[] = {"texture", "absorption"};
     if (!yr_is_map(&l->r, n, what))
         return false;
     int before = l->d.count;
     const char *keys[32];
-    int count = param_keys(material_params(), texture_key, COUNT(texture_key), keys, COUNT(keys));
+    int count = param_keys(material_params(), own_keys, COUNT(own_keys), keys, COUNT(keys));
     yr_check_keys(&l->r, n, what, keys, count);
     read_params(l, n, material_params(), what, m);
+    read_sub_map(l, n, "absorption", absorption_params(), &m->absorption);
     const ynode *tex = yr_get(&l->r, n, "texture");
     const char *name;
     glint_error err;

@@ -6,22 +6,6 @@
 #include "scenefile/loader.h"
 #include "shading/fog.h"
 
-/* A map of settings under its own key in settings (ambient_occlusion,
- * filter, adaptive): given, it starts from its table's defaults. */
-static void read_settings_map(loader *l, const ynode *settings, const char *key, param_table t)
-{
-    char quoted[40];
-    snprintf(quoted, sizeof quoted, "'%s'", key);
-    const ynode *n = yr_get(&l->r, settings, key);
-    if (!n || !yr_is_map(&l->r, n, quoted))
-        return;
-    const char *keys[8];
-    int count = param_keys(t, NULL, 0, keys, COUNT(keys));
-    yr_check_keys(&l->r, n, key, keys, count);
-    params_defaults(t, &l->settings);
-    read_params(l, n, t, key, &l->settings);
-}
-
 void read_settings(loader *l, const ynode *n)
 {
     static const char *const extra_keys[] = {"output", "ambient_occlusion", "filter", "adaptive", "frames", "shutter"};
@@ -32,11 +16,11 @@ void read_settings(loader *l, const ynode *n)
     int count = param_keys(settings_params(), extra_keys, COUNT(extra_keys), keys, COUNT(keys));
     yr_check_keys(&l->r, n, "settings", keys, count);
     read_params(l, n, settings_params(), "settings", &l->settings);
-    read_settings_map(l, n, "ambient_occlusion", occlusion_params());
-    read_settings_map(l, n, "filter", filter_params());
-    read_settings_map(l, n, "adaptive", adaptive_params());
-    read_settings_map(l, n, "frames", frames_params());
-    read_settings_map(l, n, "shutter", shutter_params());
+    read_sub_map(l, n, "ambient_occlusion", occlusion_params(), &l->settings);
+    read_sub_map(l, n, "filter", filter_params(), &l->settings);
+    read_sub_map(l, n, "adaptive", adaptive_params(), &l->settings);
+    read_sub_map(l, n, "frames", frames_params(), &l->settings);
+    read_sub_map(l, n, "shutter", shutter_params(), &l->settings);
     const ynode *shutter = yr_get(&l->r, n, "shutter");
     if (shutter && l->settings.shutter_close < l->settings.shutter_open)
         diag_at(&l->d, shutter, "shutter: 'close' (%g) comes before 'open' (%g)", l->settings.shutter_close,

@@ -290,6 +290,20 @@ bool read_params(loader *l, const ynode *map, param_table t, const char *what, v
     return good;
 }
 
+bool read_sub_map(loader *l, const ynode *parent, const char *key, param_table t, void *obj)
+{
+    char quoted[40];
+    snprintf(quoted, sizeof quoted, "'%s'", key);
+    const ynode *n = yr_get(&l->r, parent, key);
+    if (!n || !yr_is_map(&l->r, n, quoted))
+        return false;
+    const char *keys[8];
+    int count = param_keys(t, NULL, 0, keys, COUNT(keys));
+    yr_check_keys(&l->r, n, key, keys, count);
+    params_defaults(t, obj);
+    return read_params(l, n, t, key, obj);
+}
+
 int param_keys(param_table t, const char *const *common, int common_count, const char **keys, int room)
 {
     int count = 0;

@@ -138,10 +138,22 @@ static bool named_material(const plan *p, int i)
     return p->scene->materials[i].name && !p->material_from_mesh[i];
 }
 
+/* A map of table t's keys of obj under its own key, every key, on one
+ * line: settings' ambient_occlusion, a material's absorption. */
+static void write_sub_map(const plan *p, ymap *m, const char *key, param_table t, const void *obj)
+{
+    ymap_key(m, key);
+    ymap sub = ymap_begin(p->f, true, 0);
+    yw_params(&sub, t, obj, true);
+    ymap_end(&sub);
+}
+
 /* A material's keys (and its texture's name) into m. */
 static void material_keys(const plan *p, ymap *m, const glint_material *mat)
 {
     yw_params(m, material_params(), mat, false);
+    if (material_absorbs(mat))
+        write_sub_map(p, m, "absorption", absorption_params(), &mat->absorption);
     if (mat->texture >= 0) {
         ymap_key(m, "texture");
         yw_text(p->f, p->texture_names[mat->texture]);
@@ -160,15 +172,6 @@ static void material_value(const plan *p, int i)
     ymap_end(&m);
 }
 
-/* A map of settings under its own key, on one line. */
-static void write_settings_map(const plan *p, ymap *m, const char *key, param_table t, const glint_settings *s)
-{
-    ymap_key(m, key);
-    ymap sub = ymap_begin(p->f, true, 0);
-    yw_params(&sub, t, s, true);
-    ymap_end(&sub);
-}
-
 static void write_settings(const plan *p)
 {
     const glint_scene *s = p->scene;
@@ -176,15 +179,15 @@ static void write_settings(const plan *p)
     ymap m = ymap_begin(p->f, false, 2);
     yw_params(&m, settings_params(), &s->settings, true);
     if (s->settings.occlusion_samples > 0)
-        write_settings_map(p, &m, "ambient_occlusion", occlusion_params(), &s->settings);
+        write_sub_map(p, &m, "ambient_occlusion", occlusion_params(), &s->settings);
     if (s->settings.filter != GLINT_FILTER_BOX || s->settings.filter_radius != 0)
-        write_settings_map(p, &m, "filter", filter_params(), &s->settings);
+        write_sub_map(p, &m, "filter", filter_params(), &s->settings);
     if (s->settings.adaptive_max_samples > 0)
-        write_settings_map(p, &m, "adaptive", adaptive_params(), &s->settings);
+        write_sub_map(p, &m, "adaptive", adaptive_params(), &s->settings);
     if (s->settings.frame_start != 0 || s->settings.frame_end != 0 || s->settings.fps != 24)
-        write_settings_map(p, &m, "frames", frames_params(), &s->settings);
+        write_sub_map(p, &m, "frames", frames_params(), &s->settings);
     if (s->settings.shutter_open != s->settings.shutter_close)
-        write_settings_map(p, &m, "shutter", shutter_params(), &s->settings);
+        write_sub_map(p, &m, "shutter", shutter_params(), &s->settings);
     if (s->output) {
         ymap_key(&m, "output");
         yw_text(p->f, s->output);

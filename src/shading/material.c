@@ -47,7 +47,22 @@ static const param MATERIAL_PARAMS[] = {
     {.key = "glossy_samples", .type = PARAM_INTEGER, FIELD(glossy_samples), .def = {16}, .lo = 1, .hi = 1024,
      .meaning = "rough reflection or refraction: the rays a camera ray's is spread over (a ray of less weight, "
                 "seen in another, fewer)"},
+    {.key = "metallic", .type = PARAM_NUMBER, FIELD(metallic), SHARE,
+     .meaning = "how much reflections and highlights take the base colour, as a metal's do: 0 white, 1 the "
+                "base colour"},
 };
+
+static const param ABSORPTION_PARAMS[] = {
+    {.key = "color", .type = PARAM_COLOR, .offset = offsetof(glint_absorption, color), .required = true, .lo = 0,
+     .hi = 1, .meaning = "what is left of light that has travelled `distance` inside"},
+    {.key = "distance", .type = PARAM_NUMBER, .offset = offsetof(glint_absorption, distance), .def = {1},
+     PARAM_POSITIVE, .meaning = "the distance at which `color` is left; length L leaves color^(L / distance)"},
+};
+
+param_table absorption_params(void)
+{
+    return PARAM_TABLE(ABSORPTION_PARAMS);
+}
 
 param_table material_params(void)
 {
@@ -73,7 +88,36 @@ glint_status material_validate(const glint_material *m, int texture_count, glint
     if (m->transparency + m->refraction > 1)
         return error_set(err, GLINT_ERR_INVALID, "material transparency + refraction must not exceed 1, got %g",
                          m->transparency + m->refraction);
+    if (m->absorption.distance != 0)
+        return params_check(absorption_params(), &m->absorption, "material absorption", err);
     return GLINT_OK;
+}
+
+/* The optical depth of one unit of length in one channel that keeps c of
+ * the light after `distance`. */
+static double per_unit(double c, double distance)
+{
+    const double least = 1e-12; /* a black channel, kept finite so depths can be summed */
+    return -log(c > least ? c : least) / distance;
+}
+
+color material_optical_depth(const glint_material *m, double length)
+{
+    double d = m->absorption.distance;
+    return rgb(per_unit(m->absorption.color.r, d) * length, per_unit(m->absorption.color.g, d) * length,
+               per_unit(m->absorption.color.b, d) * length);
+}
+
+color material_absorbed(const glint_material *m, double length)
+{
+    color depth = material_optical_depth(m, length);
+    return rgb(exp(-depth.r), exp(-depth.g), exp(-depth.b));
+}
+
+color material_metal_tint(const glint_material *m, color base)
+{
+    double w = 1 - m->metallic;
+    return rgb_madd(rgb(w, w, w), base, m->metallic);
 }
 
 double material_lobe_exponent(const glint_material *m)

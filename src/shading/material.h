@@ -17,6 +17,9 @@ typedef struct material {
  * texture, which a scene file names). */
 param_table material_params(void);
 
+/* The keys of a material's absorption map. */
+param_table absorption_params(void);
+
 /* Checks every value of m against the table and texture_count textures, and
  * that transparency + refraction is at most 1; fills err naming the first
  * bad value. */
@@ -38,6 +41,21 @@ bool material_is_opaque(const glint_material *m);
 
 /* Colour a material transmits: (1 - tint) + tint * surface colour. */
 color material_filter(const glint_material *m, color surface_color);
+
+/* Whether light travelling inside m is absorbed. */
+static inline bool material_absorbs(const glint_material *m) { return m->absorption.distance > 0; }
+
+/* What `length` inside absorbing m leaves of light, per channel:
+ * color^(length / distance), as exp(-material_optical_depth). */
+color material_absorbed(const glint_material *m, double length);
+
+/* The optical depth of `length` inside absorbing m, per channel: it adds
+ * along a path, and what is left is exp(-depth). */
+color material_optical_depth(const glint_material *m, double length);
+
+/* The colour m's reflections and highlights take on a surface of colour
+ * base: white blended towards base by metallic. */
+color material_metal_tint(const glint_material *m, color base);
 
 /* x^e for the specular lobe: by repeated squaring when e is a whole number
  * up to 65536 (every shininess a scene file usually gives), which is several
@@ -78,7 +96,8 @@ static inline color phong_light(const glint_material *m, color c, vec3 n, vec3 t
     if (m->specular > 0) {
         double r_dot_v = lobe_cos(n, to_light, to_eye);
         if (r_dot_v > 0)
-            out = rgb_madd(out, radiance, m->specular * lobe_pow(r_dot_v, m->shininess));
+            out = rgb_madd(out, m->metallic > 0 ? rgb_mul(radiance, material_metal_tint(m, c)) : radiance,
+                           m->specular * lobe_pow(r_dot_v, m->shininess));
     }
     return out;
 }

@@ -387,6 +387,7 @@ static void test_gltf_data_uri(void **state)
     assert_near(g->color.g, 0.25, 1e-6);
     assert_near(g->color.b, 0.125, 1e-6);
     assert_near(g->reflectivity, 0.5, 1e-6);
+    assert_near(g->metallic, 0.5, 1e-6);
     assert_near(g->diffuse, 0.5, 1e-6);
     assert_near(g->specular, 0.5, 1e-6);
     assert_near(g->shininess, 30, 1e-4);
@@ -409,6 +410,7 @@ static void test_gltf_blend_and_unnamed(void **state)
     const glint_material *g = material_named(s, "veil/material0");
     assert_near(g->transparency, 0.6, 1e-6);
     assert_near(g->reflectivity, 0, 0);
+    assert_near(g->metallic, 0, 0);
     assert_near(g->specular, 0, 0);
     glint_scene_free(s);
 }

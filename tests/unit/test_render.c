@@ -264,6 +264,86 @@ static void test_tinted_shadows_match_what_the_camera_sees(void **state)
     glint_scene_free(two);
 }
 
+/* Beer-Lambert glass that shows nothing of its own and bends nothing (ior
+ * 1, tint 0): light through it keeps only what its absorption leaves. */
+static int absorbing_glass(glint_scene *s, glint_color keeps, double distance)
+{
+    glint_material m = glint_material_default();
+    m.ambient = m.diffuse = m.specular = 0;
+    m.refraction = 1;
+    m.ior = 1;
+    m.tint = 0;
+    m.absorption = (glint_absorption){keeps, distance};
+    int i = glint_scene_add_material(s, NULL, &m, NULL);
+    assert_true(i >= 0);
+    return i;
+}
+
+static void add_box(glint_scene *s, glint_vec3 lo, glint_vec3 hi, int mat)
+{
+    glint_shape sh = {.kind = GLINT_SHAPE_BOX, .min = lo, .max = hi};
+    assert_true(glint_scene_add_shape(s, &sh, mat, NULL, NULL) >= 0);
+}
+
+/* Through a slab of thickness d, light keeps color^(d / distance) in each
+ * channel: exp(-d / distance) when color is 1/e. The camera sees it so
+ * against a white sky, and a shadow ray through the slab between a light
+ * and the floor lets as much through; two slabs multiply. */
+static void test_absorption_follows_beer_lambert(void **state)
+{
+    const glint_color keeps = {0.3, 0.6, 0.9}, one_over_e = {exp(-1), exp(-1), exp(-1)};
+    const double d = 1.3, distance = 0.7;
+    const double *k = &keeps.r;
+    glint_scene *sky = new_scene(11, 11, (glint_vec3){0, 0, 10}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 1, 0}, 20);
+    glint_settings st = glint_scene_get_settings(sky);
+    st.background = (glint_color){1, 1, 1};
+    assert_int_equal(glint_scene_set_settings(sky, &st, NULL), GLINT_OK);
+    add_box(sky, (glint_vec3){-5, -5, -d / 2}, (glint_vec3){5, 5, d / 2}, absorbing_glass(sky, keeps, distance));
+    glint_image seen = render(sky, 1);
+    for (int c = 0; c < 3; c++)
+        assert_near(centre(&seen)[c], pow(k[c], d / distance), 1e-6);
+    glint_image_free(&seen);
+    glint_scene_free(sky);
+
+    glint_scene *floor = floor_scene((glint_vec3){0, 0, 0});
+    add_box(floor, (glint_vec3){-3, 4, -3}, (glint_vec3){3, 4 + d, 3}, absorbing_glass(floor, one_over_e, distance));
+    glint_image shadow = render(floor, 1);
+    for (int c = 0; c < 3; c++)
+        assert_near(centre(&shadow)[c], 0.2 + exp(-d / distance), 1e-6);
+    glint_image_free(&shadow);
+    add_box(floor, (glint_vec3){-3, 6, -3}, (glint_vec3){3, 6.5, 3}, absorbing_glass(floor, keeps, distance));
+    glint_image two = render(floor, 1);
+    for (int c = 0; c < 3; c++)
+        assert_near(centre(&two)[c], 0.2 + exp(-d / distance) * pow(k[c], 0.5 / distance), 1e-6);
+    glint_image_free(&two);
+    glint_scene_free(floor);
+}
+
+/* A metal's mirror takes its colour: a white wall seen in a sphere of
+ * colour (1, 0.5, 0.25) comes back that colour when metallic is 1, half
+ * way to white when it is 0.5, and white when it is 0. */
+static void test_metallic_mirror_takes_its_colour(void **state)
+{
+    const double shares[] = {0, 0.5, 1};
+    for (int i = 0; i < 3; i++) {
+        glint_scene *s = new_scene(21, 21, (glint_vec3){0, 0, 5}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 1, 0}, 10);
+        glint_material metal = glint_material_default();
+        metal.color = (glint_color){1, 0.5, 0.25};
+        metal.ambient = metal.diffuse = metal.specular = 0;
+        metal.reflectivity = 1;
+        metal.metallic = shares[i];
+        add_sphere(s, 0, 0, -5, 2, glint_scene_add_material(s, NULL, &metal, NULL));
+        add_quad(s, (glint_vec3){-50, -50, 10}, (glint_vec3){50, -50, 10}, (glint_vec3){50, 50, 10},
+                 (glint_vec3){-50, 50, 10}, flat(s, 1, 1, 1));
+        glint_image img = render(s, 1);
+        assert_near(centre(&img)[0], 1, 1e-6);
+        assert_near(centre(&img)[1], 1 - 0.5 * shares[i], 1e-6);
+        assert_near(centre(&img)[2], 1 - 0.75 * shares[i], 1e-6);
+        glint_image_free(&img);
+        glint_scene_free(s);
+    }
+}
+
 static void test_mirror_shows_facing_wall(void **state)
 {
     glint_scene *s = new_scene(21, 21, (glint_vec3){0, 0, 5}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 1, 0}, 10);
@@ -1204,6 +1284,8 @@ int main(void)
         cmocka_unit_test(test_shadow_ratio),
         cmocka_unit_test(test_spherical_mapping_follows_the_sphere),
         cmocka_unit_test(test_tinted_shadows_match_what_the_camera_sees),
+        cmocka_unit_test(test_absorption_follows_beer_lambert),
+        cmocka_unit_test(test_metallic_mirror_takes_its_colour),
         cmocka_unit_test(test_mirror_shows_facing_wall),
         cmocka_unit_test(test_refraction_inverts),
         cmocka_unit_test(test_transparency_passes_light_straight_through),

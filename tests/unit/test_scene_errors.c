@@ -535,6 +535,14 @@ static const bad_scene BAD[] = {
      "textures:\n"
      "  t: {type: clouds}\n",
      "bad.yaml:2:13: 'type' must be checker, image, checker_3d, noise, marble, wood or granite, got 'clouds'", 1},
+    {"absorption_needs_color",
+     "materials:\n"
+     "  a: {refraction: 1, absorption: {distance: 2}}\n",
+     "bad.yaml:2:34: absorption needs 'color'", 1},
+    {"absorption_distance_zero",
+     "materials:\n"
+     "  b: {refraction: 1, absorption: {color: [1, 1, 1], distance: 0}}\n",
+     "bad.yaml:2:63: 'distance' must be positive, got 0", 1},
     {"stops_not_pairs",
      "textures:\n"
      "  t: {type: marble, colors: [[0, [1, 1, 1]], [1]]}\n",

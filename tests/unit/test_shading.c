@@ -460,6 +460,16 @@ static void test_phong(void **state)
     /* Light behind the surface: nothing. */
     out = phong_light(&m, c, n, v3(0, -1, 0), eye, white);
     assert_near(rgb_max(out), 0, 0);
+    /* A metal's highlight takes its colour: all of it at metallic 1, a
+     * quarter of the way from white at 0.25. */
+    m.metallic = 1;
+    out = phong_light(&m, c, n, l, eye, white);
+    assert_near(out.r, 0.25 + 0.5, 1e-12);
+    assert_near(out.g, 0.125 + 0.25, 1e-12);
+    assert_near(out.b, 0.5 + 1, 1e-12);
+    m.metallic = 0.25;
+    out = phong_light(&m, c, n, l, eye, white);
+    assert_near(out.g, 0.125 + 0.75 + 0.25 * 0.25, 1e-12);
 }
 
 /* phong_reaches says no only where phong_light is black, and stays black

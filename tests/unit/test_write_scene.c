@@ -275,6 +275,34 @@ static void test_color_map_and_placement(void **state)
     glint_scene_free(s);
 }
 
+/* A material's absorption and metallic come back bit for bit; one that
+ * absorbs nothing writes no absorption. */
+static void test_absorption_and_metallic(void **state)
+{
+    (void)state;
+    glint_scene *s = glint_scene_new();
+    glint_error err;
+    glint_material m = glint_material_default();
+    m.refraction = 1;
+    m.metallic = 0.3;
+    m.absorption = (glint_absorption){{0.2, 1.0 / 3, 0.9}, 0.7};
+    assert_true(glint_scene_add_material(s, "glass", &m, &err) >= 0);
+    glint_material plain = glint_material_default();
+    assert_true(glint_scene_add_material(s, "plain", &plain, &err) >= 0);
+    glint_status st;
+    char *text = written(s, &st, &err);
+    assert_non_null(text);
+    assert_non_null(strstr(text, "  plain: {}\n"));
+    free(text);
+    glint_scene *back = round_trip(s);
+    const glint_material *b = &back->materials[0].m;
+    assert_same_bits(&b->absorption, &m.absorption, sizeof m.absorption);
+    assert_same_bits(&b->metallic, &m.metallic, sizeof m.metallic);
+    assert_true(back->materials[1].m.absorption.distance == 0);
+    glint_scene_free(back);
+    glint_scene_free(s);
+}
+
 static void test_refusals(void **state)
 {
     (void)state;
@@ -332,6 +360,7 @@ int main(void)
         cmocka_unit_test(test_matrix_step),
         cmocka_unit_test(test_mapping_center),
         cmocka_unit_test(test_color_map_and_placement),
+        cmocka_unit_test(test_absorption_and_metallic),
         cmocka_unit_test(test_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
