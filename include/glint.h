@@ -460,8 +460,13 @@ typedef enum glint_shape_kind {
     GLINT_SHAPE_CONE,       /* apex above the centre of base at height, or cut off there at
                                top_radius; optional caps */
     GLINT_SHAPE_DISK,       /* disc (or, with inner_radius, a ring) about center, facing normal */
-    GLINT_SHAPE_TORUS       /* ring about +y through center in the xz plane: radius (major) to the
+    GLINT_SHAPE_TORUS,      /* ring about +y through center in the xz plane: radius (major) to the
                                middle of its tube, minor_radius the tube's */
+    /* Constructive solid geometry: a combination of the closed shapes
+     * glint_scene_add_part gives it, reading no field of glint_shape. */
+    GLINT_SHAPE_UNION,        /* inside any of its parts */
+    GLINT_SHAPE_INTERSECTION, /* inside all of its parts */
+    GLINT_SHAPE_DIFFERENCE    /* inside its first part and none of the others */
 } glint_shape_kind;
 
 /* A shape's description: each kind reads the fields named beside them.
@@ -495,6 +500,20 @@ glint_shape glint_shape_default(glint_shape_kind kind);
  * the transform is singular. */
 int glint_scene_add_shape(glint_scene *scene, const glint_shape *shape, int material,
                           const glint_transform *transform, glint_error *err);
+
+/* Adds a shape as a part of combination `csg` (a union, intersection or
+ * difference added before by glint_scene_add_shape or this): it is then
+ * seen only through the combination, and may itself be a combination, up
+ * to 32 deep and 256 parts each. It must be closed: a sphere, box, torus,
+ * plane (the half-space behind it), cylinder with caps, cone with its caps,
+ * or a combination. Its transform places it in the world, as
+ * glint_scene_add_shape's does (a combination takes none: NULL or the
+ * identity). `material` may be -1 for a combination, whose parts then
+ * need their own; a part's surface shows its own material. Parts cannot
+ * move over the shutter. Returns the part's shape index or -1 and fills
+ * err. */
+int glint_scene_add_part(glint_scene *scene, int csg, const glint_shape *shape, int material,
+                         const glint_transform *transform, glint_error *err);
 
 /* ------------------------------------------------------------------ lights */
 

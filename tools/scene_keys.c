@@ -51,6 +51,9 @@ static int sections(section *out, int room)
         ADD(label, light_kind_at(i)->params);
     }
     for (int i = 0; i < shape_kind_count(); i++) {
+        /* A combination's only key is its list of objects, as a group's. */
+        if (shape_kind_at(i)->csg)
+            continue;
         snprintf(label, sizeof label, "shape %s", shape_kind_at(i)->name);
         ADD(label, shape_kind_at(i)->params);
     }

@@ -33,8 +33,8 @@ static bool build_progress(void *user, double done)
 
 /* Sorts the shapes into planes, which the queries test themselves (an
  * unbounded plane would be a candidate for every ray, through a callback),
- * and the rest, one user-geometry primitive each. False when memory runs
- * out. */
+ * and the rest, one user-geometry primitive each; the parts of
+ * combinations are met only through them. False when memory runs out. */
 static bool sort_shapes(accel *a)
 {
     a->prim_shape = malloc(((size_t)a->shape_count + 1) * sizeof *a->prim_shape);
@@ -42,6 +42,8 @@ static bool sort_shapes(accel *a)
     if (!a->prim_shape || !a->planes)
         return false;
     for (int i = 0; i < a->shape_count; i++) {
+        if (a->shapes[i].part_of >= 0)
+            continue;
         if (!shape_is_bounded(&a->shapes[i]))
             a->planes[a->plane_count++] = i;
         else

@@ -71,7 +71,7 @@ static inline quad_mask plane_quad(const query *q, int k, int first, quad_f64 tm
     if (!shape_has_intersect4(s)) {
         for (int j = 0; j < QUAD; j++) {
             ray r = ray8_get(q->r, first + j);
-            shape_hit h = {0, 0};
+            shape_hit h = {0};
             shape moved;
             const shape *at = shape_at(s, lane_time(q, (unsigned)(first + j)), &moved);
             hit[j] = shape_intersect(at, &r, 0, tmax[j], &h) ? -1 : 0;

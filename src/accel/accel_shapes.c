@@ -28,7 +28,8 @@ void accel_shape_bounds(const struct RTCBoundsFunctionArguments *args)
     b->upper_z = pad_up(hi.z, pad);
 }
 
-/* Records in lane i of a packet of n that it hit shape `index` at (t, part). */
+/* Records in lane i of a packet of n that it hit shape `index` at (t, part):
+ * for a combination, the part's shape it hit. */
 static inline void record_hit(const struct RTCIntersectFunctionNArguments *args, unsigned n, unsigned i, int index,
                               double t, int part)
 {
@@ -61,7 +62,7 @@ static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *
         ray r = ray8_get(q->r, (int)i);
         shape moved;
         if (shape_intersect(shape_at(s, lane_time(q, i), &moved), &r, 0, tmax, &h))
-            record_hit(args, n, i, index, h.t, h.part);
+            record_hit(args, n, i, s->csg ? h.leaf : index, h.t, h.part);
     }
 }
 
@@ -147,6 +148,8 @@ void accel_shape_occluded(const struct RTCOccludedFunctionNArguments *args)
         for (int crossing = 0; crossing < crossings && shape_intersect(at, &r, tmin, q->tmax[i], &h.on_shape);
              crossing++) {
             h.t = h.on_shape.t;
+            if (s->csg)
+                h.shape = h.on_shape.leaf;
             if (!pass_through(q, i, &h)) {
                 *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
                 break;

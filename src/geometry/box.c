@@ -42,7 +42,7 @@ static bool box_intersect(const shape *s, const ray *r, double tmin, double tmax
     }
     if (t_near > t_far)
         return false;
-    shape_hit best = {tmax, 0};
+    shape_hit best = {.t = tmax};
     hit_offer(&best, tmin, t_near, near_part);
     hit_offer(&best, tmin, t_far, far_part);
     return hit_take(&best, tmax, hit);
@@ -106,6 +106,7 @@ static double box_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n)
 }
 
 const shape_kind box_kind = {
+    .closed = shape_always_closed,
     .name = "box", .id = GLINT_SHAPE_BOX, .params = PARAM_TABLE(BOX_PARAMS), .max_crossings = 2,
     .init = box_init, .intersect = box_intersect, .surface = box_surface,
     .uv = box_uv, .bounds = box_bounds, .center = shape_bounds_middle, .sample = box_sample,

@@ -47,7 +47,7 @@ static bool cone_intersect(const shape *s, const ray *r, double tmin, double tma
     q.b = 2 * (o.x * dir.x + o.z * dir.z + k2 * below_apex * dir.y);
     q.c = o.x * o.x + o.z * o.z - k2 * below_apex * below_apex;
     q.real = quadratic(q.a, q.b, q.c, &q.t0, &q.t1);
-    shape_hit best = {tmax, 0};
+    shape_hit best = {.t = tmax};
     /* The height interval also rules out the upper nappe, above the apex. */
     if (q.real && within(q.t0, y_in, y_out))
         hit_offer(&best, tmin, q.t0, 0);
@@ -146,7 +146,11 @@ static double cone_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n
     return total;
 }
 
+/* Closed by its base cap, and a cut-off cone by its top cap too. */
+static bool cone_closed(const shape *s) { return s->desc.capped && (s->desc.top_radius == 0 || s->desc.top_capped); }
+
 const shape_kind cone_kind = {
+    .closed = cone_closed,
     .name = "cone", .id = GLINT_SHAPE_CONE, .params = PARAM_TABLE(CONE_PARAMS), .max_crossings = 2,
     .init = cone_init, .intersect = cone_intersect, .surface = cone_surface, .uv = cone_uv,
     .bounds = cone_bounds, .sample = cone_sample,

@@ -30,7 +30,7 @@ static bool cylinder_intersect(const shape *s, const ray *r, double tmin, double
     double r_in, r_out, y_in, y_out;
     if (!radius_span(&l, d->radius, &r_in, &r_out) || !slab(l.o.y, l.d.y, 0, d->height, &y_in, &y_out))
         return false;
-    shape_hit best = {tmax, 0};
+    shape_hit best = {.t = tmax};
     if (within(r_in, y_in, y_out))
         hit_offer(&best, tmin, r_in, 0);
     if (within(r_out, y_in, y_out))
@@ -97,7 +97,11 @@ static double cylinder_sample(const shape *s, double u1, double u2, vec3 *p, vec
     return total;
 }
 
+/* Closed by its caps. */
+static bool cylinder_closed(const shape *s) { return s->desc.capped; }
+
 const shape_kind cylinder_kind = {
+    .closed = cylinder_closed,
     .name = "cylinder", .id = GLINT_SHAPE_CYLINDER, .params = PARAM_TABLE(CYLINDER_PARAMS), .max_crossings = 2,
     .intersect = cylinder_intersect, .surface = cylinder_surface, .uv = cylinder_uv,
     .bounds = cylinder_bounds, .sample = cylinder_sample,

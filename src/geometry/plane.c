@@ -52,6 +52,7 @@ static const param PLANE_PARAMS[] = {
 };
 
 const shape_kind plane_kind = {
+    .closed = shape_always_closed,
     .name = "plane", .id = GLINT_SHAPE_PLANE, .params = PARAM_TABLE(PLANE_PARAMS), .max_crossings = 1,
     .flat = true, .init = plane_init, .intersect = plane_intersect, .intersect4 = plane_intersect4,
     .surface = plane_surface, .uv = plane_uv,

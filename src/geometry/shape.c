@@ -20,7 +20,9 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
                         int material, glint_error *err)
 {
     memset(s, 0, sizeof *s);
+    s->part_of = -1;
     const shape_kind *k = shape_kind_of(desc->kind);
+    s->csg = k && k->csg;
     if (!k)
         return error_set(err, GLINT_ERR_INVALID, "unknown shape kind %d", (int)desc->kind);
     s->kind = k;
@@ -100,18 +102,21 @@ void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *
     } else {
         out->p_obj = p;
     }
-    out->part = hit->part;
+    int part = hit->part & ~SHAPE_PART_FLIPPED;
+    out->part = part;
     out->u = out->v = 0;
     if (s->flat) {
         /* The bits the lines below would give, computed once by
          * shape_init instead of a square root and a division a hit. */
         out->n = out->shading_n = s->flat_n;
-        return;
+    } else {
+        s->kind->surface(s, part, out);
+        if (s->has_transform)
+            out->n = xf_normal(&s->to_object, out->n);
+        out->n = out->shading_n = v3_normalize(out->n);
     }
-    s->kind->surface(s, hit->part, out);
-    if (s->has_transform)
-        out->n = xf_normal(&s->to_object, out->n);
-    out->n = out->shading_n = v3_normalize(out->n);
+    if (hit->part & SHAPE_PART_FLIPPED)
+        out->n = out->shading_n = v3_neg(out->n);
 }
 
 void shape_surface_uv(const shape *s, surface *out)
@@ -156,7 +161,17 @@ void shape_bounds(const shape *s, vec3 *lo, vec3 *hi)
 
 int shape_max_crossings(const shape *s)
 {
-    return s->kind->max_crossings;
+    if (!s->kind->csg)
+        return s->kind->max_crossings;
+    int sum = 0;
+    for (int i = 0; i < s->part_count; i++)
+        sum += shape_max_crossings(&s->family[s->parts[i]]);
+    return sum;
+}
+
+bool shape_always_closed(const shape *s)
+{
+    return true;
 }
 
 void shape_left_behind_rule(const shape *s, bool *always, bool *when_leaving)

@@ -41,6 +41,11 @@ static inline quad_mask plane_hit4(vec3 point, vec3 n, const ray8 *r, int first,
 
 typedef struct shape_kind shape_kind;
 
+/* A combination (csg.c) holds at most this many parts, nested at most this
+ * deep: its walk keeps each part's next crossing on the stack. */
+#define SHAPE_MAX_PARTS 256
+#define SHAPE_MAX_NESTING 32
+
 typedef struct shape {
     const shape_kind *kind;
     glint_shape desc;         /* object-space description, validated */
@@ -56,14 +61,29 @@ typedef struct shape {
     int material;
     transform *poses;         /* moving (shape_move): its world transforms over the shutter, */
     int pose_count;           /* evenly spaced (0: it stands still); owned by the scene */
+    /* A union, intersection or difference: its parts, indices into family
+     * (the scene's shape array, which the scene keeps pointing there), in
+     * order; owned by the scene. */
+    int *parts;
+    int part_count;
+    size_t part_cap;
+    const struct shape *family;
+    int part_of;              /* the combination it is a part of, or -1: it stands alone */
+    bool csg;                 /* it is a combination (its kind's csg) */
 } shape;
 
 /* A hit found by shape_intersect: the ray parameter and which part of the
- * shape (0 for the main surface; caps and box faces number from 1). */
+ * shape (0 for the main surface; caps and box faces number from 1), with
+ * SHAPE_PART_FLIPPED set where a difference turned the surface to face the
+ * other way. A combination's hit is on one of its parts' shapes: leaf,
+ * that shape's index in the scene (only a combination sets it). */
 typedef struct shape_hit {
     double t;
     int part;
+    int leaf;
 } shape_hit;
+
+#define SHAPE_PART_FLIPPED (1 << 30)
 
 /* What shading needs to know about a hit point. */
 typedef struct surface {
@@ -144,7 +164,8 @@ void shape_bounds(const shape *s, vec3 *lo, vec3 *hi);
  * itself, as a hierarchy would offer them to every ray. */
 bool shape_is_bounded(const shape *s);
 
-/* The most times a ray can cross s (its kind's max_crossings). */
+/* The most times a ray can cross s (its kind's max_crossings; a
+ * combination's parts', added up). */
 int shape_max_crossings(const shape *s);
 
 /* True when a ray leaving the surface of s at a point whose outward normal

@@ -27,6 +27,11 @@ struct shape_kind {
     /* Lies in one plane: its normal is the same at every point, and a ray
      * leaving it never meets it again. */
     bool flat;
+    /* A combination of other shapes (csg.c): its hits are on its parts. */
+    bool csg;
+    /* Whether s encloses a solid, so it can be a part of a combination (a
+     * plane encloses the half-space behind it); NULL: never (a disk). */
+    bool (*closed)(const shape *s);
     /* Checks what the table cannot (rules across fields) and fills the
      * fields of s derived from s->desc; NULL: nothing to do. */
     glint_status (*init)(shape *s, glint_error *err);
@@ -55,7 +60,17 @@ struct shape_kind {
 };
 
 extern const shape_kind sphere_kind, plane_kind, polygon_kind, box_kind, cylinder_kind, cone_kind, disk_kind,
-    torus_kind;
+    torus_kind, union_kind, intersection_kind, difference_kind;
+
+/* "a" or "an", as the name of a kind of object takes it in a message ("an
+ * intersection"). */
+static inline const char *object_article(const char *name)
+{
+    return name[0] == 'i' ? "an" : "a";
+}
+
+/* The `closed` of kinds that always are (spheres, boxes, tori, planes). */
+bool shape_always_closed(const shape *s);
 
 /* The `center` of kinds whose description has no centre (boxes,
  * polygons): the middle of their object-space bounds. */

@@ -10,7 +10,7 @@ static bool sphere_intersect(const shape *s, const ray *r, double tmin, double t
     double t0, t1;
     if (!quadratic(v3_dot(r->d, r->d), 2 * v3_dot(oc, r->d), v3_dot(oc, oc) - d->radius * d->radius, &t0, &t1))
         return false;
-    shape_hit best = {tmax, 0};
+    shape_hit best = {.t = tmax};
     hit_offer(&best, tmin, t0, 0);
     hit_offer(&best, tmin, t1, 0);
     return hit_take(&best, tmax, hit);
@@ -40,7 +40,7 @@ static quad_mask sphere_intersect4(const shape *s, const ray8 *r, int first, qua
         if (!flat[k])
             continue;
         ray one = ray8_get(r, first + k);
-        shape_hit h = {0, 0};
+        shape_hit h = {0};
         hit[k] = sphere_intersect(s, &one, 0, tmax[k], &h) ? -1 : 0;
         (*t)[k] = h.t;
     }
@@ -82,6 +82,7 @@ static double sphere_sample(const shape *s, double u1, double u2, vec3 *p, vec3 
 }
 
 const shape_kind sphere_kind = {
+    .closed = shape_always_closed,
     .name = "sphere", .id = GLINT_SHAPE_SPHERE, .params = PARAM_TABLE(SPHERE_PARAMS), .max_crossings = 2,
     .intersect = sphere_intersect, .intersect4 = sphere_intersect4,
     .surface = sphere_surface, .uv = sphere_uv, .bounds = sphere_bounds, .sample = sphere_sample,

@@ -52,7 +52,7 @@ static bool torus_intersect(const shape *s, const ray *r, double tmin, double tm
                          1};
     double roots[POLY_MAX_DEGREE + 1];
     int n = poly_roots(quartic, 4, 0, leave - enter, roots);
-    shape_hit best = {tmax, 0};
+    shape_hit best = {.t = tmax};
     for (int i = 0; i < n; i++)
         hit_offer(&best, tmin, (enter + roots[i]) / speed, 0);
     return hit_take(&best, tmax, hit);
@@ -122,6 +122,7 @@ static const param TORUS_PARAMS[] = {
 };
 
 const shape_kind torus_kind = {
+    .closed = shape_always_closed,
     .name = "torus", .id = GLINT_SHAPE_TORUS, .params = PARAM_TABLE(TORUS_PARAMS), .max_crossings = 4,
     .init = torus_init, .intersect = torus_intersect, .surface = torus_surface, .uv = torus_uv,
     .bounds = torus_bounds, .sample = torus_sample,

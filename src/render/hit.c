@@ -4,6 +4,18 @@
 #include <stdlib.h>
 #include "render/hit.h"
 
+/* Whether every surface of s blocks all light: its material's, or every
+ * part's of a combination. */
+static bool shape_blocks(const glint_scene *scene, const shape *s)
+{
+    if (!s->csg)
+        return material_is_opaque(&scene->materials[s->material].m);
+    for (int i = 0; i < s->part_count; i++)
+        if (!shape_blocks(scene, &scene->shapes[s->parts[i]]))
+            return false;
+    return true;
+}
+
 bool hit_opacity(const glint_scene *scene, bool **shapes, bool **instances)
 {
     const material *mats = scene->materials;
@@ -12,7 +24,7 @@ bool hit_opacity(const glint_scene *scene, bool **shapes, bool **instances)
     bool *mesh_opaque = malloc(((size_t)scene->mesh_count + 1) * sizeof *mesh_opaque);
     bool ok = *shapes && *instances && mesh_opaque;
     for (int i = 0; ok && i < scene->shape_count; i++)
-        (*shapes)[i] = material_is_opaque(&mats[scene->shapes[i].material].m);
+        (*shapes)[i] = shape_blocks(scene, &scene->shapes[i]);
     for (int i = 0; ok && i < scene->mesh_count; i++) {
         const mesh *m = &scene->meshes[i];
         mesh_opaque[i] = material_is_opaque(&mats[m->material].m);

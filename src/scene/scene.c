@@ -43,6 +43,8 @@ void glint_scene_free(glint_scene *s)
     id_table_free(&s->texture_names);
     id_table_free(&s->material_names);
     scene_motion_free(s);
+    for (int i = 0; i < s->shape_count; i++)
+        free(s->shapes[i].parts);
     free(s->shapes);
     free(s->lights);
     free(s->area_lights);
@@ -319,20 +321,72 @@ int glint_scene_add_material(glint_scene *scene, const char *name, const glint_m
     return scene->material_count++;
 }
 
-int glint_scene_add_shape(glint_scene *scene, const glint_shape *desc, int mat, const glint_transform *xf,
-                          glint_error *err)
+/* Why combination `csg` cannot take another part, into err; GLINT_OK when
+ * it can. */
+static glint_status part_room(const glint_scene *scene, int csg, glint_error *err)
 {
-    if (mat < 0 || mat >= scene->material_count) {
+    if (csg < 0 || csg >= scene->shape_count || !scene->shapes[csg].kind->csg)
+        return error_set(err, GLINT_ERR_INVALID, "shape %d is not a union, intersection or difference", csg);
+    const shape *c = &scene->shapes[csg];
+    if (c->part_count >= SHAPE_MAX_PARTS)
+        return error_set(err, GLINT_ERR_INVALID, "%s %s holds at most %d parts: gather some in %s %s of their own",
+                         object_article(c->kind->name), c->kind->name, SHAPE_MAX_PARTS, object_article(c->kind->name),
+                         c->kind->name);
+    int depth = 1;
+    for (int up = c->part_of; up >= 0; up = scene->shapes[up].part_of)
+        depth++;
+    if (depth >= SHAPE_MAX_NESTING)
+        return error_set(err, GLINT_ERR_INVALID, "combinations nested too deep (limit %d)", SHAPE_MAX_NESTING);
+    return GLINT_OK;
+}
+
+/* glint_scene_add_shape, or with csg >= 0 glint_scene_add_part. */
+static int add_shape(glint_scene *scene, int csg, const glint_shape *desc, int mat, const glint_transform *xf,
+                     glint_error *err)
+{
+    const shape_kind *kind = shape_kind_of(desc->kind);
+    bool combination = kind && kind->csg;
+    if (!(combination && mat == -1) && (mat < 0 || mat >= scene->material_count)) {
         error_set(err, GLINT_ERR_INVALID, "material %d does not exist", mat);
         return -1;
     }
-    if (grow((void **)&scene->shapes, &scene->shape_cap, scene->shape_count, sizeof(shape), "shapes", err) ||
-        shape_init(&scene->shapes[scene->shape_count], desc, xf, mat, err))
+    if (combination && xf && !xf_is_identity(xf)) {
+        error_set(err, GLINT_ERR_INVALID, "%s %s takes no transform: its parts carry theirs", object_article(kind->name),
+                  kind->name);
         return -1;
-    color glow = material_emission(&scene->materials[mat].m);
-    if (rgb_max(glow) > 0) {
+    }
+    const shape *before = scene->shapes;
+    if (grow((void **)&scene->shapes, &scene->shape_cap, scene->shape_count, sizeof(shape), "shapes", err))
+        return -1;
+    /* Growing may have moved the array, which every combination points at. */
+    for (int i = 0; scene->shapes != before && i < scene->shape_count; i++)
+        scene->shapes[i].family = scene->shapes;
+    shape *parent = csg >= 0 ? &scene->shapes[csg] : NULL;
+    if (parent && !array_reserve((void **)&parent->parts, &parent->part_cap, (size_t)parent->part_count + 1,
+                                 sizeof *parent->parts)) {
+        error_set(err, GLINT_ERR_NOMEM, "out of memory adding shapes");
+        return -1;
+    }
+    shape *s = &scene->shapes[scene->shape_count];
+    if (shape_init(s, desc, xf, mat, err))
+        return -1;
+    s->family = scene->shapes;
+    if (parent && !(s->kind->closed && s->kind->closed(s))) {
+        error_set(err, GLINT_ERR_INVALID, "a %s is not closed, so it cannot be a part of %s %s (a cylinder or cone "
+                  "needs its caps)", s->kind->name, object_article(parent->kind->name), parent->kind->name);
+        return -1;
+    }
+    if (parent) {
+        s->part_of = csg;
+        parent->parts[parent->part_count++] = scene->shape_count;
+    }
+    color glow = mat >= 0 ? material_emission(&scene->materials[mat].m) : rgb(0, 0, 0);
+    if (parent && rgb_max(glow) > 0) {
+        if (scene_warn(scene, err, "an emissive %s in a %s glows but lights nothing: only whole shapes light the "
+                       "scene", s->kind->name, parent->kind->name))
+            return -1;
+    } else if (rgb_max(glow) > 0) {
         light emitter;
-        const shape *s = &scene->shapes[scene->shape_count];
         if (!emitter_for_shape(&emitter, s, scene->shape_count, glow)) {
             if (scene_warn(scene, err, "an emissive %s glows but lights nothing: it has no end (a polygon or "
                            "disk does)", s->kind->name))
@@ -345,6 +399,20 @@ int glint_scene_add_shape(glint_scene *scene, const glint_shape *desc, int mat, 
         }
     }
     return scene->shape_count++;
+}
+
+int glint_scene_add_shape(glint_scene *scene, const glint_shape *desc, int mat, const glint_transform *xf,
+                          glint_error *err)
+{
+    return add_shape(scene, -1, desc, mat, xf, err);
+}
+
+int glint_scene_add_part(glint_scene *scene, int csg, const glint_shape *desc, int mat, const glint_transform *xf,
+                         glint_error *err)
+{
+    if (part_room(scene, csg, err))
+        return -1;
+    return add_shape(scene, csg, desc, mat, xf, err);
 }
 
 int glint_scene_add_light(glint_scene *scene, const glint_light *desc, glint_error *err)

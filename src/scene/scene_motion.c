@@ -7,6 +7,7 @@
 #include <string.h>
 #include "core/error.h"
 #include "core/transform.h"
+#include "geometry/shape_kind.h"
 #include "scene/scene.h"
 
 /* The most poses over one shutter. */
@@ -46,15 +47,19 @@ glint_status glint_scene_move_shape(glint_scene *scene, int index, int count, co
 {
     if (index < 0 || index >= scene->shape_count)
         return error_set(err, GLINT_ERR_INVALID, "shape %d does not exist", index);
+    const shape *s = &scene->shapes[index];
+    if (s->kind->csg || s->part_of >= 0)
+        return error_set(err, GLINT_ERR_INVALID, "a %s %s cannot move over the shutter (it may change from frame to "
+                         "frame)", s->kind->name, s->kind->csg ? "combination" : "in a combination");
     transform *copy;
     glint_status st = copy_poses(count, poses, &copy, err);
     if (st)
         return st;
-    shape *s = &scene->shapes[index];
-    free(s->poses);
-    shape_move(s, copy, count);
+    shape *moving = &scene->shapes[index];
+    free(moving->poses);
+    shape_move(moving, copy, count);
     /* Its light moves with it. */
-    emitters_follow_shape(scene->emitters, scene->emitter_count, index, s);
+    emitters_follow_shape(scene->emitters, scene->emitter_count, index, moving);
     return GLINT_OK;
 }
 

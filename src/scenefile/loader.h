@@ -65,6 +65,7 @@ typedef struct context {
     glint_transform to_world;
     int material;             /* -1: none yet; MATERIAL_REPORTED: a bad one */
     int depth;
+    int csg;                  /* the combination objects are parts of, or -1 */
 } context;
 
 /* Whether the walk goes on: the problem limit is not reached. */

@@ -219,6 +219,32 @@ static int object_type(loader *l, const ynode *n, const shape_kind **kind)
     return OBJECT_SHAPE;
 }
 
+/* Adds shape s with ctx's material to the scene, or to the combination
+ * ctx->csg. */
+static int add_to(loader *l, const context *ctx, const glint_shape *s, const glint_transform *xf, glint_error *err)
+{
+    if (ctx->csg >= 0)
+        return glint_scene_add_part(l->scene, ctx->csg, s, ctx->material, xf, err);
+    return glint_scene_add_shape(l->scene, s, ctx->material, xf, err);
+}
+
+/* Adds a combination of `kind` for object n, which its objects are read
+ * into: ctx->csg becomes it. False after a report (or a problem before). */
+static bool add_combination(loader *l, const ynode *n, const shape_kind *kind, context *ctx, int before)
+{
+    if (l->d.count != before || ctx->material == MATERIAL_REPORTED)
+        return false;
+    glint_shape s = glint_shape_default(kind->id);
+    glint_error err;
+    int index = add_to(l, ctx, &s, NULL, &err);
+    if (index < 0) {
+        diag_error(&l->d, n, &err);
+        return false;
+    }
+    ctx->csg = index;
+    return true;
+}
+
 void read_object(loader *l, const ynode *n, const context *outer)
 {
     static const char *const common[] = {"type", "material", "transform"};
@@ -230,6 +256,8 @@ void read_object(loader *l, const ynode *n, const context *outer)
     int count = 0;
     if (type == OBJECT_SHAPE) {
         count = param_keys(kind->params, common, COUNT(common), keys, COUNT(keys));
+        if (kind->csg)
+            keys[count++] = GROUP_KEYS[0];
     } else {
         const char *const *extra = type == OBJECT_GROUP ? GROUP_KEYS : MESH_KEYS;
         int extra_count = type == OBJECT_GROUP ? COUNT(GROUP_KEYS) : COUNT(MESH_KEYS);
@@ -254,19 +282,28 @@ void read_object(loader *l, const ynode *n, const context *outer)
     if (mat && (ctx.material = object_material(l, mat)) < 0)
         ctx.material = MATERIAL_REPORTED;
 
+    if (type == OBJECT_MESH && ctx.csg >= 0) {
+        diag_at(&l->d, n, "a mesh cannot be a part of a union, intersection or difference");
+        return;
+    }
     if (type == OBJECT_MESH) {
         place_mesh(l, n, ctx.material, mat != NULL, &ctx.to_world, before);
         return;
     }
-    if (type == OBJECT_GROUP) {
+    if (type == OBJECT_GROUP || kind->csg) {
         if (outer->depth >= MAX_GROUP_DEPTH) {
             diag_at(&l->d, n, "groups nested too deep (limit %d)", MAX_GROUP_DEPTH);
             return;
         }
-        const ynode *children = yr_need(&l->r, n, "objects", "group");
+        const ynode *children = yr_need(&l->r, n, "objects", what);
         ctx.depth++;
+        /* A group inside a combination is one part: the union of its objects. */
+        if ((type != OBJECT_GROUP || ctx.csg >= 0) && !add_combination(l, n, kind ? kind : &union_kind, &ctx, before))
+            return;
         if (children)
             read_objects(l, children, &ctx);
+        if (children && ctx.csg != outer->csg && children->kind == YNODE_SEQUENCE && children->count == 0)
+            diag_at(&l->d, children, "%s %s needs at least one object", object_article(what), what);
         return;
     }
     glint_shape s = glint_shape_default(kind->id);
@@ -274,7 +311,7 @@ void read_object(loader *l, const ynode *n, const context *outer)
     if (ctx.material == -1)
         diag_at(&l->d, n, "%s needs 'material'", kind->name);
     glint_error err;
-    if (ctx.material >= 0 && l->d.count == before && glint_scene_add_shape(l->scene, &s, ctx.material, &ctx.to_world, &err) < 0)
+    if (ctx.material >= 0 && l->d.count == before && add_to(l, &ctx, &s, &ctx.to_world, &err) < 0)
         diag_error(&l->d, n, &err);
 }
 

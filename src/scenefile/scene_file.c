@@ -118,7 +118,7 @@ static bool read_head(loader *l, const ynode *root)
 /* What the objects of a file's root are inside: nothing. */
 static context top_context(void)
 {
-    return (context){glint_transform_identity(), -1, 0};
+    return (context){glint_transform_identity(), -1, 0, -1};
 }
 
 static void read_root(loader *l, const ynode *root)

@@ -128,6 +128,10 @@ static glint_status plan_make(plan *p, const glint_scene *s, FILE *f, glint_erro
     p->material_from_mesh = calloc(materials, sizeof *p->material_from_mesh);
     if (!p->texture_names || !p->texture_from_mesh || !p->material_from_mesh)
         return error_set(err, GLINT_ERR_NOMEM, "out of memory");
+    for (int i = 0; i < s->shape_count; i++)
+        if (s->shapes[i].csg && s->shapes[i].part_count == 0)
+            return error_set(err, GLINT_ERR_INVALID, "shape %d is %s %s of nothing, which a scene file cannot say", i,
+                             object_article(s->shapes[i].kind->name), s->shapes[i].kind->name);
     glint_status st = plan_meshes(p, err);
     return st ? st : plan_textures(p, err);
 }
@@ -340,13 +344,12 @@ static void write_lights(const plan *p)
     }
 }
 
-/* Starts an item of the objects list: a map on one line, or with a
- * transform, a key a line. */
-static ymap object_begin(const plan *p, bool *any, bool has_transform)
+/* Starts an item of an objects list indented by `indent`: a map on one
+ * line, or (`block`, with a transform or parts) a key a line. */
+static ymap object_begin(const plan *p, int indent, bool block)
 {
-    fputs(*any ? "  - " : "objects:\n  - ", p->f);
-    *any = true;
-    return ymap_begin(p->f, !has_transform, 4);
+    fprintf(p->f, "%*s- ", indent, "");
+    return ymap_begin(p->f, !block, indent + 2);
 }
 
 static void object_end(const plan *p, ymap *m)
@@ -357,26 +360,44 @@ static void object_end(const plan *p, ymap *m)
         fputc('\n', p->f);
 }
 
+/* Shape i as an item of an objects list indented by `indent`, and a
+ * combination's parts as its own objects list. */
+static void write_shape(const plan *p, int i, int indent)
+{
+    const shape *sh = &p->scene->shapes[i];
+    ymap m = object_begin(p, indent, sh->has_transform || sh->csg);
+    ymap_key(&m, "type");
+    fputs(sh->kind->name, p->f);
+    yw_params(&m, sh->kind->params, &sh->desc, false);
+    if (sh->material >= 0) {
+        ymap_key(&m, "material");
+        material_value(p, sh->material);
+    }
+    if (sh->has_transform)
+        write_transform(p, &m, &sh->to_world);
+    if (!sh->csg) {
+        object_end(p, &m);
+        return;
+    }
+    /* The parts end their own lines: the map needs no end of its own. */
+    ymap_key_block(&m, "objects");
+    fputc('\n', p->f);
+    for (int k = 0; k < sh->part_count; k++)
+        write_shape(p, sh->parts[k], m.indent + 2);
+}
+
 static void write_objects(const plan *p)
 {
     const glint_scene *s = p->scene;
-    bool any = false;
-    for (int i = 0; i < s->shape_count; i++) {
-        const shape *sh = &s->shapes[i];
-        ymap m = object_begin(p, &any, sh->has_transform);
-        ymap_key(&m, "type");
-        fputs(sh->kind->name, p->f);
-        yw_params(&m, sh->kind->params, &sh->desc, false);
-        ymap_key(&m, "material");
-        material_value(p, sh->material);
-        if (sh->has_transform)
-            write_transform(p, &m, &sh->to_world);
-        object_end(p, &m);
-    }
+    if (s->shape_count > 0 || s->instance_count > 0)
+        fputs("objects:\n", p->f);
+    for (int i = 0; i < s->shape_count; i++)
+        if (s->shapes[i].part_of < 0)
+            write_shape(p, i, 2);
     for (int i = 0; i < s->instance_count; i++) {
         const instance *in = &s->instances[i];
         const mesh_origin *o = &s->meshes[in->mesh].origin;
-        ymap m = object_begin(p, &any, in->has_transform);
+        ymap m = object_begin(p, 2, in->has_transform);
         ymap_key(&m, "type");
         fputs("mesh", p->f);
         ymap_key(&m, "file");

@@ -472,14 +472,41 @@ static const bad_scene BAD[] = {
      "  m: {}\n"
      "objects:\n"
      "  - {type: sphear, material: m, radius: 1}\n",
-     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, group or mesh, got 'sphear' (did you mean 'sphere'?)", 1},
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, union, intersection, difference, group or mesh, got 'sphear' (did you mean 'sphere'?)", 1},
     {"object_type_no_hint",
      "materials:\n"
      "  m: {}\n"
      "objects:\n"
      "  - {type: superellipsoid, material: m, radius: 1}\n",
-     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, group or mesh, got "
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, union, intersection, difference, group or mesh, got "
      "'superellipsoid'", 1},
+    {"csg_needs_objects",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: union, material: m}\n",
+     "bad.yaml:4:5: union needs 'objects'", 1},
+    {"csg_empty",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: difference, material: m, objects: []}\n",
+     "bad.yaml:4:46: a difference needs at least one object", 1},
+    {"csg_part_not_closed",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: intersection, material: m, objects: [{type: disk, radius: 1}]}\n",
+     "bad.yaml:4:49: a disk is not closed, so it cannot be a part of an intersection (a cylinder or cone needs its "
+     "caps)", 1},
+    {"csg_mesh_part",
+     "objects:\n"
+     "  - {type: union, objects: [{type: mesh, file: x.obj}]}\n",
+     "bad.yaml:2:29: a mesh cannot be a part of a union, intersection or difference", 1},
+    {"csg_part_needs_material",
+     "objects:\n"
+     "  - {type: union, objects: [{type: sphere, radius: 1}]}\n",
+     "bad.yaml:2:29: sphere needs 'material'", 1},
     {"rectangle_light_flat",
      "lights:\n"
      "  - {type: rectangle, corner: [0, 1, 0], edge1: [1, 0, 0], edge2: [2, 0, 0]}\n",

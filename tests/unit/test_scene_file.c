@@ -777,6 +777,43 @@ static void test_transform_order(void **state)
     glint_scene_free(s);
 }
 
+/* A combination's objects are its parts, in order, placed by its transform
+ * after their own and given its material unless they have one; a group
+ * inside a combination is one part, the union of its objects (so an
+ * intersection with a group is not an intersection with each). */
+static void test_combinations(void **state)
+{
+    glint_scene *s = load_objects("  - type: intersection\n"
+                                  "    material: n\n"
+                                  "    transform: [{translate: [10, 0, 0]}]\n"
+                                  "    objects:\n"
+                                  "      - {type: sphere, radius: 1, material: m}\n"
+                                  "      - type: group\n"
+                                  "        objects:\n"
+                                  "          - {type: box, min: [0, 0, 0], max: [1, 1, 1]}\n"
+                                  "          - {type: difference, objects: [{type: sphere, radius: 2}]}\n"
+                                  "  - {type: sphere, material: m, radius: 1}\n");
+    int m = material_named(s, "m"), n = material_named(s, "n");
+    assert_int_equal(glint_scene_get_counts(s).shapes, 7);
+    const shape *sh = s->shapes;
+    assert_int_equal(sh[0].desc.kind, GLINT_SHAPE_INTERSECTION);
+    assert_int_equal(sh[0].part_count, 2);
+    assert_int_equal(sh[0].parts[0], 1);
+    assert_int_equal(sh[0].parts[1], 2);
+    assert_int_equal(sh[1].material, m);
+    assert_int_equal(sh[2].desc.kind, GLINT_SHAPE_UNION);
+    assert_int_equal(sh[2].part_of, 0);
+    assert_int_equal(sh[2].part_count, 2);
+    assert_int_equal(sh[3].material, n);
+    assert_int_equal(sh[4].desc.kind, GLINT_SHAPE_DIFFERENCE);
+    assert_int_equal(sh[5].part_of, 4);
+    assert_int_equal(sh[6].part_of, -1);
+    static const double moved[3][4] = {{1, 0, 0, 10}, {0, 1, 0, 0}, {0, 0, 1, 0}};
+    assert_matrix(&sh[5].to_world, moved, 0);
+    assert_false(sh[0].has_transform || sh[2].has_transform || sh[4].has_transform);
+    glint_scene_free(s);
+}
+
 /* A group's transform applies after each child's own; its material goes to
  * children without one, through nested groups; a child's own material wins. */
 static void test_groups(void **state)
@@ -1279,6 +1316,7 @@ int main(void)
         cmocka_unit_test(test_transform_each_step),
         cmocka_unit_test(test_transform_order),
         cmocka_unit_test(test_groups),
+        cmocka_unit_test(test_combinations),
         cmocka_unit_test(test_colours),
         cmocka_unit_test(test_includes),
         cmocka_unit_test(test_anchors_and_aliases),

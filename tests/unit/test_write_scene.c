@@ -303,6 +303,47 @@ static void test_absorption_and_metallic(void **state)
     glint_scene_free(s);
 }
 
+/* Combinations come back nested as they were, each part with its own
+ * transform and material, a combination without a material without one;
+ * one of no parts is refused. */
+static void test_combinations(void **state)
+{
+    (void)state;
+    glint_scene *s = glint_scene_new();
+    glint_error err;
+    int red = add_material(s, "red", (glint_color){1, 0, 0}), blue = add_material(s, "blue", (glint_color){0, 0, 1});
+    glint_shape diff = glint_shape_default(GLINT_SHAPE_DIFFERENCE), join = glint_shape_default(GLINT_SHAPE_UNION);
+    glint_shape ball = glint_shape_default(GLINT_SHAPE_SPHERE);
+    ball.radius = 1;
+    int d = glint_scene_add_shape(s, &diff, -1, NULL, &err);
+    glint_transform up = glint_transform_rotate(glint_transform_translate(glint_transform_identity(), 0, 0.3, 0),
+                                                (glint_vec3){1, 1, 0}, 33);
+    assert_true(glint_scene_add_part(s, d, &ball, red, &up, &err) >= 0);
+    int u = glint_scene_add_part(s, d, &join, blue, NULL, &err);
+    assert_true(glint_scene_add_part(s, u, &ball, blue, NULL, &err) >= 0);
+    assert_true(glint_scene_add_shape(s, &ball, red, NULL, &err) >= 0);
+    glint_scene *back = round_trip(s);
+    assert_int_equal(back->shape_count, 5);
+    for (int i = 0; i < 5; i++) {
+        assert_int_equal(back->shapes[i].desc.kind, s->shapes[i].desc.kind);
+        assert_int_equal(back->shapes[i].part_of, s->shapes[i].part_of);
+        assert_int_equal(back->shapes[i].part_count, s->shapes[i].part_count);
+        assert_same_bits(&back->shapes[i].to_world, &s->shapes[i].to_world, sizeof(glint_transform));
+    }
+    assert_int_equal(back->shapes[0].material, -1);
+    assert_int_equal(back->shapes[1].material, red);
+    assert_int_equal(back->shapes[3].material, blue);
+    glint_scene_free(back);
+    int empty = glint_scene_add_shape(s, &join, red, NULL, &err);
+    glint_status st;
+    assert_null(written(s, &st, &err));
+    assert_int_equal(st, GLINT_ERR_INVALID);
+    char want[80];
+    snprintf(want, sizeof want, "shape %d is a union of nothing, which a scene file cannot say", empty);
+    assert_string_equal(err.message, want);
+    glint_scene_free(s);
+}
+
 static void test_refusals(void **state)
 {
     (void)state;
@@ -361,6 +402,7 @@ int main(void)
         cmocka_unit_test(test_mapping_center),
         cmocka_unit_test(test_color_map_and_placement),
         cmocka_unit_test(test_absorption_and_metallic),
+        cmocka_unit_test(test_combinations),
         cmocka_unit_test(test_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

@@ -1,0 +1,305 @@
+/* test_csg.c - unions, intersections and differences against the sets they
+ * stand for: which points of a grid are inside, the silhouettes of two
+ * overlapping balls combined each way, a lens of two spheres focusing at
+ * the lensmaker's focal length, shadows through a glass combination, and
+ * the parts a combination refuses. */
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include <math.h>
+#include "glint.h"
+#include "one_sample_scene.h"
+#include "scene/scene.h"
+
+#define assert_near(a, b, eps) assert_true(fabs((double)(a) - (double)(b)) <= (eps))
+
+/* A material that shows exactly its colour under white ambient light. */
+static int flat(glint_scene *s, double r, double g, double b)
+{
+    glint_material m = glint_material_default();
+    m.color = (glint_color){r, g, b};
+    m.ambient = 1;
+    m.diffuse = m.specular = 0;
+    int i = glint_scene_add_material(s, NULL, &m, NULL);
+    assert_true(i >= 0);
+    return i;
+}
+
+static int add_ball(glint_scene *s, int csg, glint_vec3 c, double r, int mat)
+{
+    glint_shape sh = glint_shape_default(GLINT_SHAPE_SPHERE);
+    sh.center = c;
+    sh.radius = r;
+    glint_error err;
+    int i = csg >= 0 ? glint_scene_add_part(s, csg, &sh, mat, NULL, &err) : glint_scene_add_shape(s, &sh, mat, NULL, &err);
+    if (i < 0)
+        fail_msg("%s", err.message);
+    return i;
+}
+
+static int add_combination(glint_scene *s, int csg, glint_shape_kind kind, int mat)
+{
+    glint_shape sh = glint_shape_default(kind);
+    glint_error err;
+    int i = csg >= 0 ? glint_scene_add_part(s, csg, &sh, mat, NULL, &err) : glint_scene_add_shape(s, &sh, mat, NULL, &err);
+    if (i < 0)
+        fail_msg("%s", err.message);
+    return i;
+}
+
+/* Two unit balls at x = -0.5 and x = +0.5, combined by kind. */
+static glint_scene *two_balls(glint_shape_kind kind, glint_scene *s, int mat)
+{
+    int csg = add_combination(s, -1, kind, mat);
+    add_ball(s, csg, (glint_vec3){-0.5, 0, 0}, 1, mat);
+    add_ball(s, csg, (glint_vec3){0.5, 0, 0}, 1, mat);
+    return s;
+}
+
+static bool in_ball(double x, double y, double z, double cx) { return (x - cx) * (x - cx) + y * y + z * z < 1; }
+
+/* Whether p is inside the two balls combined by kind. */
+static bool in_set(glint_shape_kind kind, double x, double y, double z)
+{
+    bool a = in_ball(x, y, z, -0.5), b = in_ball(x, y, z, 0.5);
+    return kind == GLINT_SHAPE_UNION ? a || b : kind == GLINT_SHAPE_INTERSECTION ? a && b : a && !b;
+}
+
+/* From each point of a grid, the first crossing of the combination along
+ * a slanted ray leaves it exactly when the point is inside the set; a
+ * point within 1e-9 of a sphere is left out. A nested difference, (A u B)
+ * minus a ball around the origin, is checked the same way. */
+static void test_inside_outside_on_a_grid(void **state)
+{
+    const glint_shape_kind kinds[] = {GLINT_SHAPE_UNION, GLINT_SHAPE_INTERSECTION, GLINT_SHAPE_DIFFERENCE};
+    for (int k = 0; k < 4; k++) {
+        glint_scene *s = glint_scene_new();
+        int mat = flat(s, 1, 1, 1), top;
+        if (k < 3) {
+            two_balls(kinds[k], s, mat);
+            top = 0;
+        } else {
+            top = add_combination(s, -1, GLINT_SHAPE_DIFFERENCE, mat);
+            int both = add_combination(s, top, GLINT_SHAPE_UNION, mat);
+            add_ball(s, both, (glint_vec3){-0.5, 0, 0}, 1, mat);
+            add_ball(s, both, (glint_vec3){0.5, 0, 0}, 1, mat);
+            add_ball(s, top, (glint_vec3){0, 0, 0}, 0.4, mat);
+        }
+        const shape *c = &s->shapes[top];
+        vec3 d = v3_normalize(v3(0.31, 0.17, 0.93));
+        int inside = 0, checked = 0;
+        for (double x = -1.7; x <= 1.7; x += 0.1)
+            for (double y = -1.1; y <= 1.1; y += 0.1)
+                for (double z = -1.1; z <= 1.1; z += 0.1) {
+                    double near = fmin(fabs(sqrt((x + 0.5) * (x + 0.5) + y * y + z * z) - 1),
+                                       fabs(sqrt((x - 0.5) * (x - 0.5) + y * y + z * z) - 1));
+                    near = fmin(near, fabs(sqrt(x * x + y * y + z * z) - 0.4));
+                    if (near < 1e-9)
+                        continue;
+                    bool want = k < 3 ? in_set(kinds[k], x, y, z)
+                                      : in_set(GLINT_SHAPE_UNION, x, y, z) && x * x + y * y + z * z >= 0.16;
+                    ray r = {v3(x, y, z), d};
+                    shape_hit h;
+                    bool leaves = false;
+                    if (shape_intersect(c, &r, 0, INFINITY, &h)) {
+                        surface sf;
+                        shape_surface(&s->shapes[h.leaf], &r, &h, &sf);
+                        leaves = v3_dot(sf.n, d) > 0;
+                    }
+                    assert_int_equal(leaves, want);
+                    inside += want;
+                    checked++;
+                }
+        assert_true(inside > 20 && inside < checked);
+        glint_scene_free(s);
+    }
+}
+
+enum { SIDE = 120 };
+#define VIEW 4.0 /* units across the picture */
+
+/* What an orthographic camera looking down -z sees of the two balls
+ * combined by kind, white on black. */
+static glint_image silhouette(glint_shape_kind kind)
+{
+    glint_camera cam = {.kind = GLINT_CAMERA_ORTHOGRAPHIC, .position = {0, 0, 5}, .look_at = {0, 0, 0},
+                        .up = {0, 1, 0}, .vfov_degrees = 40, .view_width = VIEW};
+    glint_scene *s = one_sample_scene(SIDE, SIDE, (glint_color){1, 1, 1}, cam);
+    glint_settings st = glint_scene_get_settings(s);
+    st.background = (glint_color){0, 0, 0};
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    two_balls(kind, s, flat(s, 1, 1, 1));
+    glint_image im;
+    glint_render_options o = {.threads = 2};
+    assert_int_equal(glint_render(s, &o, &im, NULL, NULL), GLINT_OK);
+    glint_scene_free(s);
+    return im;
+}
+
+/* The silhouettes against the analytic sets, pixel by pixel: the union is
+ * either disc, the lens both, and the crescent A - B the points of disc A
+ * that B's chord does not cover: outside disc B, or left of x = 0 (where
+ * A's chord is the longer). Pixels within half a pixel's diagonal of an
+ * edge are left out. */
+static void test_silhouettes_of_two_balls(void **state)
+{
+    const glint_shape_kind kinds[] = {GLINT_SHAPE_UNION, GLINT_SHAPE_INTERSECTION, GLINT_SHAPE_DIFFERENCE};
+    const double px = VIEW / SIDE, margin = px * 0.75;
+    for (int k = 0; k < 3; k++) {
+        glint_image im = silhouette(kinds[k]);
+        int white = 0;
+        for (int j = 0; j < SIDE; j++)
+            for (int i = 0; i < SIDE; i++) {
+                double x = (i + 0.5) * px - VIEW / 2, y = VIEW / 2 - (j + 0.5) * px;
+                double ra = sqrt((x + 0.5) * (x + 0.5) + y * y), rb = sqrt((x - 0.5) * (x - 0.5) + y * y);
+                bool a = ra < 1, b = rb < 1;
+                bool want = k == 0 ? a || b : k == 1 ? a && b : a && (!b || x < 0);
+                bool edge = fabs(ra - 1) < margin || fabs(rb - 1) < margin || (k == 2 && fabs(x) < margin);
+                float v = im.pixels[3 * (j * SIDE + i)];
+                if (!edge)
+                    assert_true(v == (want ? 1.0f : 0.0f));
+                white += v > 0.5f;
+            }
+        /* Areas in pixels: a lens of two unit discs 1 apart has area
+         * 2 acos(1/2) - sqrt(3)/2 (about 1.228), the union 2 pi less that. */
+        double lens = 2 * acos(0.5) - sqrt(3) / 2, want_area = k == 0 ? 2 * M_PI - lens : k == 1 ? lens : M_PI - lens / 2;
+        assert_near(white * px * px, want_area, 0.03);
+        glint_image_free(&im);
+    }
+}
+
+/* A biconvex lens made as the intersection of two balls of radius R = 1.2
+ * whose centres are 1.8 apart (thickness d = 0.6, glass n = 1.5) brings
+ * parallel light to a focus at its back focal length, from the lensmaker's
+ * equation: 1/f = (n - 1)(2/R - (n - 1) d / (n R^2)), BFL = f (1 - (n - 1)
+ * d / (n R)), 1.0909 past its back. An orthographic camera sees through
+ * the lens's middle (within 0.05 of the axis) a small white disc there,
+ * and only there: moved 10% nearer or farther, the outer rays miss it. */
+static void test_lens_focuses_at_its_focal_length(void **state)
+{
+    const double n = 1.5, R = 1.2, d = 0.6;
+    double f = 1 / ((n - 1) * (2 / R - (n - 1) * d / (n * R * R))), bfl = f * (1 - (n - 1) * d / (n * R));
+    const double scales[] = {1, 0.9, 1.1};
+    for (int k = 0; k < 3; k++) {
+        glint_camera cam = {.kind = GLINT_CAMERA_ORTHOGRAPHIC, .position = {0, 0, 5}, .look_at = {0, 0, 0},
+                            .up = {0, 1, 0}, .vfov_degrees = 40, .view_width = 0.1};
+        glint_scene *s = one_sample_scene(9, 9, (glint_color){1, 1, 1}, cam);
+        glint_settings st = glint_scene_get_settings(s);
+        st.background = (glint_color){0, 0, 0};
+        assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+        glint_material glass = glint_material_default();
+        glass.ambient = glass.diffuse = glass.specular = 0;
+        glass.refraction = 1;
+        glass.ior = n;
+        glass.tint = 0;
+        int lens = add_combination(s, -1, GLINT_SHAPE_INTERSECTION, glint_scene_add_material(s, NULL, &glass, NULL));
+        add_ball(s, lens, (glint_vec3){0, 0, -(R - d / 2)}, R, s->shapes[lens].material);
+        add_ball(s, lens, (glint_vec3){0, 0, R - d / 2}, R, s->shapes[lens].material);
+        glint_shape target = glint_shape_default(GLINT_SHAPE_DISK);
+        target.center = (glint_vec3){0, 0, -d / 2 - bfl * scales[k]};
+        target.normal = (glint_vec3){0, 0, 1};
+        target.radius = 0.002;
+        assert_true(glint_scene_add_shape(s, &target, flat(s, 1, 1, 1), NULL, NULL) >= 0);
+        glint_image im;
+        glint_render_options o = {.threads = 1};
+        assert_int_equal(glint_render(s, &o, &im, NULL, NULL), GLINT_OK);
+        int white = 0;
+        for (int i = 0; i < 81; i++)
+            white += im.pixels[3 * i] > 0.5f;
+        if (k == 0)
+            assert_int_equal(white, 81);
+        else
+            assert_true(white < 20);
+        glint_image_free(&im);
+        glint_scene_free(s);
+    }
+}
+
+/* Light through a glass combination is filtered at each crossing of its
+ * surface, as through a plain ball: a lens between a light and the floor
+ * lets f^2 through its middle, f = 0.8 * colour, the two surfaces it
+ * crosses; a difference whose parts are of different glass filters by
+ * each surface's own material. */
+static void test_shadow_through_a_combination(void **state)
+{
+    glint_camera cam = {.position = {0, 8, 12}, .look_at = {0, 0, 0}, .up = {0, 1, 0}, .vfov_degrees = 20};
+    for (int k = 0; k < 2; k++) {
+        glint_scene *s = one_sample_scene(11, 11, (glint_color){1, 1, 1}, cam);
+        glint_material white = glint_material_default();
+        white.specular = 0;
+        glint_shape floor = {.kind = GLINT_SHAPE_PLANE, .center = {0, 0, 0}, .normal = {0, 1, 0}};
+        assert_true(glint_scene_add_shape(s, &floor, glint_scene_add_material(s, NULL, &white, NULL), NULL, NULL) >= 0);
+        glint_light l = {.kind = GLINT_LIGHT_POINT, .position = {0, 10, 0}, .color = {1, 1, 1}};
+        assert_true(glint_scene_add_light(s, &l, NULL) >= 0);
+        glint_material amber = glint_material_default();
+        amber.color = (glint_color){1, 0.5, 0.25};
+        amber.ambient = amber.diffuse = amber.specular = 0;
+        amber.transparency = 0.8;
+        glint_material blue = amber;
+        blue.color = (glint_color){0.25, 0.5, 1};
+        int a = glint_scene_add_material(s, NULL, &amber, NULL), b = glint_scene_add_material(s, NULL, &blue, NULL);
+        glint_shape_kind kind = k == 0 ? GLINT_SHAPE_INTERSECTION : GLINT_SHAPE_DIFFERENCE;
+        int csg = add_combination(s, -1, kind, -1);
+        /* The lens spans y 4.5..5.5; the difference is a ball from 4 to 6
+         * with a bite from 5.5 up taken by a ball of the other glass. */
+        add_ball(s, csg, (glint_vec3){0, k == 0 ? 4 : 5, 0}, k == 0 ? 1.5 : 1, a);
+        add_ball(s, csg, (glint_vec3){0, k == 0 ? 6 : 6.5, 0}, k == 0 ? 1.5 : 1, k == 0 ? a : b);
+        glint_image im;
+        glint_render_options o = {.threads = 1};
+        assert_int_equal(glint_render(s, &o, &im, NULL, NULL), GLINT_OK);
+        const float *c = im.pixels + 3 * (5 * 11 + 5);
+        const double fa[3] = {0.8, 0.4, 0.2}, fb[3] = {0.2, 0.4, 0.8};
+        for (int ch = 0; ch < 3; ch++)
+            assert_near(c[ch], 0.2 + fa[ch] * (k == 0 ? fa[ch] : fb[ch]), 1e-5);
+        glint_image_free(&im);
+        glint_scene_free(s);
+    }
+}
+
+/* What a combination refuses, in words: a part that is not closed, a part
+ * of something that is not a combination, a transform of its own, and a
+ * part that would move. */
+static void test_refusals(void **state)
+{
+    glint_scene *s = glint_scene_new();
+    int mat = flat(s, 1, 1, 1), csg = add_combination(s, -1, GLINT_SHAPE_UNION, -1), ball = add_ball(s, csg, (glint_vec3){0, 0, 0}, 1, mat);
+    glint_error err;
+    glint_shape disk = glint_shape_default(GLINT_SHAPE_DISK);
+    disk.radius = 1;
+    assert_int_equal(glint_scene_add_part(s, csg, &disk, mat, NULL, &err), -1);
+    assert_string_equal(err.message, "a disk is not closed, so it cannot be a part of a union (a cylinder or cone "
+                                     "needs its caps)");
+    glint_shape tube = glint_shape_default(GLINT_SHAPE_CYLINDER);
+    tube.radius = tube.height = 1;
+    tube.capped = false;
+    assert_int_equal(glint_scene_add_part(s, csg, &tube, mat, NULL, &err), -1);
+    tube.capped = true;
+    assert_true(glint_scene_add_part(s, csg, &tube, mat, NULL, &err) >= 0);
+    assert_int_equal(glint_scene_add_part(s, ball, &tube, mat, NULL, &err), -1);
+    assert_string_equal(err.message, "shape 1 is not a union, intersection or difference");
+    glint_shape inner = glint_shape_default(GLINT_SHAPE_DIFFERENCE);
+    glint_transform up = glint_transform_translate(glint_transform_identity(), 0, 1, 0);
+    assert_int_equal(glint_scene_add_part(s, csg, &inner, -1, &up, &err), -1);
+    assert_string_equal(err.message, "a difference takes no transform: its parts carry theirs");
+    glint_transform poses[2] = {up, glint_transform_identity()};
+    assert_int_equal(glint_scene_move_shape(s, ball, 2, poses, &err), GLINT_ERR_INVALID);
+    assert_string_equal(err.message, "a sphere in a combination cannot move over the shutter (it may change from "
+                                     "frame to frame)");
+    assert_int_equal(glint_scene_add_shape(s, &disk, -1, NULL, &err), -1);
+    assert_string_equal(err.message, "material -1 does not exist");
+    glint_scene_free(s);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_inside_outside_on_a_grid),
+        cmocka_unit_test(test_silhouettes_of_two_balls),
+        cmocka_unit_test(test_lens_focuses_at_its_focal_length),
+        cmocka_unit_test(test_shadow_through_a_combination),
+        cmocka_unit_test(test_refusals),
+    };
+    return cmocka_run_group_tests(tests, NULL, NULL);
+}
