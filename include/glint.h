@@ -434,12 +434,21 @@ typedef struct glint_material {
     double metallic;          /* 0..1: reflections and highlights take the base colour, white at
                                  0, the base colour (or texture) at 1, as a metal's do */
     glint_absorption absorption; /* what light loses travelling inside (distance 0: nothing) */
+    /* Surface detail, both through the texture's (u, v) or, for a solid
+     * texture's height, its point; an image is read as data (a byte b as
+     * b / 255), not as colour. */
+    int bump_texture;         /* a texture whose brightness (mean of its channels) is a height,
+                                 tilting the shading normal; -1: none */
+    double bump_strength;     /* the height of brightness 1, in the thing's own units (may be
+                                 negative: dents) */
+    int normal_texture;       /* a tangent-space normal map (red along +u, green towards the
+                                 image's top, blue out, each 0..1 for -1..1); -1: none */
 } glint_material;
 
 /* Returns a matte white material: ambient 0.2, diffuse 1, specular 1,
  * shininess 50, nothing else; ior 1.5, tint 1, no texture, no emission
  * (emission black, emission_strength 1), roughness 0 with 16 glossy
- * samples. */
+ * samples, no bump (strength 0.1) or normal map. */
 glint_material glint_material_default(void);
 
 /* Adds a material; returns its index or -1 and fills err. Its texture's

@@ -41,6 +41,7 @@ static int sections(section *out, int room)
     ADD("mapping", mapping_params());
     ADD("material", material_params());
     ADD("absorption", absorption_params());
+    ADD("bump", bump_params());
     char label[48];
     for (int i = 0; i < texture_kind_count(); i++) {
         snprintf(label, sizeof label, "texture %s", texture_kind_at(i)->name);

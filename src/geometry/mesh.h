@@ -85,6 +85,11 @@ void mesh_prefetch(const mesh *m, unsigned tri);
 void mesh_surface(const mesh *m, const instance *inst, const ray *r, unsigned tri, double b1, double b2, double *t,
                   surface *out);
 
+/* The uv triangle tri carries to point p of its plane (or of the plane's
+ * nearest point to p), in the mesh's own coordinates, on from the triangle
+ * as an affine map: (0, 0) for a mesh without uvs. */
+void mesh_uv_at(const mesh *m, unsigned tri, vec3 p, double *u, double *v);
+
 /* mesh_surface for a moving placement (pose_count > 0) as it is at
  * `time`: apart, so that the common path keeps no room for a moved copy. */
 void mesh_surface_moved(const mesh *m, const instance *inst, double time, const ray *r, unsigned tri, double b1,

@@ -27,11 +27,23 @@ static const image_reader *const readers[] = {&png_reader, &jpeg_reader, &exr_re
 
 static float srgb_byte_to_linear[256];
 static pthread_once_t srgb_table_once = PTHREAD_ONCE_INIT;
+/* Bytes as numbers: byte / 255, for images that hold data. */
+static float byte_to_unit[256];
 
 static void srgb_table_build(void)
 {
-    for (int i = 0; i < 256; i++)
+    for (int i = 0; i < 256; i++) {
         srgb_byte_to_linear[i] = (float)glint_srgb_to_linear(i / 255.0);
+        byte_to_unit[i] = (float)(i / 255.0);
+    }
+}
+
+texture_image texture_image_as_data(const texture_image *img)
+{
+    texture_image data = texture_image_share(img);
+    if (data.srgb)
+        data.linear = byte_to_unit;
+    return data;
 }
 
 glint_status image_read_corrupt(const char *what, const char *reason, glint_error *err)

@@ -63,6 +63,11 @@ static inline texture_image texture_image_share(const texture_image *img)
     return shared;
 }
 
+/* img's pixels borrowed and read as data rather than colours: a byte b as
+ * b / 255, not made linear (a normal map's or a height map's values);
+ * floats as they are. */
+texture_image texture_image_as_data(const texture_image *img);
+
 /* Decodes the PNG, JPEG or OpenEXR file at path, told apart by its first
  * bytes, not its name. Alpha is ignored. On failure *out is left empty and err names
  * the file: GLINT_ERR_IO when it cannot be read, GLINT_ERR_INVALID when it

@@ -122,11 +122,13 @@ glint_status assimp_add_materials(glint_scene *scene, const struct aiScene *ai, 
     unsigned n = ai->mNumMaterials ? ai->mNumMaterials : 1;
     model_material *mats = calloc(n, sizeof *mats);
     struct aiString *names = calloc(n, sizeof *names), *refs = calloc(n, sizeof *refs);
+    struct aiString *normal_refs = calloc(n, sizeof *normal_refs);
     int *added = calloc(n, sizeof *added);
-    if (!mats || !names || !refs || !added) {
+    if (!mats || !names || !refs || !normal_refs || !added) {
         free(mats);
         free(names);
         free(refs);
+        free(normal_refs);
         free(added);
         return error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", job->file);
     }
@@ -145,6 +147,8 @@ glint_status assimp_add_materials(glint_scene *scene, const struct aiScene *ai, 
         if (i < strength_count)
             m->m.emission_strength = strengths[i];
         m->texture = colour_image(a, &refs[i]) ? refs[i].data : NULL;
+        m->normals = get_string(a, AI_MATKEY_TEXTURE(aiTextureType_NORMALS, 0), &normal_refs[i]) ?
+                         normal_refs[i].data : NULL;
     }
     glint_status s = model_add_materials(scene, mats, count, add_texture, (void *)ai, job, added, err);
     for (unsigned i = 0, k = 0; !s && i < ai->mNumMaterials; i++)
@@ -153,6 +157,7 @@ glint_status assimp_add_materials(glint_scene *scene, const struct aiScene *ai, 
     free(mats);
     free(names);
     free(refs);
+    free(normal_refs);
     free(added);
     return s;
 }

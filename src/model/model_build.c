@@ -97,20 +97,26 @@ glint_status model_add_materials(glint_scene *scene, const model_material *mats,
                                  model_texture_fn add_texture, void *user, const model_import *job, int *index,
                                  glint_error *err)
 {
-    size_t n = count ? count : 1;
+    /* Each material's colour image, height map and normal map. */
+    size_t n = 3 * (count ? count : 1);
     texture_cache cache = {calloc(n, sizeof *cache.refs), calloc(n, sizeof *cache.index), 0};
     int *tex = calloc(n, sizeof *tex);
     glint_status s = GLINT_OK;
     if (!cache.refs || !cache.index || !tex)
         s = error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", job->file);
-    for (size_t i = 0; !s && i < count; i++)
-        s = material_texture(scene, mats[i].name ? mats[i].texture : NULL, add_texture, user, job, &cache, &tex[i],
-                             err);
+    for (size_t i = 0; !s && i < count; i++) {
+        const char *refs[3] = {mats[i].texture, mats[i].bump, mats[i].normals};
+        for (int k = 0; !s && k < 3; k++)
+            s = material_texture(scene, mats[i].name ? refs[k] : NULL, add_texture, user, job, &cache,
+                                 &tex[3 * i + k], err);
+    }
     int fallback = job->default_material;
     for (size_t i = 0; !s && i < count; i++) {
         if (mats[i].name) {
             glint_material m = mats[i].m;
-            m.texture = tex[i];
+            m.texture = tex[3 * i];
+            m.bump_texture = tex[3 * i + 1];
+            m.normal_texture = tex[3 * i + 2];
             s = add_material(scene, mats[i].name, &m, job, &index[i], err);
             continue;
         }

@@ -26,8 +26,10 @@ static inline double model_clamp(double x, double lo, double hi)
 /* A model's material, as glint is to add it. */
 typedef struct model_material {
     const char *name;         /* the file's name for it; NULL for triangles the file gives no material */
-    glint_material m;         /* its texture is set from `texture` */
-    const char *texture;      /* its image as the file names it, or NULL */
+    glint_material m;         /* its textures are set from the images below */
+    const char *texture;      /* its colour image as the file names it, or NULL */
+    const char *bump;         /* its height map, or NULL */
+    const char *normals;      /* its tangent-space normal map, or NULL */
 } model_material;
 
 /* Adds the image a material names as `ref` as a texture, and sets *out to

@@ -1,10 +1,12 @@
 /* mtl_read.c - the statements of MTL text, read line by line.
  *
  * Read: newmtl, Kd, Ks, Ka, Ke (r [g b], g and b being r when left out),
- * Ns, Ni, d (with an optional -halo), Tr, illum, and map_Kd (its options
- * skipped, the rest of the line is the file). Ignored: statements before
- * the first newmtl, the spectral and xyz forms of colours, and every other
- * statement (other maps, Tf, sharpness, PBR extensions). */
+ * Ns, Ni, d (with an optional -halo), Tr, illum, and the maps map_Kd, bump
+ * (or map_Bump, map_bump: a height map, its -bm read) and norm (a normal
+ * map), each with its options skipped and the rest of the line the file.
+ * Ignored: statements before the first newmtl, the spectral and xyz forms
+ * of colours, and every other statement (other maps, Tf, sharpness, other
+ * PBR extensions). */
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -18,7 +20,8 @@
 mtl_material mtl_default(void)
 {
     return (mtl_material){
-        .kd = {0.6, 0.6, 0.6}, .ni = 1, .d = 1, .illum = 1, .map_kd = MTL_NO_TEXT,
+        .kd = {0.6, 0.6, 0.6}, .ni = 1, .d = 1, .illum = 1, .map_kd = MTL_NO_TEXT, .bump = MTL_NO_TEXT,
+        .bump_multiplier = 1, .norm = MTL_NO_TEXT,
     };
 }
 
@@ -80,9 +83,10 @@ static glint_status keep_text(mtl_library *lib, const char *s, const char *e, si
     return GLINT_OK;
 }
 
-/* Skips map_Kd's options (-s 1 1 1, -bm 0.5, -clamp on, ...): each takes
- * its fixed words, then as many more numbers as it may have. */
-static void skip_options(scan_line *l)
+/* Skips a map's options (-s 1 1 1, -bm 0.5, -clamp on, ...): each takes
+ * its fixed words, then as many more numbers as it may have; -bm's number
+ * goes to *bm. */
+static void skip_options(scan_line *l, double *bm)
 {
     static const struct {
         const char *name;
@@ -98,6 +102,10 @@ static void skip_options(scan_line *l)
         for (size_t i = 0; i < sizeof options / sizeof options[0]; i++) {
             if (!scan_word_is(w, len, options[i].name))
                 continue;
+            scan_line before = *l;
+            double number;
+            if (scan_word_is(w, len, "-bm") && scan_number(&before, &number) == SCAN_OK && isfinite(number))
+                *bm = number;
             for (int k = 0; k < options[i].least && scan_more(l); k++)
                 scan_word(l, &len);
             double x;
@@ -189,13 +197,19 @@ static glint_status statement(mtl_library *lib, scan_line *l, mtl_material **cur
     }
     if (scan_word_is(w, n, "illum"))
         return read_illum(l, at, &m->illum, err);
-    if (scan_word_is(w, n, "map_Kd")) {
+    static const char *const maps[] = {"map_Kd", "bump", "map_Bump", "map_bump", "norm"};
+    for (size_t k = 0; k < sizeof maps / sizeof maps[0]; k++) {
+        if (!scan_word_is(w, n, maps[k]))
+            continue;
         const char *s, *e;
-        skip_options(l);
+        double bm = 1;
+        skip_options(l, &bm);
         if (!scan_rest(l, &s, &e))
-            return scan_error(l, at, err, "'map_Kd' needs a file name");
+            return scan_error(l, at, err, "'%s' needs a file name", maps[k]);
+        if (k >= 1 && k <= 3)
+            m->bump_multiplier = bm;
         /* keep_text may move the library's text, never its items. */
-        return keep_text(lib, s, e, &m->map_kd, l->file, err);
+        return keep_text(lib, s, e, k == 0 ? &m->map_kd : k == 4 ? &m->norm : &m->bump, l->file, err);
     }
     return GLINT_OK;
 }

@@ -22,6 +22,9 @@ typedef struct mtl_material {
     double d;                 /* opacity: d, or 1 - Tr, whichever comes last */
     int illum;
     size_t map_kd;            /* the map_Kd file as written: offset into text, or MTL_NO_TEXT */
+    size_t bump;              /* bump or map_Bump: a height map, as map_kd */
+    double bump_multiplier;   /* its -bm option (1 when not given) */
+    size_t norm;              /* norm: a tangent-space normal map, as map_kd */
 } mtl_material;
 
 /* The materials of all the MTL files a model names. */
@@ -34,7 +37,7 @@ typedef struct mtl_library {
 } mtl_library;
 
 /* A material with nothing given: Kd 0.6 0.6 0.6, Ks, Ka and Ke 0, Ns 0, Ni
- * 1, d 1, illum 1, no map_Kd. */
+ * 1, d 1, illum 1, no map_Kd, bump or norm. */
 mtl_material mtl_default(void);
 
 /* Reads the MTL text of `size` bytes at data into lib, `file` naming it in

@@ -93,6 +93,10 @@ static model_material material_of(const obj_model *m, const mtl_library *lib, in
     mtl_material given = def ? *def : mtl_default();
     im.m = mtl_to_glint(&given);
     im.texture = given.map_kd != MTL_NO_TEXT ? lib->text + given.map_kd : NULL;
+    im.bump = given.bump != MTL_NO_TEXT ? lib->text + given.bump : NULL;
+    im.normals = given.norm != MTL_NO_TEXT ? lib->text + given.norm : NULL;
+    /* -bm scales the height, from glint's own default. */
+    im.m.bump_strength *= given.bump_multiplier;
     return im;
 }
 

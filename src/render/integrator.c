@@ -9,6 +9,7 @@
 #include "core/square_maps.h"
 #include "render/hit.h"
 #include "render/integrator.h"
+#include "render/surface_detail.h"
 #include "shading/environment.h"
 #include "shading/fog.h"
 #include "shading/optics.h"
@@ -73,6 +74,8 @@ static void shade_begin(const glint_scene *scene, const ray *r, const accel_hit 
     sp->hit = *h;
     sp->m = hit_material(scene, h);
     hit_surface(scene, r, &sp->hit, &sp->s);
+    if (material_has_detail(sp->m))
+        surface_detail(scene, &sp->hit, sp->m, r->d, &sp->s);
     bool front = sp->front = v3_dot(r->d, sp->s.n) < 0;
     sp->n = front ? sp->s.n : v3_neg(sp->s.n);
     sp->ns = front ? sp->s.shading_n : v3_neg(sp->s.shading_n);

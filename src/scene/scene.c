@@ -300,8 +300,16 @@ int glint_scene_add_material(glint_scene *scene, const char *name, const glint_m
         error_set(err, GLINT_ERR_INVALID, "material '%s' is defined twice", name);
         return -1;
     }
+    if (m->normal_texture >= 0 && m->normal_texture < scene->texture_count &&
+        scene->textures[m->normal_texture].kind->solid) {
+        error_set(err, GLINT_ERR_INVALID, "a normal map needs a texture of (u, v), not a solid %s texture",
+                  scene->textures[m->normal_texture].kind->name);
+        return -1;
+    }
     if (material_validate(m, scene->texture_count, err) ||
         (m->texture >= 0 && scene_use_texture(scene, m->texture, err)) ||
+        (m->bump_texture >= 0 && scene_use_texture(scene, m->bump_texture, err)) ||
+        (m->normal_texture >= 0 && scene_use_texture(scene, m->normal_texture, err)) ||
         grow((void **)&scene->materials, &scene->material_cap, scene->material_count, sizeof(material),
              "materials", err))
         return -1;

@@ -141,10 +141,42 @@ void read_environment(loader *l, const ynode *n)
         diag_error(&l->d, tex, &err);
 }
 
+/* The texture that node n (of `key`) names, its image decoded; -1 after a
+ * report. */
+static int texture_named(loader *l, const ynode *n, const char *key)
+{
+    const char *name;
+    if (!yr_text(&l->r, n, key, &name))
+        return -1;
+    int index = scene_find_texture(l->scene, name);
+    glint_error err;
+    if (index < 0)
+        unknown_name(l, n, true, name);
+    /* Its image is decoded at its first use, and a bad one reported there. */
+    else if (scene_use_texture(l->scene, index, &err)) {
+        diag_error(&l->d, n, &err);
+        return -1;
+    }
+    return index;
+}
+
+/* A material's bump map: {texture, strength}. */
+static void read_bump(loader *l, const ynode *bump, glint_material *m)
+{
+    static const char *const bump_keys[] = {"texture", "strength"};
+    if (!yr_is_map(&l->r, bump, "'bump'"))
+        return;
+    yr_check_keys(&l->r, bump, "bump", bump_keys, COUNT(bump_keys));
+    const ynode *tex = yr_need(&l->r, bump, "texture", "bump");
+    if (tex)
+        m->bump_texture = texture_named(l, tex, "texture");
+    read_params(l, bump, bump_params(), "bump", m);
+}
+
 /* Reads a material map's keys over *m (which holds the defaults). */
 static bool read_material_keys(loader *l, const ynode *n, const char *what, glint_material *m)
 {
-    static const char *const own_keys[] = {"texture", "absorption"};
+    static const char *const own_keys[] = {"texture", "absorption", "bump", "normal_map"};
     if (!yr_is_map(&l->r, n, what))
         return false;
     int before = l->d.count;
@@ -153,17 +185,14 @@ static bool read_material_keys(loader *l, const ynode *n, const char *what, glin
     yr_check_keys(&l->r, n, what, keys, count);
     read_params(l, n, material_params(), what, m);
     read_sub_map(l, n, "absorption", absorption_params(), &m->absorption);
-    const ynode *tex = yr_get(&l->r, n, "texture");
-    const char *name;
-    glint_error err;
-    if (tex && yr_text(&l->r, tex, "texture", &name)) {
-        m->texture = scene_find_texture(l->scene, name);
-        if (m->texture < 0)
-            unknown_name(l, tex, true, name);
-        /* Its image is decoded at its first use, and a bad one reported there. */
-        else if (scene_use_texture(l->scene, m->texture, &err))
-            diag_error(&l->d, tex, &err);
-    }
+    const ynode *tex = yr_get(&l->r, n, "texture"), *bump = yr_get(&l->r, n, "bump");
+    const ynode *normals = yr_get(&l->r, n, "normal_map");
+    if (tex)
+        m->texture = texture_named(l, tex, "texture");
+    if (bump)
+        read_bump(l, bump, m);
+    if (normals)
+        m->normal_texture = texture_named(l, normals, "normal_map");
     return l->d.count == before;
 }
 

@@ -110,9 +110,11 @@ static glint_status plan_textures(plan *p, glint_error *err)
             return error_set(err, GLINT_ERR_NOMEM, "out of memory");
     }
     for (int i = 0; i < s->material_count; i++) {
-        int t = s->materials[i].m.texture;
-        if (!p->material_from_mesh[i] && t >= 0 && !p->texture_names[t])
-            return error_set(err, GLINT_ERR_INVALID, "material %d uses a texture of a model's own", i);
+        const glint_material *m = &s->materials[i].m;
+        int used[3] = {m->texture, m->bump_texture, m->normal_texture};
+        for (int k = 0; k < 3; k++)
+            if (!p->material_from_mesh[i] && used[k] >= 0 && !p->texture_names[used[k]])
+                return error_set(err, GLINT_ERR_INVALID, "material %d uses a texture of a model's own", i);
     }
     if (s->environment.texture >= 0 && !p->texture_names[s->environment.texture])
         return error_set(err, GLINT_ERR_INVALID, "the environment is a texture of a model's own");
@@ -161,6 +163,18 @@ static void material_keys(const plan *p, ymap *m, const glint_material *mat)
     if (mat->texture >= 0) {
         ymap_key(m, "texture");
         yw_text(p->f, p->texture_names[mat->texture]);
+    }
+    if (mat->bump_texture >= 0) {
+        ymap_key(m, "bump");
+        ymap bump = ymap_begin(p->f, true, 0);
+        ymap_key(&bump, "texture");
+        yw_text(p->f, p->texture_names[mat->bump_texture]);
+        yw_params(&bump, bump_params(), mat, true);
+        ymap_end(&bump);
+    }
+    if (mat->normal_texture >= 0) {
+        ymap_key(m, "normal_map");
+        yw_text(p->f, p->texture_names[mat->normal_texture]);
     }
 }
 

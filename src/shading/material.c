@@ -64,6 +64,16 @@ param_table absorption_params(void)
     return PARAM_TABLE(ABSORPTION_PARAMS);
 }
 
+static const param BUMP_PARAMS[] = {
+    {.key = "strength", .type = PARAM_NUMBER, FIELD(bump_strength), .def = {0.1}, .lo = -1000, .hi = 1000,
+     .meaning = "the height of brightness 1, in the thing's own units; negative dents"},
+};
+
+param_table bump_params(void)
+{
+    return PARAM_TABLE(BUMP_PARAMS);
+}
+
 param_table material_params(void)
 {
     return PARAM_TABLE(MATERIAL_PARAMS);
@@ -74,7 +84,8 @@ glint_material glint_material_default(void)
     glint_material m;
     memset(&m, 0, sizeof m);
     params_defaults(material_params(), &m);
-    m.texture = -1;
+    params_defaults(bump_params(), &m);
+    m.texture = m.bump_texture = m.normal_texture = -1;
     return m;
 }
 
@@ -85,6 +96,13 @@ glint_status material_validate(const glint_material *m, int texture_count, glint
         return s;
     if (m->texture < -1 || m->texture >= texture_count)
         return error_set(err, GLINT_ERR_INVALID, "material texture %d does not exist", m->texture);
+    if (m->bump_texture < -1 || m->bump_texture >= texture_count)
+        return error_set(err, GLINT_ERR_INVALID, "material bump texture %d does not exist", m->bump_texture);
+    if (m->normal_texture < -1 || m->normal_texture >= texture_count)
+        return error_set(err, GLINT_ERR_INVALID, "material normal_map texture %d does not exist", m->normal_texture);
+    s = params_check(bump_params(), m, "material bump", err);
+    if (s)
+        return s;
     if (m->transparency + m->refraction > 1)
         return error_set(err, GLINT_ERR_INVALID, "material transparency + refraction must not exceed 1, got %g",
                          m->transparency + m->refraction);

@@ -20,6 +20,10 @@ param_table material_params(void);
 /* The keys of a material's absorption map. */
 param_table absorption_params(void);
 
+/* The keys of a material's bump map but its texture (the field offsets are
+ * glint_material's). */
+param_table bump_params(void);
+
 /* Checks every value of m against the table and texture_count textures, and
  * that transparency + refraction is at most 1; fills err naming the first
  * bad value. */

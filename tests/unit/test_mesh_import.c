@@ -431,6 +431,25 @@ static void test_glb_embedded_texture(void **state)
     glint_scene_free(s);
 }
 
+/* glTF's normalTexture is the material's normal map, the same image here
+ * as its base colour's, added once. */
+static void test_gltf_normal_texture(void **state)
+{
+    unsigned char glb[4096];
+    write_glb("bumpy.glb",
+              "{\"name\":\"bumpy\",\"pbrMetallicRoughness\":{\"baseColorTexture\":{\"index\":0},"
+              "\"metallicFactor\":0},\"normalTexture\":{\"index\":0}}",
+              glb, sizeof glb);
+    glint_scene *s = new_scene();
+    import_ok(s, "bumpy.glb", NULL);
+    const glint_material *m = material_named(s, "bumpy/bumpy");
+    assert_int_equal(s->texture_count, 1);
+    assert_int_equal(m->texture, 0);
+    assert_int_equal(m->normal_texture, 0);
+    assert_int_equal(m->bump_texture, -1);
+    glint_scene_free(s);
+}
+
 /* A material glowing white, named `name`, with `extension` (JSON members,
  * or "") added to its extensions. */
 static void glowing(char *out, size_t size, const char *name, const char *extension)
@@ -909,6 +928,7 @@ int main(void)
         cmocka_unit_test(test_gltf_data_uri),
         cmocka_unit_test(test_gltf_blend_and_unnamed),
         cmocka_unit_test(test_glb_embedded_texture),
+        cmocka_unit_test(test_gltf_normal_texture),
         cmocka_unit_test(test_gltf_emissive_strength),
         cmocka_unit_test(test_gltf_emissive_strength_order),
         cmocka_unit_test(test_gltf_emissive_strength_odd),

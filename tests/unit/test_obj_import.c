@@ -192,6 +192,31 @@ static void test_obj_texture(void **state)
     glint_scene_free(s);
 }
 
+/* MTL's bump (or map_Bump) is a height map, its -bm scaling glint's own
+ * strength; norm is a normal map; the images are shared with map_Kd's. */
+static void test_obj_bump_and_normal_maps(void **state)
+{
+    write_bytes("stripes.png", png_red_over_blue, sizeof png_red_over_blue);
+    write_bytes("dots.png", png_red_over_blue, sizeof png_red_over_blue);
+    write_text("rough.mtl", "newmtl a\nmap_Kd stripes.png\nbump -bm 0.5 stripes.png\nnorm dots.png\n"
+                            "newmtl b\nmap_Bump -clamp on dots.png\n");
+    write_text("rough.obj", "mtllib rough.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nvt 0 0\nvt 1 0\nvt 1 1\n"
+                            "usemtl a\nf 1/1 2/2 3/3\nusemtl b\nf 3/3 2/2 1/1\n");
+    glint_scene *s = new_scene();
+    import_ok(s, "rough.obj", NULL);
+    assert_int_equal(s->texture_count, 2);
+    const glint_material *a = material_named(s, "rough/a"), *b = material_named(s, "rough/b");
+    assert_int_equal(a->texture, 0);
+    assert_int_equal(a->bump_texture, 0);
+    assert_int_equal(a->normal_texture, 1);
+    assert_near(a->bump_strength, 0.05, 1e-15);
+    assert_int_equal(b->texture, -1);
+    assert_int_equal(b->bump_texture, 1);
+    assert_int_equal(b->normal_texture, -1);
+    assert_near(b->bump_strength, glint_material_default().bump_strength, 0);
+    glint_scene_free(s);
+}
+
 static void test_obj_missing_texture(void **state)
 {
     write_text("bare.mtl", "newmtl paint\nmap_Kd wood.png\n");
@@ -754,7 +779,7 @@ static void test_mtl_mapping(void **state)
                           "newmtl mirror\nillum 3\nKs 0.8 0.7 0.6\n"
                           "newmtl glass4\nillum 4\nNi 1.5\nd 1\n"
                           "newmtl glass7\nillum 7\nNi 1.33\nd 0.4\nKd spectral glass.rfl\n"
-                          "newmtl lit\nKa 1 1 1\nKe 1 0 0\nTf 1 1 1\nillum 9\nmap_Ks shine.png\nbump b.png\n"
+                          "newmtl lit\nKa 1 1 1\nKe 1 0 0\nTf 1 1 1\nillum 9\nmap_Ks shine.png\nmap_Ka b.png\n"
                           "newmtl tex\nKd 0 0 0\nmap_Kd -s 1 1 1 -bm 0.5 -clamp on -o 0.5 maps\\stripes.png\n"
                           "newmtl spaced\nmap_Kd -blendu off -mm 0 1 my stripes.png  \n"
                           "newmtl unused\nKd 0 1 0\n"
@@ -1150,6 +1175,7 @@ int main(void)
         cmocka_unit_test(test_obj_generated_normals_crease),
         cmocka_unit_test(test_obj_gentle_fold),
         cmocka_unit_test(test_obj_texture),
+        cmocka_unit_test(test_obj_bump_and_normal_maps),
         cmocka_unit_test(test_obj_missing_texture),
         cmocka_unit_test(test_scan_decimal_forms),
         cmocka_unit_test(test_scan_decimal_random),

@@ -570,6 +570,22 @@ static const bad_scene BAD[] = {
      "materials:\n"
      "  b: {refraction: 1, absorption: {color: [1, 1, 1], distance: 0}}\n",
      "bad.yaml:2:63: 'distance' must be positive, got 0", 1},
+    {"bump_needs_texture",
+     "materials:\n"
+     "  a: {bump: {strength: 2}}\n",
+     "bad.yaml:2:13: bump needs 'texture'", 1},
+    {"bump_strength_range",
+     "textures:\n"
+     "  n: {type: noise}\n"
+     "materials:\n"
+     "  d: {bump: {texture: n, strength: 2000}}\n",
+     "bad.yaml:4:36: 'strength' must be from -1000 to 1000, got 2000", 1},
+    {"normal_map_solid",
+     "textures:\n"
+     "  n: {type: noise}\n"
+     "materials:\n"
+     "  c: {normal_map: n}\n",
+     "bad.yaml:4:6: a normal map needs a texture of (u, v), not a solid noise texture", 1},
     {"stops_not_pairs",
      "textures:\n"
      "  t: {type: marble, colors: [[0, [1, 1, 1]], [1]]}\n",

@@ -275,8 +275,8 @@ static void test_color_map_and_placement(void **state)
     glint_scene_free(s);
 }
 
-/* A material's absorption and metallic come back bit for bit; one that
- * absorbs nothing writes no absorption. */
+/* A material's absorption, metallic, bump and normal maps come back bit
+ * for bit; one that absorbs nothing writes no absorption. */
 static void test_absorption_and_metallic(void **state)
 {
     (void)state;
@@ -286,6 +286,11 @@ static void test_absorption_and_metallic(void **state)
     m.refraction = 1;
     m.metallic = 0.3;
     m.absorption = (glint_absorption){{0.2, 1.0 / 3, 0.9}, 0.7};
+    glint_texture grain = glint_texture_default(GLINT_TEXTURE_NOISE);
+    glint_texture tiles = glint_texture_default(GLINT_TEXTURE_CHECKER);
+    m.bump_texture = glint_scene_add_texture(s, "grain", &grain, &err);
+    m.normal_texture = glint_scene_add_texture(s, "tiles", &tiles, &err);
+    m.bump_strength = -0.03;
     assert_true(glint_scene_add_material(s, "glass", &m, &err) >= 0);
     glint_material plain = glint_material_default();
     assert_true(glint_scene_add_material(s, "plain", &plain, &err) >= 0);
@@ -298,6 +303,9 @@ static void test_absorption_and_metallic(void **state)
     const glint_material *b = &back->materials[0].m;
     assert_same_bits(&b->absorption, &m.absorption, sizeof m.absorption);
     assert_same_bits(&b->metallic, &m.metallic, sizeof m.metallic);
+    assert_same_bits(&b->bump_strength, &m.bump_strength, sizeof m.bump_strength);
+    assert_string_equal(back->textures[b->bump_texture].name, "grain");
+    assert_string_equal(back->textures[b->normal_texture].name, "tiles");
     assert_true(back->materials[1].m.absorption.distance == 0);
     glint_scene_free(back);
     glint_scene_free(s);
