@@ -615,6 +615,22 @@ int glint_scene_add_mesh(glint_scene *scene, const char *name, const glint_mesh_
 int glint_scene_add_instance(glint_scene *scene, int mesh, int material, const glint_transform *transform,
                              glint_error *err);
 
+/* The most points a polygon of glint_scene_add_polygon may have. */
+#define GLINT_MAX_POLYGON_POINTS (1 << 20)
+
+/* Adds a flat polygon of `count` points (3 to GLINT_MAX_POLYGON_POINTS),
+ * convex or not but not crossing itself, as the triangles that cover it
+ * exactly (ear clipping; positions then in single precision, as a mesh's):
+ * a mesh of its own, placed once by `transform` (NULL: identity) with
+ * `material`. Its front is the side from which the points run
+ * anticlockwise, and its (u, v) are a polygon shape's: the affine
+ * coordinates along the edges from point 0 to point 1 and to the last
+ * point. Returns the placement's index (as glint_scene_add_instance's) or
+ * -1 and fills err: points not finite, two in a row the same, all in a
+ * line, or off one plane by 1e-6 of the polygon's size. */
+int glint_scene_add_polygon(glint_scene *scene, const glint_vec3 *points, int count, int material,
+                            const glint_transform *transform, glint_error *err);
+
 /* Options for glint_scene_import_mesh. Zero them for the defaults. */
 typedef struct glint_import_options {
     double crease_angle;      /* degrees; vertex normals are generated when the file has

@@ -131,7 +131,7 @@ static void through_planes(query *q, int valid[ACCEL_PACKET], struct RTCRay8 *p)
             for (int j = 0; j < QUAD; j++) {
                 if (!hit[j] || !valid[i + j])
                     continue;
-                accel_hit h = {.t = t[j], .shape = a->planes[k], .on_shape = {t[j], 0}, .instance = -1,
+                accel_hit h = {.t = t[j], .shape = a->planes[k], .on_shape = {.t = t[j]}, .instance = -1,
                                .time = lane_time(q, (unsigned)(i + j))};
                 if (shape_opaque(a, h.shape) || !pass_through(q, (unsigned)(i + j), &h)) {
                     valid[i + j] = 0;

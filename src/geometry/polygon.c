@@ -11,40 +11,75 @@ static vec3 corner(const glint_shape *d, int i)
     return v3_cross(v3_sub(b, a), v3_sub(c, b));
 }
 
-/* The table has checked the count and that every point is finite. */
-static glint_status polygon_init(shape *s, glint_error *err)
+/* The longest edge of d, 0 when two points in a row coincide (*at: the
+ * first of them). */
+static double longest_edge(const glint_shape *d, int *at)
 {
-    const glint_shape *d = &s->desc;
-    const vec3 *p = d->points;
     int n = d->point_count;
     double size = 0;
     for (int i = 0; i < n; i++) {
-        double edge = v3_length(v3_sub(p[(i + 1) % n], p[i]));
-        if (edge == 0)
-            return error_set(err, GLINT_ERR_INVALID, "polygon points %d and %d coincide", i, (i + 1) % n);
+        double edge = v3_length(v3_sub(d->points[(i + 1) % n], d->points[i]));
+        if (edge == 0) {
+            *at = i;
+            return 0;
+        }
         size = fmax(size, edge);
     }
+    return size;
+}
+
+/* Why the points of d are not a convex polygon's (the problem's message),
+ * or NULL when they are; *normal is then its unit normal. */
+static const char *convex_problem(const glint_shape *d, vec3 *normal)
+{
+    const vec3 *p = d->points;
+    int n = d->point_count, at = 0;
+    double size = longest_edge(d, &at);
     /* Areas below this, relative to the longest edge, count as zero. */
     double tiny = 1e-9 * size * size;
     double largest = 0;
     for (int i = 0; i < n; i++)
         largest = fmax(largest, v3_length(corner(d, i)));
     if (largest <= tiny)
-        return error_set(err, GLINT_ERR_INVALID, "polygon points are collinear");
+        return "polygon points are collinear";
     /* A quad's diagonals give its normal even when three of its points are
      * nearly in line; parallel diagonals mean the quad crosses itself. */
-    vec3 normal = n == 3 ? corner(d, 0) : v3_cross(v3_sub(p[2], p[0]), v3_sub(p[3], p[1]));
-    if (v3_length(normal) <= tiny)
-        return error_set(err, GLINT_ERR_INVALID, "polygon is not convex");
-    normal = v3_normalize(normal);
-    if (n == 4 && fabs(v3_dot(v3_sub(p[3], p[0]), normal)) >= 1e-6 * size)
-        return error_set(err, GLINT_ERR_INVALID, "polygon is not planar");
+    *normal = n == 3 ? corner(d, 0) : v3_cross(v3_sub(p[2], p[0]), v3_sub(p[3], p[1]));
+    if (v3_length(*normal) <= tiny)
+        return "polygon is not convex";
+    *normal = v3_normalize(*normal);
+    if (n == 4 && fabs(v3_dot(v3_sub(p[3], p[0]), *normal)) >= 1e-6 * size)
+        return "polygon is not planar";
     /* A straight corner is refused too: it would leave the uv axes (the
      * edges at point 0) parallel, and such a quad is a triangle anyway. */
-    for (int i = 0; i < n; i++) {
-        if (v3_dot(corner(d, i), normal) <= tiny)
-            return error_set(err, GLINT_ERR_INVALID, "polygon is not convex");
-    }
+    for (int i = 0; i < n; i++)
+        if (v3_dot(corner(d, i), *normal) <= tiny)
+            return "polygon is not convex";
+    return NULL;
+}
+
+bool polygon_is_convex(const glint_vec3 *points, int count)
+{
+    glint_shape d = {.kind = GLINT_SHAPE_POLYGON, .point_count = count};
+    for (int i = 0; i < count && i < 4; i++)
+        d.points[i] = points[i];
+    int at = 0;
+    vec3 normal;
+    return count >= 3 && count <= 4 && longest_edge(&d, &at) > 0 && !convex_problem(&d, &normal);
+}
+
+/* The table has checked the count and that every point is finite. */
+static glint_status polygon_init(shape *s, glint_error *err)
+{
+    const glint_shape *d = &s->desc;
+    const vec3 *p = d->points;
+    int n = d->point_count, at = 0;
+    if (longest_edge(d, &at) == 0)
+        return error_set(err, GLINT_ERR_INVALID, "polygon points %d and %d coincide", at, (at + 1) % n);
+    vec3 normal;
+    const char *problem = convex_problem(d, &normal);
+    if (problem)
+        return error_set(err, GLINT_ERR_INVALID, "%s", problem);
     s->poly_normal = normal;
     for (int i = 0; i < n; i++)
         s->edge_in[i] = v3_cross(normal, v3_sub(p[(i + 1) % n], p[i]));
@@ -124,7 +159,8 @@ static void polygon_bounds(const shape *s, vec3 *lo, vec3 *hi)
 static const param POLYGON_PARAMS[] = {
     {.key = "points", .type = PARAM_POINTS, .offset = offsetof(glint_shape, points), .required = true,
      .min_count = 3, .max_count = 4, .count_offset = offsetof(glint_shape, point_count),
-     .meaning = "3 or 4 corners of a convex planar polygon, anticlockwise seen from its front"},
+     .meaning = "corners, anticlockwise seen from its front: 3, or 4 of a convex quad, make a shape; more, or a "
+                "concave quad, triangles (below)"},
 };
 
 static double polygon_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n)

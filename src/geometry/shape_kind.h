@@ -69,6 +69,10 @@ static inline const char *object_article(const char *name)
     return name[0] == 'i' ? "an" : "a";
 }
 
+/* Whether count points (3 or 4) make a convex planar polygon, as a
+ * polygon shape needs. */
+bool polygon_is_convex(const glint_vec3 *points, int count);
+
 /* The `closed` of kinds that always are (spheres, boxes, tori, planes). */
 bool shape_always_closed(const shape *s);
 

@@ -151,6 +151,18 @@ void read_light(loader *l, const ynode *n);
 /* Adds each object of the list, inside context ctx. */
 void read_objects(loader *l, const ynode *list, const context *ctx);
 
+/* A mesh object given by its arrays (vertices, optional normals and uvs,
+ * faces of 3 or more vertices, split into triangles), placed with material
+ * look (-1: none, reported) through to_world when no problem came after
+ * `before` (read_arrays.c). */
+void place_inline_mesh(loader *l, const ynode *n, int look, const glint_transform *to_world, int before);
+
+/* A polygon object n of more than 4 points, or of 4 that are not convex:
+ * added as triangles (glint_scene_add_polygon), or its problems reported;
+ * true when it was such a polygon (or its points could not be read), false
+ * when it is for the polygon shape to take. */
+bool many_point_polygon(loader *l, const ynode *n, int look, const glint_transform *to_world, int before);
+
 /* A `transform`, a list of steps (translate, rotate, scale, matrix...),
  * applied to *t in order; every step is read, so each bad one is reported. */
 bool read_transform(loader *l, const ynode *n, glint_transform *t);

@@ -200,7 +200,7 @@ static void place_mesh(loader *l, const ynode *n, int look, bool own, const glin
 enum { OBJECT_GROUP, OBJECT_MESH, OBJECT_SHAPE };
 static const char *const NOT_SHAPES[] = {"group", "mesh"};
 static const char *const GROUP_KEYS[] = {"objects"};
-static const char *const MESH_KEYS[] = {"file", "crease_angle"};
+static const char *const MESH_KEYS[] = {"file", "crease_angle", "vertices", "normals", "uvs", "faces"};
 
 /* The type of object map n: a group, a mesh or (with *kind set) a shape;
  * -1 after a report. */
@@ -286,6 +286,13 @@ void read_object(loader *l, const ynode *n, const context *outer)
         diag_at(&l->d, n, "a mesh cannot be a part of a union, intersection or difference");
         return;
     }
+    if (type == OBJECT_MESH && yr_get(&l->r, n, "vertices")) {
+        if (yr_get(&l->r, n, "file"))
+            diag_at(&l->d, n, "a mesh takes a 'file' or its 'vertices' and 'faces', not both");
+        else
+            place_inline_mesh(l, n, ctx.material, &ctx.to_world, before);
+        return;
+    }
     if (type == OBJECT_MESH) {
         place_mesh(l, n, ctx.material, mat != NULL, &ctx.to_world, before);
         return;
@@ -306,6 +313,8 @@ void read_object(loader *l, const ynode *n, const context *outer)
             diag_at(&l->d, children, "%s %s needs at least one object", object_article(what), what);
         return;
     }
+    if (kind->id == GLINT_SHAPE_POLYGON && ctx.csg < 0 && many_point_polygon(l, n, ctx.material, &ctx.to_world, before))
+        return;
     glint_shape s = glint_shape_default(kind->id);
     read_params(l, n, kind->params, kind->name, &s);
     if (ctx.material == -1)

@@ -56,9 +56,10 @@ static glint_status plan_meshes(plan *p, glint_error *err)
         const mesh_origin *o = &s->meshes[m].origin;
         const char *name = s->meshes[m].name ? s->meshes[m].name : "";
         if (!o->file) {
-            if (is_placed(s, m))
+            if (is_placed(s, m) && s->meshes[m].materials)
                 return error_set(err, GLINT_ERR_INVALID,
-                                 "mesh %d ('%s') is not from a model file: a scene file can place only model files",
+                                 "mesh %d ('%s') gives its triangles materials of their own: a scene file can give "
+                                 "only a model file's that",
                                  m, name);
             continue;
         }
@@ -400,6 +401,40 @@ static void write_shape(const plan *p, int i, int indent)
         write_shape(p, sh->parts[k], m.indent + 2);
 }
 
+/* A list of `count` rows of `width` floats under `key` of m, on one line. */
+static void write_rows(const plan *p, ymap *m, const char *key, const float *rows, int count, int width)
+{
+    ymap_key(m, key);
+    fputc('[', p->f);
+    for (int i = 0; i < count; i++) {
+        fputs(i ? ", [" : "[", p->f);
+        for (int k = 0; k < width; k++) {
+            fputs(k ? ", " : "", p->f);
+            yw_float(p->f, rows[i * width + k]);
+        }
+        fputc(']', p->f);
+    }
+    fputc(']', p->f);
+}
+
+/* A mesh made from arrays, written out as them: its vertices, normals and
+ * uvs, and its triangles as faces. */
+static void write_mesh_arrays(const plan *p, ymap *m, const mesh *me)
+{
+    write_rows(p, m, "vertices", me->positions, me->vertex_count, 3);
+    if (me->normals)
+        write_rows(p, m, "normals", me->normals, me->vertex_count, 3);
+    if (me->uvs)
+        write_rows(p, m, "uvs", me->uvs, me->vertex_count, 2);
+    ymap_key(m, "faces");
+    fputc('[', p->f);
+    for (int t = 0; t < me->triangle_count; t++) {
+        const uint32_t *v = me->indices + 3 * (size_t)t;
+        fprintf(p->f, "%s[%u, %u, %u]", t ? ", " : "", (unsigned)v[0], (unsigned)v[1], (unsigned)v[2]);
+    }
+    fputc(']', p->f);
+}
+
 static void write_objects(const plan *p)
 {
     const glint_scene *s = p->scene;
@@ -410,17 +445,23 @@ static void write_objects(const plan *p)
             write_shape(p, i, 2);
     for (int i = 0; i < s->instance_count; i++) {
         const instance *in = &s->instances[i];
-        const mesh_origin *o = &s->meshes[in->mesh].origin;
-        ymap m = object_begin(p, 2, in->has_transform);
+        const mesh *me = &s->meshes[in->mesh];
+        const mesh_origin *o = &me->origin;
+        ymap m = object_begin(p, 2, in->has_transform || !o->file);
         ymap_key(&m, "type");
         fputs("mesh", p->f);
-        ymap_key(&m, "file");
-        yw_text(p->f, o->file);
-        glint_import_options options = {.crease_angle = o->crease_angle};
-        yw_params(&m, import_params(), &options, false);
-        if (in->material >= 0) {
+        if (o->file) {
+            ymap_key(&m, "file");
+            yw_text(p->f, o->file);
+            glint_import_options options = {.crease_angle = o->crease_angle};
+            yw_params(&m, import_params(), &options, false);
+        } else {
+            write_mesh_arrays(p, &m, me);
+        }
+        int look = in->material >= 0 || o->file ? in->material : me->material;
+        if (look >= 0) {
             ymap_key(&m, "material");
-            material_value(p, in->material);
+            material_value(p, look);
         }
         if (in->has_transform)
             write_transform(p, &m, &in->to_world);

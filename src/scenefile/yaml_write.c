@@ -69,6 +69,19 @@ void yw_number(FILE *f, double v)
     fputs(buf, f);
 }
 
+void yw_float(FILE *f, float v)
+{
+    /* The shortest %g form that reads back, made single, to v: the
+     * loader's double rounds to the same float. */
+    char buf[40];
+    for (int digits = 1; digits <= 9; digits++) {
+        snprintf(buf, sizeof buf, "%.*g", digits, (double)v);
+        if ((float)strtod(buf, NULL) == v || digits == 9)
+            break;
+    }
+    fputs(buf, f);
+}
+
 void yw_vec3(FILE *f, glint_vec3 v)
 {
     fputc('[', f);

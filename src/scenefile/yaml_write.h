@@ -35,6 +35,8 @@ void ymap_end(ymap *m);
 
 /* A number in the shortest form that strtod reads back to the same bits. */
 void yw_number(FILE *f, double v);
+/* A float as few digits as read back, through a double, to it. */
+void yw_float(FILE *f, float v);
 
 /* A vector as [x, y, z]. */
 void yw_vec3(FILE *f, glint_vec3 v);

@@ -31,4 +31,19 @@ static inline glint_scene *one_sample_scene(int width, int height, glint_color a
     return s;
 }
 
+/* A one-sample scene of side x side pixels seen by an orthographic camera
+ * looking down -z from z = 5 at a square `view` units across, under white
+ * ambient light against a black background: a thing of a material that
+ * shows exactly its colour is its silhouette. */
+static inline glint_scene *silhouette_scene(int side, double view)
+{
+    glint_camera cam = {.kind = GLINT_CAMERA_ORTHOGRAPHIC, .position = {0, 0, 5}, .look_at = {0, 0, 0},
+                        .up = {0, 1, 0}, .vfov_degrees = 40, .view_width = view};
+    glint_scene *s = one_sample_scene(side, side, (glint_color){1, 1, 1}, cam);
+    glint_settings st = glint_scene_get_settings(s);
+    st.background = (glint_color){0, 0, 0};
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    return s;
+}
+
 #endif

@@ -124,12 +124,7 @@ enum { SIDE = 120 };
  * combined by kind, white on black. */
 static glint_image silhouette(glint_shape_kind kind)
 {
-    glint_camera cam = {.kind = GLINT_CAMERA_ORTHOGRAPHIC, .position = {0, 0, 5}, .look_at = {0, 0, 0},
-                        .up = {0, 1, 0}, .vfov_degrees = 40, .view_width = VIEW};
-    glint_scene *s = one_sample_scene(SIDE, SIDE, (glint_color){1, 1, 1}, cam);
-    glint_settings st = glint_scene_get_settings(s);
-    st.background = (glint_color){0, 0, 0};
-    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_scene *s = silhouette_scene(SIDE, VIEW);
     two_balls(kind, s, flat(s, 1, 1, 1));
     glint_image im;
     glint_render_options o = {.threads = 2};

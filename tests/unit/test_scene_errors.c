@@ -480,6 +480,31 @@ static const bad_scene BAD[] = {
      "  - {type: superellipsoid, material: m, radius: 1}\n",
      "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, union, intersection, difference, group or mesh, got "
      "'superellipsoid'", 1},
+    {"inline_face_vertex_past_end",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: mesh, material: m, vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces: [[0, 1, 3]]}\n",
+     "bad.yaml:3:91: 'faces' must be a whole number from 0 to 2, got '3'", 1},
+    {"inline_face_too_short",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: mesh, material: m, vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0]], faces: [[0, 1]]}\n",
+     "bad.yaml:3:84: each face is a list of 3 or more vertex numbers", 1},
+    {"inline_normals_count",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: mesh, material: m, vertices: [[0, 0, 0]], normals: [[0, 0, 1], [0, 0, 1]], faces: [[0, 0, 0]]}\n",
+     "bad.yaml:3:63: 'normals' must hold one normal a vertex: 1, got 2", 1},
+    {"inline_and_file",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: mesh, material: m, file: a.obj, vertices: [[0, 0, 0]], faces: [[0, 0, 0]]}\n",
+     "bad.yaml:3:5: a mesh takes a 'file' or its 'vertices' and 'faces', not both", 1},
+    {"many_point_polygon_off_plane",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: polygon, material: m, points: [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0.5, 1.5, 0.5], [0, 1, 0]]}\n",
+     "bad.yaml:3:5: polygon is not planar", 1},
     {"csg_needs_objects",
      "materials:\n"
      "  m: {}\n"
@@ -698,18 +723,12 @@ static const bad_scene BAD[] = {
      "objects:\n"
      "  - {type: polygon, material: m, points: [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0.5]]}\n",
      "bad.yaml:4:5: polygon is not planar", 1},
-    {"polygon_not_convex",
+    {"polygon_crosses_into_a_line",
      "materials:\n"
      "  m: {}\n"
      "objects:\n"
-     "  - {type: polygon, material: m, points: [[0, 0, 0], [2, 0, 0], [0.5, 0.5, 0], [0, 2, 0]]}\n",
-     "bad.yaml:4:5: polygon is not convex", 1},
-    {"polygon_five_points",
-     "materials:\n"
-     "  m: {}\n"
-     "objects:\n"
-     "  - {type: polygon, material: m, points: [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0, 1, 0], [0, 0.5, 0]]}\n",
-     "bad.yaml:4:42: 'points' must hold 3 or 4 points, got 5", 1},
+     "  - {type: polygon, material: m, points: [[0, 0, 0], [1, 0, 0], [2, 0, 0], [3, 0, 0], [4, 0, 0]]}\n",
+     "bad.yaml:4:5: polygon points are collinear", 1},
     {"polygon_two_points",
      "materials:\n"
      "  m: {}\n"

@@ -352,6 +352,44 @@ static void test_combinations(void **state)
     glint_scene_free(s);
 }
 
+/* A mesh made from arrays is written out as them (vertices, normals,
+ * uvs, faces), and comes back with the same floats; so does a polygon of
+ * many points, made into triangles. */
+static void test_meshes_from_arrays(void **state)
+{
+    (void)state;
+    glint_scene *s = glint_scene_new();
+    int m = add_material(s, "m", (glint_color){1, 1, 1});
+    static const float positions[] = {0, 0, 0, 1.1f, 0, 0, 0, 1.0f / 3, 0, 1, 1, 0.25f};
+    static const float normals[] = {0, 0, 1, 0, 0, 1, 0, 0.1f, 1, 0, 0, 1};
+    static const float uvs[] = {0, 0, 1, 0, 0, 1, 1, 1e-7f};
+    static const uint32_t indices[] = {0, 1, 2, 1, 3, 2};
+    glint_mesh_data d = {positions, normals, uvs, 4, indices, 2, NULL, m};
+    glint_error err;
+    int made = glint_scene_add_mesh(s, NULL, &d, &err);
+    glint_transform up = glint_transform_translate(glint_transform_identity(), 0, 2, 0);
+    assert_true(glint_scene_add_instance(s, made, -1, &up, &err) >= 0);
+    const glint_vec3 star[] = {{0, 2, 0}, {0.3, 1.4, 0}, {1, 1.3, 0}, {0.5, 0.9, 0}, {0.6, 0.2, 0}, {0, 0.5, 0}};
+    assert_true(glint_scene_add_polygon(s, star, 6, m, NULL, &err) >= 0);
+    glint_scene *back = round_trip(s);
+    assert_int_equal(back->mesh_count, 2);
+    assert_int_equal(back->instance_count, 2);
+    for (int i = 0; i < 2; i++) {
+        const mesh *a = &s->meshes[i], *b = &back->meshes[i];
+        assert_int_equal(a->vertex_count, b->vertex_count);
+        assert_int_equal(a->triangle_count, b->triangle_count);
+        assert_same_bits(a->positions, b->positions, sizeof(float) * 3 * (size_t)a->vertex_count);
+        assert_same_bits(a->uvs, b->uvs, sizeof(float) * 2 * (size_t)a->vertex_count);
+        assert_same_bits(a->indices, b->indices, sizeof(uint32_t) * 3 * (size_t)a->triangle_count);
+        assert_int_equal(b->material, m);
+    }
+    assert_same_bits(back->meshes[0].normals, normals, sizeof normals);
+    assert_null(back->meshes[1].normals);
+    assert_same_bits(&back->instances[0].to_world, &up, sizeof up);
+    glint_scene_free(back);
+    glint_scene_free(s);
+}
+
 static void test_refusals(void **state)
 {
     (void)state;
@@ -359,8 +397,9 @@ static void test_refusals(void **state)
     int m = add_material(s, "m", (glint_color){1, 1, 1});
     static const float positions[] = {0, 0, 0, 1, 0, 0, 0, 1, 0};
     static const uint32_t indices[] = {0, 1, 2};
+    const int own[] = {m};
     glint_mesh_data d = {.positions = positions, .vertex_count = 3, .indices = indices, .triangle_count = 1,
-                         .material = m};
+                         .materials = own};
     glint_error err;
     int tri = glint_scene_add_mesh(s, "tri", &d, &err);
     assert_true(tri >= 0);
@@ -372,8 +411,8 @@ static void test_refusals(void **state)
     assert_true(glint_scene_add_instance(s, tri, -1, NULL, &err) >= 0);
     assert_null(written(s, &st, &err));
     assert_int_equal(st, GLINT_ERR_INVALID);
-    assert_string_equal(err.message,
-                        "mesh 0 ('tri') is not from a model file: a scene file can place only model files");
+    assert_string_equal(err.message, "mesh 0 ('tri') gives its triangles materials of their own: a scene file can "
+                                     "give only a model file's that");
     glint_scene_free(s);
 
     /* A PNG's bytes, from a file glint writes. */
@@ -411,6 +450,7 @@ int main(void)
         cmocka_unit_test(test_color_map_and_placement),
         cmocka_unit_test(test_absorption_and_metallic),
         cmocka_unit_test(test_combinations),
+        cmocka_unit_test(test_meshes_from_arrays),
         cmocka_unit_test(test_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
