@@ -471,6 +471,7 @@ typedef enum glint_shape_kind {
     GLINT_SHAPE_DISK,       /* disc (or, with inner_radius, a ring) about center, facing normal */
     GLINT_SHAPE_TORUS,      /* ring about +y through center in the xz plane: radius (major) to the
                                middle of its tube, minor_radius the tube's */
+    GLINT_SHAPE_QUADRIC,    /* any second-order surface (coefficients), clipped by the box min..max */
     /* Constructive solid geometry: a combination of the closed shapes
      * glint_scene_add_part gives it, reading no field of glint_shape. */
     GLINT_SHAPE_UNION,        /* inside any of its parts */
@@ -496,6 +497,8 @@ typedef struct glint_shape {
     glint_vec3 min, max;      /* box */
     double inner_radius;      /* disk: 0, or the radius of its hole (a ring), below radius */
     double minor_radius;      /* torus: the tube's radius, below radius (the major radius) */
+    double coefficients[10];  /* quadric: A..J of A x^2 + B y^2 + C z^2 + D xy + E xz + F yz + G x
+                                 + H y + I z + J = 0, within the box min..max */
 } glint_shape;
 
 /* Returns a description of the given kind with every field at its default

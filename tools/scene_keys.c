@@ -83,6 +83,8 @@ static const char *type_name(const param *p)
         return "boolean";
     case PARAM_POINTS:
         return "list of vectors";
+    case PARAM_NUMBERS:
+        return "list of numbers";
     case PARAM_COLOR_STOPS:
         return "list of [number, colour]";
     case PARAM_PATH:
@@ -121,6 +123,9 @@ static void default_text(const param *p, char *buf, size_t size)
     case PARAM_COLOR_STOPS:
         snprintf(buf, size, "`[[0, [%g, %g, %g]], [1, [%g, %g, %g]]]`", d[0], d[1], d[2], d[3], d[4], d[5]);
         return;
+    case PARAM_NUMBERS:
+        snprintf(buf, size, "%s", p->required ? "required" : "all 0");
+        return;
     case PARAM_POINTS:
     case PARAM_PATH:
         snprintf(buf, size, "none");
@@ -155,6 +160,9 @@ static void range_text(const param *p, char *buf, size_t size)
         return;
     case PARAM_COLOR_STOPS:
         snprintf(buf, size, "%d to %d stops, values from 0 to 1 in order", p->min_count, p->max_count);
+        return;
+    case PARAM_NUMBERS:
+        snprintf(buf, size, "%d numbers", p->max_count);
         return;
     default:
         return;

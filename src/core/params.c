@@ -44,6 +44,9 @@ void params_defaults(param_table t, void *obj)
         case PARAM_POINTS:
             *(int *)field(obj, p->count_offset) = 0;
             break;
+        case PARAM_NUMBERS:
+            memset(f, 0, sizeof(double) * (size_t)p->max_count);
+            break;
         case PARAM_COLOR_STOPS:
             ((glint_color_stop *)f)[0] = (glint_color_stop){0, {p->def[0], p->def[1], p->def[2]}};
             ((glint_color_stop *)f)[1] = (glint_color_stop){1, {p->def[3], p->def[4], p->def[5]}};
@@ -161,6 +164,13 @@ static glint_status check_one(const param *p, const void *obj, const char *what,
                 return error_set(err, GLINT_ERR_INVALID, "%s %s must be finite and not negative", what, p->key);
         return GLINT_OK;
     }
+    case PARAM_NUMBERS: {
+        const double *v = f;
+        for (int k = 0; k < p->max_count; k++)
+            if (!isfinite(v[k]))
+                return error_set(err, GLINT_ERR_INVALID, "%s %s number %d is not finite", what, p->key, k);
+        return GLINT_OK;
+    }
     case PARAM_COLOR_STOPS: {
         int n = *(const int *)cfield(obj, p->count_offset);
         if (n < p->min_count || n > p->max_count)
@@ -236,6 +246,11 @@ bool param_is_default(const param *p, const void *obj)
         return same_doubles(f, p->def, 3);
     case PARAM_COLOR_PAIR:
         return same_doubles(f, p->def, 6);
+    case PARAM_NUMBERS:
+        for (int k = 0; k < p->max_count; k++)
+            if (((const double *)f)[k] != 0)
+                return false;
+        return true;
     case PARAM_COLOR_STOPS: {
         const glint_color_stop *stops = f;
         return *(const int *)cfield(obj, p->count_offset) == 2 && stops[0].at == 0 && stops[1].at == 1 &&

@@ -30,6 +30,7 @@ typedef enum param_type {
     PARAM_PATH,     /* const char *: a file, relative to the scene file that names it */
     PARAM_BOOL,     /* bool */
     PARAM_POINTS,   /* glint_vec3[], the count in the int at count_offset */
+    PARAM_NUMBERS,  /* double[max_count]: exactly that many finite numbers; 0 each by default */
     PARAM_COLOR_STOPS /* glint_color_stop[], the count in the int at count_offset: a colour
                          map, its stops' `at` ascending from 0 to 1 and colours as
                          PARAM_COLOR's; the default is two, def[0..2] at 0 and def[3..5] at 1 */
@@ -48,7 +49,7 @@ typedef struct param {
     double lo, hi;            /* numbers, integers and colour channels: the range */
     param_bounds bounds;
     const char *unit;         /* appended to the range's wording ("degrees"), or NULL */
-    int min_count, max_count; /* points, stops: how many */
+    int min_count, max_count; /* points, stops: how many; numbers: max_count */
     size_t count_offset;      /* points, stops: the int that holds the count */
     const char *const *words; /* choices: the words, in the enum's order */
     int word_count;

@@ -177,7 +177,7 @@ bool shape_always_closed(const shape *s)
 void shape_left_behind_rule(const shape *s, bool *always, bool *when_leaving)
 {
     *always = s->kind->flat;
-    *when_leaving = s->kind->max_crossings <= 2;
+    *when_leaving = s->kind->max_crossings <= 2 && !s->kind->saddle;
 }
 
 bool shape_is_left_behind(const shape *s, vec3 n, vec3 d)

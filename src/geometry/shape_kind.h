@@ -27,6 +27,9 @@ struct shape_kind {
     /* Lies in one plane: its normal is the same at every point, and a ray
      * leaving it never meets it again. */
     bool flat;
+    /* Not convex though no line crosses it more than twice (a hyperboloid
+     * of two sheets): a ray leaving it outwards may still meet it. */
+    bool saddle;
     /* A combination of other shapes (csg.c): its hits are on its parts. */
     bool csg;
     /* Whether s encloses a solid, so it can be a part of a combination (a
@@ -60,7 +63,7 @@ struct shape_kind {
 };
 
 extern const shape_kind sphere_kind, plane_kind, polygon_kind, box_kind, cylinder_kind, cone_kind, disk_kind,
-    torus_kind, union_kind, intersection_kind, difference_kind;
+    torus_kind, quadric_kind, union_kind, intersection_kind, difference_kind;
 
 /* "a" or "an", as the name of a kind of object takes it in a message ("an
  * intersection"). */

@@ -270,6 +270,15 @@ bool read_param(loader *l, const ynode *n, const param *p, void *obj)
         *(int *)((char *)obj + p->count_offset) = n->count;
         return true;
     }
+    case PARAM_NUMBERS:
+        if (n->kind != YNODE_SEQUENCE || n->count != p->max_count) {
+            diag_at(&l->d, n, "'%s' must be a list of %d numbers", p->key, p->max_count);
+            return false;
+        }
+        for (int i = 0; i < n->count; i++)
+            if (!yr_number(&l->r, n->items[i], p->key, (double *)f + i))
+                return false;
+        return true;
     case PARAM_COLOR_STOPS:
         return read_stops(l, n, p, obj);
     }

@@ -215,6 +215,14 @@ void yw_param(FILE *f, const param *p, const void *obj)
         fputc(']', f);
         return;
     }
+    case PARAM_NUMBERS:
+        fputc('[', f);
+        for (int i = 0; i < p->max_count; i++) {
+            fputs(i ? ", " : "", f);
+            yw_number(f, ((const double *)v)[i]);
+        }
+        fputc(']', f);
+        return;
     case PARAM_COLOR_STOPS: {
         int n = *(const int *)((const char *)obj + p->count_offset);
         const glint_color_stop *stops = v;

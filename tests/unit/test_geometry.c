@@ -1425,6 +1425,76 @@ static void test_torus_validation(void **state)
     bounds_are(&s, v3(-2.5, -0.5, -2.5), v3(2.5, 0.5, 2.5));
 }
 
+/* -------------------------------------------------------------- quadrics */
+
+/* A quadric of coefficients k (A..J) within the box lo..hi. */
+static glint_shape quadric_d(const double *k, vec3 lo, vec3 hi)
+{
+    glint_shape d = glint_shape_default(GLINT_SHAPE_QUADRIC);
+    memcpy(d.coefficients, k, sizeof d.coefficients);
+    d.min = lo;
+    d.max = hi;
+    return d;
+}
+
+/* x^2 + y^2 + z^2 - 1 = 0 is the unit sphere: the same hit distances as the
+ * sphere for rays from every side, to the last few bits, and its normal
+ * (the gradient, 2p) points out. */
+static void test_quadric_is_a_sphere(void **state)
+{
+    static const double unit[10] = {1, 1, 1, 0, 0, 0, 0, 0, 0, -1};
+    shape q = MAKE(quadric_d(unit, v3(-2, -2, -2), v3(2, 2, 2)), NULL), ball = MAKE(sphere_d(v3(0, 0, 0), 1), NULL);
+    HIT(q, ((ray){v3(0, 0, 5), v3(0, 0, -1)}), 4, 0, v3(0, 0, 1), v3(0, 0, 1));
+    for (int i = 0; i < 200; i++) {
+        double a = i * 0.7, b = i * 1.3;
+        vec3 o = v3_scale(v3(cos(a) * sin(b), cos(b), sin(a) * sin(b)), 30);
+        vec3 d = v3_normalize(v3_sub(v3(0.3 * sin(i), 0.2 * cos(3 * i), 0.1), o));
+        ray r = {o, d};
+        shape_hit hq, hs;
+        bool got = shape_intersect(&q, &r, 0, INFINITY, &hq), want = shape_intersect(&ball, &r, 0, INFINITY, &hs);
+        assert_int_equal(got, want);
+        if (want)
+            assert_true(fabs(hq.t - hs.t) <= 1e-12 * hs.t);
+    }
+}
+
+/* The paraboloid y = x^2 + z^2 (x^2 + z^2 - y = 0): straight down at x =
+ * 0.5 it is met at y = 0.25, its normal (2x, -1, 2z) there, unit; the box
+ * cuts it off: below the bowl's rim at y = 1 a ray across it at y = 2
+ * misses, and a ray up the axis from below the box's floor meets it only
+ * where the box starts, at the bowl's bottom. */
+static void test_quadric_paraboloid_and_box(void **state)
+{
+    static const double bowl[10] = {1, 0, 1, 0, 0, 0, 0, -1, 0, 0};
+    shape q = MAKE(quadric_d(bowl, v3(-1, 0, -1), v3(1, 1, 1)), NULL);
+    HIT(q, ((ray){v3(0.5, 5, 0), v3(0, -1, 0)}), 4.75, 0, v3(0.5, 0.25, 0), v3_normalize(v3(1, -1, 0)));
+    MISS(q, ((ray){v3(-5, 2, 0), v3(1, 0, 0)}));
+    HIT(q, ((ray){v3(0, -3, 0), v3(0, 1, 0)}), 3, 0, v3(0, 0, 0), v3(0, -1, 0));
+    /* The unit sphere cut to z >= 0: from behind, the near half is gone
+     * and the far half is met from inside. */
+    static const double unit[10] = {1, 1, 1, 0, 0, 0, 0, 0, 0, -1};
+    shape half = MAKE(quadric_d(unit, v3(-2, -2, 0), v3(2, 2, 2)), NULL);
+    HIT(half, ((ray){v3(0, 0, -5), v3(0, 0, 1)}), 6, 0, v3(0, 0, 1), v3(0, 0, 1));
+    /* A hyperboloid of two sheets, x^2 - y^2 - z^2 = 1: a ray leaving one
+     * sheet outwards meets the other, so it is never left behind. */
+    static const double sheets[10] = {1, -1, -1, 0, 0, 0, 0, 0, 0, -1};
+    shape two = MAKE(quadric_d(sheets, v3(-3, -3, -3), v3(3, 3, 3)), NULL);
+    assert_false(shape_is_left_behind(&two, v3(-1, 0, 0), v3(1, 0, 0)));
+    HIT(two, ((ray){v3(-1, 0, 0), v3(1, 0, 0)}), 2, 0, v3(1, 0, 0), v3(1, 0, 0));
+}
+
+static void test_quadric_validation(void **state)
+{
+    static const double none[10] = {0, 0, 0, 0, 0, 0, 0, 0, 0, 5};
+    static const double unit[10] = {1, 1, 1, 0, 0, 0, 0, 0, 0, -1};
+    REJECTS(quadric_d(none, v3(-1, -1, -1), v3(1, 1, 1)), NULL,
+            "quadric coefficients A to I are all 0: it has no surface");
+    REJECTS(quadric_d(unit, v3(-1, 1, -1), v3(1, 1, 1)), NULL, "quadric min must be below max on every axis");
+    glint_shape d = quadric_d(unit, v3(-1, -1, -1), v3(1, 1, 1));
+    d.coefficients[4] = NAN;
+    REJECTS(d, NULL, "quadric coefficients number 4 is not finite");
+}
+
 /* ------------------------------------------------------------- validation */
 
 static void test_validation(void **state)
@@ -1574,6 +1644,9 @@ int main(void)
         cmocka_unit_test(test_torus_uv),
         cmocka_unit_test(test_torus_sample),
         cmocka_unit_test(test_torus_validation),
+        cmocka_unit_test(test_quadric_is_a_sphere),
+        cmocka_unit_test(test_quadric_paraboloid_and_box),
+        cmocka_unit_test(test_quadric_validation),
         cmocka_unit_test(test_transform_sphere),
         cmocka_unit_test(test_transform_box),
         cmocka_unit_test(test_transform_cylinder),

@@ -472,13 +472,13 @@ static const bad_scene BAD[] = {
      "  m: {}\n"
      "objects:\n"
      "  - {type: sphear, material: m, radius: 1}\n",
-     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, union, intersection, difference, group or mesh, got 'sphear' (did you mean 'sphere'?)", 1},
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, quadric, union, intersection, difference, group or mesh, got 'sphear' (did you mean 'sphere'?)", 1},
     {"object_type_no_hint",
      "materials:\n"
      "  m: {}\n"
      "objects:\n"
      "  - {type: superellipsoid, material: m, radius: 1}\n",
-     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, union, intersection, difference, group or mesh, got "
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, quadric, union, intersection, difference, group or mesh, got "
      "'superellipsoid'", 1},
     {"inline_face_vertex_past_end",
      "materials: {m: {}}\n"
@@ -505,6 +505,11 @@ static const bad_scene BAD[] = {
      "objects:\n"
      "  - {type: polygon, material: m, points: [[0, 0, 0], [1, 0, 0], [1, 1, 0], [0.5, 1.5, 0.5], [0, 1, 0]]}\n",
      "bad.yaml:3:5: polygon is not planar", 1},
+    {"quadric_coefficients_count",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: quadric, material: m, coefficients: [1, 2, 3], min: [-1, -1, -1], max: [1, 1, 1]}\n",
+     "bad.yaml:3:48: 'coefficients' must be a list of 10 numbers", 1},
     {"csg_needs_objects",
      "materials:\n"
      "  m: {}\n"
