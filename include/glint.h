@@ -634,6 +634,23 @@ int glint_scene_add_instance(glint_scene *scene, int mesh, int material, const g
 int glint_scene_add_polygon(glint_scene *scene, const glint_vec3 *points, int count, int material,
                             const glint_transform *transform, glint_error *err);
 
+/* The most samples a side of a heightfield may have. */
+#define GLINT_MAX_HEIGHTFIELD_SIDE 16384
+
+/* Adds a heightfield: a grid of columns x rows heights (each at least 2,
+ * at most GLINT_MAX_HEIGHTFIELD_SIDE), heights[row * columns + column]
+ * from 0 to 1, sized by the box min..max: column c is at x = min.x + c
+ * (max.x - min.x) / (columns - 1), row r at z = min.z + r (...) along z,
+ * height h at y = min.y + h (max.y - min.y). Each cell is two triangles
+ * (split along the diagonal from its corner nearest min to the opposite
+ * one), smoothly shaded by normals from the neighbouring heights, its
+ * (u, v) the column and row fractions (so an image of the same grid lies
+ * on it as it was drawn, row 0 along min.z). A mesh of its own, placed
+ * once by `transform` (NULL: identity); returns the placement's index or
+ * -1 and fills err. */
+int glint_scene_add_heightfield(glint_scene *scene, const float *heights, int columns, int rows, glint_vec3 min,
+                                glint_vec3 max, int material, const glint_transform *transform, glint_error *err);
+
 /* Options for glint_scene_import_mesh. Zero them for the defaults. */
 typedef struct glint_import_options {
     double crease_angle;      /* degrees; vertex normals are generated when the file has

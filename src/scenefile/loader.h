@@ -157,6 +157,12 @@ void read_objects(loader *l, const ynode *list, const context *ctx);
  * `before` (read_arrays.c). */
 void place_inline_mesh(loader *l, const ynode *n, int look, const glint_transform *to_world, int before);
 
+/* A heightfield object: its grid from a greyscale image `file` (8 bits a
+ * sample, black 0 and white 1) or a list of rows `heights`, in the box
+ * min..max, placed with material look (-1: none, reported) through
+ * to_world when no problem came after `before` (read_arrays.c). */
+void place_heightfield(loader *l, const ynode *n, int look, const glint_transform *to_world, int before);
+
 /* A polygon object n of more than 4 points, or of 4 that are not convex:
  * added as triangles (glint_scene_add_polygon), or its problems reported;
  * true when it was such a polygon (or its points could not be read), false

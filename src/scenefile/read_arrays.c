@@ -1,11 +1,13 @@
-/* read_arrays.c - geometry written out in the scene file as lists of
- * numbers: meshes given by their vertices and faces (so a program that
- * writes scenes need not write an OBJ beside them), and polygons of more
- * than four points or concave ones, which become the triangles that cover
- * them. */
+/* read_arrays.c - geometry given in the scene file as lists of numbers
+ * or a grid of samples: meshes given by their vertices and faces (so a
+ * program that writes scenes need not write an OBJ beside them), polygons
+ * of more than four points or concave ones, which become the triangles
+ * that cover them, and heightfields from a list of rows or a greyscale
+ * image. */
 #include <stdlib.h>
 #include "core/array.h"
 #include "geometry/shape_kind.h"
+#include "image/texture_image.h"
 #include "model/triangulate.h"
 #include "scenefile/loader.h"
 
@@ -177,4 +179,101 @@ bool many_point_polygon(loader *l, const ynode *n, int look, const glint_transfo
     if (count > 4)
         free(p);
     return true;
+}
+
+/* A heightfield's grid from image `file`, its pixels' first channel read
+ * as data (b / 255): *columns x *rows heights, NULL after a report. */
+static float *image_heights(loader *l, const ynode *file, int *columns, int *rows)
+{
+    const char *name;
+    if (!yr_text(&l->r, file, "file", &name))
+        return NULL;
+    char *path = relative_to(file->file, name);
+    texture_image img = {0};
+    glint_error err;
+    glint_status st = path ? texture_image_load_file(&img, path, &err) : GLINT_ERR_NOMEM;
+    free(path);
+    if (st) {
+        if (st == GLINT_ERR_NOMEM && !path)
+            diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
+        else
+            diag_error(&l->d, file, &err);
+        return NULL;
+    }
+    texture_image data = texture_image_as_data(&img);
+    size_t count = (size_t)img.width * (size_t)img.height;
+    float *heights = malloc(count * sizeof *heights);
+    for (size_t i = 0; heights && i < count; i++) {
+        float h = texture_image_at(&data, 3 * i);
+        heights[i] = h < 0 ? 0 : h > 1 ? 1 : h;
+    }
+    if (!heights)
+        diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
+    *columns = img.width;
+    *rows = img.height;
+    texture_image_free(&img);
+    return heights;
+}
+
+/* A heightfield's grid from `heights`, a list of rows of numbers, all as
+ * long as the first: NULL after a report. */
+static float *listed_heights(loader *l, const ynode *list, int *columns, int *rows)
+{
+    if (!yr_is_list(&l->r, list, "'heights'"))
+        return NULL;
+    int nr = list->count, nc = nr > 0 && list->items[0]->kind == YNODE_SEQUENCE ? list->items[0]->count : 0;
+    if (nr < 2 || nc < 2 || nr > GLINT_MAX_HEIGHTFIELD_SIDE || nc > GLINT_MAX_HEIGHTFIELD_SIDE) {
+        diag_at(&l->d, list, "'heights' must be 2 to %d rows of 2 to %d numbers each", GLINT_MAX_HEIGHTFIELD_SIDE,
+                GLINT_MAX_HEIGHTFIELD_SIDE);
+        return NULL;
+    }
+    float *heights = malloc((size_t)nr * (size_t)nc * sizeof *heights);
+    if (!heights) {
+        diag_raw(&l->d, GLINT_ERR_NOMEM, "out of memory");
+        return NULL;
+    }
+    for (int r = 0; r < nr; r++) {
+        const ynode *row = list->items[r];
+        if (row->kind != YNODE_SEQUENCE || row->count != nc) {
+            diag_at(&l->d, row, "each row of 'heights' must hold %d numbers, as the first does", nc);
+            free(heights);
+            return NULL;
+        }
+        for (int c = 0; c < nc; c++) {
+            double h;
+            if (!yr_number(&l->r, row->items[c], "heights", &h)) {
+                free(heights);
+                return NULL;
+            }
+            if (!(h >= 0 && h <= 1)) {
+                diag_at(&l->d, row->items[c], "'heights' must be from 0 to 1, got %g", h);
+                free(heights);
+                return NULL;
+            }
+            heights[(size_t)r * nc + c] = (float)h;
+        }
+    }
+    *columns = nc;
+    *rows = nr;
+    return heights;
+}
+
+void place_heightfield(loader *l, const ynode *n, int look, const glint_transform *to_world, int before)
+{
+    const ynode *file = yr_get(&l->r, n, "file"), *list = yr_get(&l->r, n, "heights");
+    vec3 lo, hi;
+    bool box = need_vec3(l, n, "min", "heightfield", &lo) & need_vec3(l, n, "max", "heightfield", &hi);
+    if (!file == !list) {
+        diag_at(&l->d, n, "a heightfield takes a 'file' or its 'heights', one of them");
+        return;
+    }
+    int columns = 0, rows = 0;
+    float *heights = file ? image_heights(l, file, &columns, &rows) : listed_heights(l, list, &columns, &rows);
+    if (look == -1)
+        diag_at(&l->d, n, "heightfield needs 'material'");
+    glint_error err;
+    if (heights && box && l->d.count == before && look >= 0 &&
+        glint_scene_add_heightfield(l->scene, heights, columns, rows, lo, hi, look, to_world, &err) < 0)
+        diag_error(&l->d, n, &err);
+    free(heights);
 }

@@ -197,10 +197,11 @@ static void place_mesh(loader *l, const ynode *n, int look, bool own, const glin
 }
 
 /* The object types that are not shapes. */
-enum { OBJECT_GROUP, OBJECT_MESH, OBJECT_SHAPE };
-static const char *const NOT_SHAPES[] = {"group", "mesh"};
+enum { OBJECT_GROUP, OBJECT_MESH, OBJECT_HEIGHTFIELD, OBJECT_SHAPE };
+static const char *const NOT_SHAPES[] = {"group", "mesh", "heightfield"};
 static const char *const GROUP_KEYS[] = {"objects"};
 static const char *const MESH_KEYS[] = {"file", "crease_angle", "vertices", "normals", "uvs", "faces"};
+static const char *const HEIGHTFIELD_KEYS[] = {"file", "heights", "min", "max"};
 
 /* The type of object map n: a group, a mesh or (with *kind set) a shape;
  * -1 after a report. */
@@ -259,8 +260,10 @@ void read_object(loader *l, const ynode *n, const context *outer)
         if (kind->csg)
             keys[count++] = GROUP_KEYS[0];
     } else {
-        const char *const *extra = type == OBJECT_GROUP ? GROUP_KEYS : MESH_KEYS;
-        int extra_count = type == OBJECT_GROUP ? COUNT(GROUP_KEYS) : COUNT(MESH_KEYS);
+        const char *const *extra = type == OBJECT_GROUP ? GROUP_KEYS : type == OBJECT_MESH ? MESH_KEYS : HEIGHTFIELD_KEYS;
+        int extra_count = type == OBJECT_GROUP  ? COUNT(GROUP_KEYS)
+                          : type == OBJECT_MESH ? COUNT(MESH_KEYS)
+                                                : COUNT(HEIGHTFIELD_KEYS);
         for (int i = 0; i < COUNT(common); i++)
             keys[count++] = common[i];
         for (int i = 0; i < extra_count; i++)
@@ -282,8 +285,12 @@ void read_object(loader *l, const ynode *n, const context *outer)
     if (mat && (ctx.material = object_material(l, mat)) < 0)
         ctx.material = MATERIAL_REPORTED;
 
-    if (type == OBJECT_MESH && ctx.csg >= 0) {
-        diag_at(&l->d, n, "a mesh cannot be a part of a union, intersection or difference");
+    if ((type == OBJECT_MESH || type == OBJECT_HEIGHTFIELD) && ctx.csg >= 0) {
+        diag_at(&l->d, n, "a %s cannot be a part of a union, intersection or difference", what);
+        return;
+    }
+    if (type == OBJECT_HEIGHTFIELD) {
+        place_heightfield(l, n, ctx.material, &ctx.to_world, before);
         return;
     }
     if (type == OBJECT_MESH && yr_get(&l->r, n, "vertices")) {

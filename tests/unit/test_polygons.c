@@ -149,12 +149,92 @@ static void test_scene_file_arrays(void **state)
     glint_scene_free(s);
 }
 
+/* A scene of a white matte surface under a sun from the upper left, seen
+ * from above at a slant: the heightfield of columns x rows heights h in
+ * the box -1..1 (y 0..1), or (heights NULL) the quad of its corners. */
+static glint_image lit_surface(const float *heights, int columns, int rows)
+{
+    glint_camera cam = {.position = {0.3, 3, 2.5}, .look_at = {0, 0.3, 0}, .up = {0, 1, 0}, .vfov_degrees = 40};
+    glint_scene *s = one_sample_scene(64, 48, (glint_color){0, 0, 0}, cam);
+    glint_material white = glint_material_default();
+    white.specular = white.ambient = 0;
+    int mat = glint_scene_add_material(s, NULL, &white, NULL);
+    glint_light sun = {.kind = GLINT_LIGHT_DIRECTIONAL, .direction = {0.6, -1, -0.3}, .color = {1, 1, 1}};
+    assert_true(glint_scene_add_light(s, &sun, NULL) >= 0);
+    glint_error err;
+    glint_vec3 lo = {-1, 0, -1}, hi = {1, 1, 1};
+    if (heights) {
+        if (glint_scene_add_heightfield(s, heights, columns, rows, lo, hi, mat, NULL, &err) < 0)
+            fail_msg("%s", err.message);
+    } else {
+        /* The corners at x = -1 and x = 1, heights h(-1) and h(1) (a slope in x). */
+        glint_vec3 quad[4] = {{-1, 0, -1}, {-1, 0, 1}, {1, 1, 1}, {1, 1, -1}};
+        if (columns == 1)
+            for (int k = 0; k < 4; k++)
+                quad[k].y = 0.5;
+        assert_true(glint_scene_add_polygon(s, quad, 4, mat, NULL, &err) >= 0);
+    }
+    glint_image im;
+    glint_render_options o = {.threads = 2};
+    assert_int_equal(glint_render(s, &o, &im, NULL, NULL), GLINT_OK);
+    glint_scene_free(s);
+    return im;
+}
+
+/* A flat heightfield (every height 0.5) and a sloped one (height x / 2 +
+ * 1/2 over x from -1 to 1) look as the polygon of their corners does, to
+ * single precision, pixel for pixel: the same silhouette, the same light. */
+static void test_heightfield_against_polygon(void **state)
+{
+    enum { N = 9 };
+    float flat[N * N], slope[N * N];
+    for (int r = 0; r < N; r++)
+        for (int c = 0; c < N; c++) {
+            flat[r * N + c] = 0.5f;
+            slope[r * N + c] = (float)c / (N - 1);
+        }
+    for (int k = 0; k < 2; k++) {
+        glint_image field = lit_surface(k ? slope : flat, N, N), quad = lit_surface(NULL, k ? 2 : 1, 0);
+        int lit = 0;
+        for (int i = 0; i < 64 * 48; i++) {
+            assert_near(field.pixels[3 * i], quad.pixels[3 * i], 2e-5);
+            lit += quad.pixels[3 * i] > 0;
+        }
+        assert_true(lit > 500);
+        glint_image_free(&field);
+        glint_image_free(&quad);
+    }
+}
+
+/* A heightfield's problems, in words. */
+static void test_heightfield_refusals(void **state)
+{
+    glint_scene *s = glint_scene_new();
+    glint_material m = glint_material_default();
+    int mat = glint_scene_add_material(s, NULL, &m, NULL);
+    glint_error err;
+    float h[4] = {0, 0.5f, 1, 1.5f};
+    glint_vec3 lo = {-1, 0, -1}, hi = {1, 1, 1};
+    assert_int_equal(glint_scene_add_heightfield(s, h, 2, 2, lo, hi, mat, NULL, &err), -1);
+    assert_string_equal(err.message, "heightfield height 3 (row 1) must be from 0 to 1, got 1.5");
+    assert_int_equal(glint_scene_add_heightfield(s, h, 1, 4, lo, hi, mat, NULL, &err), -1);
+    assert_string_equal(err.message, "a heightfield needs 2 to 16384 samples a side, got 1 x 4");
+    h[3] = 1;
+    assert_int_equal(glint_scene_add_heightfield(s, h, 2, 2, hi, lo, mat, NULL, &err), -1);
+    assert_string_equal(err.message, "heightfield min must be below max in x and z, and at most max in y, all finite");
+    assert_true(glint_scene_add_heightfield(s, h, 2, 2, lo, hi, mat, NULL, &err) >= 0);
+    assert_int_equal(s->meshes[0].triangle_count, 2);
+    glint_scene_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_star_and_dart),
         cmocka_unit_test(test_polygon_refusals),
         cmocka_unit_test(test_scene_file_arrays),
+        cmocka_unit_test(test_heightfield_against_polygon),
+        cmocka_unit_test(test_heightfield_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

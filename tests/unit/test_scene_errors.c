@@ -472,13 +472,13 @@ static const bad_scene BAD[] = {
      "  m: {}\n"
      "objects:\n"
      "  - {type: sphear, material: m, radius: 1}\n",
-     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, quadric, union, intersection, difference, group or mesh, got 'sphear' (did you mean 'sphere'?)", 1},
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, quadric, union, intersection, difference, group, mesh or heightfield, got 'sphear' (did you mean 'sphere'?)", 1},
     {"object_type_no_hint",
      "materials:\n"
      "  m: {}\n"
      "objects:\n"
      "  - {type: superellipsoid, material: m, radius: 1}\n",
-     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, quadric, union, intersection, difference, group or mesh, got "
+     "bad.yaml:4:12: 'type' must be sphere, plane, polygon, box, cylinder, cone, disk, torus, quadric, union, intersection, difference, group, mesh or heightfield, got "
      "'superellipsoid'", 1},
     {"inline_face_vertex_past_end",
      "materials: {m: {}}\n"
@@ -510,6 +510,21 @@ static const bad_scene BAD[] = {
      "objects:\n"
      "  - {type: quadric, material: m, coefficients: [1, 2, 3], min: [-1, -1, -1], max: [1, 1, 1]}\n",
      "bad.yaml:3:48: 'coefficients' must be a list of 10 numbers", 1},
+    {"heightfield_ragged_rows",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: heightfield, material: m, heights: [[0, 1], [0.5]], min: [0, 0, 0], max: [1, 1, 1]}\n",
+     "bad.yaml:3:56: each row of 'heights' must hold 2 numbers, as the first does", 1},
+    {"heightfield_height_range",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: heightfield, material: m, heights: [[0, 1], [0.5, 2]], min: [0, 0, 0], max: [1, 1, 1]}\n",
+     "bad.yaml:3:62: 'heights' must be from 0 to 1, got 2", 1},
+    {"heightfield_file_and_heights",
+     "materials: {m: {}}\n"
+     "objects:\n"
+     "  - {type: heightfield, material: m, file: x.png, heights: [[0, 1], [0, 1]], min: [0, 0, 0], max: [1, 1, 1]}\n",
+     "bad.yaml:3:5: a heightfield takes a 'file' or its 'heights', one of them", 1},
     {"csg_needs_objects",
      "materials:\n"
      "  m: {}\n"
