@@ -262,7 +262,9 @@ void place_heightfield(loader *l, const ynode *n, int look, const glint_transfor
 {
     const ynode *file = yr_get(&l->r, n, "file"), *list = yr_get(&l->r, n, "heights");
     vec3 lo, hi;
-    bool box = need_vec3(l, n, "min", "heightfield", &lo) & need_vec3(l, n, "max", "heightfield", &hi);
+    /* Both read, so that both are reported. */
+    bool has_min = need_vec3(l, n, "min", "heightfield", &lo), has_max = need_vec3(l, n, "max", "heightfield", &hi);
+    bool box = has_min && has_max;
     if (!file == !list) {
         diag_at(&l->d, n, "a heightfield takes a 'file' or its 'heights', one of them");
         return;
