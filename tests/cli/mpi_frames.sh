@@ -163,10 +163,11 @@ for partial in "" --partial; do
         done
         ok=0
         [ "$st" -eq 4 ] && [ "$whole" -eq 0 ] && [ -z "$(ls -A lead | grep '^\.')" ] || ok=1
+        # Without --partial no frame is cut short. With it, a frame in
+        # progress when the signal lands is written cut short, but the
+        # signal may land between frames, so none need be.
         if [ -z "$partial" ]; then
             [ "$cut" -eq 0 ] && grep -q 'interrupted: [0-9]* of 41 frames written whole' job.err || ok=1
-        else
-            [ "$cut" -ge 1 ] || ok=1
         fi
         verdict "$ok" "SIGTERM to rank 1 ${partial:-without --partial}: exit 4 ($st), whole frames glint's, $cut cut short, no temporary file: $(tail -c 400 job.err)"
     else
