@@ -94,9 +94,7 @@ static bool next_crossing(const shape *s, int index, const ray *r, double after,
     shape_hit h;
     if (!shape_intersect(s, r, after, INFINITY, &h))
         return false;
-    surface there;
-    shape_surface(s, r, &h, &there);
-    *c = (crossing){h.t, v3_dot(r->d, there.n) < 0, index, h.part};
+    *c = (crossing){h.t, shape_hit_enters(s, r, &h), index, h.part};
     return true;
 }
 

@@ -119,6 +119,18 @@ void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *
         out->n = out->shading_n = v3_neg(out->n);
 }
 
+bool shape_hit_enters(const shape *s, const ray *r, const shape_hit *hit)
+{
+    if (s->flat)
+        return v3_dot(r->d, s->flat_n) < 0;
+    /* The sign of d . n is the same in object space, where the normal
+     * needs neither mapping nor normalising. */
+    ray o = s->has_transform ? object_ray(s, r) : *r;
+    surface at = {.p_obj = ray_at(&o, hit->t)};
+    s->kind->surface(s, hit->part & ~SHAPE_PART_FLIPPED, &at);
+    return v3_dot(o.d, at.n) < 0;
+}
+
 void shape_surface_uv(const shape *s, surface *out)
 {
     s->kind->uv(s, out->part, out);

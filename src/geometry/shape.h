@@ -151,6 +151,10 @@ void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *
  * apart, so that the common path keeps no room for a moved copy. */
 void shape_surface_moved(const shape *s, double time, const ray *r, const shape_hit *hit, surface *out);
 
+/* Whether world ray r goes into s at hit (its normal there faces the
+ * ray), as shape_surface's normal would say, without the rest of it. */
+bool shape_hit_enters(const shape *s, const ray *r, const shape_hit *hit);
+
 /* Fills out->u and out->v, the shape's own texture coordinates, for a
  * surface filled by shape_surface. */
 void shape_surface_uv(const shape *s, surface *out);
