@@ -64,10 +64,11 @@ static __attribute__((unused)) color hit_texture_color(const glint_scene *scene,
     const texture *t = &scene->textures[m->texture];
     if (h->shape < 0)
         return texture_eval(t, s, mesh_center(hit_mesh(scene, h)));
-    /* Meshes carry their uv already; shapes compute it only when asked. */
+    /* Meshes carry their uv already; shapes compute it only when a
+     * texture of (u, v) asks. */
     shape moved;
     const shape *sh = shape_at(&scene->shapes[h->shape], h->time, &moved);
-    if (t->mapping.kind == GLINT_MAP_UV)
+    if (t->mapping.kind == GLINT_MAP_UV && !t->kind->solid)
         shape_surface_uv(sh, s);
     return texture_eval(t, s, shape_center(sh));
 }
