@@ -8,7 +8,9 @@
  * its crossings, the combination's is the set operation of its parts'
  * states, and the first crossing that changes that is the hit. A part's
  * state where the walk starts is read from its first crossing ahead, which
- * leaves it when the walk starts inside. The hit names the part's own
+ * leaves it when the walk starts inside; a part the ray no longer crosses
+ * is outside, unless it is unbounded (a plane's half-space, stays_inside).
+ * The hit names the part's own
  * shape (the leaf), so shading, materials and textures are the part's;
  * the surfaces a difference cuts with its other parts face the other way
  * (SHAPE_PART_FLIPPED). In the common case of a ray that meets the
@@ -25,6 +27,7 @@ typedef struct crossing {
 } crossing;
 
 static bool next_crossing(const shape *s, int index, const ray *r, double after, crossing *c, int depth);
+static bool stays_inside(const shape *s, const ray *r, double after, int depth);
 
 /* Whether the combination of kind k is solid where its parts' states are
  * inside[0..n). */
@@ -58,8 +61,9 @@ static bool combination_crossing(const shape *s, const ray *r, double after, cro
     crossing ahead[SHAPE_MAX_PARTS];
     bool has[SHAPE_MAX_PARTS], inside[SHAPE_MAX_PARTS] = {false};
     for (int i = 0; i < n; i++) {
-        has[i] = next_crossing(&s->family[s->parts[i]], s->parts[i], r, after, &ahead[i], depth + 1);
-        inside[i] = has[i] && !ahead[i].entering;
+        const shape *part = &s->family[s->parts[i]];
+        has[i] = next_crossing(part, s->parts[i], r, after, &ahead[i], depth + 1);
+        inside[i] = has[i] ? !ahead[i].entering : stays_inside(part, r, after, depth + 1);
     }
     bool solid = combined(s->desc.kind, inside, n);
     /* Each step passes one crossing of one part, which has finitely many. */
@@ -96,6 +100,40 @@ static bool next_crossing(const shape *s, int index, const ray *r, double after,
         return false;
     *c = (crossing){h.t, shape_hit_enters(s, r, &h), index, h.part};
     return true;
+}
+
+/* Whether s holds an unbounded part (a plane's half-space), which a ray
+ * may be inside without crossing it. */
+static bool unbounded(const shape *s)
+{
+    if (!s->kind->csg)
+        return s->kind->contains != NULL;
+    for (int i = 0; i < s->part_count; i++)
+        if (unbounded(&s->family[s->parts[i]]))
+            return true;
+    return false;
+}
+
+/* Whether the point at `after` along r is inside s, which r crosses no
+ * more after it: outside, unless s is unbounded (a ray in a plane's
+ * half-space going away from the plane, or along the inside of a prism
+ * made of three). */
+static bool stays_inside(const shape *s, const ray *r, double after, int depth)
+{
+    if (depth >= SHAPE_MAX_NESTING || !unbounded(s))
+        return false;
+    if (!s->kind->csg) {
+        vec3 p = ray_at(r, after);
+        return s->kind->contains(s, s->has_transform ? xf_point(&s->to_object, p) : p);
+    }
+    bool inside[SHAPE_MAX_PARTS];
+    for (int i = 0; i < s->part_count; i++) {
+        const shape *part = &s->family[s->parts[i]];
+        crossing c;
+        inside[i] = next_crossing(part, s->parts[i], r, after, &c, depth + 1) ? !c.entering
+                                                                               : stays_inside(part, r, after, depth + 1);
+    }
+    return combined(s->desc.kind, inside, s->part_count);
 }
 
 static bool csg_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)

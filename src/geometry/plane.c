@@ -45,6 +45,12 @@ static void plane_uv(const shape *s, int part, surface *out)
     out->v = v3_dot(q, s->plane_v);
 }
 
+/* The solid of a plane is the half-space behind it. */
+static bool plane_contains(const shape *s, vec3 p)
+{
+    return v3_dot(v3_sub(p, s->desc.center), s->desc.normal) < 0;
+}
+
 static const param PLANE_PARAMS[] = {
     {.key = "point", .type = PARAM_VEC3, .offset = offsetof(glint_shape, center), .meaning = "a point on the plane"},
     {.key = "normal", .type = PARAM_DIRECTION, .offset = offsetof(glint_shape, normal), .required = true,
@@ -55,5 +61,5 @@ const shape_kind plane_kind = {
     .closed = shape_always_closed,
     .name = "plane", .id = GLINT_SHAPE_PLANE, .params = PARAM_TABLE(PLANE_PARAMS), .max_crossings = 1,
     .flat = true, .init = plane_init, .intersect = plane_intersect, .intersect4 = plane_intersect4,
-    .surface = plane_surface, .uv = plane_uv,
+    .surface = plane_surface, .uv = plane_uv, .contains = plane_contains,
 };

@@ -35,6 +35,10 @@ struct shape_kind {
     /* Whether s encloses a solid, so it can be a part of a combination (a
      * plane encloses the half-space behind it); NULL: never (a disk). */
     bool (*closed)(const shape *s);
+    /* For a kind whose solid is unbounded (a plane's half-space): whether
+     * object-space point p is inside it, which a ray that never crosses its
+     * surface may be. NULL: a bounded solid, which such a ray is outside. */
+    bool (*contains)(const shape *s, vec3 p);
     /* Checks what the table cannot (rules across fields) and fills the
      * fields of s derived from s->desc; NULL: nothing to do. */
     glint_status (*init)(shape *s, glint_error *err);

@@ -67,19 +67,37 @@ static bool in_set(glint_shape_kind kind, double x, double y, double z)
     return kind == GLINT_SHAPE_UNION ? a || b : kind == GLINT_SHAPE_INTERSECTION ? a && b : a && !b;
 }
 
+/* Adds the half-space behind the plane through p facing n to csg. */
+static void add_half_space(glint_scene *s, int csg, glint_vec3 p, glint_vec3 n, int mat)
+{
+    glint_shape sh = glint_shape_default(GLINT_SHAPE_PLANE);
+    sh.center = p;
+    sh.normal = n;
+    glint_error err;
+    if (glint_scene_add_part(s, csg, &sh, mat, NULL, &err) < 0)
+        fail_msg("%s", err.message);
+}
+
 /* From each point of a grid, the first crossing of the combination along
  * a slanted ray leaves it exactly when the point is inside the set; a
  * point within 1e-9 of a sphere is left out. A nested difference, (A u B)
- * minus a ball around the origin, is checked the same way. */
+ * minus a ball around the origin, is checked the same way, and ball A cut
+ * by two half-spaces, y < 0.3 and x > -0.2, which the ray goes away from
+ * (or along) where it never crosses their planes. */
 static void test_inside_outside_on_a_grid(void **state)
 {
     const glint_shape_kind kinds[] = {GLINT_SHAPE_UNION, GLINT_SHAPE_INTERSECTION, GLINT_SHAPE_DIFFERENCE};
-    for (int k = 0; k < 4; k++) {
+    for (int k = 0; k < 5; k++) {
         glint_scene *s = glint_scene_new();
         int mat = flat(s, 1, 1, 1), top;
         if (k < 3) {
             two_balls(kinds[k], s, mat);
             top = 0;
+        } else if (k == 4) {
+            top = add_combination(s, -1, GLINT_SHAPE_INTERSECTION, mat);
+            add_ball(s, top, (glint_vec3){-0.5, 0, 0}, 1, mat);
+            add_half_space(s, top, (glint_vec3){0, 0.3, 0}, (glint_vec3){0, 1, 0}, mat);
+            add_half_space(s, top, (glint_vec3){-0.2, 0, 0}, (glint_vec3){-1, 0, 0}, mat);
         } else {
             top = add_combination(s, -1, GLINT_SHAPE_DIFFERENCE, mat);
             int both = add_combination(s, top, GLINT_SHAPE_UNION, mat);
@@ -96,10 +114,12 @@ static void test_inside_outside_on_a_grid(void **state)
                     double near = fmin(fabs(sqrt((x + 0.5) * (x + 0.5) + y * y + z * z) - 1),
                                        fabs(sqrt((x - 0.5) * (x - 0.5) + y * y + z * z) - 1));
                     near = fmin(near, fabs(sqrt(x * x + y * y + z * z) - 0.4));
+                    near = fmin(near, fmin(fabs(y - 0.3), fabs(x + 0.2)));
                     if (near < 1e-9)
                         continue;
-                    bool want = k < 3 ? in_set(kinds[k], x, y, z)
-                                      : in_set(GLINT_SHAPE_UNION, x, y, z) && x * x + y * y + z * z >= 0.16;
+                    bool want = k < 3    ? in_set(kinds[k], x, y, z)
+                                : k == 4 ? in_ball(x, y, z, -0.5) && y < 0.3 && x > -0.2
+                                         : in_set(GLINT_SHAPE_UNION, x, y, z) && x * x + y * y + z * z >= 0.16;
                     ray r = {v3(x, y, z), d};
                     shape_hit h;
                     bool leaves = false;
@@ -256,6 +276,38 @@ static void test_shadow_through_a_combination(void **state)
 /* What a combination refuses, in words: a part that is not closed, a part
  * of something that is not a combination, a transform of its own, and a
  * part that would move. */
+/* A mirror ball shows the other ball of its union as it shows a ball
+ * beside it that is no part of it: a ray leaving one part may meet
+ * another. The image is the same either way, and the reflection is there. */
+static void test_parts_see_each_other(void **state)
+{
+    glint_camera cam = {.kind = GLINT_CAMERA_PINHOLE, .position = {0, 0, 6}, .look_at = {-1, 0, 0},
+                        .up = {0, 1, 0}, .vfov_degrees = 30};
+    glint_image im[2];
+    for (int k = 0; k < 2; k++) {
+        glint_scene *s = one_sample_scene(32, 32, (glint_color){1, 1, 1}, cam);
+        glint_material mirror = glint_material_default();
+        mirror.color = (glint_color){0, 0, 0};
+        mirror.ambient = mirror.diffuse = mirror.specular = 0;
+        mirror.reflectivity = 1;
+        int shiny = glint_scene_add_material(s, NULL, &mirror, NULL), white = flat(s, 1, 1, 1);
+        int csg = k ? add_combination(s, -1, GLINT_SHAPE_UNION, -1) : -1;
+        add_ball(s, csg, (glint_vec3){-1.2, 0, 0}, 1, shiny);
+        add_ball(s, csg, (glint_vec3){1.2, 0, 0}, 1, white);
+        glint_render_options o = {.threads = 1};
+        assert_int_equal(glint_render(s, &o, &im[k], NULL, NULL), GLINT_OK);
+        glint_scene_free(s);
+    }
+    int reflected = 0;
+    for (int i = 0; i < 3 * 32 * 32; i++) {
+        assert_true(im[1].pixels[i] == im[0].pixels[i]);
+        reflected += i % 3 == 0 && im[0].pixels[i] == 1 && (i / 3) % 32 < 24; /* left of the white ball */
+    }
+    assert_true(reflected > 0);
+    glint_image_free(&im[0]);
+    glint_image_free(&im[1]);
+}
+
 static void test_refusals(void **state)
 {
     glint_scene *s = glint_scene_new();
@@ -294,6 +346,7 @@ int main(void)
         cmocka_unit_test(test_silhouettes_of_two_balls),
         cmocka_unit_test(test_lens_focuses_at_its_focal_length),
         cmocka_unit_test(test_shadow_through_a_combination),
+        cmocka_unit_test(test_parts_see_each_other),
         cmocka_unit_test(test_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
