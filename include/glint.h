@@ -183,6 +183,9 @@ typedef struct glint_settings {
                                   blur); each sample is at a time between them */
     int shutter_steps;         /* moving things' poses over the shutter, 2..64 (2): they move
                                   in straight lines from one to the next */
+    int dispersion_bands;      /* 3..64 (16): the bands of the spectrum light refracted into a
+                                  dispersive material splits into, each a ray at a wavelength
+                                  drawn within it */
     int frame;                 /* the frame being rendered, 0..10,000,000 (0: a still): it moves
                                   every random pattern (glint_settings_random_seed), so that a
                                   sequence's noise changes from frame to frame as film grain
@@ -434,6 +437,10 @@ typedef struct glint_material {
     double metallic;          /* 0..1: reflections and highlights take the base colour, white at
                                  0, the base colour (or texture) at 1, as a metal's do */
     glint_absorption absorption; /* what light loses travelling inside (distance 0: nothing) */
+    double dispersion;        /* the Abbe number (n_d - 1) / (n_F - n_C), ior being n_d: refracted
+                                 light splits into the spectrum's bands (glint_settings'
+                                 dispersion_bands), lower splits more (flint glass 30, crown 60,
+                                 diamond 55); 0: none */
     /* Surface detail, both through the texture's (u, v) or, for a solid
      * texture's height, its point; an image is read as data (a byte b as
      * b / 255), not as colour. */

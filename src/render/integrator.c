@@ -13,6 +13,7 @@
 #include "shading/environment.h"
 #include "shading/fog.h"
 #include "shading/optics.h"
+#include "shading/spectrum.h"
 
 /* New rays start this far off the surface, relative to the scene scale at
  * the point, so they do not hit the surface they leave. */
@@ -131,9 +132,20 @@ typedef struct branches {
     unsigned on;              /* bit k: branch k is open */
 } branches;
 
-/* Opens branch k of b: a ray leaving sp along unit direction d, starting on
- * the side of the surface that d points to; unless, for a ray whose own
- * weight is `weight`, it would weigh less than TRACER_MIN_WEIGHT. */
+/* The ray leaving sp along unit direction d, starting on the side of the
+ * surface that d points to (*side, its offset normal), and the shape it
+ * cannot meet again (*skip, or -1). */
+static ray leaving_ray(const glint_scene *scene, const shade_point *sp, vec3 d, vec3 *side, int *skip)
+{
+    vec3 n = sp->n;
+    *side = v3_dot(d, n) > 0 ? n : v3_neg(n);
+    *skip = hit_left_behind(scene, &sp->hit, sp->s.n, d);
+    return (ray){offset_point(sp->s.p, *side), d};
+}
+
+/* Opens branch k of b: a ray leaving sp along unit direction d; unless,
+ * for a ray whose own weight is `weight`, it would weigh less than
+ * TRACER_MIN_WEIGHT. */
 static void branch(const glint_scene *scene, const shade_point *sp, branches *b, int k, vec3 d, color filter,
                    double scale, color weight)
 {
@@ -141,23 +153,44 @@ static void branch(const glint_scene *scene, const shade_point *sp, branches *b,
     if (!(rgb_max(w) >= TRACER_MIN_WEIGHT))
         return;
     b->weight[k] = w;
-    vec3 n = sp->n;
-    b->side[k] = v3_dot(d, n) > 0 ? n : v3_neg(n);
-    b->r[k] = (ray){offset_point(sp->s.p, b->side[k]), d};
-    b->skip[k] = hit_left_behind(scene, &sp->hit, sp->s.n, d);
+    b->r[k] = leaving_ray(scene, sp, d, &b->side[k], &b->skip[k]);
     b->filter[k] = filter;
     b->scale[k] = scale;
     b->on |= 1u << k;
 }
 
-/* What ray r, of weight `weight`, keeps at sp of its direct light, the rest
- * being passed on; below max_depth, fills *b with the rays that carry
- * transparency, refraction and reflection. */
+/* The normal a ray along d bends about at sp: the shading normal, unless
+ * interpolation turned it away from the ray, where only the geometric one
+ * makes sense. */
+static vec3 bend_normal(const shade_point *sp, vec3 d)
+{
+    return v3_dot(d, sp->ns) < 0 ? sp->ns : sp->n;
+}
+
+/* n_from / n_to for light of `wavelength` (0: white) crossing sp's surface
+ * along d. */
+static double crossing_eta(const shade_point *sp, vec3 d, double wavelength)
+{
+    double ior = material_index_at(sp->m, wavelength);
+    return v3_dot(d, sp->s.n) < 0 ? 1.0 / ior : ior;
+}
+
+/* Whether white light along a ray that sees sp splits into the spectrum's
+ * bands as it refracts there. */
+static bool splits(const shade_point *sp, double wavelength)
+{
+    return wavelength == 0 && sp->m->dispersion > 0;
+}
+
+/* What ray r, of weight `weight` and light of `wavelength` (0: white),
+ * keeps at sp of its direct light, the rest being passed on; below
+ * max_depth, fills *b with the rays that carry transparency, refraction
+ * and reflection. White light meeting a dispersive material opens one
+ * refracted branch, which trace_branch splits by band. */
 static color shade_local(const glint_scene *scene, const ray *r, const shade_point *sp, color direct, int depth,
-                         color weight, branches *b)
+                         color weight, double wavelength, branches *b)
 {
     const glint_material *m = sp->m;
-    vec3 n = sp->n, ns = sp->ns;
     double transmitted = m->transparency + m->refraction;
     color kept = transmitted > 0 ? rgb_scale(direct, 1 - transmitted) : direct;
     b->on = 0;
@@ -165,15 +198,12 @@ static color shade_local(const glint_scene *scene, const ray *r, const shade_poi
         return kept;
 
     double mirror = m->reflectivity;
-    /* Rays bend about the shading normal, unless interpolation turned it
-     * away from the ray, where only the geometric one makes sense. */
-    vec3 bend = v3_dot(r->d, ns) < 0 ? ns : n;
+    vec3 bend = bend_normal(sp, r->d);
     color filter = material_filter(m, sp->base);
     if (m->transparency > 0)
         branch(scene, sp, b, BRANCH_PASS, r->d, filter, m->transparency, weight);
     if (m->refraction > 0) {
-        bool front = v3_dot(r->d, sp->s.n) < 0;
-        double eta = front ? 1.0 / m->ior : m->ior;
+        double eta = crossing_eta(sp, r->d, wavelength);
         double share = 1;
         vec3 dir;
         if (!optics_refract(r->d, bend, eta, &dir))
@@ -744,27 +774,30 @@ __attribute__((noinline)) static void area_lights_seen(const tracer *t, const ra
 }
 
 static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET],
-                   int depth, const color weight[ACCEL_PACKET], const uint32_t key[ACCEL_PACKET],
-                   color out[ACCEL_PACKET]);
+                   int depth, const color weight[ACCEL_PACKET], const double wavelength[ACCEL_PACKET],
+                   const uint32_t key[ACCEL_PACKET], color out[ACCEL_PACKET]);
 
 /* Traces ray j of branch kind k of every lane that sends one (b[i], at
- * the hit sp[i] of a lane found[i]) as one packet, adding what each brings
- * back to local[i]. rays[i]: the rays lane i spreads the branch over, ray
- * j in the lobe about the sharp direction when its material is rough;
- * NULL: one sharp ray each, and no key is needed. */
-static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET],
-                                                               const shade_point sp[ACCEL_PACKET],
-                                                               const branches b[ACCEL_PACKET], int k, int j,
-                                                               const int *rays, int depth,
-                                                               const color weight[ACCEL_PACKET],
-                                                               const uint32_t key[ACCEL_PACKET],
-                                                               color local[ACCEL_PACKET])
+ * the hit sp[i] of a lane found[i], its light of wavelength[i]) as one
+ * packet, adding what each brings back to local[i]. rays[i]: the rays
+ * lane i spreads the branch over, ray j in the lobe about the sharp
+ * direction when its material is rough; NULL: one sharp ray each, and no
+ * key is needed. White light refracting into a dispersive material
+ * spreads over the spectrum's bands too (rays[i] a multiple of their
+ * count): ray j is band j % count's, at a wavelength drawn within it,
+ * bent by that wavelength's index and carrying that band's colour. */
+static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET], const shade_point sp[ACCEL_PACKET],
+                         const branches b[ACCEL_PACKET], int k, int j, const int *rays, int depth,
+                         const color weight[ACCEL_PACKET], const double wavelength[ACCEL_PACKET],
+                         const uint32_t key[ACCEL_PACKET], color local[ACCEL_PACKET])
 {
     ray8 next;
     int next_skip[ACCEL_PACKET];
     uint32_t next_key[ACCEL_PACKET] = {0};
-    bool on[ACCEL_PACKET], any = false;
+    bool on[ACCEL_PACKET], any = false, banded[ACCEL_PACKET] = {false};
     color next_weight[ACCEL_PACKET];
+    double next_wavelength[ACCEL_PACKET];
+    int bands = t->spectrum->count;
     /* Each lane's budget is spent as its own branches are met, depth first,
      * so what it cuts does not depend on the other lanes. */
     for (int i = 0; i < ACCEL_PACKET; i++) {
@@ -776,25 +809,45 @@ static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET
         return;
     for (int i = 0; i < ACCEL_PACKET; i++) {
         ray ri = on[i] ? b[i].r[k] : ray8_get(r, i);
+        vec3 side = on[i] ? b[i].side[k] : v3(0, 0, 0);
+        next_skip[i] = on[i] ? b[i].skip[k] : -1;
+        next_wavelength[i] = wavelength[i];
+        int lobe_ray = j;
         if (rays) {
             uint32_t branch_key = hash_u32(key[i] ^ (uint32_t)(k + 1) * 0x9e3779b9U);
             next_key[i] = j ? hash_u32(branch_key ^ (uint32_t)j * 0x85ebca6bU) : branch_key;
+            banded[i] = on[i] && k == BRANCH_REFRACT && splits(&sp[i], wavelength[i]);
+            if (banded[i]) {
+                /* Where this wavelength is reflected whole, its ray is mirrored. */
+                lobe_ray = j / bands;
+                double w = next_wavelength[i] = spectrum_wavelength(t->spectrum, j % bands,
+                                                                      hash_unit(hash_u32(next_key[i] ^ 0x3c6ef372U)));
+                vec3 d = ray8_get(r, i).d, bend = bend_normal(&sp[i], d), out;
+                if (!optics_refract(d, bend, crossing_eta(&sp[i], d, w), &out))
+                    out = optics_reflect(d, bend);
+                ri = leaving_ray(t->scene, &sp[i], out, &side, &next_skip[i]);
+            }
             if (on[i] && k != BRANCH_PASS && sp[i].m->roughness > 0) {
                 double u[2];
-                pattern_point(sobol2_seeds_of(hash_u32(branch_key ^ 0x7a3c1f55U)), j, u);
-                ri.d = optics_lobe(ri.d, b[i].side[k], material_lobe_exponent(sp[i].m), u[0], u[1]);
+                pattern_point(sobol2_seeds_of(hash_u32(branch_key ^ 0x7a3c1f55U)), lobe_ray, u);
+                ri.d = optics_lobe(ri.d, side, material_lobe_exponent(sp[i].m), u[0], u[1]);
             }
         }
         ray8_set(&next, i, ri);
-        next_skip[i] = on[i] ? b[i].skip[k] : -1;
         next_weight[i] = on[i] ? (rays ? rgb_scale(b[i].weight[k], 1.0 / rays[i]) : b[i].weight[k]) : weight[i];
+        if (banded[i])
+            next_weight[i] = rgb_mul(rgb_scale(next_weight[i], bands), t->spectrum->weight[j % bands]);
     }
     color c[ACCEL_PACKET];
-    trace8(t, &next, next_skip, on, depth + 1, next_weight, next_key, c);
-    for (int i = 0; i < ACCEL_PACKET; i++)
-        if (on[i])
-            local[i] = rgb_add(local[i], rgb_scale(rgb_mul(b[i].filter[k], c[i]),
-                                                   rays ? b[i].scale[k] / rays[i] : b[i].scale[k]));
+    trace8(t, &next, next_skip, on, depth + 1, next_weight, next_wavelength, next_key, c);
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        if (!on[i])
+            continue;
+        color seen = rgb_mul(b[i].filter[k], c[i]);
+        if (banded[i])
+            seen = rgb_scale(rgb_mul(seen, t->spectrum->weight[j % bands]), bands);
+        local[i] = rgb_add(local[i], rgb_scale(seen, rays ? b[i].scale[k] / rays[i] : b[i].scale[k]));
+    }
 }
 
 /* The colours of up to ACCEL_PACKET rays at recursion depth `depth`, of
@@ -803,8 +856,8 @@ static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET
  * kind of branch, over the lanes that send one and have budget left
  * (tracer_trace8), each with a key of its own made from its ray's. */
 static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET],
-                   int depth, const color weight[ACCEL_PACKET], const uint32_t key[ACCEL_PACKET],
-                   color out[ACCEL_PACKET])
+                   int depth, const color weight[ACCEL_PACKET], const double wavelength[ACCEL_PACKET],
+                   const uint32_t key[ACCEL_PACKET], color out[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
     if (stopping(t)) {
@@ -856,7 +909,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (found[i]) {
             ray ri = ray8_get(r, i);
-            local[i] = shade_local(scene, &ri, &sp[i], local[i], depth, weight[i], &b[i]);
+            local[i] = shade_local(scene, &ri, &sp[i], local[i], depth, weight[i], wavelength[i], &b[i]);
             sent |= b[i].on;
         }
     }
@@ -864,22 +917,27 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
         if (!(sent >> k & 1))
             continue;
         if (!t->keys) {
-            trace_branch(t, r, found, sp, b, k, 0, NULL, depth, weight, key, local);
+            trace_branch(t, r, found, sp, b, k, 0, NULL, depth, weight, wavelength, key, local);
             continue;
         }
         /* A rough surface spreads its reflected and refracted rays over a
          * lobe: as many as the material's glossy_samples for a ray of
-         * weight 1, fewer for a ray of less, at least 1. */
+         * weight 1, fewer for a ray of less, at least 1. White light
+         * refracting into a dispersive material sends that many per band. */
         int rays[ACCEL_PACKET] = {1, 1, 1, 1, 1, 1, 1, 1}, most = 1;
         for (int i = 0; i < ACCEL_PACKET; i++) {
-            if (found[i] && k != BRANCH_PASS && sp[i].m->roughness > 0) {
+            if (!found[i])
+                continue;
+            if (k != BRANCH_PASS && sp[i].m->roughness > 0) {
                 double n = ceil(sp[i].m->glossy_samples * rgb_max(weight[i]));
                 rays[i] = n < 1 ? 1 : n > sp[i].m->glossy_samples ? sp[i].m->glossy_samples : (int)n;
-                most = rays[i] > most ? rays[i] : most;
             }
+            if (k == BRANCH_REFRACT && splits(&sp[i], wavelength[i]))
+                rays[i] *= t->spectrum->count;
+            most = rays[i] > most ? rays[i] : most;
         }
         for (int j = 0; j < most && !stopping(t); j++)
-            trace_branch(t, r, found, sp, b, k, j, rays, depth, weight, key, local);
+            trace_branch(t, r, found, sp, b, k, j, rays, depth, weight, wavelength, key, local);
     }
     /* A ray that reaches a surface from inside an absorbing thing has
      * crossed it: what it brings back is dimmed by that length. */
@@ -907,7 +965,7 @@ bool tracer_needs_keys(const glint_scene *scene)
     if (scene->area_light_count > 0 || scene->emitter_count > 0 || scene->settings.occlusion_samples > 0)
         return true;
     for (int i = 0; i < scene->material_count; i++)
-        if (scene->materials[i].m.roughness > 0)
+        if (scene->materials[i].m.roughness > 0 || scene->materials[i].m.dispersion > 0)
             return true;
     return false;
 }
@@ -927,10 +985,11 @@ void tracer_trace8(tracer *t, const ray8 *r, const double *time, const bool acti
 {
     t->time = time;
     static const int none[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
+    static const double white[ACCEL_PACKET] = {0};
     color whole[ACCEL_PACKET];
     for (int i = 0; i < ACCEL_PACKET; i++) {
         whole[i] = rgb(1, 1, 1);
         t->budget[i] = TRACER_MAX_BRANCH_RAYS;
     }
-    trace8(t, r, none, active, 0, whole, key, out);
+    trace8(t, r, none, active, 0, whole, white, key, out);
 }

@@ -4,6 +4,7 @@
 
 #include <stdint.h>
 #include "shading/light_choice.h"
+#include "shading/spectrum.h"
 #include "accel/accel.h"
 #include "scene/scene.h"
 
@@ -35,6 +36,7 @@ typedef struct tracer {
     bool stopped;             /* the flag was seen set: every colour since is meaningless */
     bool keys;                /* tracer_needs_keys: without, no key is hashed, no ray spread */
     const light_choice *choice; /* settings.light_samples: the area lights and emitters by power; else NULL */
+    const spectrum *spectrum; /* the bands dispersive materials split light into (settings.dispersion_bands) */
     int budget[ACCEL_PACKET]; /* each lane's branch rays left in its sample */
     const double *time;       /* each lane's time over the shutter, where moving shapes are
                                  (tracer_trace8's), or NULL: nothing moves */
@@ -47,8 +49,8 @@ typedef struct tracer {
 double tracer_reach(const glint_scene *scene);
 
 /* Whether tracing the scene uses random numbers, so the keys passed to
- * tracer_trace8: with area lights, emissive surfaces, rough materials or
- * ambient occlusion.
+ * tracer_trace8: with area lights, emissive surfaces, rough or dispersive
+ * materials or ambient occlusion.
  * Without, every key may be 0. */
 bool tracer_needs_keys(const glint_scene *scene);
 

@@ -39,6 +39,7 @@ typedef struct job {
     bool keys;                    /* tracing uses the samples' keys: tracer_needs_keys */
     uint32_t key_seed;            /* what they are hashed with: the frame's random seed */
     light_choice choice;          /* with settings.light_samples: the area lights and emitters by power */
+    spectrum bands;               /* settings.dispersion_bands' colours */
     int tiles_done;               /* under progress_lock */
     pthread_mutex_t progress_lock;
 } job;
@@ -264,7 +265,8 @@ static void *worker_run(void *arg)
     worker *w = arg;
     job *j = w->job;
     tracer t = {.scene = j->scene, .acc = j->acc, .reach = tracer_reach(j->scene), .cancel = j->opts->cancel,
-                .keys = j->keys, .choice = j->scene->settings.light_samples > 0 ? &j->choice : NULL};
+                .keys = j->keys, .choice = j->scene->settings.light_samples > 0 ? &j->choice : NULL,
+                .spectrum = &j->bands};
     const render_feed *f = j->feed;
     const render_layout *l = &j->layout;
     int tile;
@@ -371,6 +373,7 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
     }
     j.film.exposure_scale = exp2(s->exposure);
     j.keys = tracer_needs_keys(scene);
+    spectrum_init(&j.bands, s->dispersion_bands);
     j.key_seed = glint_settings_random_seed(&scene->settings) ^ 0x4b455953U;
     camera_init(&j.cam, &scene->camera, s->width, s->height);
     /* Motion blur only with a shutter open for a while. */

@@ -45,7 +45,10 @@ static const param SETTINGS_PARAMS[] = {
      .meaning = "shadow rays from each point lit towards each emissive shape or mesh: more is smoother"},
     {.key = "light_samples", .type = PARAM_INTEGER, SETTING(light_samples), .lo = 0, .hi = 4096,
      .meaning = "0: every area light and emissive surface sends its own samples; more: each point lit sends "
-                "this many in all, each to one of them chosen by its power (many lamps cost what one does)"}, 
+                "this many in all, each to one of them chosen by its power (many lamps cost what one does)"},
+    {.key = "dispersion_bands", .type = PARAM_INTEGER, SETTING(dispersion_bands), .def = {16}, .lo = 3, .hi = 64,
+     .meaning = "the bands of the spectrum (400 to 700 nm) light refracted into a dispersive material splits "
+                "into, each a ray at a wavelength drawn within its band: more is smoother and slower"},
 };
 
 #define CAMERA(name) .offset = offsetof(glint_camera, name)

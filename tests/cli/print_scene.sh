@@ -79,6 +79,7 @@ settings:
   exposure: -1.5
   emission_samples: 16
   light_samples: 0
+  dispersion_bands: 16
   filter: {type: mitchell, radius: 0}
   output: x.exr
 camera:
@@ -142,6 +143,7 @@ settings:
   exposure: 0
   emission_samples: 16
   light_samples: 0
+  dispersion_bands: 16
   output: out.png
 camera:
   position: [0, 1, 5]
