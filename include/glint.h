@@ -330,6 +330,15 @@ typedef enum glint_wrap {
     GLINT_WRAP_MIRROR         /* tiles, every other tile flipped: 1.25 reads as 0.75 */
 } glint_wrap;
 
+/* How an image texture is read between and across its texels. */
+typedef enum glint_image_filter {
+    GLINT_IMAGE_TRILINEAR = 0, /* the image, or where a sample covers more than a texel of it, its
+                                   halved copies (mipmap levels) blended by the sample's footprint:
+                                   no shimmer far away */
+    GLINT_IMAGE_BILINEAR      /* the image alone, the 2 x 2 texels nearest blended: sharp, but a
+                                 far one aliases */
+} glint_image_filter;
+
 typedef struct glint_texture {
     glint_texture_kind kind;
     glint_mapping mapping;
@@ -343,6 +352,7 @@ typedef struct glint_texture {
                                  left to right, v top to bottom */
     glint_wrap wrap_u, wrap_v; /* image: past its edges (glint_texture_default: u repeats,
                                   v clamps) */
+    glint_image_filter filter; /* image: how texels are blended (trilinear) */
     /* noise, marble, wood, granite: the pattern's value v (0 to 1) at a point
      * p of the thing's own space, q = p / scale, through the colour map. */
     glint_color_stop stops[GLINT_MAX_COLOR_STOPS]; /* ascending `at`, from 0 to 1 */

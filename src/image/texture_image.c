@@ -108,7 +108,11 @@ glint_status texture_image_load_memory(texture_image *out, const void *data, siz
         what = "(memory)";
     const image_reader *reader;
     glint_status st = find_reader(data, size, what, &reader, err);
-    return st ? st : reader->decode(out, data, size, what, err);
+    if (!st)
+        st = reader->decode(out, data, size, what, err);
+    if (!st && (st = texture_image_build_levels(out, err)))
+        texture_image_free(out);
+    return st;
 }
 
 static glint_status read_error(int fd, void *buf, const char *path, const char *reason,
@@ -213,5 +217,18 @@ void texture_image_free(texture_image *img)
     if (!img)
         return;
     free(img->owned);
+    texture_image_free_levels(img);
     *img = (texture_image){0};
+}
+
+void texture_image_free_levels(texture_image *img)
+{
+    if (img->owns_levels) {
+        for (int k = 0; k < img->level_count - 1; k++)
+            free(img->levels[k].owned);
+        free(img->levels);
+    }
+    img->levels = NULL;
+    img->level_count = 0;
+    img->owns_levels = false;
 }

@@ -35,6 +35,13 @@ typedef struct texture_image {
     const float *hdr;
     void *owned;              /* srgb or hdr when the image allocated them, else NULL */
     const float *linear;      /* 256 entries, shared by every image */
+    /* The image halved again and again down to one texel
+     * (texture_image_build_levels): level k + 1 is levels[k], level 0 the
+     * image itself; level_count of them, 0 when none are built. Freed with
+     * the image when owns_levels, else borrowed like its pixels. */
+    struct texture_image *levels;
+    int level_count;
+    bool owns_levels;
 } texture_image;
 
 /* The linear value of channel i % 3 of pixel i / 3 of img. */
@@ -60,8 +67,20 @@ static inline texture_image texture_image_share(const texture_image *img)
 {
     texture_image shared = *img;
     shared.owned = NULL;
+    shared.owns_levels = false;
     return shared;
 }
+
+/* Builds img's smaller levels, each half the size of the one before
+ * (rounded up) down to 1 x 1, each texel the mean of the linear values of
+ * the 2 x 2 below it (an edge texel of an odd size counted twice), kept as
+ * the image keeps its own (sRGB bytes or linear floats): a third more
+ * memory. GLINT_ERR_NOMEM, and no levels, when memory runs out. */
+glint_status texture_image_build_levels(texture_image *img, glint_error *err);
+
+/* The most levels an image has: its own and 15 halvings of the longest
+ * side, TEXTURE_IMAGE_MAX_SIDE. */
+#define TEXTURE_IMAGE_MAX_LEVELS 16
 
 /* img's pixels borrowed and read as data rather than colours: a byte b as
  * b / 255, not made linear (a normal map's or a height map's values);
@@ -69,7 +88,7 @@ static inline texture_image texture_image_share(const texture_image *img)
 texture_image texture_image_as_data(const texture_image *img);
 
 /* Decodes the PNG, JPEG or OpenEXR file at path, told apart by its first
- * bytes, not its name. Alpha is ignored. On failure *out is left empty and err names
+ * bytes, not its name, and builds its levels. Alpha is ignored. On failure *out is left empty and err names
  * the file: GLINT_ERR_IO when it cannot be read, GLINT_ERR_INVALID when it
  * is not a PNG or JPEG, is corrupt or is too large, GLINT_ERR_NOMEM. */
 glint_status texture_image_load_file(texture_image *out, const char *path, glint_error *err);
@@ -91,7 +110,10 @@ glint_status texture_image_load_memory(texture_image *out, const void *data, siz
  * such as the seed room's Moon map, so that no decoding runs at start-up. */
 texture_image texture_image_borrow(int width, int height, const unsigned char *srgb);
 
-/* Frees the pixels it owns and empties the image. NULL is allowed. */
+/* Frees the levels img owns (none are left). */
+void texture_image_free_levels(texture_image *img);
+
+/* Frees the pixels and levels it owns and empties the image. NULL is allowed. */
 void texture_image_free(texture_image *img);
 
 #endif

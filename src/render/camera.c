@@ -48,6 +48,8 @@ void camera_frame_init(camera *c, const glint_camera *d, int width, int height)
     c->height = height;
     c->per_x = half_height * width / height / width;
     c->per_y = half_height / height;
+    c->cone_width = 0;
+    c->cone_spread = 2 * c->per_y;
 }
 
 void camera_init(camera *c, const glint_camera *desc, int width, int height)

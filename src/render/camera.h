@@ -28,6 +28,10 @@ typedef struct camera {
     /* Half the image plane's width (at distance 1) over the image width,
      * and likewise its height: a pixel is twice these across. */
     double per_x, per_y;
+    /* How wide a pixel's footprint is at distance t along a ray, for
+     * texture filtering: cone_width + cone_spread t (a pixel's width on the
+     * image plane, or its angle). */
+    double cone_width, cone_spread;
     double lens_radius, focus_distance;  /* a thin lens's */
     int blades;                          /* a thin lens's: 0 round, else a regular polygon */
 } camera;

@@ -49,7 +49,8 @@ static inline void camera_ray_put(ray8 *out, int i, vec3 from, vec3 dir)
 }
 
 /* What every kind that looks through an image plane shares: c's frame
- * (forward, right, up), size and per_x, per_y from the scene's camera. */
+ * (forward, right, up), size and per_x, per_y from the scene's camera,
+ * and a pixel's footprint through the plane (cone_width, cone_spread). */
 void camera_frame_init(camera *c, const glint_camera *desc, int width, int height);
 
 /* The unit directions through the image positions (x[k], y[k]) of four

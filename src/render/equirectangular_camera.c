@@ -7,6 +7,12 @@
 #include <math.h>
 #include "render/camera_kind.h"
 
+static void equirectangular_init(camera *c, const glint_camera *d, int width, int height)
+{
+    camera_frame_init(c, d, width, height);
+    c->cone_spread = 2 * M_PI / width; /* a pixel's angle of longitude */
+}
+
 static void equirectangular_rays8(const camera *c, const double x[RAY8], const double y[RAY8],
                                   const camera_lens8 *lens, const double time[RAY8], ray8 *out)
 {
@@ -23,6 +29,6 @@ static void equirectangular_rays8(const camera *c, const double x[RAY8], const d
 const camera_kind equirectangular_camera = {
     .name = "equirectangular",
     .id = GLINT_CAMERA_EQUIRECTANGULAR,
-    .init = camera_frame_init,
+    .init = equirectangular_init,
     .rays8 = equirectangular_rays8,
 };

@@ -13,6 +13,7 @@ static void fisheye_init(camera *c, const glint_camera *d, int width, int height
     camera_frame_init(c, d, width, height);
     /* The angle a pixel spans, in radians. */
     c->per_x = c->per_y = d->vfov_degrees * M_PI / 180 / width;
+    c->cone_spread = c->per_x;
 }
 
 static void fisheye_rays8(const camera *c, const double x[RAY8], const double y[RAY8], const camera_lens8 *lens,

@@ -1,8 +1,10 @@
 /* hit.c - which shapes and mesh placements block all light: the opacity
  * lists the accelerator is built with, once a render. The per-hit calls
- * are in hit.h (which says why). */
+ * are in hit.h (which says why); a textured hit's colour, which may
+ * measure the footprint it covers. */
 #include <stdlib.h>
 #include "render/hit.h"
+#include "render/surface_coords.h"
 
 /* Whether every surface of s blocks all light: its material's, or every
  * part's of a combination. */
@@ -14,6 +16,27 @@ static bool shape_blocks(const glint_scene *scene, const shape *s)
         if (!shape_blocks(scene, &scene->shapes[s->parts[i]]))
             return false;
     return true;
+}
+
+color hit_texture_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s,
+                        vec3 d, double width)
+{
+    const texture *t = &scene->textures[m->texture];
+    /* Meshes carry their uv already; shapes compute it only when a
+     * texture of (u, v) asks. */
+    shape moved;
+    const shape *sh = h->shape >= 0 ? shape_at(&scene->shapes[h->shape], h->time, &moved) : NULL;
+    if (sh && t->mapping.kind == GLINT_MAP_UV && !t->kind->solid)
+        shape_surface_uv(sh, s);
+    vec3 center = sh ? shape_center(sh) : mesh_center(hit_mesh(scene, h));
+    if (!(width > 0) || !texture_filters(t))
+        return texture_eval(t, s, center, (uv_extent){0, 0});
+    double u, v;
+    mapping_apply(&t->mapping, s, center, &u, &v);
+    vec3 q = texture_place(t, v3(u, v, 0));
+    coord_spot at;
+    coord_spot_init(scene, h, s, &at);
+    return t->kind->eval(t, q.x, q.y, coord_footprint(&at, t, s->n, d, width, q.x, q.y));
 }
 
 bool hit_opacity(const glint_scene *scene, bool **shapes, bool **instances)

@@ -58,29 +58,21 @@ static __attribute__((unused)) void hit_surface(const glint_scene *scene, const 
 }
 
 /* hit_color for a textured material (most materials have none). */
-static __attribute__((unused)) color hit_texture_color(const glint_scene *scene, const accel_hit *h,
-                                                        const glint_material *m, surface *s)
-{
-    const texture *t = &scene->textures[m->texture];
-    if (h->shape < 0)
-        return texture_eval(t, s, mesh_center(hit_mesh(scene, h)));
-    /* Meshes carry their uv already; shapes compute it only when a
-     * texture of (u, v) asks. */
-    shape moved;
-    const shape *sh = shape_at(&scene->shapes[h->shape], h->time, &moved);
-    if (t->mapping.kind == GLINT_MAP_UV && !t->kind->solid)
-        shape_surface_uv(sh, s);
-    return texture_eval(t, s, shape_center(sh));
-}
+color hit_texture_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s,
+                        vec3 d, double width);
 
 /* The colour of material m (hit_material's) at the surface s of hit h
- * (hit_surface's): its colour, or its texture's there. A shape's uv is
- * filled into s only when the texture maps by it; a mesh carries its own.
- * Inline, unlike the others: the test for a texture is kept small enough
- * to be inlined at each hit, apart from the look-up. */
-static inline color hit_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s)
+ * (hit_surface's), seen along unit direction d by a sample whose
+ * footprint there is `width` across (0: a point): its colour, or its
+ * texture's there, an image's averaged over the footprint when it filters
+ * (texture_filters). A shape's uv is filled into s only when the texture
+ * maps by it; a mesh carries its own. Inline, unlike the others: the test
+ * for a texture is kept small enough to be inlined at each hit, apart from
+ * the look-up. */
+static inline color hit_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s,
+                              vec3 d, double width)
 {
-    return m->texture < 0 ? m->color : hit_texture_color(scene, h, m, s);
+    return m->texture < 0 ? m->color : hit_texture_color(scene, h, m, s, d, width);
 }
 
 /* The shape a ray leaving hit h along d cannot meet again, which the

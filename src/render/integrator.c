@@ -48,7 +48,7 @@ static color shadow_filter(void *user, const ray *r, const accel_hit *hit, color
         surface s;
         hit_surface(scene, r, &h, &s);
         if (m->texture >= 0)
-            base = hit_texture_color(scene, &h, m, &s);
+            base = hit_texture_color(scene, &h, m, &s, r->d, 0);
         if (material_absorbs(m)) {
             color d = material_optical_depth(m, h.t);
             *depth = rgb_madd(*depth, d, v3_dot(r->d, s.n) > 0 ? 1 : -1);
@@ -68,10 +68,23 @@ typedef struct shade_point {
     color base;               /* the surface colour */
 } shade_point;
 
+/* What each lane of a packet carries from the camera: its weight in its
+ * sample (the product of the filters and shares along its path), the
+ * wavelength of its light (0: white; see spectrum.h) and the length of
+ * its path to where it starts, along which a pixel's footprint widens. */
+typedef struct paths {
+    color weight[ACCEL_PACKET];
+    double wavelength[ACCEL_PACKET];
+    double travelled[ACCEL_PACKET];
+} paths;
+
 /* Describes the hit h of ray r for shading, its distance refined where
- * Embree's was single precision (hit_surface). */
-static void shade_begin(const glint_scene *scene, const ray *r, const accel_hit *h, shade_point *sp)
+ * Embree's was single precision (hit_surface), for a ray that has
+ * travelled `travelled` before it (the footprint a texture is averaged
+ * over widens with the whole path). */
+static void shade_begin(const tracer *t, const ray *r, const accel_hit *h, double travelled, shade_point *sp)
 {
+    const glint_scene *scene = t->scene;
     sp->hit = *h;
     sp->m = hit_material(scene, h);
     hit_surface(scene, r, &sp->hit, &sp->s);
@@ -81,7 +94,8 @@ static void shade_begin(const glint_scene *scene, const ray *r, const accel_hit 
     sp->n = front ? sp->s.n : v3_neg(sp->s.n);
     sp->ns = front ? sp->s.shading_n : v3_neg(sp->s.shading_n);
     sp->origin = offset_point(sp->s.p, sp->n);
-    sp->base = hit_color(scene, &sp->hit, sp->m, &sp->s);
+    sp->base = hit_color(scene, &sp->hit, sp->m, &sp->s, r->d,
+                         t->cone_width + t->cone_spread * (travelled + sp->hit.t));
 }
 
 /* The shadow segment from sp, seen along ray r, towards light l sampled
@@ -774,12 +788,10 @@ __attribute__((noinline)) static void area_lights_seen(const tracer *t, const ra
 }
 
 static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET],
-                   int depth, const color weight[ACCEL_PACKET], const double wavelength[ACCEL_PACKET],
-                   const uint32_t key[ACCEL_PACKET], color out[ACCEL_PACKET]);
+                   int depth, const paths *path, const uint32_t key[ACCEL_PACKET], color out[ACCEL_PACKET]);
 
 /* Traces ray j of branch kind k of every lane that sends one (b[i], at
- * the hit sp[i] of a lane found[i], its light of wavelength[i]) as one
- * packet, adding what each brings back to local[i]. rays[i]: the rays
+ * the hit sp[i] of a lane found[i], along `path`) as one packet, adding what each brings back to local[i]. rays[i]: the rays
  * lane i spreads the branch over, ray j in the lobe about the sharp
  * direction when its material is rough; NULL: one sharp ray each, and no
  * key is needed. White light refracting into a dispersive material
@@ -788,15 +800,13 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
  * bent by that wavelength's index and carrying that band's colour. */
 static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET], const shade_point sp[ACCEL_PACKET],
                          const branches b[ACCEL_PACKET], int k, int j, const int *rays, int depth,
-                         const color weight[ACCEL_PACKET], const double wavelength[ACCEL_PACKET],
-                         const uint32_t key[ACCEL_PACKET], color local[ACCEL_PACKET])
+                         const paths *path, const uint32_t key[ACCEL_PACKET], color local[ACCEL_PACKET])
 {
     ray8 next;
     int next_skip[ACCEL_PACKET];
     uint32_t next_key[ACCEL_PACKET] = {0};
     bool on[ACCEL_PACKET], any = false, banded[ACCEL_PACKET] = {false};
-    color next_weight[ACCEL_PACKET];
-    double next_wavelength[ACCEL_PACKET];
+    paths next_path;
     int bands = t->spectrum->count;
     /* Each lane's budget is spent as its own branches are met, depth first,
      * so what it cuts does not depend on the other lanes. */
@@ -811,16 +821,17 @@ static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET
         ray ri = on[i] ? b[i].r[k] : ray8_get(r, i);
         vec3 side = on[i] ? b[i].side[k] : v3(0, 0, 0);
         next_skip[i] = on[i] ? b[i].skip[k] : -1;
-        next_wavelength[i] = wavelength[i];
+        next_path.wavelength[i] = path->wavelength[i];
+        next_path.travelled[i] = on[i] ? path->travelled[i] + sp[i].hit.t : path->travelled[i];
         int lobe_ray = j;
         if (rays) {
             uint32_t branch_key = hash_u32(key[i] ^ (uint32_t)(k + 1) * 0x9e3779b9U);
             next_key[i] = j ? hash_u32(branch_key ^ (uint32_t)j * 0x85ebca6bU) : branch_key;
-            banded[i] = on[i] && k == BRANCH_REFRACT && splits(&sp[i], wavelength[i]);
+            banded[i] = on[i] && k == BRANCH_REFRACT && splits(&sp[i], path->wavelength[i]);
             if (banded[i]) {
                 /* Where this wavelength is reflected whole, its ray is mirrored. */
                 lobe_ray = j / bands;
-                double w = next_wavelength[i] = spectrum_wavelength(t->spectrum, j % bands,
+                double w = next_path.wavelength[i] = spectrum_wavelength(t->spectrum, j % bands,
                                                                       hash_unit(hash_u32(next_key[i] ^ 0x3c6ef372U)));
                 vec3 d = ray8_get(r, i).d, bend = bend_normal(&sp[i], d), out;
                 if (!optics_refract(d, bend, crossing_eta(&sp[i], d, w), &out))
@@ -834,12 +845,13 @@ static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET
             }
         }
         ray8_set(&next, i, ri);
-        next_weight[i] = on[i] ? (rays ? rgb_scale(b[i].weight[k], 1.0 / rays[i]) : b[i].weight[k]) : weight[i];
+        color *w = &next_path.weight[i];
+        *w = on[i] ? (rays ? rgb_scale(b[i].weight[k], 1.0 / rays[i]) : b[i].weight[k]) : path->weight[i];
         if (banded[i])
-            next_weight[i] = rgb_mul(rgb_scale(next_weight[i], bands), t->spectrum->weight[j % bands]);
+            *w = rgb_mul(rgb_scale(*w, bands), t->spectrum->weight[j % bands]);
     }
     color c[ACCEL_PACKET];
-    trace8(t, &next, next_skip, on, depth + 1, next_weight, next_wavelength, next_key, c);
+    trace8(t, &next, next_skip, on, depth + 1, &next_path, next_key, c);
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (!on[i])
             continue;
@@ -856,8 +868,7 @@ static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET
  * kind of branch, over the lanes that send one and have budget left
  * (tracer_trace8), each with a key of its own made from its ray's. */
 static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET],
-                   int depth, const color weight[ACCEL_PACKET], const double wavelength[ACCEL_PACKET],
-                   const uint32_t key[ACCEL_PACKET], color out[ACCEL_PACKET])
+                   int depth, const paths *path, const uint32_t key[ACCEL_PACKET], color out[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
     if (stopping(t)) {
@@ -891,7 +902,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
         if (!found[i])
             continue;
         ray ri = ray8_get(r, i);
-        shade_begin(scene, &ri, &hits[i], &sp[i]);
+        shade_begin(t, &ri, &hits[i], path->travelled[i], &sp[i]);
         if (fog && fog_hides(&scene->fog, sp[i].hit.t))
             found[i] = false;
         else if (occlusion)
@@ -903,13 +914,13 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     if (scene->area_light_count > 0)
         area_lights_seen(t, r, active, found, sp, glows, local);
     if (occlusion)
-        ambient_occlusion8(t, found, sp, depth, weight, key, local);
+        ambient_occlusion8(t, found, sp, depth, path->weight, key, local);
     direct_light8(t, r, found, sp, depth, key, local);
     unsigned sent = 0; /* bit k: some lane sends a ray of kind k */
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (found[i]) {
             ray ri = ray8_get(r, i);
-            local[i] = shade_local(scene, &ri, &sp[i], local[i], depth, weight[i], wavelength[i], &b[i]);
+            local[i] = shade_local(scene, &ri, &sp[i], local[i], depth, path->weight[i], path->wavelength[i], &b[i]);
             sent |= b[i].on;
         }
     }
@@ -917,7 +928,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
         if (!(sent >> k & 1))
             continue;
         if (!t->keys) {
-            trace_branch(t, r, found, sp, b, k, 0, NULL, depth, weight, wavelength, key, local);
+            trace_branch(t, r, found, sp, b, k, 0, NULL, depth, path, key, local);
             continue;
         }
         /* A rough surface spreads its reflected and refracted rays over a
@@ -929,15 +940,15 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
             if (!found[i])
                 continue;
             if (k != BRANCH_PASS && sp[i].m->roughness > 0) {
-                double n = ceil(sp[i].m->glossy_samples * rgb_max(weight[i]));
+                double n = ceil(sp[i].m->glossy_samples * rgb_max(path->weight[i]));
                 rays[i] = n < 1 ? 1 : n > sp[i].m->glossy_samples ? sp[i].m->glossy_samples : (int)n;
             }
-            if (k == BRANCH_REFRACT && splits(&sp[i], wavelength[i]))
+            if (k == BRANCH_REFRACT && splits(&sp[i], path->wavelength[i]))
                 rays[i] *= t->spectrum->count;
             most = rays[i] > most ? rays[i] : most;
         }
         for (int j = 0; j < most && !stopping(t); j++)
-            trace_branch(t, r, found, sp, b, k, j, rays, depth, weight, wavelength, key, local);
+            trace_branch(t, r, found, sp, b, k, j, rays, depth, path, key, local);
     }
     /* A ray that reaches a surface from inside an absorbing thing has
      * crossed it: what it brings back is dimmed by that length. */
@@ -985,11 +996,11 @@ void tracer_trace8(tracer *t, const ray8 *r, const double *time, const bool acti
 {
     t->time = time;
     static const int none[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
-    static const double white[ACCEL_PACKET] = {0};
-    color whole[ACCEL_PACKET];
+    paths start; /* whole, white, from the camera */
     for (int i = 0; i < ACCEL_PACKET; i++) {
-        whole[i] = rgb(1, 1, 1);
+        start.weight[i] = rgb(1, 1, 1);
+        start.wavelength[i] = start.travelled[i] = 0;
         t->budget[i] = TRACER_MAX_BRANCH_RAYS;
     }
-    trace8(t, r, none, active, 0, whole, white, key, out);
+    trace8(t, r, none, active, 0, &start, key, out);
 }

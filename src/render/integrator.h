@@ -37,6 +37,9 @@ typedef struct tracer {
     bool keys;                /* tracer_needs_keys: without, no key is hashed, no ray spread */
     const light_choice *choice; /* settings.light_samples: the area lights and emitters by power; else NULL */
     const spectrum *spectrum; /* the bands dispersive materials split light into (settings.dispersion_bands) */
+    double cone_width, cone_spread; /* a sample's footprint at distance d along its path: width +
+                                       spread d (the camera's pixel over the square root of the
+                                       samples a pixel takes), over which textures are averaged */
     int budget[ACCEL_PACKET]; /* each lane's branch rays left in its sample */
     const double *time;       /* each lane's time over the shutter, where moving shapes are
                                  (tracer_trace8's), or NULL: nothing moves */

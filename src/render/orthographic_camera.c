@@ -14,6 +14,8 @@ static void orthographic_init(camera *c, const glint_camera *d, int width, int h
                                           : 2 * c->per_x * width * v3_length(v3_sub(d->look_at, d->position));
     /* Half the view's width over the image width: a pixel is twice this across, as for per_x. */
     c->per_x = c->per_y = view_width / 2 / width;
+    c->cone_width = view_width / width;
+    c->cone_spread = 0;
 }
 
 static void orthographic_rays8(const camera *c, const double x[RAY8], const double y[RAY8], const camera_lens8 *lens,

@@ -40,6 +40,7 @@ typedef struct job {
     uint32_t key_seed;            /* what they are hashed with: the frame's random seed */
     light_choice choice;          /* with settings.light_samples: the area lights and emitters by power */
     spectrum bands;               /* settings.dispersion_bands' colours */
+    double cone_width, cone_spread; /* a sample's footprint (tracer's) */
     int tiles_done;               /* under progress_lock */
     pthread_mutex_t progress_lock;
 } job;
@@ -266,7 +267,7 @@ static void *worker_run(void *arg)
     job *j = w->job;
     tracer t = {.scene = j->scene, .acc = j->acc, .reach = tracer_reach(j->scene), .cancel = j->opts->cancel,
                 .keys = j->keys, .choice = j->scene->settings.light_samples > 0 ? &j->choice : NULL,
-                .spectrum = &j->bands};
+                .spectrum = &j->bands, .cone_width = j->cone_width, .cone_spread = j->cone_spread};
     const render_feed *f = j->feed;
     const render_layout *l = &j->layout;
     int tile;
@@ -376,6 +377,10 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
     spectrum_init(&j.bands, s->dispersion_bands);
     j.key_seed = glint_settings_random_seed(&scene->settings) ^ 0x4b455953U;
     camera_init(&j.cam, &scene->camera, s->width, s->height);
+    /* A sample covers its share of the pixel: the samples of a pixel
+     * together cover it. */
+    j.cone_width = j.cam.cone_width / sqrt(s->samples_per_pixel);
+    j.cone_spread = j.cam.cone_spread / sqrt(s->samples_per_pixel);
     /* Motion blur only with a shutter open for a while. */
     bool shutter = s->shutter_close > s->shutter_open;
     j.pose_count = shutter ? scene->camera_pose_count : 0;

@@ -271,7 +271,12 @@ int glint_scene_add_image_memory(glint_scene *scene, const char *name, const voi
 int scene_add_image_pixels(glint_scene *scene, const char *name, int width, int height,
                            const unsigned char *srgb, const char *file, glint_mapping mapping, glint_error *err)
 {
-    return add_decoded_image(scene, name, texture_image_borrow(width, height, srgb), mapping, file, err);
+    /* Its levels are built here, as a decoded file's are, so the image
+     * looks the same either way. */
+    texture_image image = texture_image_borrow(width, height, srgb);
+    if (texture_image_build_levels(&image, err))
+        return -1;
+    return add_decoded_image(scene, name, image, mapping, file, err);
 }
 
 glint_status glint_scene_replace_image(glint_scene *scene, const char *name, const char *path, glint_error *err)

@@ -14,8 +14,9 @@ static glint_status checker_init(texture *t, const glint_texture *d, image_load_
     return GLINT_OK;
 }
 
-static color checker_at(const texture *t, double u, double v)
+static color checker_at(const texture *t, double u, double v, uv_extent covered)
 {
+    (void)covered;
     return checker_eval(t->a, t->b, t->cell, u, v);
 }
 

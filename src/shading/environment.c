@@ -36,5 +36,5 @@ color environment_color(const glint_environment *env, const texture *t, vec3 d)
         return rgb_scale(t->kind->solid(t, texture_place(t, d)), env->intensity);
     double longitude = atan2(d.x, -d.z) - env->rotation * (M_PI / 180);
     double u = 0.5 + longitude / (2 * M_PI), v = 0.5 - asin(d.y < -1 ? -1 : d.y > 1 ? 1 : d.y) / M_PI;
-    return rgb_scale(texture_at_uv(t, u, v), env->intensity);
+    return rgb_scale(texture_at_uv(t, u, v, (uv_extent){0, 0}), env->intensity);
 }

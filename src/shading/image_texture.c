@@ -8,12 +8,14 @@ static glint_status image_init(texture *t, const glint_texture *d, image_load_fn
     return load(user, d->file, &t->image, err);
 }
 
-static color image_at(const texture *t, double u, double v)
+static color image_at(const texture *t, double u, double v, uv_extent covered)
 {
-    return image_eval(&t->image, u, v, t->desc.wrap_u, t->desc.wrap_v);
+    double level = t->desc.filter == GLINT_IMAGE_TRILINEAR ? image_level(&t->image, covered) : 0;
+    return image_eval_level(&t->image, u, v, t->desc.wrap_u, t->desc.wrap_v, level);
 }
 
 static const char *const WRAPS[] = {"repeat", "clamp", "mirror"}; /* glint_wrap's order */
+static const char *const FILTERS[] = {"trilinear", "bilinear"}; /* glint_image_filter's order */
 
 static const param IMAGE_PARAMS[] = {
     {.key = "file", .type = PARAM_PATH, .offset = offsetof(glint_texture, file), .required = true,
@@ -23,6 +25,11 @@ static const param IMAGE_PARAMS[] = {
      .words = WRAPS, .word_count = 3, .meaning = "past its left and right edges: repeat, clamp (the edge goes on) or mirror"},
     {.key = "wrap_v", .type = PARAM_CHOICE, .offset = offsetof(glint_texture, wrap_v), .def = {GLINT_WRAP_CLAMP},
      .words = WRAPS, .word_count = 3, .meaning = "past its top and bottom edges: repeat, clamp or mirror"},
+    {.key = "filter", .type = PARAM_CHOICE, .offset = offsetof(glint_texture, filter), .words = FILTERS,
+     .word_count = 2,
+     .meaning = "trilinear: where a sample covers more than a texel, the image's halved copies (mipmap levels) "
+                "averaged over what it covers, so a far or tiled image does not shimmer; bilinear: the image "
+                "alone, sharper far off but aliased"},
 };
 
 const texture_kind image_texture = {

@@ -213,6 +213,29 @@ color image_eval(const texture_image *img, double u, double v, glint_wrap wrap_u
     return rgb_lerp(top, bottom, ty);
 }
 
+double image_level(const texture_image *img, uv_extent covered)
+{
+    double texels = fmax(covered.u * img->width, covered.v * img->height);
+    if (!(texels > 1) || img->level_count < 2)
+        return 0;
+    double level = log2(texels), top = img->level_count - 1;
+    return level < top ? level : top;
+}
+
+color image_eval_level(const texture_image *img, double u, double v, glint_wrap wrap_u, glint_wrap wrap_v,
+                       double level)
+{
+    if (!(level > 0))
+        return image_eval(img, u, v, wrap_u, wrap_v);
+    int k = (int)level;
+    double blend = level - k;
+    const texture_image *below = k == 0 ? img : &img->levels[k - 1];
+    color c = image_eval(below, u, v, wrap_u, wrap_v);
+    if (blend > 0 && k + 1 < img->level_count)
+        c = rgb_lerp(c, image_eval(&img->levels[k], u, v, wrap_u, wrap_v), blend);
+    return c;
+}
+
 void texture_release(texture *t)
 {
     free(t->name);

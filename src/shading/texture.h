@@ -17,6 +17,12 @@
 
 typedef struct texture_kind texture_kind;
 
+/* How far along u and along v a sample's footprint reaches on the
+ * surface, in texture coordinates; 0 and 0: a point (no filtering). */
+typedef struct uv_extent {
+    double u, v;
+} uv_extent;
+
 /* Decodes the image file at path into *out for an image texture: the
  * scene's own (scene_images.c) shares one decoding between the textures of
  * one file. `user` is the caller's. */
@@ -44,8 +50,9 @@ struct texture_kind {
     /* Fills t's own fields from desc, which has passed the table's checks
      * (an image is decoded here); on failure t owns nothing. */
     glint_status (*init)(texture *t, const glint_texture *desc, image_load_fn load, void *user, glint_error *err);
-    /* The colour at texture coordinates (u, v). */
-    color (*eval)(const texture *t, double u, double v);
+    /* The colour at texture coordinates (u, v) of a sample covering
+     * `covered` about them (which a kind may ignore). */
+    color (*eval)(const texture *t, double u, double v, uv_extent covered);
     /* A solid texture's colour at point p of the thing, in its own
      * coordinates, where the mapping has no say; NULL: eval at the
      * mapping's (u, v). */
@@ -89,6 +96,16 @@ color checker_eval(color a, color b, double cell, double u, double v);
  * wrap_u and wrap_v say; v = 0 is the top row. */
 color image_eval(const texture_image *img, double u, double v, glint_wrap wrap_u, glint_wrap wrap_v);
 
+/* The level of img (0: itself; fractions between) whose texels are as
+ * wide as a sample covering `covered`: log2 of the texels it spans along
+ * u or v, whichever is more, within the levels img has. */
+double image_level(const texture_image *img, uv_extent covered);
+
+/* image_eval at `level` of img: bilinear in the two levels either side of
+ * it, blended (trilinear); at level 0 or below, exactly image_eval. */
+color image_eval_level(const texture_image *img, double u, double v, glint_wrap wrap_u, glint_wrap wrap_v,
+                       double level);
+
 /* Point p (a solid texture's) or (u, v, 0) carried into texture t's own
  * space, when it is placed. */
 static inline vec3 texture_place(const texture *t, vec3 p)
@@ -96,26 +113,35 @@ static inline vec3 texture_place(const texture *t, vec3 p)
     return t->placed ? xf_point(&t->to_texture, p) : p;
 }
 
-/* The colour of texture t at texture coordinates (u, v), placed. */
-static inline color texture_at_uv(const texture *t, double u, double v)
+/* The colour of texture t at texture coordinates (u, v), placed, for a
+ * sample covering `covered` of the placed coordinates. */
+static inline color texture_at_uv(const texture *t, double u, double v, uv_extent covered)
 {
     vec3 q = texture_place(t, v3(u, v, 0));
     if (t->kind == &checker_texture)
         return checker_eval(t->a, t->b, t->cell, q.x, q.y);
-    return t->kind->eval(t, q.x, q.y);
+    return t->kind->eval(t, q.x, q.y, covered);
 }
 
 /* The colour of texture t at surface s of a thing whose centre is center
- * (as for mapping_apply), or a solid texture's at s's point. The checker,
- * the texture of most floors, is looked up inline: through its record it
- * cost the seed room 0.4% of its instructions. */
-static inline color texture_eval(const texture *t, const surface *s, vec3 center)
+ * (as for mapping_apply), or a solid texture's at s's point, for a sample
+ * covering `covered` of its placed (u, v). The checker, the texture of most
+ * floors, is looked up inline: through its record it cost the seed room
+ * 0.4% of its instructions. */
+static inline color texture_eval(const texture *t, const surface *s, vec3 center, uv_extent covered)
 {
     if (t->kind->solid)
         return t->kind->solid(t, texture_place(t, s->p_obj));
     double u, v;
     mapping_apply(&t->mapping, s, center, &u, &v);
-    return texture_at_uv(t, u, v);
+    return texture_at_uv(t, u, v, covered);
+}
+
+/* Whether t's colour depends on how much of it a sample covers: an image
+ * filtered trilinearly, which has levels. */
+static inline bool texture_filters(const texture *t)
+{
+    return t->kind == &image_texture && t->desc.filter == GLINT_IMAGE_TRILINEAR && t->image.level_count > 1;
 }
 
 /* Replaces the file name t->desc remembers with a copy of path (NULL:

@@ -124,7 +124,7 @@ static void test_material_and_surface(void **state)
     /* Untextured: each surface's colour is its material's. */
     for (int i = 0; i < 3; i++) {
         const glint_material *m = hit_material(s, &h[i]);
-        color c = hit_color(s, &h[i], m, &sf[i]);
+        color c = hit_color(s, &h[i], m, &sf[i], v3(0, 0, -1), 0);
         assert_memory_equal(&c, &m->color, sizeof c);
     }
     glint_scene_free(f.scene);

@@ -1,0 +1,183 @@
+/* test_mipmap.c - image textures seen from far away: each level of an
+ * image's pyramid the mean of the one below, the level a footprint picks,
+ * trilinear blending between levels, and a floor of fine stripes that
+ * stays an even grey far off under the default filter where the bilinear
+ * one alone aliases; under a texel, the plain bilinear look-up. */
+#define TMP_TREE_NAME "mipmap"
+#include <stdarg.h>
+#include <stddef.h>
+#include <setjmp.h>
+#include <stdint.h>
+#include <cmocka.h>
+#include "image_test_files.h"
+#include "core/vec.h"
+#include "image/srgb.h"
+#include "shading/texture.h"
+
+
+/* A 5 x 3 image of linear floats halves to 3 x 2, 2 x 1 and 1 x 1, each
+ * texel the mean of the 2 x 2 below it, an odd size's edge texel counted
+ * twice; an sRGB image's means are of linear values, stored as sRGB. */
+static void test_levels_are_means(void **state)
+{
+    (void)state;
+    float px[5 * 3 * 3];
+    for (int i = 0; i < 5 * 3 * 3; i++)
+        px[i] = (float)(i % 7) + 0.25f * (float)(i % 3);
+    texture_image img = {.width = 5, .height = 3, .hdr = px};
+    assert_int_equal(texture_image_build_levels(&img, NULL), GLINT_OK);
+    assert_int_equal(img.level_count, 4);
+    const int sizes[3][2] = {{3, 2}, {2, 1}, {1, 1}};
+    const texture_image *below = &img;
+    for (int k = 0; k < 3; k++) {
+        const texture_image *l = &img.levels[k];
+        assert_int_equal(l->width, sizes[k][0]);
+        assert_int_equal(l->height, sizes[k][1]);
+        for (int y = 0; y < l->height; y++)
+            for (int x = 0; x < l->width; x++)
+                for (int c = 0; c < 3; c++) {
+                    int x1 = 2 * x + 1 < below->width ? 2 * x + 1 : 2 * x;
+                    int y1 = 2 * y + 1 < below->height ? 2 * y + 1 : 2 * y;
+                    double sum = below->hdr[3 * (2 * y * below->width + 2 * x) + c] +
+                                 below->hdr[3 * (2 * y * below->width + x1) + c] +
+                                 below->hdr[3 * (y1 * below->width + 2 * x) + c] +
+                                 below->hdr[3 * (y1 * below->width + x1) + c];
+                    assert_near(l->hdr[3 * (y * l->width + x) + c], sum / 4, 1e-6);
+                }
+        below = l;
+    }
+    texture_image_free_levels(&img);
+    assert_int_equal(img.level_count, 0);
+
+    /* Black and white: the mean is half the light, sRGB 188, not 128. */
+    unsigned char bw[2 * 2 * 3] = {0, 0, 0, 255, 255, 255, 255, 255, 255, 0, 0, 0};
+    texture_image srgb = texture_image_borrow(2, 2, bw);
+    assert_int_equal(texture_image_build_levels(&srgb, NULL), GLINT_OK);
+    assert_int_equal(srgb.level_count, 2);
+    assert_int_equal(srgb.levels[0].srgb[0], srgb_byte(0.5f));
+    assert_int_equal(srgb.levels[0].srgb[0], 188);
+    texture_image_free(&srgb);
+}
+
+/* The level is log2 of the texels a footprint spans along u or v, the
+ * larger, within the levels there are; at level 0 the look-up is the plain
+ * bilinear one, and between levels a blend of the two either side. */
+static void test_level_and_blend(void **state)
+{
+    (void)state;
+    float px[8 * 4 * 3];
+    for (int i = 0; i < 8 * 4 * 3; i++)
+        px[i] = (float)((i * 37) % 11);
+    texture_image img = {.width = 8, .height = 4, .hdr = px};
+    assert_int_equal(texture_image_build_levels(&img, NULL), GLINT_OK);
+    assert_int_equal(img.level_count, 4);
+    assert_near(image_level(&img, (uv_extent){0.5, 0}), 2, 1e-12);   /* 4 texels across */
+    assert_near(image_level(&img, (uv_extent){0, 1}), 2, 1e-12);     /* 4 texels down */
+    assert_near(image_level(&img, (uv_extent){0.1, 0}), 0, 0);       /* under a texel */
+    assert_near(image_level(&img, (uv_extent){100, 100}), 3, 0);     /* past the last level */
+    for (double u = -0.3; u < 1.3; u += 0.071)
+        for (double v = 0.02; v < 1; v += 0.13) {
+            color a = image_eval(&img, u, v, GLINT_WRAP_REPEAT, GLINT_WRAP_CLAMP);
+            color b = image_eval_level(&img, u, v, GLINT_WRAP_REPEAT, GLINT_WRAP_CLAMP, 0);
+            assert_memory_equal(&a, &b, sizeof a);
+            color l1 = image_eval(&img.levels[0], u, v, GLINT_WRAP_REPEAT, GLINT_WRAP_CLAMP);
+            color l2 = image_eval(&img.levels[1], u, v, GLINT_WRAP_REPEAT, GLINT_WRAP_CLAMP);
+            color mid = image_eval_level(&img, u, v, GLINT_WRAP_REPEAT, GLINT_WRAP_CLAMP, 1.25);
+            assert_near(mid.r, 0.75 * l1.r + 0.25 * l2.r, 1e-9);
+            assert_near(mid.b, 0.75 * l1.b + 0.25 * l2.b, 1e-9);
+        }
+    texture_image_free_levels(&img);
+}
+
+/* The image texture file of 64 x 64 texels in one-texel black and white
+ * columns. */
+static void write_stripes(const char *path)
+{
+    float px[64 * 64 * 3];
+    for (int i = 0; i < 64 * 64; i++)
+        px[3 * i] = px[3 * i + 1] = px[3 * i + 2] = (float)(i % 2);
+    glint_image im = {.width = 64, .height = 64, .pixels = px};
+    assert_int_equal(glint_image_write(&im, path, NULL), GLINT_OK);
+}
+
+/* A floor of the stripes, 0.25 units a tile, seen from just above it by
+ * one sample a pixel, lit so that it shows its texture's values. */
+static glint_image floor_of_stripes(const char *file, glint_image_filter filter)
+{
+    glint_scene *s = glint_scene_new();
+    glint_settings st = glint_settings_default();
+    st.width = 160;
+    st.height = 80;
+    st.samples_per_pixel = 1;
+    assert_int_equal(glint_scene_set_settings(s, &st, NULL), GLINT_OK);
+    glint_camera cam = {.kind = GLINT_CAMERA_PINHOLE, .position = {0, 0.5, 0}, .look_at = {0, 0.3, -4},
+                        .up = {0, 1, 0}, .vfov_degrees = 40};
+    assert_int_equal(glint_scene_set_camera(s, &cam, NULL), GLINT_OK);
+    glint_texture t = glint_texture_default(GLINT_TEXTURE_IMAGE);
+    t.file = file;
+    t.filter = filter;
+    t.wrap_v = GLINT_WRAP_REPEAT;
+    t.mapping.kind = GLINT_MAP_PLANAR;
+    t.mapping.scale = 0.25;
+    glint_error err;
+    int tex = glint_scene_add_texture(s, NULL, &t, &err);
+    assert_true(tex >= 0);
+    glint_material m = glint_material_default();
+    m.texture = tex;
+    m.ambient = 1;
+    m.diffuse = m.specular = 0;
+    glint_shape plane = glint_shape_default(GLINT_SHAPE_PLANE);
+    plane.normal = (glint_vec3){0, 1, 0};
+    assert_true(glint_scene_add_shape(s, &plane, glint_scene_add_material(s, NULL, &m, NULL), NULL, &err) >= 0);
+    glint_image im;
+    glint_render_options o = {.threads = 2};
+    assert_int_equal(glint_render(s, &o, &im, NULL, &err), GLINT_OK);
+    glint_scene_free(s);
+    return im;
+}
+
+/* Far off (the rows just below the horizon, a dozen tiles away and more,
+ * where a pixel spans tens of texels) the trilinear floor is the stripes'
+ * mean, within 0.06 of 0.5, in every pixel; the bilinear one reads single
+ * texels and swings far from it. */
+static void test_far_floor_does_not_shimmer(void **state)
+{
+    (void)state;
+    char file[PATH_SIZE];
+    tmp_path(file, "stripes.png");
+    write_stripes(file);
+    glint_image tri = floor_of_stripes(file, GLINT_IMAGE_TRILINEAR);
+    glint_image bi = floor_of_stripes(file, GLINT_IMAGE_BILINEAR);
+    double worst_tri = 0, worst_bi = 0;
+    int far_pixels = 0;
+    for (int y = 0; y < tri.height; y++)
+        for (int x = 0; x < tri.width; x++) {
+            size_t i = 3 * ((size_t)y * tri.width + x);
+            /* Where the floor is: below the horizon. Each row's distance:
+             * the ray's drop over its length. */
+            double drop = (y + 0.5 - tri.height / 2.0) / (tri.height / 2.0) * tan(20 * M_PI / 180);
+            double slope = (0.2 / 4 + drop) / (1 - 0.2 / 4 * drop), distance = 0.5 / slope;
+            if (!(slope > 0))
+                continue;
+            if (distance > 3 && distance < 40) {
+                worst_tri = fmax(worst_tri, fabs(tri.pixels[i] - 0.5));
+                worst_bi = fmax(worst_bi, fabs(bi.pixels[i] - 0.5));
+                far_pixels++;
+            }
+        }
+    assert_true(far_pixels > 500);
+    assert_true(worst_tri < 0.06);
+    assert_true(worst_bi > 0.3);
+    glint_image_free(&tri);
+    glint_image_free(&bi);
+}
+
+int main(void)
+{
+    const struct CMUnitTest tests[] = {
+        cmocka_unit_test(test_levels_are_means),
+        cmocka_unit_test(test_level_and_blend),
+        cmocka_unit_test(test_far_floor_does_not_shimmer),
+    };
+    return cmocka_run_group_tests(tests, setup_dir, teardown_dir);
+}
