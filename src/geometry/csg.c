@@ -126,7 +126,7 @@ static bool stays_inside(const shape *s, const ray *r, double after, int depth)
         vec3 p = ray_at(r, after);
         return s->kind->contains(s, s->has_transform ? xf_point(&s->to_object, p) : p);
     }
-    bool inside[SHAPE_MAX_PARTS];
+    bool inside[SHAPE_MAX_PARTS] = {false};
     for (int i = 0; i < s->part_count; i++) {
         const shape *part = &s->family[s->parts[i]];
         crossing c;
