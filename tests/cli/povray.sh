@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
 # Soft shadows, depth of field, shapes and patterns against an independent
 # renderer, POV-Ray 3.7, at thumbnail scale: each scene is rendered by both
-# at 96x72 (16 bits a channel, sRGB), shrunk by averaging 2x2 or 4x4 pixels, and compared by
-# ImageMagick's mean and peak absolute error (as a share of full scale).
+# at 96x72 (16 bits a channel, sRGB), shrunk by averaging 2x2 or 4x4
+# pixels, and compared by ImageMagick's mean and peak absolute error (as a
+# share of full scale).
 #
 # - Soft shadow: glint's sphere light (radius 0.8, 1024 samples) against
 #   POV-Ray's `area_light` of 32x32 jittered points on a disc of the same
