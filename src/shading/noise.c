@@ -7,25 +7,14 @@
  * vanish at 0 and 1, so the noise is smooth across cells. */
 static double fade(double t) { return t * t * t * (t * (t * 6 - 15) + 10); }
 
-/* The dot product of (x, y, z) with corner gradient h % 12: the twelve
- * (+-1, +-1, 0) directions and their turns. */
-static double gradient_dot(uint32_t h, double x, double y, double z)
-{
-    switch (h % 12) {
-    case 0: return x + y;
-    case 1: return -x + y;
-    case 2: return x - y;
-    case 3: return -x - y;
-    case 4: return x + z;
-    case 5: return -x + z;
-    case 6: return x - z;
-    case 7: return -x - z;
-    case 8: return y + z;
-    case 9: return -y + z;
-    case 10: return y - z;
-    default: return -y - z;
-    }
-}
+/* The corner gradients: the twelve (+-1, +-1, 0) directions and their
+ * turns, four of them twice over to make sixteen, so that four bits of a
+ * hash choose one without a division (and, read from a table, without a
+ * branch the processor cannot predict). */
+static const double GRADIENT[16][3] = {
+    {1, 1, 0}, {-1, 1, 0}, {1, -1, 0}, {-1, -1, 0}, {1, 0, 1}, {-1, 0, 1}, {1, 0, -1}, {-1, 0, -1},
+    {0, 1, 1}, {0, -1, 1}, {0, 1, -1}, {0, -1, -1}, {1, 1, 0}, {-1, 1, 0}, {0, -1, 1}, {0, -1, -1},
+};
 
 static double lerp(double a, double b, double t) { return a + t * (b - a); }
 
@@ -40,11 +29,18 @@ double noise_at(vec3 p, uint32_t layer)
     double fx = floor(p.x), fy = floor(p.y), fz = floor(p.z);
     double x = p.x - fx, y = p.y - fy, z = p.z - fz;
     uint32_t ix = lattice(fx), iy = lattice(fy), iz = lattice(fz);
+    /* A corner's hash is built an axis at a time, so corners sharing x (and
+     * then y) share that much of it: 14 rounds for the 8 corners. */
+    uint32_t seed = hash_u32(layer ^ 0x9e3779b9U), hx[2], hxy[4];
+    for (int dx = 0; dx < 2; dx++)
+        hx[dx] = hash_u32(seed ^ (ix + (uint32_t)dx));
+    for (int c = 0; c < 4; c++)
+        hxy[c] = hash_u32(hx[c & 1] ^ (iy + (uint32_t)(c >> 1)));
     double corner[8];
     for (int c = 0; c < 8; c++) {
         int dx = c & 1, dy = (c >> 1) & 1, dz = c >> 2;
-        uint32_t h = hash4(ix + (uint32_t)dx, iy + (uint32_t)dy, iz + (uint32_t)dz, layer);
-        corner[c] = gradient_dot(h, x - dx, y - dy, z - dz);
+        const double *g = GRADIENT[hash_u32(hxy[c & 3] ^ (iz + (uint32_t)dz)) >> 28];
+        corner[c] = g[0] * (x - dx) + g[1] * (y - dy) + g[2] * (z - dz);
     }
     double u = fade(x), v = fade(y), w = fade(z);
     double y0 = lerp(lerp(corner[0], corner[1], u), lerp(corner[2], corner[3], u), v);
