@@ -190,8 +190,11 @@ static void wrap_axis(double c, int n, glint_wrap w, int *i0, int *i1, double *t
     *t = f - f0;
     int a = (int)f0, b = a + 1;
     if (w == GLINT_WRAP_REPEAT) {
-        a = (a % n + n) % n;
-        b = b % n;
+        /* The fraction keeps f within [-0.5, n - 0.5], so a is from -1 to
+         * n - 1: no division is needed to wrap it (this runs twice for
+         * every bilinear look-up). */
+        a = a < 0 ? n - 1 : a;
+        b = b >= n ? 0 : b;
     } else {
         a = a < 0 ? 0 : a;
         b = b >= n ? n - 1 : b;
