@@ -82,18 +82,9 @@ void coord_gradients(const coord_spot *at, const texture *t, vec3 n, vec3 *g_u, 
 uv_extent coord_footprint(const coord_spot *at, const texture *t, vec3 n, vec3 d, double width, double u,
                           double v)
 {
-    /* One step along each tangent from the hit, whose coordinates are
-     * known: a level needs no more precision, and each step is a mapping
-     * (often trigonometry) of its own. */
-    vec3 t1, t2, g_u, g_v, across, along, p = at->s->p;
-    coord_tangents(n, &t1, &t2);
-    double e = coord_step(p), u1, v1, u2, v2;
-    coord_at(at, t, v3_madd(p, t1, e), &u1, &v1);
-    coord_at(at, t, v3_madd(p, t2, e), &u2, &v2);
-    g_u = v3_scale(v3_add(v3_scale(t1, unwrapped(u1 - u)), v3_scale(t2, unwrapped(u2 - u))), 1 / e);
-    g_v = v3_scale(v3_add(v3_scale(t1, unwrapped(v1 - v)), v3_scale(t2, unwrapped(v2 - v))), 1 / e);
     /* The ellipse's axes: `width` across the ray's slant, and stretched by
      * 1 / cos along it; a ray nearly square to the surface has no slant. */
+    vec3 across, along, p = at->s->p;
     double cos_t = fabs(v3_dot(d, n));
     vec3 slant = v3_madd(d, n, -v3_dot(d, n));
     if (v3_dot(slant, slant) < 1e-12) {
@@ -102,10 +93,16 @@ uv_extent coord_footprint(const coord_spot *at, const texture *t, vec3 n, vec3 d
         along = v3_normalize(slant);
         across = v3_cross(n, along);
     }
-    along = v3_scale(along, width / fmax(cos_t, 1e-6));
-    across = v3_scale(across, width);
-    /* A linear function over an ellipse of axes a and b spans
-     * sqrt((g . a)^2 + (g . b)^2). */
-    double ua = v3_dot(g_u, across), ub = v3_dot(g_u, along), va = v3_dot(g_v, across), vb = v3_dot(g_v, along);
+    /* One step along each axis from the hit, whose coordinates are known,
+     * gives how u and v change along it: a level needs no more precision,
+     * and each step is a mapping (often trigonometry) of its own. A linear
+     * function over an ellipse of axes a and b spans sqrt((g . a)^2 +
+     * (g . b)^2). */
+    double e = coord_step(p), u1, v1, u2, v2;
+    coord_at(at, t, v3_madd(p, across, e), &u1, &v1);
+    coord_at(at, t, v3_madd(p, along, e), &u2, &v2);
+    double ua = unwrapped(u1 - u) / e * width, va = unwrapped(v1 - v) / e * width;
+    double stretch = width / fmax(cos_t, 1e-6);
+    double ub = unwrapped(u2 - u) / e * stretch, vb = unwrapped(v2 - v) / e * stretch;
     return (uv_extent){sqrt(ua * ua + ub * ub), sqrt(va * va + vb * vb)};
 }
