@@ -196,6 +196,18 @@ static bool splits(const shade_point *sp, double wavelength)
     return wavelength == 0 && sp->m->dispersion > 0;
 }
 
+/* The ray that light of `wavelength` along d refracts into at sp, bent by
+ * that wavelength's index, or mirrored where it is reflected whole; *side
+ * and *skip as leaving_ray's. */
+static ray band_ray(const glint_scene *scene, const shade_point *sp, vec3 d, double wavelength, vec3 *side,
+                    int *skip)
+{
+    vec3 bend = bend_normal(sp, d), out;
+    if (!optics_refract(d, bend, crossing_eta(sp, d, wavelength), &out))
+        out = optics_reflect(d, bend);
+    return leaving_ray(scene, sp, out, side, skip);
+}
+
 /* What ray r, of weight `weight` and light of `wavelength` (0: white),
  * keeps at sp of its direct light, the rest being passed on; below
  * max_depth, fills *b with the rays that carry transparency, refraction
@@ -791,13 +803,14 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
                    int depth, const paths *path, const uint32_t key[ACCEL_PACKET], color out[ACCEL_PACKET]);
 
 /* Traces ray j of branch kind k of every lane that sends one (b[i], at
- * the hit sp[i] of a lane found[i], along `path`) as one packet, adding what each brings back to local[i]. rays[i]: the rays
- * lane i spreads the branch over, ray j in the lobe about the sharp
- * direction when its material is rough; NULL: one sharp ray each, and no
- * key is needed. White light refracting into a dispersive material
- * spreads over the spectrum's bands too (rays[i] a multiple of their
- * count): ray j is band j % count's, at a wavelength drawn within it,
- * bent by that wavelength's index and carrying that band's colour. */
+ * the hit sp[i] of a lane found[i], along `path`) as one packet, adding
+ * what each brings back to local[i]. rays[i]: the rays lane i spreads the
+ * branch over, ray j in the lobe about the sharp direction when its
+ * material is rough; NULL: one sharp ray each, and no key is needed. White
+ * light refracting into a dispersive material spreads over the spectrum's
+ * bands too (rays[i] a multiple of their count): ray j is band j % count's,
+ * at a wavelength drawn within it, bent by that wavelength's index and
+ * carrying that band's colour. */
 static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET], const shade_point sp[ACCEL_PACKET],
                          const branches b[ACCEL_PACKET], int k, int j, const int *rays, int depth,
                          const paths *path, const uint32_t key[ACCEL_PACKET], color local[ACCEL_PACKET])
@@ -808,6 +821,9 @@ static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET
     bool on[ACCEL_PACKET], any = false, banded[ACCEL_PACKET] = {false};
     paths next_path;
     int bands = t->spectrum->count;
+    /* A band's ray carries its band's colour, `bands` times over as it
+     * stands for one ray in `bands`. */
+    color band_tint = rgb_scale(t->spectrum->weight[j % bands], bands);
     /* Each lane's budget is spent as its own branches are met, depth first,
      * so what it cuts does not depend on the other lanes. */
     for (int i = 0; i < ACCEL_PACKET; i++) {
@@ -829,14 +845,10 @@ static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET
             next_key[i] = j ? hash_u32(branch_key ^ (uint32_t)j * 0x85ebca6bU) : branch_key;
             banded[i] = on[i] && k == BRANCH_REFRACT && splits(&sp[i], path->wavelength[i]);
             if (banded[i]) {
-                /* Where this wavelength is reflected whole, its ray is mirrored. */
                 lobe_ray = j / bands;
-                double w = next_path.wavelength[i] = spectrum_wavelength(t->spectrum, j % bands,
-                                                                      hash_unit(hash_u32(next_key[i] ^ 0x3c6ef372U)));
-                vec3 d = ray8_get(r, i).d, bend = bend_normal(&sp[i], d), out;
-                if (!optics_refract(d, bend, crossing_eta(&sp[i], d, w), &out))
-                    out = optics_reflect(d, bend);
-                ri = leaving_ray(t->scene, &sp[i], out, &side, &next_skip[i]);
+                double u = hash_unit(hash_u32(next_key[i] ^ 0x3c6ef372U));
+                next_path.wavelength[i] = spectrum_wavelength(t->spectrum, j % bands, u);
+                ri = band_ray(t->scene, &sp[i], ray8_get(r, i).d, next_path.wavelength[i], &side, &next_skip[i]);
             }
             if (on[i] && k != BRANCH_PASS && sp[i].m->roughness > 0) {
                 double u[2];
@@ -848,7 +860,7 @@ static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET
         color *w = &next_path.weight[i];
         *w = on[i] ? (rays ? rgb_scale(b[i].weight[k], 1.0 / rays[i]) : b[i].weight[k]) : path->weight[i];
         if (banded[i])
-            *w = rgb_mul(rgb_scale(*w, bands), t->spectrum->weight[j % bands]);
+            *w = rgb_mul(*w, band_tint);
     }
     color c[ACCEL_PACKET];
     trace8(t, &next, next_skip, on, depth + 1, &next_path, next_key, c);
@@ -857,7 +869,7 @@ static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET
             continue;
         color seen = rgb_mul(b[i].filter[k], c[i]);
         if (banded[i])
-            seen = rgb_scale(rgb_mul(seen, t->spectrum->weight[j % bands]), bands);
+            seen = rgb_mul(seen, band_tint);
         local[i] = rgb_add(local[i], rgb_scale(seen, rays ? b[i].scale[k] / rays[i] : b[i].scale[k]));
     }
 }
