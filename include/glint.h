@@ -493,7 +493,10 @@ typedef enum glint_shape_kind {
      * glint_scene_add_part gives it, reading no field of glint_shape. */
     GLINT_SHAPE_UNION,        /* inside any of its parts */
     GLINT_SHAPE_INTERSECTION, /* inside all of its parts */
-    GLINT_SHAPE_DIFFERENCE    /* inside its first part and none of the others */
+    GLINT_SHAPE_DIFFERENCE,   /* inside its first part and none of the others */
+    /* A closed mesh as a part of a combination: only
+     * glint_scene_add_mesh_part makes one (glint_shape describes none). */
+    GLINT_SHAPE_MESH
 } glint_shape_kind;
 
 /* A shape's description: each kind reads the fields named beside them.
@@ -543,6 +546,19 @@ int glint_scene_add_shape(glint_scene *scene, const glint_shape *shape, int mate
  * err. */
 int glint_scene_add_part(glint_scene *scene, int csg, const glint_shape *shape, int material,
                          const glint_transform *transform, glint_error *err);
+
+/* Adds mesh `mesh` (glint_scene_add_mesh's or an import's) as a part of
+ * combination `csg`, as glint_scene_add_part adds a shape: placed by
+ * `transform`, with `material` or, -1, the mesh's own. The mesh must be
+ * the closed surface of a solid: welding corners at the same position,
+ * each edge borders exactly two triangles, which run along it opposite
+ * ways (either winding will do: its inside is found). The first time a
+ * mesh is made a part, this checks it and builds its own hierarchy (time
+ * and memory like the mesh's); its other parts share them. Returns the
+ * part's shape index or -1 and fills err, naming the first open or
+ * misturned edge by its corners. */
+int glint_scene_add_mesh_part(glint_scene *scene, int csg, int mesh, int material, const glint_transform *transform,
+                              glint_error *err);
 
 /* ------------------------------------------------------------------ lights */
 

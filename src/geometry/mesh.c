@@ -78,6 +78,9 @@ void mesh_release(mesh *m)
     free(m->uvs);
     free(m->indices);
     free(m->materials);
+    if (m->solid)
+        triangle_tree_free(&m->solid->tree);
+    free(m->solid);
     memset(m, 0, sizeof *m);
 }
 
@@ -154,21 +157,30 @@ void mesh_surface(const mesh *m, const instance *inst, const ray *r, unsigned tr
     }
 }
 
-void mesh_uv_at(const mesh *m, unsigned tri, vec3 p, double *u, double *v)
+bool mesh_weights_at(const mesh *m, unsigned tri, vec3 p, double *b1, double *b2)
 {
-    *u = *v = 0;
-    if (!m->uvs)
-        return;
     const uint32_t *idx = m->indices + 3 * (size_t)tri;
     vec3 p0 = vertex3(m->positions, idx[0]);
     vec3 e1 = v3_sub(vertex3(m->positions, idx[1]), p0), e2 = v3_sub(vertex3(m->positions, idx[2]), p0);
     vec3 d = v3_sub(p, p0);
-    /* The barycentric weights of p's projection: the 2x2 normal equations. */
+    /* The weights of p's projection: the 2x2 normal equations. */
     double a = v3_dot(e1, e1), b = v3_dot(e1, e2), c = v3_dot(e2, e2), det = a * c - b * b;
     if (!(det > 0))
-        return;
+        return false;
     double d1 = v3_dot(d, e1), d2 = v3_dot(d, e2);
-    double b1 = (c * d1 - b * d2) / det, b2 = (a * d2 - b * d1) / det, b0 = 1 - b1 - b2;
+    *b1 = (c * d1 - b * d2) / det;
+    *b2 = (a * d2 - b * d1) / det;
+    return true;
+}
+
+void mesh_uv_at(const mesh *m, unsigned tri, vec3 p, double *u, double *v)
+{
+    *u = *v = 0;
+    double b1, b2;
+    if (!m->uvs || !mesh_weights_at(m, tri, p, &b1, &b2))
+        return;
+    const uint32_t *idx = m->indices + 3 * (size_t)tri;
+    double b0 = 1 - b1 - b2;
     const float *uv = m->uvs;
     *u = b0 * uv[2 * idx[0]] + b1 * uv[2 * idx[1]] + b2 * uv[2 * idx[2]];
     *v = b0 * uv[2 * idx[0] + 1] + b1 * uv[2 * idx[1] + 1] + b2 * uv[2 * idx[2] + 1];

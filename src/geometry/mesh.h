@@ -6,6 +6,7 @@
 
 #include <stdint.h>
 #include "geometry/shape.h"
+#include "geometry/triangle_tree.h"
 
 /* Where a mesh came from, for writing the scene back as a file
  * (glint_scene_write_yaml): its model file and import options, and the
@@ -18,6 +19,8 @@ typedef struct mesh_origin {
     int first_material, material_count;
     int first_texture, texture_count;
 } mesh_origin;
+
+typedef struct mesh_solid mesh_solid;
 
 typedef struct mesh {
     char *name;               /* may be NULL */
@@ -32,7 +35,36 @@ typedef struct mesh {
     vec3 lo, hi;              /* bounds in the mesh's own coordinates */
     bool bare;                /* imported from a file that gave it no materials: `material`, for
                                  every triangle, is the importer's stand-in */
+    mesh_solid *solid;        /* owned; made once it is a part of a combination, else NULL */
 } mesh;
+
+/* What a closed mesh needs to be a part of a combination (mesh_part.c): its
+ * arrays, its own hierarchy, and which way its triangles face. */
+struct mesh_solid {
+    mesh view;                /* the mesh's arrays, not owned: they stay where they are */
+    triangle_tree tree;
+    bool inward;              /* its triangles run clockwise seen from outside, so the
+                                 normals their winding gives are turned to point out */
+};
+
+/* The material of shape s where a hit on its `part` is: its own, or for a
+ * mesh part without one, the triangle's. */
+static inline int shape_material(const shape *s, int part)
+{
+    return s->material >= 0 ? s->material : s->solid->view.materials[part & ~SHAPE_PART_FLIPPED];
+}
+
+/* Makes m->solid, once: checks that m is the closed surface of a solid
+ * (welding corners at the same position, every edge borders exactly two
+ * triangles that run along it opposite ways, and it encloses some volume)
+ * and builds its hierarchy. On failure fills err naming the mesh as
+ * `name` ("mesh 'teapot.obj'") and the first edge at fault by its corners. */
+glint_status mesh_make_solid(mesh *m, const char *name, glint_error *err);
+
+/* The barycentric weights (b1, b2) of corners 1 and 2 of triangle tri at
+ * point p of its plane (or of the plane's nearest point to p), as an affine
+ * map on from the triangle; false for a triangle without area. */
+bool mesh_weights_at(const mesh *m, unsigned tri, vec3 p, double *b1, double *b2);
 
 typedef struct instance {
     int mesh;

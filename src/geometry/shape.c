@@ -1,7 +1,9 @@
 /* shape.c - the shape interface: checks a description against its kind's
  * parameter table and rules, then sends rays and results between world
  * space and the object space where each kind works. */
+#include <limits.h>
 #include <string.h>
+#include "geometry/mesh.h"
 #include "geometry/shape_kind.h"
 #include "geometry/shape_math.h"
 
@@ -16,16 +18,18 @@ glint_shape glint_shape_default(glint_shape_kind kind)
     return d;
 }
 
-glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform *to_world,
-                        int material, glint_error *err)
+/* shape_init for a shape of kind k, with the solid of a mesh part. */
+static glint_status init_as(shape *s, const shape_kind *k, const glint_shape *desc,
+                            const struct mesh_solid *solid, const glint_transform *to_world, int material,
+                            glint_error *err)
 {
     memset(s, 0, sizeof *s);
     s->part_of = -1;
-    const shape_kind *k = shape_kind_of(desc->kind);
     s->csg = k && k->csg;
     if (!k)
         return error_set(err, GLINT_ERR_INVALID, "unknown shape kind %d", (int)desc->kind);
     s->kind = k;
+    s->solid = solid;
     s->desc = *desc;
     s->material = material;
     s->to_world = to_world ? *to_world : glint_transform_identity();
@@ -47,6 +51,19 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
         s->flat_n = v3_normalize(one.n);
     }
     return st;
+}
+
+glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform *to_world, int material,
+                        glint_error *err)
+{
+    return init_as(s, shape_kind_of(desc->kind), desc, NULL, to_world, material, err);
+}
+
+glint_status shape_init_mesh_part(shape *s, const struct mesh_solid *solid, const glint_transform *to_world,
+                                  int material, glint_error *err)
+{
+    glint_shape desc = {.kind = GLINT_SHAPE_MESH};
+    return init_as(s, &mesh_part_kind, &desc, solid, to_world, material, err);
 }
 
 void shape_move(shape *s, transform *poses, int count)
@@ -89,6 +106,21 @@ quad_mask shape_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tm
     return s->kind->intersect4(s, r, first, tmax, t);
 }
 
+/* Sets out->shading_n to the kind's own shading normal, when it has one,
+ * turned to the side of out->n. */
+static void smooth_shading(const shape *s, int part, surface *out)
+{
+    vec3 n;
+    if (!s->kind->shading(s, part, out, &n))
+        return;
+    if (s->has_transform)
+        n = xf_normal(&s->to_object, n);
+    /* Normals that cancel out leave the surface's. */
+    double length = v3_length(n);
+    if (length > 0)
+        out->shading_n = v3_scale(n, v3_dot(n, out->n) < 0 ? -1 / length : 1 / length);
+}
+
 void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *out)
 {
     /* p from a local, not read back from out: a 16-byte load of what was
@@ -114,9 +146,13 @@ void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *
         if (s->has_transform)
             out->n = xf_normal(&s->to_object, out->n);
         out->n = out->shading_n = v3_normalize(out->n);
+        if (s->kind->shading)
+            smooth_shading(s, part, out);
     }
-    if (hit->part & SHAPE_PART_FLIPPED)
-        out->n = out->shading_n = v3_neg(out->n);
+    if (hit->part & SHAPE_PART_FLIPPED) {
+        out->n = v3_neg(out->n);
+        out->shading_n = v3_neg(out->shading_n);
+    }
 }
 
 bool shape_hit_enters(const shape *s, const ray *r, const shape_hit *hit)
@@ -173,11 +209,15 @@ void shape_bounds(const shape *s, vec3 *lo, vec3 *hi)
 
 int shape_max_crossings(const shape *s)
 {
+    if (s->solid)
+        return s->solid->view.triangle_count;
     if (!s->kind->csg)
         return s->kind->max_crossings;
     int sum = 0;
-    for (int i = 0; i < s->part_count; i++)
-        sum += shape_max_crossings(&s->family[s->parts[i]]);
+    for (int i = 0; i < s->part_count; i++) {
+        int more = shape_max_crossings(&s->family[s->parts[i]]);
+        sum = more > INT_MAX - sum ? INT_MAX : sum + more;
+    }
     return sum;
 }
 

@@ -69,6 +69,9 @@ typedef struct shape {
     size_t part_cap;
     const struct shape *family;
     int part_of;              /* the combination it is a part of, or -1: it stands alone */
+    /* A closed mesh as a part (mesh_part.c): its mesh's solid, owned by
+     * the mesh; its triangles' materials when `material` is -1. */
+    const struct mesh_solid *solid;
     bool csg;                 /* it is a combination (its kind's csg) */
 } shape;
 
@@ -105,6 +108,12 @@ typedef struct surface {
  * "sphere radius must be positive, got -1"). */
 glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform *transform,
                         int material, glint_error *err);
+
+/* shape_init for a closed mesh's part of a combination: the mesh's solid
+ * (mesh_make_solid's), placed by transform (NULL: identity), with
+ * `material` or, -1, its triangles' own. */
+glint_status shape_init_mesh_part(shape *s, const struct mesh_solid *solid, const glint_transform *transform,
+                                  int material, glint_error *err);
 
 /* Makes s move over the shutter through `count` (2 or more) invertible
  * world transforms, evenly spaced, in straight lines between them (each

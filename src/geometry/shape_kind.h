@@ -50,6 +50,10 @@ struct shape_kind {
     quad_mask (*intersect4)(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t);
     /* Fills out->n (object space, any length) from out->p_obj and part. */
     void (*surface)(const shape *s, int part, surface *out);
+    /* The normal to shade with at out->p_obj (object space, any length,
+     * either side) where it is not the surface's own: a mesh's vertex
+     * normals, blended. NULL, or false: the surface's. */
+    bool (*shading)(const shape *s, int part, const surface *at, vec3 *n);
     /* Fills out->u and out->v, only when a texture asks for them. */
     void (*uv)(const shape *s, int part, surface *out);
     /* Object-space bounds; NULL: unbounded (a plane), which the
@@ -68,6 +72,11 @@ struct shape_kind {
 
 extern const shape_kind sphere_kind, plane_kind, polygon_kind, box_kind, cylinder_kind, cone_kind, disk_kind,
     torus_kind, quadric_kind, union_kind, intersection_kind, difference_kind;
+
+/* A closed mesh as a part of a combination (mesh_part.c): not in the
+ * registry, as a scene file's `mesh` is no shape and only
+ * glint_scene_add_mesh_part makes one. */
+extern const shape_kind mesh_part_kind;
 
 /* "a" or "an", as the name of a kind of object takes it in a message ("an
  * intersection"). */

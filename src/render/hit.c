@@ -10,6 +10,12 @@
  * part's of a combination. */
 static bool shape_blocks(const glint_scene *scene, const shape *s)
 {
+    if (s->material < 0 && !s->csg) {
+        for (int k = 0; k < s->solid->view.triangle_count; k++)
+            if (!material_is_opaque(&scene->materials[s->solid->view.materials[k]].m))
+                return false;
+        return true;
+    }
     if (!s->csg)
         return material_is_opaque(&scene->materials[s->material].m);
     for (int i = 0; i < s->part_count; i++)

@@ -32,7 +32,7 @@ static __attribute__((unused)) const mesh *hit_mesh(const glint_scene *scene, co
 static __attribute__((unused)) const glint_material *hit_material(const glint_scene *scene, const accel_hit *h)
 {
     if (h->shape >= 0)
-        return &scene->materials[scene->shapes[h->shape].material].m;
+        return &scene->materials[shape_material(&scene->shapes[h->shape], h->on_shape.part)].m;
     return &scene->materials[mesh_material(hit_mesh(scene, h), &scene->instances[h->instance], h->triangle)].m;
 }
 

@@ -1,6 +1,7 @@
 /* scene.c - the scene's C API: creating a scene and adding to it. Every
  * value is checked here, so the renderer can trust what it reads. */
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "core/array.h"
@@ -353,14 +354,24 @@ static glint_status part_room(const glint_scene *scene, int csg, glint_error *er
     return GLINT_OK;
 }
 
-/* glint_scene_add_shape, or with csg >= 0 glint_scene_add_part. */
-static int add_shape(glint_scene *scene, int csg, const glint_shape *desc, int mat, const glint_transform *xf,
-                     glint_error *err)
+/* glint_scene_add_shape, or with csg >= 0 glint_scene_add_part; with
+ * `solid` (a mesh whose solid is made) and no desc, glint_scene_add_mesh_part.
+ * mat -1 is a combination's (its parts have their own) or a mesh part's
+ * (its triangles have theirs). */
+static int add_shape(glint_scene *scene, int csg, const glint_shape *desc, const mesh *solid, int mat,
+                     const glint_transform *xf, glint_error *err)
 {
-    const shape_kind *kind = shape_kind_of(desc->kind);
+    const shape_kind *kind = solid ? &mesh_part_kind : shape_kind_of(desc->kind);
     bool combination = kind && kind->csg;
-    if (!(combination && mat == -1) && (mat < 0 || mat >= scene->material_count)) {
+    if (!((combination || solid) && mat == -1) && (mat < 0 || mat >= scene->material_count)) {
         error_set(err, GLINT_ERR_INVALID, "material %d does not exist", mat);
+        return -1;
+    }
+    if (solid && mat == -1 && !solid->materials)
+        mat = solid->material;
+    if (!solid && desc->kind == GLINT_SHAPE_MESH) {
+        error_set(err, GLINT_ERR_INVALID, "a mesh is placed by glint_scene_add_instance, or made a part of a "
+                  "combination by glint_scene_add_mesh_part");
         return -1;
     }
     if (combination && xf && !xf_is_identity(xf)) {
@@ -381,7 +392,7 @@ static int add_shape(glint_scene *scene, int csg, const glint_shape *desc, int m
         return -1;
     }
     shape *s = &scene->shapes[scene->shape_count];
-    if (shape_init(s, desc, xf, mat, err))
+    if (solid ? shape_init_mesh_part(s, solid->solid, xf, mat, err) : shape_init(s, desc, xf, mat, err))
         return -1;
     s->family = scene->shapes;
     if (parent && !(s->kind->closed && s->kind->closed(s))) {
@@ -417,7 +428,7 @@ static int add_shape(glint_scene *scene, int csg, const glint_shape *desc, int m
 int glint_scene_add_shape(glint_scene *scene, const glint_shape *desc, int mat, const glint_transform *xf,
                           glint_error *err)
 {
-    return add_shape(scene, -1, desc, mat, xf, err);
+    return add_shape(scene, -1, desc, NULL, mat, xf, err);
 }
 
 int glint_scene_add_part(glint_scene *scene, int csg, const glint_shape *desc, int mat, const glint_transform *xf,
@@ -425,7 +436,28 @@ int glint_scene_add_part(glint_scene *scene, int csg, const glint_shape *desc, i
 {
     if (part_room(scene, csg, err))
         return -1;
-    return add_shape(scene, csg, desc, mat, xf, err);
+    return add_shape(scene, csg, desc, NULL, mat, xf, err);
+}
+
+int glint_scene_add_mesh_part(glint_scene *scene, int csg, int mesh_index, int mat, const glint_transform *xf,
+                              glint_error *err)
+{
+    if (part_room(scene, csg, err))
+        return -1;
+    if (mesh_index < 0 || mesh_index >= scene->mesh_count) {
+        error_set(err, GLINT_ERR_INVALID, "mesh %d does not exist", mesh_index);
+        return -1;
+    }
+    mesh *m = &scene->meshes[mesh_index];
+    const char *named = m->name ? m->name : m->origin.file;
+    char name[300];
+    if (named)
+        snprintf(name, sizeof name, "mesh '%.280s'", named);
+    else
+        snprintf(name, sizeof name, "mesh %d", mesh_index);
+    if (mesh_make_solid(m, name, err))
+        return -1;
+    return add_shape(scene, csg, NULL, m, mat, xf, err);
 }
 
 int glint_scene_add_light(glint_scene *scene, const glint_light *desc, glint_error *err)

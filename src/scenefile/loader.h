@@ -151,11 +151,17 @@ void read_light(loader *l, const ynode *n);
 /* Adds each object of the list, inside context ctx. */
 void read_objects(loader *l, const ynode *list, const context *ctx);
 
+/* Places mesh `mesh_index` for object n with material `look` (-1: the mesh's
+ * own) through to_world: in the world, or with csg >= 0 as a part of that
+ * combination; reports a failure at n. */
+void place_mesh_object(loader *l, const ynode *n, int csg, int mesh_index, int look,
+                       const glint_transform *to_world);
+
 /* A mesh object given by its arrays (vertices, optional normals and uvs,
  * faces of 3 or more vertices, split into triangles), placed with material
- * look (-1: none, reported) through to_world when no problem came after
- * `before` (read_arrays.c). */
-void place_inline_mesh(loader *l, const ynode *n, int look, const glint_transform *to_world, int before);
+ * look (-1: none, reported) through to_world, as place_mesh_object does,
+ * when no problem came after `before` (read_arrays.c). */
+void place_inline_mesh(loader *l, const ynode *n, int csg, int look, const glint_transform *to_world, int before);
 
 /* A heightfield object: its grid from a greyscale image `file` (8 bits a
  * sample, black 0 and white 1) or a list of rows `heights`, in the box

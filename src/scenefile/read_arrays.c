@@ -113,7 +113,7 @@ static bool read_faces(loader *l, const ynode *n, const float *positions, int ve
     return good;
 }
 
-void place_inline_mesh(loader *l, const ynode *n, int look, const glint_transform *to_world, int before)
+void place_inline_mesh(loader *l, const ynode *n, int csg, int look, const glint_transform *to_world, int before)
 {
     int vertex_count, normal_count, uv_count, triangle_count = 0;
     float *positions = number_rows(l, yr_need(&l->r, n, "vertices", "mesh"), "vertices", 3, &vertex_count);
@@ -135,8 +135,10 @@ void place_inline_mesh(loader *l, const ynode *n, int look, const glint_transfor
     if (l->d.count == before && look >= 0) {
         glint_mesh_data d = {positions, normals, uvs, vertex_count, indices, triangle_count, NULL, look};
         int made = glint_scene_add_mesh(l->scene, NULL, &d, &err);
-        if (made < 0 || glint_scene_add_instance(l->scene, made, -1, to_world, &err) < 0)
+        if (made < 0)
             diag_error(&l->d, n, &err);
+        else
+            place_mesh_object(l, n, csg, made, -1, to_world);
     }
     free(positions);
     free(normals);

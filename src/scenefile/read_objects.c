@@ -166,13 +166,24 @@ static int import_model(loader *l, const ynode *file, const char *path, double c
     return mesh_index;
 }
 
+void place_mesh_object(loader *l, const ynode *n, int csg, int mesh_index, int look,
+                       const glint_transform *to_world)
+{
+    glint_error err;
+    int made = csg >= 0 ? glint_scene_add_mesh_part(l->scene, csg, mesh_index, look, to_world, &err)
+                        : glint_scene_add_instance(l->scene, mesh_index, look, to_world, &err);
+    if (made < 0)
+        diag_error(&l->d, n, &err);
+}
+
 /* A mesh object: its model file's triangles, placed. `look` (>= 0), its
  * own material or its group's, replaces the file's materials when it is
  * its own (`own`) or the file gives none. The file is read (and a file
  * that cannot be is reported) even when the object has other problems,
  * but placed only when it has none: when the count of problems is still
  * `before` and its material was not a bad one. */
-static void place_mesh(loader *l, const ynode *n, int look, bool own, const glint_transform *to_world, int before)
+static void place_mesh(loader *l, const ynode *n, int csg, int look, bool own, const glint_transform *to_world,
+                       int before)
 {
     const ynode *file = yr_need(&l->r, n, "file", "mesh");
     const char *path;
@@ -190,10 +201,8 @@ static void place_mesh(loader *l, const ynode *n, int look, bool own, const glin
     int mesh_index = import_model(l, file, full, options.crease_angle);
     free(full);
     int override = own || glint_scene_mesh_is_bare(l->scene, mesh_index) ? look : -1;
-    glint_error err;
-    if (mesh_index >= 0 && l->d.count == before && override != MATERIAL_REPORTED &&
-        glint_scene_add_instance(l->scene, mesh_index, override, to_world, &err) < 0)
-        diag_error(&l->d, n, &err);
+    if (mesh_index >= 0 && l->d.count == before && override != MATERIAL_REPORTED)
+        place_mesh_object(l, n, csg, mesh_index, override, to_world);
 }
 
 /* The object types that are not shapes. */
@@ -285,8 +294,9 @@ void read_object(loader *l, const ynode *n, const context *outer)
     if (mat && (ctx.material = object_material(l, mat)) < 0)
         ctx.material = MATERIAL_REPORTED;
 
-    if ((type == OBJECT_MESH || type == OBJECT_HEIGHTFIELD) && ctx.csg >= 0) {
-        diag_at(&l->d, n, "a %s cannot be a part of a union, intersection or difference", what);
+    if (type == OBJECT_HEIGHTFIELD && ctx.csg >= 0) {
+        diag_at(&l->d, n, "a heightfield is open at its sides, so it cannot be a part of a union, intersection or "
+                "difference");
         return;
     }
     if (type == OBJECT_HEIGHTFIELD) {
@@ -297,11 +307,11 @@ void read_object(loader *l, const ynode *n, const context *outer)
         if (yr_get(&l->r, n, "file"))
             diag_at(&l->d, n, "a mesh takes a 'file' or its 'vertices' and 'faces', not both");
         else
-            place_inline_mesh(l, n, ctx.material, &ctx.to_world, before);
+            place_inline_mesh(l, n, ctx.csg, ctx.material, &ctx.to_world, before);
         return;
     }
     if (type == OBJECT_MESH) {
-        place_mesh(l, n, ctx.material, mat != NULL, &ctx.to_world, before);
+        place_mesh(l, n, ctx.csg, ctx.material, mat != NULL, &ctx.to_world, before);
         return;
     }
     if (type == OBJECT_GROUP || kind->csg) {

@@ -38,11 +38,15 @@ static void plan_free(plan *p)
     free(p->material_from_mesh);
 }
 
-/* Whether mesh m is placed at all: a mesh nobody placed is not written. */
+/* Whether mesh m is placed at all, or a part of a combination: a mesh
+ * nobody placed is not written. */
 static bool is_placed(const glint_scene *s, int m)
 {
     for (int i = 0; i < s->instance_count; i++)
         if (s->instances[i].mesh == m)
+            return true;
+    for (int i = 0; i < s->shape_count; i++)
+        if (s->shapes[i].solid && s->shapes[i].solid == s->meshes[m].solid)
             return true;
     return false;
 }
@@ -375,32 +379,6 @@ static void object_end(const plan *p, ymap *m)
         fputc('\n', p->f);
 }
 
-/* Shape i as an item of an objects list indented by `indent`, and a
- * combination's parts as its own objects list. */
-static void write_shape(const plan *p, int i, int indent)
-{
-    const shape *sh = &p->scene->shapes[i];
-    ymap m = object_begin(p, indent, sh->has_transform || sh->csg);
-    ymap_key(&m, "type");
-    fputs(sh->kind->name, p->f);
-    yw_params(&m, sh->kind->params, &sh->desc, false);
-    if (sh->material >= 0) {
-        ymap_key(&m, "material");
-        material_value(p, sh->material);
-    }
-    if (sh->has_transform)
-        write_transform(p, &m, &sh->to_world);
-    if (!sh->csg) {
-        object_end(p, &m);
-        return;
-    }
-    /* The parts end their own lines: the map needs no end of its own. */
-    ymap_key_block(&m, "objects");
-    fputc('\n', p->f);
-    for (int k = 0; k < sh->part_count; k++)
-        write_shape(p, sh->parts[k], m.indent + 2);
-}
-
 /* A list of `count` rows of `width` floats under `key` of m, on one line. */
 static void write_rows(const plan *p, ymap *m, const char *key, const float *rows, int count, int width)
 {
@@ -435,6 +413,74 @@ static void write_mesh_arrays(const plan *p, ymap *m, const mesh *me)
     fputc(']', p->f);
 }
 
+/* Mesh `index` as an item of an objects list indented by `indent`: placed
+ * by to_world (when `moved`) with material `look` (-1: the mesh's own). */
+static void write_mesh(const plan *p, int index, int indent, int look, bool moved, const transform *to_world)
+{
+    const mesh *me = &p->scene->meshes[index];
+    const mesh_origin *o = &me->origin;
+    ymap m = object_begin(p, indent, moved || !o->file);
+    ymap_key(&m, "type");
+    fputs("mesh", p->f);
+    if (o->file) {
+        ymap_key(&m, "file");
+        yw_text(p->f, o->file);
+        glint_import_options options = {.crease_angle = o->crease_angle};
+        yw_params(&m, import_params(), &options, false);
+    } else {
+        write_mesh_arrays(p, &m, me);
+    }
+    /* A file's mesh is read with its own material again; arrays have one. */
+    if (!o->file && look < 0)
+        look = me->material;
+    if (look >= 0 && !(o->file && look == me->material && !me->materials)) {
+        ymap_key(&m, "material");
+        material_value(p, look);
+    }
+    if (moved)
+        write_transform(p, &m, to_world);
+    object_end(p, &m);
+}
+
+/* The mesh whose solid a mesh part is. */
+static int mesh_of_part(const glint_scene *s, const shape *part)
+{
+    int m = 0;
+    while (s->meshes[m].solid != part->solid)
+        m++;
+    return m;
+}
+
+/* Shape i as an item of an objects list indented by `indent`, and a
+ * combination's parts as its own objects list. */
+static void write_shape(const plan *p, int i, int indent)
+{
+    const shape *sh = &p->scene->shapes[i];
+    if (sh->solid) {
+        write_mesh(p, mesh_of_part(p->scene, sh), indent, sh->material, sh->has_transform, &sh->to_world);
+        return;
+    }
+    ymap m = object_begin(p, indent, sh->has_transform || sh->csg);
+    ymap_key(&m, "type");
+    fputs(sh->kind->name, p->f);
+    yw_params(&m, sh->kind->params, &sh->desc, false);
+    if (sh->material >= 0) {
+        ymap_key(&m, "material");
+        material_value(p, sh->material);
+    }
+    if (sh->has_transform)
+        write_transform(p, &m, &sh->to_world);
+    if (!sh->csg) {
+        object_end(p, &m);
+        return;
+    }
+    /* The parts end their own lines: the map needs no end of its own. */
+    ymap_key_block(&m, "objects");
+    fputc('\n', p->f);
+    for (int k = 0; k < sh->part_count; k++)
+        write_shape(p, sh->parts[k], m.indent + 2);
+}
+
 static void write_objects(const plan *p)
 {
     const glint_scene *s = p->scene;
@@ -445,27 +491,7 @@ static void write_objects(const plan *p)
             write_shape(p, i, 2);
     for (int i = 0; i < s->instance_count; i++) {
         const instance *in = &s->instances[i];
-        const mesh *me = &s->meshes[in->mesh];
-        const mesh_origin *o = &me->origin;
-        ymap m = object_begin(p, 2, in->has_transform || !o->file);
-        ymap_key(&m, "type");
-        fputs("mesh", p->f);
-        if (o->file) {
-            ymap_key(&m, "file");
-            yw_text(p->f, o->file);
-            glint_import_options options = {.crease_angle = o->crease_angle};
-            yw_params(&m, import_params(), &options, false);
-        } else {
-            write_mesh_arrays(p, &m, me);
-        }
-        int look = in->material >= 0 || o->file ? in->material : me->material;
-        if (look >= 0) {
-            ymap_key(&m, "material");
-            material_value(p, look);
-        }
-        if (in->has_transform)
-            write_transform(p, &m, &in->to_world);
-        object_end(p, &m);
+        write_mesh(p, in->mesh, 2, in->material, in->has_transform, &in->to_world);
     }
 }
 

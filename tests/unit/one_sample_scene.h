@@ -46,4 +46,15 @@ static inline glint_scene *silhouette_scene(int side, double view)
     return s;
 }
 
+/* Renders s on two threads and frees it: the picture, which the caller
+ * frees. Fails the test when the render does. */
+static inline glint_image render_and_free(glint_scene *s)
+{
+    glint_image im;
+    glint_render_options o = {.threads = 2};
+    assert_int_equal(glint_render(s, &o, &im, NULL, NULL), GLINT_OK);
+    glint_scene_free(s);
+    return im;
+}
+
 #endif

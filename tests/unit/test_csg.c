@@ -10,6 +10,7 @@
 #include <cmocka.h>
 #include <math.h>
 #include "glint.h"
+#include "first_crossing.h"
 #include "one_sample_scene.h"
 #include "scene/scene.h"
 
@@ -105,7 +106,6 @@ static void test_inside_outside_on_a_grid(void **state)
             add_ball(s, both, (glint_vec3){0.5, 0, 0}, 1, mat);
             add_ball(s, top, (glint_vec3){0, 0, 0}, 0.4, mat);
         }
-        const shape *c = &s->shapes[top];
         vec3 d = v3_normalize(v3(0.31, 0.17, 0.93));
         int inside = 0, checked = 0;
         for (double x = -1.7; x <= 1.7; x += 0.1)
@@ -120,15 +120,7 @@ static void test_inside_outside_on_a_grid(void **state)
                     bool want = k < 3    ? in_set(kinds[k], x, y, z)
                                 : k == 4 ? in_ball(x, y, z, -0.5) && y < 0.3 && x > -0.2
                                          : in_set(GLINT_SHAPE_UNION, x, y, z) && x * x + y * y + z * z >= 0.16;
-                    ray r = {v3(x, y, z), d};
-                    shape_hit h;
-                    bool leaves = false;
-                    if (shape_intersect(c, &r, 0, INFINITY, &h)) {
-                        surface sf;
-                        shape_surface(&s->shapes[h.leaf], &r, &h, &sf);
-                        leaves = v3_dot(sf.n, d) > 0;
-                    }
-                    assert_int_equal(leaves, want);
+                    assert_int_equal(first_crossing_leaves(s, top, v3(x, y, z), d), want);
                     inside += want;
                     checked++;
                 }
@@ -146,11 +138,7 @@ static glint_image silhouette(glint_shape_kind kind)
 {
     glint_scene *s = silhouette_scene(SIDE, VIEW);
     two_balls(kind, s, flat(s, 1, 1, 1));
-    glint_image im;
-    glint_render_options o = {.threads = 2};
-    assert_int_equal(glint_render(s, &o, &im, NULL, NULL), GLINT_OK);
-    glint_scene_free(s);
-    return im;
+    return render_and_free(s);
 }
 
 /* The silhouettes against the analytic sets, pixel by pixel: the union is

@@ -544,10 +544,22 @@ static const bad_scene BAD[] = {
      "  - {type: intersection, material: m, objects: [{type: disk, radius: 1}]}\n",
      "bad.yaml:4:49: a disk is not closed, so it cannot be a part of an intersection (a cylinder or cone needs its "
      "caps)", 1},
-    {"csg_mesh_part",
+    {"csg_heightfield_part",
+     "materials:\n"
+     "  m: {}\n"
      "objects:\n"
-     "  - {type: union, objects: [{type: mesh, file: x.obj}]}\n",
-     "bad.yaml:2:29: a mesh cannot be a part of a union, intersection or difference", 1},
+     "  - {type: union, objects: [{type: heightfield, material: m, heights: [[0, 1], [1, 0]], min: [0, 0, 0], "
+     "max: [1, 1, 1]}]}\n",
+     "bad.yaml:4:29: a heightfield is open at its sides, so it cannot be a part of a union, intersection or "
+     "difference", 1},
+    {"csg_open_mesh_part",
+     "materials:\n"
+     "  m: {}\n"
+     "objects:\n"
+     "  - {type: union, objects: [{type: mesh, material: m, vertices: [[0, 0, 0], [1, 0, 0], [0, 1, 0], [0, 0, 1]],"
+     " faces: [[0, 2, 1], [0, 1, 3], [0, 3, 2]]}]}\n",
+     "bad.yaml:4:29: mesh 0 is not closed, so it cannot be a part of a combination: its edge from (0, 0, 1) to "
+     "(0, 1, 0) has a triangle on one side only", 1},
     {"csg_part_needs_material",
      "objects:\n"
      "  - {type: union, objects: [{type: sphere, radius: 1}]}\n",

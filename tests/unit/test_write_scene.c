@@ -312,8 +312,8 @@ static void test_absorption_and_metallic(void **state)
 }
 
 /* Combinations come back nested as they were, each part with its own
- * transform and material, a combination without a material without one;
- * one of no parts is refused. */
+ * transform and material, a combination without a material without one,
+ * a closed mesh's part as its arrays; one of no parts is refused. */
 static void test_combinations(void **state)
 {
     (void)state;
@@ -329,10 +329,19 @@ static void test_combinations(void **state)
     assert_true(glint_scene_add_part(s, d, &ball, red, &up, &err) >= 0);
     int u = glint_scene_add_part(s, d, &join, blue, NULL, &err);
     assert_true(glint_scene_add_part(s, u, &ball, blue, NULL, &err) >= 0);
+    static const float corners[] = {0, 0, 0, 1, 0, 0, 0, 1, 0, 0, 0, 1.5f};
+    static const uint32_t faces[] = {0, 2, 1, 0, 1, 3, 0, 3, 2, 1, 2, 3};
+    glint_mesh_data tetra = {corners, NULL, NULL, 4, faces, 4, NULL, blue};
+    int made = glint_scene_add_mesh(s, NULL, &tetra, &err);
+    assert_true(glint_scene_add_mesh_part(s, u, made, red, &up, &err) >= 0);
     assert_true(glint_scene_add_shape(s, &ball, red, NULL, &err) >= 0);
     glint_scene *back = round_trip(s);
-    assert_int_equal(back->shape_count, 5);
-    for (int i = 0; i < 5; i++) {
+    assert_int_equal(back->shape_count, 6);
+    assert_non_null(back->shapes[4].solid);
+    assert_int_equal(back->shapes[4].material, red);
+    assert_same_bits(back->shapes[4].solid->view.positions, corners, sizeof corners);
+    assert_same_bits(back->shapes[4].solid->view.indices, faces, sizeof faces);
+    for (int i = 0; i < 6; i++) {
         assert_int_equal(back->shapes[i].desc.kind, s->shapes[i].desc.kind);
         assert_int_equal(back->shapes[i].part_of, s->shapes[i].part_of);
         assert_int_equal(back->shapes[i].part_count, s->shapes[i].part_count);
