@@ -541,9 +541,8 @@ int glint_scene_add_shape(glint_scene *scene, const glint_shape *shape, int mate
  * or a combination. Its transform places it in the world, as
  * glint_scene_add_shape's does (a combination takes none: NULL or the
  * identity). `material` may be -1 for a combination, whose parts then
- * need their own; a part's surface shows its own material. Parts cannot
- * move over the shutter. Returns the part's shape index or -1 and fills
- * err. */
+ * need their own; a part's surface shows its own material. Returns the
+ * part's shape index or -1 and fills err. */
 int glint_scene_add_part(glint_scene *scene, int csg, const glint_shape *shape, int material,
                          const glint_transform *transform, glint_error *err);
 
@@ -804,7 +803,9 @@ bool glint_scene_is_animated(const glint_scene *scene);
  * world transform goes through `count` poses, 2..64, evenly spaced from
  * the shutter's opening to its closing, in straight lines between them
  * (each number of the matrix interpolated linearly), replacing the
- * transform it was added with. Each must be invertible and finite. */
+ * transform it was added with. Each must be invertible and finite. A
+ * part of a combination moves too (the combination takes it where it is
+ * at each ray's time); a combination itself has no transform to move. */
 glint_status glint_scene_move_shape(glint_scene *scene, int shape, int count, const glint_transform *poses,
                                     glint_error *err);
 

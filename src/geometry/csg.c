@@ -10,7 +10,8 @@
  * state where the walk starts is read from its first crossing ahead, which
  * leaves it when the walk starts inside; a part the ray no longer crosses
  * is outside, unless it is unbounded (a plane's half-space, stays_inside).
- * The hit names the part's own
+ * Parts that move over the shutter are taken where they are at the time
+ * of the combination's moved copy (shape_at). The hit names the part's own
  * shape (the leaf), so shading, materials and textures are the part's;
  * the surfaces a difference cuts with its other parts face the other way
  * (SHAPE_PART_FLIPPED). In the common case of a ray that meets the
@@ -26,8 +27,9 @@ typedef struct crossing {
     int part;                 /* its part, with SHAPE_PART_FLIPPED where it faces the other way */
 } crossing;
 
-static bool next_crossing(const shape *s, int index, const ray *r, double after, crossing *c, int depth);
-static bool stays_inside(const shape *s, const ray *r, double after, int depth);
+static bool next_crossing(const shape *s, int index, const ray *r, double after, crossing *c, int depth,
+                          double time);
+static bool stays_inside(const shape *s, const ray *r, double after, int depth, double time);
 
 /* Whether the combination of kind k is solid where its parts' states are
  * inside[0..n). */
@@ -53,17 +55,17 @@ static bool combined(glint_shape_kind k, const bool *inside, int n)
     return true;
 }
 
-/* The first crossing of combination s after `after` (to any distance):
- * the walk described at the top. */
-static bool combination_crossing(const shape *s, const ray *r, double after, crossing *out, int depth)
+/* The first crossing of combination s after `after` (to any distance),
+ * its parts as they are at `time`: the walk described at the top. */
+static bool combination_crossing(const shape *s, const ray *r, double after, crossing *out, int depth, double time)
 {
     int n = s->part_count;
     crossing ahead[SHAPE_MAX_PARTS];
     bool has[SHAPE_MAX_PARTS], inside[SHAPE_MAX_PARTS] = {false};
     for (int i = 0; i < n; i++) {
         const shape *part = &s->family[s->parts[i]];
-        has[i] = next_crossing(part, s->parts[i], r, after, &ahead[i], depth + 1);
-        inside[i] = has[i] ? !ahead[i].entering : stays_inside(part, r, after, depth + 1);
+        has[i] = next_crossing(part, s->parts[i], r, after, &ahead[i], depth + 1, time);
+        inside[i] = has[i] ? !ahead[i].entering : stays_inside(part, r, after, depth + 1, time);
     }
     bool solid = combined(s->desc.kind, inside, n);
     /* Each step passes one crossing of one part, which has finitely many. */
@@ -84,21 +86,24 @@ static bool combination_crossing(const shape *s, const ray *r, double after, cro
             return true;
         }
         has[first] = next_crossing(&s->family[s->parts[first]], s->parts[first], r, ahead[first].t,
-                                   &ahead[first], depth + 1);
+                                   &ahead[first], depth + 1, time);
     }
 }
 
 /* The first crossing of shape s (number `index` of the family) after
- * `after`: a combination's, or a plain shape's, whose normal there says
- * whether the ray goes in or out. */
-static bool next_crossing(const shape *s, int index, const ray *r, double after, crossing *c, int depth)
+ * `after`, as it is at `time`: a combination's, or a plain shape's, whose
+ * normal there says whether the ray goes in or out. */
+static bool next_crossing(const shape *s, int index, const ray *r, double after, crossing *c, int depth,
+                          double time)
 {
     if (s->kind->csg)
-        return depth < SHAPE_MAX_NESTING && combination_crossing(s, r, after, c, depth);
+        return depth < SHAPE_MAX_NESTING && combination_crossing(s, r, after, c, depth, time);
+    shape moved;
+    const shape *at = shape_at(s, time, &moved);
     shape_hit h;
-    if (!shape_intersect(s, r, after, INFINITY, &h))
+    if (!shape_intersect(at, r, after, INFINITY, &h))
         return false;
-    *c = (crossing){h.t, shape_hit_enters(s, r, &h), index, h.part};
+    *c = (crossing){h.t, shape_hit_enters(at, r, &h), index, h.part};
     return true;
 }
 
@@ -118,20 +123,23 @@ static bool unbounded(const shape *s)
  * more after it: outside, unless s is unbounded (a ray in a plane's
  * half-space going away from the plane, or along the inside of a prism
  * made of three). */
-static bool stays_inside(const shape *s, const ray *r, double after, int depth)
+static bool stays_inside(const shape *s, const ray *r, double after, int depth, double time)
 {
     if (depth >= SHAPE_MAX_NESTING || !unbounded(s))
         return false;
     if (!s->kind->csg) {
         vec3 p = ray_at(r, after);
-        return s->kind->contains(s, s->has_transform ? xf_point(&s->to_object, p) : p);
+        shape moved;
+        const shape *at = shape_at(s, time, &moved);
+        return s->kind->contains(at, at->has_transform ? xf_point(&at->to_object, p) : p);
     }
     bool inside[SHAPE_MAX_PARTS] = {false};
     for (int i = 0; i < s->part_count; i++) {
         const shape *part = &s->family[s->parts[i]];
         crossing c;
-        inside[i] = next_crossing(part, s->parts[i], r, after, &c, depth + 1) ? !c.entering
-                                                                               : stays_inside(part, r, after, depth + 1);
+        inside[i] = next_crossing(part, s->parts[i], r, after, &c, depth + 1, time)
+                        ? !c.entering
+                        : stays_inside(part, r, after, depth + 1, time);
     }
     return combined(s->desc.kind, inside, s->part_count);
 }
@@ -139,7 +147,7 @@ static bool stays_inside(const shape *s, const ray *r, double after, int depth)
 static bool csg_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
     crossing c;
-    if (!combination_crossing(s, r, tmin, &c, 0) || !(c.t < tmax))
+    if (!combination_crossing(s, r, tmin, &c, 0, s->time) || !(c.t < tmax))
         return false;
     *hit = (shape_hit){c.t, c.part, c.leaf};
     return true;

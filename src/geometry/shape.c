@@ -79,7 +79,9 @@ void shape_move(shape *s, transform *poses, int count)
 const shape *shape_moved(const shape *s, double time, shape *out)
 {
     *out = *s;
-    xf_between(s->poses, s->pose_count, time, &out->to_world, &out->to_object);
+    out->time = time;
+    if (s->poses)
+        xf_between(s->poses, s->pose_count, time, &out->to_world, &out->to_object);
     return out;
 }
 

@@ -60,7 +60,10 @@ typedef struct shape {
     vec3 center;              /* shape_center's */
     int material;
     transform *poses;         /* moving (shape_move): its world transforms over the shutter, */
-    int pose_count;           /* evenly spaced (0: it stands still); owned by the scene */
+    int pose_count;           /* evenly spaced (0: it stands still); owned by the scene. A
+                                 combination whose parts move has a count and no poses */
+    double time;              /* a moving shape's copy (shape_moved): the time it is at, at
+                                 which a combination takes its parts */
     /* A union, intersection or difference: its parts, indices into family
      * (the scene's shape array, which the scene keeps pointing there), in
      * order; owned by the scene. */

@@ -48,9 +48,9 @@ glint_status glint_scene_move_shape(glint_scene *scene, int index, int count, co
     if (index < 0 || index >= scene->shape_count)
         return error_set(err, GLINT_ERR_INVALID, "shape %d does not exist", index);
     const shape *s = &scene->shapes[index];
-    if (s->kind->csg || s->part_of >= 0)
-        return error_set(err, GLINT_ERR_INVALID, "a %s %s cannot move over the shutter (it may change from frame to "
-                         "frame)", s->kind->name, s->kind->csg ? "combination" : "in a combination");
+    if (s->kind->csg)
+        return error_set(err, GLINT_ERR_INVALID, "%s %s cannot move over the shutter: move its parts",
+                         object_article(s->kind->name), s->kind->name);
     transform *copy;
     glint_status st = copy_poses(count, poses, &copy, err);
     if (st)
@@ -58,6 +58,10 @@ glint_status glint_scene_move_shape(glint_scene *scene, int index, int count, co
     shape *moving = &scene->shapes[index];
     free(moving->poses);
     shape_move(moving, copy, count);
+    /* The combinations it is in take their parts where they are at each
+     * ray's time. */
+    for (int up = moving->part_of; up >= 0; up = scene->shapes[up].part_of)
+        scene->shapes[up].pose_count = count;
     /* Its light moves with it. */
     emitters_follow_shape(scene->emitters, scene->emitter_count, index, moving);
     return GLINT_OK;

@@ -259,6 +259,35 @@ static void test_moving_lamp_seen(void **state)
     glint_image_free(&im);
 }
 
+/* A ball moving inside combinations (a difference of an intersection of
+ * it and a box, and a far ball; the transform keyed on the outer one, so
+ * that every part moves) leaves the streak the moving ball leaves, bit for
+ * bit: its parts are taken where they are at each sample's time. */
+static void test_moving_combination(void **state)
+{
+    glint_image ball = render(scene_text(true, MOVING, STILL_CAMERA), 2);
+    char text[2048];
+    snprintf(text, sizeof text,
+             "settings: {width: %d, height: %d, samples: 256, sampler: sobol, frames: {fps: 1}, "
+             "shutter: {open: 0, close: 1}}\n"
+             "camera: {position: %s, fov: 30}\n"
+             "materials: {white: {color: {linear: [1, 1, 1]}, ambient: 1, diffuse: 0, specular: 0}}\n"
+             "objects:\n"
+             "  - type: difference\n"
+             "    material: white\n"
+             "    transform: [{translate: %s}]\n"
+             "    objects:\n"
+             "      - {type: intersection, objects: [{type: sphere, radius: 0.25}, {type: box, min: [-1, -1, -1], "
+             "max: [1, 1, 1]}]}\n"
+             "      - {type: sphere, radius: 0.1, center: [0, 0, 5]}\n"
+             "  - {type: sphere, radius: 0.25, center: [0, -0.8, 0], material: white}\n",
+             WIDTH, HEIGHT, STILL_CAMERA, MOVING);
+    glint_image combined = render(text, 2);
+    assert_memory_equal(combined.pixels, ball.pixels, sizeof(float) * 3 * WIDTH * HEIGHT);
+    glint_image_free(&combined);
+    glint_image_free(&ball);
+}
+
 /* A mesh moved through the C API (Embree's instance motion blur): a small
  * square of two triangles crossing the view as the ball did leaves a
  * streak whose ends are the projected ends of its path. */
@@ -305,6 +334,7 @@ int main(void)
         cmocka_unit_test(test_moving_area_light),
         cmocka_unit_test(test_moving_lamp_seen),
         cmocka_unit_test(test_moving_mesh),
+        cmocka_unit_test(test_moving_combination),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
