@@ -21,7 +21,7 @@ static glint_status box_init(shape *s, glint_error *err)
 /* The slab method: the ray is inside the box where it is inside all three
  * slabs at once; the slab entered last names the face it came in by. Rays
  * that only touch an edge or a face still hit. */
-static bool box_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+static bool box_span(const shape *s, const ray *r, shape_span *out)
 {
     const glint_shape *d = &s->desc;
     double t_near = -INFINITY, t_far = INFINITY;
@@ -40,12 +40,14 @@ static bool box_intersect(const shape *s, const ray *r, double tmin, double tmax
             far_part = dir > 0 ? low_face + 1 : low_face;
         }
     }
-    if (t_near > t_far)
-        return false;
-    shape_hit best = {.t = tmax};
-    hit_offer(&best, tmin, t_near, near_part);
-    hit_offer(&best, tmin, t_far, far_part);
-    return hit_take(&best, tmax, hit);
+    *out = (shape_span){t_near, t_far, near_part, far_part, 0, 0};
+    return t_near <= t_far;
+}
+
+static bool box_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+{
+    shape_span span;
+    return box_span(s, r, &span) && span_hit(&span, tmin, tmax, hit);
 }
 
 /* Where p lies along a (a coordinate axis of either sign) across the box:
@@ -108,6 +110,6 @@ static double box_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n)
 const shape_kind box_kind = {
     .closed = shape_always_closed,
     .name = "box", .id = GLINT_SHAPE_BOX, .params = PARAM_TABLE(BOX_PARAMS), .max_crossings = 2,
-    .init = box_init, .intersect = box_intersect, .surface = box_surface,
+    .init = box_init, .intersect = box_intersect, .span = box_span, .surface = box_surface,
     .uv = box_uv, .bounds = box_bounds, .center = shape_bounds_middle, .sample = box_sample,
 };

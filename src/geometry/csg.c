@@ -6,10 +6,14 @@
  * where a ray crosses its own surface by walking the crossings of its parts
  * along the ray in order: a part's state (inside or out) flips at each of
  * its crossings, the combination's is the set operation of its parts'
- * states, and the first crossing that changes that is the hit. A part's
- * state where the walk starts is read from its first crossing ahead, which
- * leaves it when the walk starts inside; a part the ray no longer crosses
- * is outside, unless it is unbounded (a plane's half-space, stays_inside).
+ * states, and the first crossing that changes that is the hit. A convex
+ * part (a sphere, box, half-space, or an intersection of such) gives
+ * where the line is inside it in one go (its span: shape_span_of, or
+ * convex_span for an intersection), which holds its state and both its
+ * crossings, so it is tested once a walk however often the walk passes
+ * it. Another part's state where the walk starts is read from its first
+ * crossing ahead, which leaves it when the walk starts inside; a part the
+ * ray no longer crosses is outside, unless it is unbounded (stays_inside).
  * Parts that move over the shutter are taken where they are at the time
  * of the combination's moved copy (shape_at). The hit names the part's own
  * shape (the leaf), so shading, materials and textures are the part's;
@@ -55,15 +59,74 @@ static bool combined(glint_shape_kind k, const bool *inside, int n)
     return true;
 }
 
+/* Where r's line is inside convex shape s (number `index` of the family),
+ * as it is at `time`: its own span, or an intersection's, the overlap of
+ * its parts' (the part entered last and the part left first name its
+ * ends, the first of them on a tie, as the walk would). False when the
+ * line misses it, or only touches it. */
+static bool convex_span(const shape *s, int index, const ray *r, double time, shape_span *span, int depth)
+{
+    if (!s->kind->csg) {
+        shape moved;
+        if (!shape_span_of(shape_at(s, time, &moved), r, span))
+            return false;
+        span->leaf_in = span->leaf_out = index;
+        return span->t_in < span->t_out;
+    }
+    if (depth >= SHAPE_MAX_NESTING)
+        return false;
+    *span = (shape_span){-INFINITY, INFINITY, 0, 0, index, index};
+    for (int i = 0; i < s->part_count; i++) {
+        shape_span part;
+        if (!convex_span(&s->family[s->parts[i]], s->parts[i], r, time, &part, depth + 1))
+            return false;
+        if (part.t_in >= span->t_in) {
+            span->t_in = part.t_in;
+            span->part_in = part.part_in;
+            span->leaf_in = part.leaf_in;
+        }
+        if (part.t_out < span->t_out) {
+            span->t_out = part.t_out;
+            span->part_out = part.part_out;
+            span->leaf_out = part.leaf_out;
+        }
+    }
+    return span->t_in < span->t_out;
+}
+
+/* The first crossing of a convex part's span after `after`: its way in,
+ * or its way out, where those are finite. */
+static bool span_next(const shape_span *span, double after, crossing *c)
+{
+    if (span->t_in > after && span->t_in < INFINITY) {
+        *c = (crossing){span->t_in, true, span->leaf_in, span->part_in};
+        return true;
+    }
+    if (span->t_out > after && span->t_out < INFINITY) {
+        *c = (crossing){span->t_out, false, span->leaf_out, span->part_out};
+        return true;
+    }
+    return false;
+}
+
 /* The first crossing of combination s after `after` (to any distance),
  * its parts as they are at `time`: the walk described at the top. */
 static bool combination_crossing(const shape *s, const ray *r, double after, crossing *out, int depth, double time)
 {
     int n = s->part_count;
     crossing ahead[SHAPE_MAX_PARTS];
+    shape_span spans[SHAPE_MAX_PARTS];
     bool has[SHAPE_MAX_PARTS], inside[SHAPE_MAX_PARTS] = {false};
     for (int i = 0; i < n; i++) {
         const shape *part = &s->family[s->parts[i]];
+        if (part->convex) {
+            /* A line that misses it leaves an empty span, after every end. */
+            if (!convex_span(part, s->parts[i], r, time, &spans[i], depth + 1))
+                spans[i] = (shape_span){INFINITY, INFINITY, 0, 0, 0, 0};
+            inside[i] = spans[i].t_in <= after && after < spans[i].t_out;
+            has[i] = span_next(&spans[i], after, &ahead[i]);
+            continue;
+        }
         has[i] = next_crossing(part, s->parts[i], r, after, &ahead[i], depth + 1, time);
         inside[i] = has[i] ? !ahead[i].entering : stays_inside(part, r, after, depth + 1, time);
     }
@@ -85,8 +148,10 @@ static bool combination_crossing(const shape *s, const ray *r, double after, cro
                 out->part ^= SHAPE_PART_FLIPPED;
             return true;
         }
-        has[first] = next_crossing(&s->family[s->parts[first]], s->parts[first], r, ahead[first].t,
-                                   &ahead[first], depth + 1, time);
+        const shape *part = &s->family[s->parts[first]];
+        has[first] = part->convex ? span_next(&spans[first], ahead[first].t, &ahead[first])
+                                  : next_crossing(part, s->parts[first], r, ahead[first].t, &ahead[first], depth + 1,
+                                                  time);
     }
 }
 
@@ -147,6 +212,14 @@ static bool stays_inside(const shape *s, const ray *r, double after, int depth, 
 static bool csg_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
     crossing c;
+    shape_span span;
+    /* A convex combination (a lens of two balls) is its span's ends. */
+    if (s->convex) {
+        if (!convex_span(s, -1, r, s->time, &span, 0) || !span_next(&span, tmin, &c) || !(c.t < tmax))
+            return false;
+        *hit = (shape_hit){c.t, c.part, c.leaf};
+        return true;
+    }
     if (!combination_crossing(s, r, tmin, &c, 0, s->time) || !(c.t < tmax))
         return false;
     *hit = (shape_hit){c.t, c.part, c.leaf};
@@ -179,6 +252,17 @@ static void csg_bounds(const shape *s, vec3 *lo, vec3 *hi)
     /* An intersection of parts that do not overlap is empty: a point. */
     if (meet && (lo->x > hi->x || lo->y > hi->y || lo->z > hi->z))
         *hi = *lo;
+}
+
+void shape_parts_changed(shape *family, int combination)
+{
+    for (int up = combination; up >= 0; up = family[up].part_of) {
+        shape *c = &family[up];
+        bool convex = c->desc.kind == GLINT_SHAPE_INTERSECTION && c->part_count > 0;
+        for (int i = 0; convex && i < c->part_count; i++)
+            convex = family[c->parts[i]].convex;
+        c->convex = convex;
+    }
 }
 
 #define CSG_KIND(kind_name, kind_id)                                                                           \

@@ -51,6 +51,21 @@ static bool plane_contains(const shape *s, vec3 p)
     return v3_dot(v3_sub(p, s->desc.center), s->desc.normal) < 0;
 }
 
+/* A line crossing the plane is inside the half-space on one side of the
+ * crossing; one along it, everywhere or nowhere. */
+static bool plane_span(const shape *s, const ray *r, shape_span *out)
+{
+    double t;
+    *out = (shape_span){-INFINITY, INFINITY, 0, 0, 0, 0};
+    if (!plane_hit(s->desc.center, s->desc.normal, r, -INFINITY, INFINITY, &t))
+        return v3_dot(r->d, s->desc.normal) == 0 && plane_contains(s, r->o);
+    if (v3_dot(r->d, s->desc.normal) < 0)
+        out->t_in = t;
+    else
+        out->t_out = t;
+    return true;
+}
+
 static const param PLANE_PARAMS[] = {
     {.key = "point", .type = PARAM_VEC3, .offset = offsetof(glint_shape, center), .meaning = "a point on the plane"},
     {.key = "normal", .type = PARAM_DIRECTION, .offset = offsetof(glint_shape, normal), .required = true,
@@ -60,6 +75,6 @@ static const param PLANE_PARAMS[] = {
 const shape_kind plane_kind = {
     .closed = shape_always_closed,
     .name = "plane", .id = GLINT_SHAPE_PLANE, .params = PARAM_TABLE(PLANE_PARAMS), .max_crossings = 1,
-    .flat = true, .init = plane_init, .intersect = plane_intersect, .intersect4 = plane_intersect4,
+    .flat = true, .init = plane_init, .intersect = plane_intersect, .span = plane_span, .intersect4 = plane_intersect4,
     .surface = plane_surface, .uv = plane_uv, .contains = plane_contains,
 };

@@ -30,6 +30,7 @@ static glint_status init_as(shape *s, const shape_kind *k, const glint_shape *de
         return error_set(err, GLINT_ERR_INVALID, "unknown shape kind %d", (int)desc->kind);
     s->kind = k;
     s->solid = solid;
+    s->convex = k->span != NULL;
     s->desc = *desc;
     s->material = material;
     s->to_world = to_world ? *to_world : glint_transform_identity();
@@ -101,6 +102,14 @@ bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, sha
         return s->kind->intersect(s, r, tmin, tmax, hit);
     ray o = object_ray(s, r);
     return s->kind->intersect(s, &o, tmin, tmax, hit);
+}
+
+bool shape_span_of(const shape *s, const ray *r, shape_span *span)
+{
+    if (!s->has_transform)
+        return s->kind->span(s, r, span);
+    ray o = object_ray(s, r);
+    return s->kind->span(s, &o, span);
 }
 
 quad_mask shape_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)

@@ -76,6 +76,9 @@ typedef struct shape {
      * the mesh; its triangles' materials when `material` is -1. */
     const struct mesh_solid *solid;
     bool csg;                 /* it is a combination (its kind's csg) */
+    /* Its solid is convex, so shape_span_of answers for it: a kind with a
+     * span, or an intersection of convex parts (shape_parts_changed). */
+    bool convex;
 } shape;
 
 /* A hit found by shape_intersect: the ray parameter and which part of the
@@ -90,6 +93,16 @@ typedef struct shape_hit {
 } shape_hit;
 
 #define SHAPE_PART_FLIPPED (1 << 30)
+
+/* Where a whole line is inside a convex solid (shape_span_of): from t_in
+ * to t_out, either of which may be infinite (a plane's half-space), in
+ * through part_in of shape leaf_in and out through part_out of leaf_out
+ * (leaves as in shape_hit: a combination's parts). */
+typedef struct shape_span {
+    double t_in, t_out;
+    int part_in, part_out;
+    int leaf_in, leaf_out;
+} shape_span;
 
 /* What shading needs to know about a hit point. */
 typedef struct surface {
@@ -135,6 +148,16 @@ static inline const shape *shape_at(const shape *s, double time, shape *out)
 {
     return s->pose_count ? shape_moved(s, time, out) : s;
 }
+
+/* Where world ray r's whole line is inside s, for a convex s (s->convex)
+ * that is not a combination (csg.c spans those); false when the line
+ * misses it. */
+bool shape_span_of(const shape *s, const ray *r, shape_span *span);
+
+/* Recomputes which combinations are convex from `combination` (whose
+ * parts changed) up to the outermost it is in: an intersection whose
+ * parts all are. */
+void shape_parts_changed(shape *family, int combination);
 
 /* Finds the nearest hit of world ray r with t in (tmin, tmax). A ray that
  * starts inside a closed shape finds the surface on its way out. */

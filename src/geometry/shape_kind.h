@@ -44,6 +44,11 @@ struct shape_kind {
     glint_status (*init)(shape *s, glint_error *err);
     /* shape_intersect for a ray already in object space. */
     bool (*intersect)(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
+    /* For a convex solid: where r's whole line is inside it (out->t_in,
+     * t_out, part_in, part_out), in one go; false when the line misses
+     * it. A combination walks its convex parts by their spans instead of
+     * their crossings one at a time. NULL: not convex. */
+    bool (*span)(const shape *s, const ray *r, shape_span *out);
     /* intersect with tmin 0 for the four lanes of *r from `first` on, each
      * lane's bits as intersect gives them; NULL: the accelerator tests
      * lanes one by one. Unbounded kinds must have it. */

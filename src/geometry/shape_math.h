@@ -26,6 +26,15 @@ static inline bool hit_take(const shape_hit *best, double tmax, shape_hit *hit)
     return true;
 }
 
+/* intersect's answer from a convex kind's span: its ends offered in turn. */
+static inline bool span_hit(const shape_span *span, double tmin, double tmax, shape_hit *hit)
+{
+    shape_hit best = {.t = tmax};
+    hit_offer(&best, tmin, span->t_in, span->part_in);
+    hit_offer(&best, tmin, span->t_out, span->part_out);
+    return hit_take(&best, tmax, hit);
+}
+
 static inline vec3 min3(vec3 a, vec3 b) { return v3(fmin(a.x, b.x), fmin(a.y, b.y), fmin(a.z, b.z)); }
 static inline vec3 max3(vec3 a, vec3 b) { return v3(fmax(a.x, b.x), fmax(a.y, b.y), fmax(a.z, b.z)); }
 

@@ -3,17 +3,19 @@
 #include "geometry/shape_kind.h"
 #include "geometry/shape_math.h"
 
-static bool sphere_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+static bool sphere_span(const shape *s, const ray *r, shape_span *out)
 {
     const glint_shape *d = &s->desc;
     vec3 oc = v3_sub(r->o, d->center);
-    double t0, t1;
-    if (!quadratic(v3_dot(r->d, r->d), 2 * v3_dot(oc, r->d), v3_dot(oc, oc) - d->radius * d->radius, &t0, &t1))
-        return false;
-    shape_hit best = {.t = tmax};
-    hit_offer(&best, tmin, t0, 0);
-    hit_offer(&best, tmin, t1, 0);
-    return hit_take(&best, tmax, hit);
+    *out = (shape_span){0};
+    return quadratic(v3_dot(r->d, r->d), 2 * v3_dot(oc, r->d), v3_dot(oc, oc) - d->radius * d->radius, &out->t_in,
+                     &out->t_out);
+}
+
+static bool sphere_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
+{
+    shape_span span;
+    return sphere_span(s, r, &span) && span_hit(&span, tmin, tmax, hit);
 }
 
 static quad_mask sphere_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
@@ -84,6 +86,6 @@ static double sphere_sample(const shape *s, double u1, double u2, vec3 *p, vec3 
 const shape_kind sphere_kind = {
     .closed = shape_always_closed,
     .name = "sphere", .id = GLINT_SHAPE_SPHERE, .params = PARAM_TABLE(SPHERE_PARAMS), .max_crossings = 2,
-    .intersect = sphere_intersect, .intersect4 = sphere_intersect4,
+    .intersect = sphere_intersect, .span = sphere_span, .intersect4 = sphere_intersect4,
     .surface = sphere_surface, .uv = sphere_uv, .bounds = sphere_bounds, .sample = sphere_sample,
 };

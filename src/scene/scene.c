@@ -403,6 +403,7 @@ static int add_shape(glint_scene *scene, int csg, const glint_shape *desc, const
     if (parent) {
         s->part_of = csg;
         parent->parts[parent->part_count++] = scene->shape_count;
+        shape_parts_changed(scene->shapes, csg);
     }
     color glow = mat >= 0 ? material_emission(&scene->materials[mat].m) : rgb(0, 0, 0);
     if (parent && rgb_max(glow) > 0) {
