@@ -31,9 +31,18 @@ typedef struct crossing {
     int part;                 /* its part, with SHAPE_PART_FLIPPED where it faces the other way */
 } crossing;
 
-static bool next_crossing(const shape *s, int index, const ray *r, double after, crossing *c, int depth,
-                          double time);
-static bool stays_inside(const shape *s, const ray *r, double after, int depth, double time);
+/* r mapped into the space of the transform numbered `id` (shape
+ * transform_id), kept through a walk: the parts of a combination placed
+ * as a whole share one transform, which then maps the ray once. */
+typedef struct mapped_ray {
+    unsigned id;
+    ray r;
+} mapped_ray;
+
+static bool next_crossing(const shape *s, int index, const ray *r, mapped_ray *mapped, double after,
+                          crossing *c, int depth, double time);
+static bool stays_inside(const shape *s, const ray *r, mapped_ray *mapped, double after, int depth,
+                         double time);
 
 /* Whether the combination of kind k is solid where its parts' states are
  * inside[0..n). */
@@ -59,16 +68,30 @@ static bool combined(glint_shape_kind k, const bool *inside, int n)
     return true;
 }
 
+/* A plain convex shape's span, through the mapped ray when it shares its
+ * transform. */
+static bool leaf_span(const shape *s, const ray *r, mapped_ray *mapped, shape_span *span)
+{
+    if (!s->transform_id)
+        return shape_span_of(s, r, span);
+    if (mapped->id != s->transform_id) {
+        mapped->id = s->transform_id;
+        mapped->r = (ray){xf_point(&s->to_object, r->o), xf_vector(&s->to_object, r->d)};
+    }
+    return s->kind->span(s, &mapped->r, span);
+}
+
 /* Where r's line is inside convex shape s (number `index` of the family),
  * as it is at `time`: its own span, or an intersection's, the overlap of
  * its parts' (the part entered last and the part left first name its
  * ends, the first of them on a tie, as the walk would). False when the
  * line misses it, or only touches it. */
-static bool convex_span(const shape *s, int index, const ray *r, double time, shape_span *span, int depth)
+static bool convex_span(const shape *s, int index, const ray *r, mapped_ray *mapped, double time, shape_span *span,
+                        int depth)
 {
     if (!s->kind->csg) {
         shape moved;
-        if (!shape_span_of(shape_at(s, time, &moved), r, span))
+        if (!leaf_span(shape_at(s, time, &moved), r, mapped, span))
             return false;
         span->leaf_in = span->leaf_out = index;
         return span->t_in < span->t_out;
@@ -78,7 +101,7 @@ static bool convex_span(const shape *s, int index, const ray *r, double time, sh
     *span = (shape_span){-INFINITY, INFINITY, 0, 0, index, index};
     for (int i = 0; i < s->part_count; i++) {
         shape_span part;
-        if (!convex_span(&s->family[s->parts[i]], s->parts[i], r, time, &part, depth + 1))
+        if (!convex_span(&s->family[s->parts[i]], s->parts[i], r, mapped, time, &part, depth + 1))
             return false;
         if (part.t_in >= span->t_in) {
             span->t_in = part.t_in;
@@ -111,7 +134,8 @@ static bool span_next(const shape_span *span, double after, crossing *c)
 
 /* The first crossing of combination s after `after` (to any distance),
  * its parts as they are at `time`: the walk described at the top. */
-static bool combination_crossing(const shape *s, const ray *r, double after, crossing *out, int depth, double time)
+static bool combination_crossing(const shape *s, const ray *r, mapped_ray *mapped, double after, crossing *out,
+                                 int depth, double time)
 {
     int n = s->part_count;
     crossing ahead[SHAPE_MAX_PARTS];
@@ -121,14 +145,14 @@ static bool combination_crossing(const shape *s, const ray *r, double after, cro
         const shape *part = &s->family[s->parts[i]];
         if (part->convex) {
             /* A line that misses it leaves an empty span, after every end. */
-            if (!convex_span(part, s->parts[i], r, time, &spans[i], depth + 1))
+            if (!convex_span(part, s->parts[i], r, mapped, time, &spans[i], depth + 1))
                 spans[i] = (shape_span){INFINITY, INFINITY, 0, 0, 0, 0};
             inside[i] = spans[i].t_in <= after && after < spans[i].t_out;
             has[i] = span_next(&spans[i], after, &ahead[i]);
             continue;
         }
-        has[i] = next_crossing(part, s->parts[i], r, after, &ahead[i], depth + 1, time);
-        inside[i] = has[i] ? !ahead[i].entering : stays_inside(part, r, after, depth + 1, time);
+        has[i] = next_crossing(part, s->parts[i], r, mapped, after, &ahead[i], depth + 1, time);
+        inside[i] = has[i] ? !ahead[i].entering : stays_inside(part, r, mapped, after, depth + 1, time);
     }
     bool solid = combined(s->desc.kind, inside, n);
     /* Each step passes one crossing of one part, which has finitely many. */
@@ -150,19 +174,19 @@ static bool combination_crossing(const shape *s, const ray *r, double after, cro
         }
         const shape *part = &s->family[s->parts[first]];
         has[first] = part->convex ? span_next(&spans[first], ahead[first].t, &ahead[first])
-                                  : next_crossing(part, s->parts[first], r, ahead[first].t, &ahead[first], depth + 1,
-                                                  time);
+                                  : next_crossing(part, s->parts[first], r, mapped, ahead[first].t, &ahead[first],
+                                                  depth + 1, time);
     }
 }
 
 /* The first crossing of shape s (number `index` of the family) after
  * `after`, as it is at `time`: a combination's, or a plain shape's, whose
  * normal there says whether the ray goes in or out. */
-static bool next_crossing(const shape *s, int index, const ray *r, double after, crossing *c, int depth,
-                          double time)
+static bool next_crossing(const shape *s, int index, const ray *r, mapped_ray *mapped, double after,
+                          crossing *c, int depth, double time)
 {
     if (s->kind->csg)
-        return depth < SHAPE_MAX_NESTING && combination_crossing(s, r, after, c, depth, time);
+        return depth < SHAPE_MAX_NESTING && combination_crossing(s, r, mapped, after, c, depth, time);
     shape moved;
     const shape *at = shape_at(s, time, &moved);
     shape_hit h;
@@ -188,7 +212,8 @@ static bool unbounded(const shape *s)
  * more after it: outside, unless s is unbounded (a ray in a plane's
  * half-space going away from the plane, or along the inside of a prism
  * made of three). */
-static bool stays_inside(const shape *s, const ray *r, double after, int depth, double time)
+static bool stays_inside(const shape *s, const ray *r, mapped_ray *mapped, double after, int depth,
+                         double time)
 {
     if (depth >= SHAPE_MAX_NESTING || !unbounded(s))
         return false;
@@ -202,9 +227,9 @@ static bool stays_inside(const shape *s, const ray *r, double after, int depth, 
     for (int i = 0; i < s->part_count; i++) {
         const shape *part = &s->family[s->parts[i]];
         crossing c;
-        inside[i] = next_crossing(part, s->parts[i], r, after, &c, depth + 1, time)
+        inside[i] = next_crossing(part, s->parts[i], r, mapped, after, &c, depth + 1, time)
                         ? !c.entering
-                        : stays_inside(part, r, after, depth + 1, time);
+                        : stays_inside(part, r, mapped, after, depth + 1, time);
     }
     return combined(s->desc.kind, inside, s->part_count);
 }
@@ -213,14 +238,15 @@ static bool csg_intersect(const shape *s, const ray *r, double tmin, double tmax
 {
     crossing c;
     shape_span span;
+    mapped_ray mapped = {0};
     /* A convex combination (a lens of two balls) is its span's ends. */
     if (s->convex) {
-        if (!convex_span(s, -1, r, s->time, &span, 0) || !span_next(&span, tmin, &c) || !(c.t < tmax))
+        if (!convex_span(s, -1, r, &mapped, s->time, &span, 0) || !span_next(&span, tmin, &c) || !(c.t < tmax))
             return false;
         *hit = (shape_hit){c.t, c.part, c.leaf};
         return true;
     }
-    if (!combination_crossing(s, r, tmin, &c, 0, s->time) || !(c.t < tmax))
+    if (!combination_crossing(s, r, &mapped, tmin, &c, 0, s->time) || !(c.t < tmax))
         return false;
     *hit = (shape_hit){c.t, c.part, c.leaf};
     return true;

@@ -75,6 +75,7 @@ void shape_move(shape *s, transform *poses, int count)
     xf_invert(&s->to_world, &s->to_object);
     s->has_transform = true;
     s->quad = s->flat = false;
+    s->transform_id = 0;
 }
 
 const shape *shape_moved(const shape *s, double time, shape *out)

@@ -79,6 +79,10 @@ typedef struct shape {
     /* Its solid is convex, so shape_span_of answers for it: a kind with a
      * span, or an intersection of convex parts (shape_parts_changed). */
     bool convex;
+    /* Non-zero: shapes with the same number have the same transform, so a
+     * combination maps a ray into their space once for them all (csg.c).
+     * Zero: no transform, or one of its own (a moving shape's). */
+    unsigned transform_id;
 } shape;
 
 /* A hit found by shape_intersect: the ray parameter and which part of the

@@ -354,6 +354,23 @@ static glint_status part_room(const glint_scene *scene, int csg, glint_error *er
     return GLINT_OK;
 }
 
+/* Gives part s the transform number of the part added before it (past
+ * the combinations between) when their transforms are the same, as those
+ * of a combination's parts are when only the combination was placed. */
+static void share_transform(glint_scene *scene, shape *s)
+{
+    if (!s->has_transform || s->csg)
+        return;
+    int k = scene->shape_count - 1;
+    while (k >= 0 && scene->shapes[k].csg)
+        k--;
+    const shape *before = k >= 0 ? &scene->shapes[k] : NULL;
+    if (before && before->transform_id && memcmp(&before->to_world, &s->to_world, sizeof s->to_world) == 0)
+        s->transform_id = before->transform_id;
+    else
+        s->transform_id = ++scene->transform_ids;
+}
+
 /* glint_scene_add_shape, or with csg >= 0 glint_scene_add_part; with
  * `solid` (a mesh whose solid is made) and no desc, glint_scene_add_mesh_part.
  * mat -1 is a combination's (its parts have their own) or a mesh part's
@@ -404,6 +421,7 @@ static int add_shape(glint_scene *scene, int csg, const glint_shape *desc, const
         s->part_of = csg;
         parent->parts[parent->part_count++] = scene->shape_count;
         shape_parts_changed(scene->shapes, csg);
+        share_transform(scene, s);
     }
     color glow = mat >= 0 ? material_emission(&scene->materials[mat].m) : rgb(0, 0, 0);
     if (parent && rgb_max(glow) > 0) {

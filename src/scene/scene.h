@@ -30,6 +30,7 @@ struct glint_scene {
     shape *shapes;
     int shape_count;
     size_t shape_cap;
+    unsigned transform_ids;   /* the last transform number given to a part (shape.transform_id) */
     light *lights;
     int light_count;
     size_t light_cap;
