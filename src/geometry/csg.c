@@ -21,6 +21,7 @@
  * (SHAPE_PART_FLIPPED). In the common case of a ray that meets the
  * combination from outside, that is one intersection a part. */
 #include <math.h>
+#include <string.h>
 #include "geometry/shape_kind.h"
 
 /* One crossing of a part's (or a combination's) surface along a ray. */
@@ -140,7 +141,9 @@ static bool combination_crossing(const shape *s, const ray *r, mapped_ray *mappe
     int n = s->part_count;
     crossing ahead[SHAPE_MAX_PARTS];
     shape_span spans[SHAPE_MAX_PARTS];
-    bool has[SHAPE_MAX_PARTS], inside[SHAPE_MAX_PARTS] = {false};
+    bool has[SHAPE_MAX_PARTS], inside[SHAPE_MAX_PARTS];
+    /* Each is set below; cleared first only so the compiler can tell. */
+    memset(inside, 0, (size_t)n);
     for (int i = 0; i < n; i++) {
         const shape *part = &s->family[s->parts[i]];
         if (part->convex) {

@@ -106,8 +106,11 @@ static inline bool slab(double o, double d, double lo, double hi, double *t_in, 
         *t_out = INFINITY;
         return o >= lo && o <= hi;
     }
-    *t_in = fmin((lo - o) / d, (hi - o) / d);
-    *t_out = fmax((lo - o) / d, (hi - o) / d);
+    /* Neither is NaN (d is not zero, the inputs finite): comparisons give
+     * fmin's and fmax's results without their library calls. */
+    double a = (lo - o) / d, b = (hi - o) / d;
+    *t_in = b < a ? b : a;
+    *t_out = b < a ? a : b;
     return true;
 }
 
