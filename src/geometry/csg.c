@@ -144,6 +144,10 @@ static bool combination_crossing(const shape *s, const ray *r, mapped_ray *mappe
     bool has[SHAPE_MAX_PARTS], inside[SHAPE_MAX_PARTS];
     /* Each is set below; cleared first only so the compiler can tell. */
     memset(inside, 0, (size_t)n);
+    /* Past a part that every solid point must be in (a difference's first,
+     * any of an intersection's), the ray never meets the solid if it is
+     * outside that part and never enters it: the rest need no test. */
+    bool needs_all = s->desc.kind == GLINT_SHAPE_INTERSECTION;
     for (int i = 0; i < n; i++) {
         const shape *part = &s->family[s->parts[i]];
         if (part->convex) {
@@ -152,10 +156,12 @@ static bool combination_crossing(const shape *s, const ray *r, mapped_ray *mappe
                 spans[i] = (shape_span){INFINITY, INFINITY, 0, 0, 0, 0};
             inside[i] = spans[i].t_in <= after && after < spans[i].t_out;
             has[i] = span_next(&spans[i], after, &ahead[i]);
-            continue;
+        } else {
+            has[i] = next_crossing(part, s->parts[i], r, mapped, after, &ahead[i], depth + 1, time);
+            inside[i] = has[i] ? !ahead[i].entering : stays_inside(part, r, mapped, after, depth + 1, time);
         }
-        has[i] = next_crossing(part, s->parts[i], r, mapped, after, &ahead[i], depth + 1, time);
-        inside[i] = has[i] ? !ahead[i].entering : stays_inside(part, r, mapped, after, depth + 1, time);
+        if ((needs_all || (i == 0 && s->desc.kind == GLINT_SHAPE_DIFFERENCE)) && !has[i] && !inside[i])
+            return false;
     }
     bool solid = combined(s->desc.kind, inside, n);
     /* Each step passes one crossing of one part, which has finitely many. */
