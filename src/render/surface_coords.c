@@ -93,16 +93,32 @@ uv_extent coord_footprint(const coord_spot *at, const texture *t, vec3 n, vec3 d
         along = v3_normalize(slant);
         across = v3_cross(n, along);
     }
-    /* One step along each axis from the hit, whose coordinates are known,
-     * gives how u and v change along it: a level needs no more precision,
-     * and each step is a mapping (often trigonometry) of its own. A linear
-     * function over an ellipse of axes a and b spans sqrt((g . a)^2 +
-     * (g . b)^2). */
-    double e = coord_step(p), u1, v1, u2, v2;
-    coord_at(at, t, v3_madd(p, across, e), &u1, &v1);
-    coord_at(at, t, v3_madd(p, along, e), &u2, &v2);
-    double ua = unwrapped(u1 - u) / e * width, va = unwrapped(v1 - v) / e * width;
-    double stretch = width / fmax(cos_t, 1e-6);
-    double ub = unwrapped(u2 - u) / e * stretch, vb = unwrapped(v2 - v) / e * stretch;
+    double stretch = width / fmax(cos_t, 1e-6), ua, va, ub, vb;
+    vec3 g_u, g_v;
+    if (mapping_gradients(t, &g_u, &g_v)) {
+        /* A linear map's gradients, carried to the world as normals are. */
+        if (at->to_object) {
+            g_u = xf_normal(at->to_object, g_u);
+            g_v = xf_normal(at->to_object, g_v);
+        }
+        ua = v3_dot(g_u, across) * width;
+        va = v3_dot(g_v, across) * width;
+        ub = v3_dot(g_u, along) * stretch;
+        vb = v3_dot(g_v, along) * stretch;
+    } else {
+        /* One step along each axis from the hit, whose coordinates are
+         * known, gives how u and v change along it: a level needs no more
+         * precision, and each step is a mapping (often trigonometry) of
+         * its own. */
+        double e = coord_step(p), u1, v1, u2, v2;
+        coord_at(at, t, v3_madd(p, across, e), &u1, &v1);
+        coord_at(at, t, v3_madd(p, along, e), &u2, &v2);
+        ua = unwrapped(u1 - u) / e * width;
+        va = unwrapped(v1 - v) / e * width;
+        ub = unwrapped(u2 - u) / e * stretch;
+        vb = unwrapped(v2 - v) / e * stretch;
+    }
+    /* A linear function over an ellipse of axes a and b spans
+     * sqrt((g . a)^2 + (g . b)^2). */
     return (uv_extent){sqrt(ua * ua + ub * ub), sqrt(va * va + vb * vb)};
 }

@@ -157,6 +157,27 @@ void mapping_apply(const glint_mapping *m, const surface *s, vec3 center, double
     *u = *v = 0;
 }
 
+bool mapping_gradients(const texture *t, vec3 *g_u, vec3 *g_v)
+{
+    const glint_mapping *m = &t->mapping;
+    if (m->kind != GLINT_MAP_PLANAR)
+        return false;
+    double scale = m->scale > 0 ? m->scale : 1.0;
+    bool axes = v3_length(m->u_axis) != 0;
+    vec3 a = v3_scale(axes ? v3_normalize(m->u_axis) : v3(1, 0, 0), 1 / scale);
+    vec3 b = v3_scale(axes ? v3_normalize(m->v_axis) : v3(0, 0, 1), 1 / scale);
+    if (!t->placed) {
+        *g_u = a;
+        *g_v = b;
+        return true;
+    }
+    /* texture_place's map of (u, v, 0): its first two rows, on u and v. */
+    const double (*x)[4] = t->to_texture.m;
+    *g_u = v3_add(v3_scale(a, x[0][0]), v3_scale(b, x[0][1]));
+    *g_v = v3_add(v3_scale(a, x[1][0]), v3_scale(b, x[1][1]));
+    return true;
+}
+
 color checker_eval(color a, color b, double cell, double u, double v)
 {
     double k = floor(u / cell) + floor(v / cell);

@@ -89,6 +89,11 @@ glint_status mapping_validate(const glint_mapping *m, glint_error *err);
  * spherical and cylindrical mappings without a center_given are centred. */
 void mapping_apply(const glint_mapping *m, const surface *s, vec3 center, double *u, double *v);
 
+/* For a texture whose placed (u, v) are a linear function of the
+ * object-space point (a planar mapping): their gradients there, in object
+ * space; false for any other mapping. */
+bool mapping_gradients(const texture *t, vec3 *g_u, vec3 *g_v);
+
 /* The colour of checker cells at (u, v): a where floor(u/cell) + floor(v/cell) is even. */
 color checker_eval(color a, color b, double cell, double u, double v);
 

@@ -13,6 +13,8 @@
 #include "core/vec.h"
 #include "image/srgb.h"
 #include "shading/texture.h"
+#include "render/surface_coords.h"
+#include "scene/scene.h"
 
 
 /* A 5 x 3 image of linear floats halves to 3 x 2, 2 x 1 and 1 x 1, each
@@ -172,12 +174,64 @@ static void test_far_floor_does_not_shimmer(void **state)
     glint_image_free(&bi);
 }
 
+/* A planar mapping's footprint comes from its gradients, carried through
+ * the plane's own transform (stretched twice along x) and the texture's
+ * (0.25-unit tiles, turned 30 degrees): each axis of the footprint
+ * ellipse changes u and v as much as stepping the mapping itself along it
+ * says, within 1e-6. */
+static void test_planar_footprint_from_gradients(void **state)
+{
+    (void)state;
+    glint_scene *s = glint_scene_new();
+    glint_texture desc = glint_texture_default(GLINT_TEXTURE_CHECKER);
+    desc.mapping.kind = GLINT_MAP_PLANAR;
+    desc.mapping.scale = 0.25;
+    desc.transform = glint_transform_rotate(glint_transform_identity(), (glint_vec3){0, 0, 1}, 30);
+    glint_error err;
+    int tex = glint_scene_add_texture(s, NULL, &desc, &err);
+    assert_true(tex >= 0);
+    glint_material m = glint_material_default();
+    glint_shape plane = glint_shape_default(GLINT_SHAPE_PLANE);
+    plane.normal = (glint_vec3){0, 1, 0};
+    glint_transform wide = glint_transform_scale(glint_transform_identity(), 2, 1, 1);
+    assert_true(glint_scene_add_shape(s, &plane, glint_scene_add_material(s, NULL, &m, NULL), &wide, &err) >= 0);
+    const texture *t = &s->textures[tex];
+    vec3 d = v3_normalize(v3(0.3, -0.5, -0.8));
+    ray r = {v3(0.7, 2, 1.1), d};
+    accel_hit h = {.shape = 0, .instance = -1};
+    assert_true(shape_intersect(&s->shapes[0], &r, 0, INFINITY, &h.on_shape));
+    h.t = h.on_shape.t;
+    surface at_hit;
+    shape_surface(&s->shapes[0], &r, &h.on_shape, &at_hit);
+    coord_spot spot;
+    coord_spot_init(s, &h, &at_hit, &spot);
+    double u, v, width = 0.01;
+    coord_at(&spot, t, at_hit.p, &u, &v);
+    uv_extent got = coord_footprint(&spot, t, at_hit.n, d, width, u, v);
+    /* The ellipse's axes: across the slant, width long; along it, width
+     * over the cosine. */
+    vec3 along = v3_normalize(v3(d.x, 0, d.z)), across = v3(along.z, 0, -along.x);
+    double cos_t = fabs(d.y), step = 1e-4, ua, va, ub, vb;
+    coord_at(&spot, t, v3_madd(at_hit.p, across, step), &ua, &va);
+    coord_at(&spot, t, v3_madd(at_hit.p, along, step), &ub, &vb);
+    ua = (ua - u) / step * width;
+    va = (va - v) / step * width;
+    ub = (ub - u) / step * width / cos_t;
+    vb = (vb - v) / step * width / cos_t;
+    assert_true(fabs(got.u - sqrt(ua * ua + ub * ub)) < 1e-6 * got.u);
+    assert_true(fabs(got.v - sqrt(va * va + vb * vb)) < 1e-6 * got.v);
+    /* Not a trivial answer: the turn and the stretch mix both axes in. */
+    assert_true(got.u > 0.03 && got.v > 0.07 && got.v > 2 * got.u);
+    glint_scene_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_levels_are_means),
         cmocka_unit_test(test_level_and_blend),
         cmocka_unit_test(test_far_floor_does_not_shimmer),
+        cmocka_unit_test(test_planar_footprint_from_gradients),
     };
     return cmocka_run_group_tests(tests, setup_dir, teardown_dir);
 }
