@@ -45,7 +45,7 @@ static double bracketed_root(const double *c, int degree, double a, double b, do
     return fabs(fa) < fabs(fb) ? a : b;
 }
 
-int poly_roots(const double *c, int degree, double lo, double hi, double *roots)
+int poly_roots(const double *c, int degree, double lo, double hi, double *roots, int most)
 {
     while (degree > 0 && c[degree] == 0)
         degree--;
@@ -54,20 +54,20 @@ int poly_roots(const double *c, int degree, double lo, double hi, double *roots)
     if (degree == 1) {
         double x = -c[0] / c[1];
         roots[0] = x;
-        return x >= lo && x <= hi;
+        return most > 0 && x >= lo && x <= hi;
     }
     /* The ends of the pieces: lo, the derivative's roots, hi. */
     double derivative[POLY_MAX_DEGREE] = {0}, ends[POLY_MAX_DEGREE + 2];
     for (int i = 1; i <= degree; i++)
         derivative[i - 1] = i * c[i];
-    int turns = poly_roots(derivative, degree - 1, lo, hi, ends + 1);
+    int turns = poly_roots(derivative, degree - 1, lo, hi, ends + 1, degree);
     ends[0] = lo;
     ends[turns + 1] = hi;
     int count = 0;
     double fa = evaluate(c, degree, lo);
-    if (fa == 0)
+    if (fa == 0 && most > 0)
         roots[count++] = lo;
-    for (int k = 0; k <= turns && count <= degree; k++) {
+    for (int k = 0; k <= turns && count <= degree && count < most; k++) {
         double a = ends[k], b = ends[k + 1], fb = evaluate(c, degree, b);
         if (fb == 0 && (count == 0 || roots[count - 1] < b))
             roots[count++] = b;

@@ -50,11 +50,19 @@ static bool torus_intersect(const shape *s, const ray *r, double tmin, double tm
     double four_r2 = 4 * big * big;
     double quartic[5] = {c * c - four_r2 * c_axis, 2 * b * c - four_r2 * b_axis, b * b + 2 * c - four_r2 * a_axis, 2 * b,
                          1};
+    /* The nearest hit is the first root, unless rounding put that at the
+     * ray's start, which the offer refuses: then the next. The pieces past
+     * the one wanted are not searched. */
     double roots[POLY_MAX_DEGREE + 1];
-    int n = poly_roots(quartic, 4, 0, leave - enter, roots);
     shape_hit best = {.t = tmax};
-    for (int i = 0; i < n; i++)
-        hit_offer(&best, tmin, (enter + roots[i]) / speed, 0);
+    for (int most = 1; most <= 4; most++) {
+        int n = poly_roots(quartic, 4, 0, leave - enter, roots, most);
+        for (int i = 0; i < n; i++)
+            hit_offer(&best, tmin, (enter + roots[i]) / speed, 0);
+        /* Found, no more roots, or the last one refused as too far. */
+        if (best.t < tmax || n < most || (enter + roots[n - 1]) / speed > tmin)
+            break;
+    }
     return hit_take(&best, tmax, hit);
 }
 

@@ -10,6 +10,7 @@
 #include <float.h>
 #include <math.h>
 #include <string.h>
+#include "geometry/poly_roots.h"
 #include "geometry/shape_kind.h"
 
 #define EPS 1e-9
@@ -1585,6 +1586,25 @@ static void test_left_behind(void **state)
     assert_true(checked > 5000);
 }
 
+/* poly_roots gives a polynomial's roots in order, and only the first
+ * `most` when asked: (x - 1)(x - 2)(x - 3)(x - 4) in [0, 5] and in
+ * [2.5, 5], each within 1e-12. */
+static void test_poly_roots_first_ones(void **state)
+{
+    (void)state;
+    const double c[5] = {24, -50, 35, -10, 1};
+    double roots[POLY_MAX_DEGREE + 1];
+    assert_int_equal(poly_roots(c, 4, 0, 5, roots, 4), 4);
+    for (int i = 0; i < 4; i++)
+        assert_true(fabs(roots[i] - (i + 1)) < 1e-12);
+    assert_int_equal(poly_roots(c, 4, 0, 5, roots, 1), 1);
+    assert_true(fabs(roots[0] - 1) < 1e-12);
+    assert_int_equal(poly_roots(c, 4, 2.5, 5, roots, 1), 1);
+    assert_true(fabs(roots[0] - 3) < 1e-12);
+    assert_int_equal(poly_roots(c, 4, 2.5, 5, roots, 4), 2);
+    assert_int_equal(poly_roots(c, 4, 4.5, 5, roots, 1), 0);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -1638,6 +1658,7 @@ int main(void)
         cmocka_unit_test(test_frustum_side_and_caps),
         cmocka_unit_test(test_frustum_wider_at_top),
         cmocka_unit_test(test_frustum_sample),
+        cmocka_unit_test(test_poly_roots_first_ones),
         cmocka_unit_test(test_torus_crossings),
         cmocka_unit_test(test_torus_grazing),
         cmocka_unit_test(test_torus_far),
