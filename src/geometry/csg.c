@@ -77,7 +77,7 @@ static bool leaf_span(const shape *s, const ray *r, mapped_ray *mapped, shape_sp
         return shape_span_of(s, r, span);
     if (mapped->id != s->transform_id) {
         mapped->id = s->transform_id;
-        mapped->r = (ray){xf_point(&s->to_object, r->o), xf_vector(&s->to_object, r->d)};
+        mapped->r = shape_object_ray(s, r);
     }
     return s->kind->span(s, &mapped->r, span);
 }

@@ -87,21 +87,12 @@ const shape *shape_moved(const shape *s, double time, shape *out)
     return out;
 }
 
-/* For a shape with a transform. The direction is mapped but not
- * normalised, so a point's ray parameter t is the same in both spaces and
- * hits need no conversion back. */
-static ray object_ray(const shape *s, const ray *r)
-{
-    ray o = {xf_point(&s->to_object, r->o), xf_vector(&s->to_object, r->d)};
-    return o;
-}
-
 bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
     /* Most shapes have no transform: their rays need no copy. */
     if (!s->has_transform)
         return s->kind->intersect(s, r, tmin, tmax, hit);
-    ray o = object_ray(s, r);
+    ray o = shape_object_ray(s, r);
     return s->kind->intersect(s, &o, tmin, tmax, hit);
 }
 
@@ -109,7 +100,7 @@ bool shape_span_of(const shape *s, const ray *r, shape_span *span)
 {
     if (!s->has_transform)
         return s->kind->span(s, r, span);
-    ray o = object_ray(s, r);
+    ray o = shape_object_ray(s, r);
     return s->kind->span(s, &o, span);
 }
 
@@ -141,7 +132,7 @@ void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *
     vec3 p = ray_at(r, hit->t);
     out->p = p;
     if (s->has_transform) {
-        ray o = object_ray(s, r);
+        ray o = shape_object_ray(s, r);
         out->p_obj = ray_at(&o, hit->t);
     } else {
         out->p_obj = p;
@@ -173,7 +164,7 @@ bool shape_hit_enters(const shape *s, const ray *r, const shape_hit *hit)
         return v3_dot(r->d, s->flat_n) < 0;
     /* The sign of d . n is the same in object space, where the normal
      * needs neither mapping nor normalising. */
-    ray o = s->has_transform ? object_ray(s, r) : *r;
+    ray o = s->has_transform ? shape_object_ray(s, r) : *r;
     surface at = {.p_obj = ray_at(&o, hit->t)};
     s->kind->surface(s, hit->part & ~SHAPE_PART_FLIPPED, &at);
     return v3_dot(o.d, at.n) < 0;

@@ -153,6 +153,15 @@ static inline const shape *shape_at(const shape *s, double time, shape *out)
     return s->pose_count ? shape_moved(s, time, out) : s;
 }
 
+/* World ray r in the object space of s, a shape with a transform. The
+ * direction is mapped but not normalised, so a point's ray parameter t is
+ * the same in both spaces and hits need no conversion back. */
+static inline ray shape_object_ray(const shape *s, const ray *r)
+{
+    ray o = {xf_point(&s->to_object, r->o), xf_vector(&s->to_object, r->d)};
+    return o;
+}
+
 /* Where world ray r's whole line is inside s, for a convex s (s->convex)
  * that is not a combination (csg.c spans those); false when the line
  * misses it. */
