@@ -78,7 +78,9 @@ static inline quad_mask plane_quad(const query *q, int k, int first, quad_f64 tm
             (*t)[j] = h.t;
         }
     } else {
-        hit = shape_intersect4(s, q->r, first, tmax, t);
+        quad_hit h;
+        hit = shape_intersect4(s, q->r, first, tmax, &h);
+        *t = h.t;
     }
     return hit & quad_int_ne(q->skip + first, index);
 }

@@ -71,9 +71,9 @@ static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *
  * hit it in (0, tmax) and do not skip it, and *t. Every lane is tested,
  * the invalid ones too, which costs less than picking them out. */
 static inline quad_mask shape_quad(const query *q, const int *valid, int index, const shape *s, int first,
-                                   quad_f64 tmax, quad_f64 *t)
+                                   quad_f64 tmax, quad_hit *hit)
 {
-    return shape_intersect4(s, q->r, first, tmax, t) & quad_int_ne(valid + first, 0) &
+    return shape_intersect4(s, q->r, first, tmax, hit) & quad_int_ne(valid + first, 0) &
            quad_int_ne(q->skip + first, index);
 }
 
@@ -85,11 +85,11 @@ static void intersect_quads(const struct RTCIntersectFunctionNArguments *args, i
     const float *tfar = ray_lane_tfar((struct RTCRayN *)args->rayhit, ACCEL_PACKET, 0);
     for (int k = 0; k < ACCEL_PACKET; k += QUAD) {
         quad_f64 mine = quad_load(q->tmax + k), far = quad_from_floats(tfar + k);
-        quad_f64 t;
-        quad_mask hit = shape_quad(q, args->valid, index, s, k, quad_select(mine < far, mine, far), &t);
+        quad_hit h;
+        quad_mask hit = shape_quad(q, args->valid, index, s, k, quad_select(mine < far, mine, far), &h);
         for (int j = 0; j < QUAD; j++)
             if (hit[j])
-                record_hit(args, ACCEL_PACKET, (unsigned)(k + j), index, t[j], 0);
+                record_hit(args, ACCEL_PACKET, (unsigned)(k + j), s->csg ? h.leaf[j] : index, h.t[j], h.part[j]);
     }
 }
 
@@ -119,8 +119,8 @@ void accel_shape_occluded(const struct RTCOccludedFunctionNArguments *args)
     if (opaque && args->N == ACCEL_PACKET && shape_has_intersect4(s)) {
         /* As below, four lanes at a time. */
         for (int k = 0; k < ACCEL_PACKET; k += QUAD) {
-            quad_f64 t;
-            quad_mask hit = shape_quad(q, args->valid, index, s, k, quad_load(q->tmax + k), &t);
+            quad_hit h;
+            quad_mask hit = shape_quad(q, args->valid, index, s, k, quad_load(q->tmax + k), &h);
             for (int j = 0; j < QUAD; j++)
                 if (hit[j])
                     *ray_lane_tfar(args->ray, ACCEL_PACKET, (unsigned)(k + j)) = -INFINITY;

@@ -133,36 +133,32 @@ static bool span_next(const shape_span *span, double after, crossing *c)
     return false;
 }
 
-/* The first crossing of combination s after `after` (to any distance),
- * its parts as they are at `time`: the walk described at the top. */
-static bool combination_crossing(const shape *s, const ray *r, mapped_ray *mapped, double after, crossing *out,
-                                 int depth, double time)
+/* A convex part's state where a walk starts at `after`, from its span:
+ * whether the walk starts inside it, and its first crossing ahead (*ahead,
+ * if it has one). */
+static bool span_start(const shape_span *span, double after, bool *inside, crossing *ahead)
+{
+    *inside = span->t_in <= after && after < span->t_out;
+    return span_next(span, after, ahead);
+}
+
+/* Whether every solid point of combination s is inside its part i (a
+ * difference's first, any of an intersection's): a ray outside that part
+ * that never enters it never meets the solid, and the rest need no test. */
+static bool part_needed(const shape *s, int i)
+{
+    return s->desc.kind == GLINT_SHAPE_INTERSECTION || (i == 0 && s->desc.kind == GLINT_SHAPE_DIFFERENCE);
+}
+
+/* The walk of combination s from its parts' states where it starts
+ * (inside[i]; has[i] and ahead[i], the next crossing of each; spans[i] of
+ * the convex ones): the first crossing that changes the combination's
+ * state. Parts that are not convex find their next crossings along r, as
+ * they are at `time`. */
+static bool walk(const shape *s, const ray *r, mapped_ray *mapped, const shape_span *spans, crossing *ahead,
+                 bool *has, bool *inside, crossing *out, int depth, double time)
 {
     int n = s->part_count;
-    crossing ahead[SHAPE_MAX_PARTS];
-    shape_span spans[SHAPE_MAX_PARTS];
-    bool has[SHAPE_MAX_PARTS], inside[SHAPE_MAX_PARTS];
-    /* Each is set below; cleared first only so the compiler can tell. */
-    memset(inside, 0, (size_t)n);
-    /* Past a part that every solid point must be in (a difference's first,
-     * any of an intersection's), the ray never meets the solid if it is
-     * outside that part and never enters it: the rest need no test. */
-    bool needs_all = s->desc.kind == GLINT_SHAPE_INTERSECTION;
-    for (int i = 0; i < n; i++) {
-        const shape *part = &s->family[s->parts[i]];
-        if (part->convex) {
-            /* A line that misses it leaves an empty span, after every end. */
-            if (!convex_span(part, s->parts[i], r, mapped, time, &spans[i], depth + 1))
-                spans[i] = (shape_span){INFINITY, INFINITY, 0, 0, 0, 0};
-            inside[i] = spans[i].t_in <= after && after < spans[i].t_out;
-            has[i] = span_next(&spans[i], after, &ahead[i]);
-        } else {
-            has[i] = next_crossing(part, s->parts[i], r, mapped, after, &ahead[i], depth + 1, time);
-            inside[i] = has[i] ? !ahead[i].entering : stays_inside(part, r, mapped, after, depth + 1, time);
-        }
-        if ((needs_all || (i == 0 && s->desc.kind == GLINT_SHAPE_DIFFERENCE)) && !has[i] && !inside[i])
-            return false;
-    }
     bool solid = combined(s->desc.kind, inside, n);
     /* Each step passes one crossing of one part, which has finitely many. */
     for (;;) {
@@ -186,6 +182,34 @@ static bool combination_crossing(const shape *s, const ray *r, mapped_ray *mappe
                                   : next_crossing(part, s->parts[first], r, mapped, ahead[first].t, &ahead[first],
                                                   depth + 1, time);
     }
+}
+
+/* The first crossing of combination s after `after` (to any distance),
+ * its parts as they are at `time`: the walk described at the top. */
+static bool combination_crossing(const shape *s, const ray *r, mapped_ray *mapped, double after, crossing *out,
+                                 int depth, double time)
+{
+    int n = s->part_count;
+    crossing ahead[SHAPE_MAX_PARTS];
+    shape_span spans[SHAPE_MAX_PARTS];
+    bool has[SHAPE_MAX_PARTS], inside[SHAPE_MAX_PARTS];
+    /* Each is set below; cleared first only so the compiler can tell. */
+    memset(inside, 0, (size_t)n);
+    for (int i = 0; i < n; i++) {
+        const shape *part = &s->family[s->parts[i]];
+        if (part->convex) {
+            /* A line that misses it leaves an empty span, after every end. */
+            if (!convex_span(part, s->parts[i], r, mapped, time, &spans[i], depth + 1))
+                spans[i] = (shape_span){INFINITY, INFINITY, 0, 0, 0, 0};
+            has[i] = span_start(&spans[i], after, &inside[i], &ahead[i]);
+        } else {
+            has[i] = next_crossing(part, s->parts[i], r, mapped, after, &ahead[i], depth + 1, time);
+            inside[i] = has[i] ? !ahead[i].entering : stays_inside(part, r, mapped, after, depth + 1, time);
+        }
+        if (part_needed(s, i) && !has[i] && !inside[i])
+            return false;
+    }
+    return walk(s, r, mapped, spans, ahead, has, inside, out, depth, time);
 }
 
 /* The first crossing of shape s (number `index` of the family) after
@@ -261,6 +285,147 @@ static bool csg_intersect(const shape *s, const ray *r, double tmin, double tmax
     return true;
 }
 
+/* A combination finds its hits four lanes at a time when its parts are at
+ * most this many, each convex and giving its span four lanes at once (a
+ * still sphere or box, or an intersection of such): their spans on the
+ * stack, a quad a part. */
+#define QUAD_PARTS 16
+
+/* quad_ray *w mapped by transform t, as shape_object_ray maps each lane. */
+static quad_ray quad_object_ray(const transform *t, const quad_ray *w)
+{
+    const double (*m)[4] = t->m;
+#define ROW(i, x, y, z) (quad_splat(m[i][0]) * (x) + quad_splat(m[i][1]) * (y) + quad_splat(m[i][2]) * (z))
+    return (quad_ray){ROW(0, w->ox, w->oy, w->oz) + quad_splat(m[0][3]), ROW(1, w->ox, w->oy, w->oz) + quad_splat(m[1][3]),
+                      ROW(2, w->ox, w->oy, w->oz) + quad_splat(m[2][3]), ROW(0, w->dx, w->dy, w->dz),
+                      ROW(1, w->dx, w->dy, w->dz), ROW(2, w->dx, w->dy, w->dz)};
+#undef ROW
+}
+
+/* The four world rays as leaf s sees them, mapped once for all the leaves
+ * of one transform (leaf_span's cache, four lanes wide). */
+typedef struct mapped_quad {
+    unsigned id;
+    quad_ray r;
+} mapped_quad;
+
+/* convex_span for four world rays w at once, s and its parts still and
+ * giving their spans four lanes at once (spans_four): the mask of the
+ * lanes convex_span says true for, each lane's span its bits. (Nesting is
+ * below SHAPE_MAX_NESTING, which glint_scene_add_part enforces.) */
+static quad_mask convex_span4(const shape *s, int index, const quad_ray *w, mapped_quad *mapped, quad_span *span)
+{
+    quad_mask me = (quad_mask){0} + index;
+    if (!s->kind->csg) {
+        quad_ray own;
+        const quad_ray *r = w;
+        if (s->has_transform && !s->transform_id) {
+            own = quad_object_ray(&s->to_object, w);
+            r = &own;
+        } else if (s->has_transform) {
+            if (mapped->id != s->transform_id) {
+                mapped->id = s->transform_id;
+                mapped->r = quad_object_ray(&s->to_object, w);
+            }
+            r = &mapped->r;
+        }
+        quad_mask meets = s->kind->span4(s, r, span);
+        span->leaf_in = span->leaf_out = me;
+        return meets & (span->t_in < span->t_out);
+    }
+    *span = (quad_span){quad_splat(-INFINITY), quad_splat(INFINITY), {0}, {0}, me, me};
+    quad_mask meets = ~(quad_mask){0};
+    for (int i = 0; i < s->part_count && quad_any(meets); i++) {
+        quad_span part;
+        meets &= convex_span4(&s->family[s->parts[i]], s->parts[i], w, mapped, &part);
+        quad_mask in = part.t_in >= span->t_in, out = part.t_out < span->t_out;
+        span->t_in = quad_select(in, part.t_in, span->t_in);
+        span->part_in = quad_mask_select(in, part.part_in, span->part_in);
+        span->leaf_in = quad_mask_select(in, part.leaf_in, span->leaf_in);
+        span->t_out = quad_select(out, part.t_out, span->t_out);
+        span->part_out = quad_mask_select(out, part.part_out, span->part_out);
+        span->leaf_out = quad_mask_select(out, part.leaf_out, span->leaf_out);
+    }
+    return meets & (span->t_in < span->t_out);
+}
+
+/* Lane k of a quad span, or the empty span after every end where the
+ * lane's line misses the part. */
+static shape_span span_lane(const quad_span *q, quad_mask meets, int k)
+{
+    if (!meets[k])
+        return (shape_span){INFINITY, INFINITY, 0, 0, 0, 0};
+    return (shape_span){q->t_in[k], q->t_out[k], (int)q->part_in[k], (int)q->part_out[k], (int)q->leaf_in[k],
+                        (int)q->leaf_out[k]};
+}
+
+/* Records crossing c as lane k's hit when it is nearer than tmax[k]. */
+static void quad_offer(const crossing *c, quad_f64 tmax, int k, quad_hit *hit, quad_mask *found)
+{
+    if (!(c->t < tmax[k]))
+        return;
+    hit->t[k] = c->t;
+    hit->part[k] = c->part;
+    hit->leaf[k] = c->leaf;
+    (*found)[k] = -1;
+}
+
+/* csg_intersect for four lanes, for a combination shape_parts_changed
+ * marked quad: every part's spans four lanes at once, then each lane's
+ * walk over them, as combination_crossing's (the same bits). */
+static quad_mask csg_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_hit *hit)
+{
+    const quad_ray w = {quad_load(r->ox + first), quad_load(r->oy + first), quad_load(r->oz + first),
+                        quad_load(r->dx + first), quad_load(r->dy + first), quad_load(r->dz + first)};
+    mapped_quad mapped = {0};
+    quad_mask found = {0};
+    crossing c;
+    if (s->convex) {
+        quad_span span;
+        quad_mask meets = convex_span4(s, -1, &w, &mapped, &span);
+        for (int k = 0; k < QUAD; k++) {
+            shape_span one = span_lane(&span, meets, k);
+            if (meets[k] && span_next(&one, 0, &c))
+                quad_offer(&c, tmax, k, hit, &found);
+        }
+        return found;
+    }
+    int n = s->part_count;
+    quad_span spans[QUAD_PARTS];
+    quad_mask meets[QUAD_PARTS];
+    for (int i = 0; i < n; i++) {
+        meets[i] = convex_span4(&s->family[s->parts[i]], s->parts[i], &w, &mapped, &spans[i]);
+        /* No lane can meet the solid when none meets this part. */
+        if (part_needed(s, i) && !quad_any(meets[i]))
+            return found;
+    }
+    for (int k = 0; k < QUAD; k++) {
+        crossing ahead[QUAD_PARTS];
+        shape_span lane[QUAD_PARTS];
+        bool has[QUAD_PARTS], inside[QUAD_PARTS], open = true;
+        for (int i = 0; i < n && open; i++) {
+            lane[i] = span_lane(&spans[i], meets[i], k);
+            has[i] = span_start(&lane[i], 0, &inside[i], &ahead[i]);
+            open = !(part_needed(s, i) && !has[i] && !inside[i]);
+        }
+        if (open && walk(s, NULL, NULL, lane, ahead, has, inside, &c, 0, 0))
+            quad_offer(&c, tmax, k, hit, &found);
+    }
+    return found;
+}
+
+/* Whether s, a part of a combination, gives its span four lanes at once:
+ * a still shape whose kind does, or an intersection of such. */
+static bool spans_four(const shape *s)
+{
+    if (!s->csg)
+        return s->kind->span4 && !s->pose_count;
+    for (int i = 0; i < s->part_count; i++)
+        if (!spans_four(&s->family[s->parts[i]]))
+            return false;
+    return s->convex;
+}
+
 /* The bounds of the union of the parts' bounds, of their intersection, or
  * of the first part's (a difference is within what it cuts from). A
  * plane's, unbounded, is a box SHAPE_PLANE_EXTENT each way. */
@@ -297,11 +462,14 @@ void shape_parts_changed(shape *family, int combination)
         for (int i = 0; convex && i < c->part_count; i++)
             convex = family[c->parts[i]].convex;
         c->convex = convex;
+        c->quad = c->part_count > 0 && c->part_count <= QUAD_PARTS && !c->pose_count;
+        for (int i = 0; c->quad && i < c->part_count; i++)
+            c->quad = spans_four(&family[c->parts[i]]);
     }
 }
 
 #define CSG_KIND(kind_name, kind_id)                                                                           \
-    {.name = kind_name, .id = kind_id, .csg = true, .closed = shape_always_closed, .intersect = csg_intersect, \
+    {.name = kind_name, .id = kind_id, .csg = true, .closed = shape_always_closed, .intersect = csg_intersect, .intersect4 = csg_intersect4, \
      .bounds = csg_bounds, .center = shape_bounds_middle}
 
 const shape_kind union_kind = CSG_KIND("union", GLINT_SHAPE_UNION);

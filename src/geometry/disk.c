@@ -44,15 +44,16 @@ static bool disk_intersect(const shape *s, const ray *r, double tmin, double tma
 }
 
 /* disk_intersect for four lanes, each lane's arithmetic in its order. */
-static quad_mask disk_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
+static quad_mask disk_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_hit *hit)
 {
+    quad_f64 *t = &hit->t;
     const glint_shape *d = &s->desc;
-    quad_mask hit = plane_hit4(d->center, d->normal, r, first, 0, tmax, t);
+    quad_mask crosses = plane_hit4(d->center, d->normal, r, first, 0, tmax, t);
     quad_f64 qx = (quad_load(r->ox + first) + quad_load(r->dx + first) * *t) - quad_splat(d->center.x);
     quad_f64 qy = (quad_load(r->oy + first) + quad_load(r->dy + first) * *t) - quad_splat(d->center.y);
     quad_f64 qz = (quad_load(r->oz + first) + quad_load(r->dz + first) * *t) - quad_splat(d->center.z);
     quad_f64 d2 = quad_dot(qx, qy, qz, qx, qy, qz);
-    return hit & (d2 <= quad_splat(d->radius * d->radius)) & (d2 >= quad_splat(d->inner_radius * d->inner_radius));
+    return crosses & (d2 <= quad_splat(d->radius * d->radius)) & (d2 >= quad_splat(d->inner_radius * d->inner_radius));
 }
 
 static void disk_surface(const shape *s, int part, surface *out)

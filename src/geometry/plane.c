@@ -27,9 +27,9 @@ static bool plane_intersect(const shape *s, const ray *r, double tmin, double tm
     return true;
 }
 
-static quad_mask plane_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
+static quad_mask plane_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_hit *hit)
 {
-    return plane_hit4(s->desc.center, s->desc.normal, r, first, 0, tmax, t);
+    return plane_hit4(s->desc.center, s->desc.normal, r, first, 0, tmax, &hit->t);
 }
 
 /* u and v are distances from the plane's point along plane_u and plane_v. */

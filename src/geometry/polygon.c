@@ -107,10 +107,11 @@ static bool polygon_intersect(const shape *s, const ray *r, double tmin, double 
     return true;
 }
 
-static quad_mask polygon_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
+static quad_mask polygon_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_hit *hit)
 {
+    quad_f64 *t = &hit->t;
     const glint_shape *d = &s->desc;
-    quad_mask hit = plane_hit4(d->points[0], s->poly_normal, r, first, 0, tmax, t);
+    quad_mask inside = plane_hit4(d->points[0], s->poly_normal, r, first, 0, tmax, t);
     /* p = ray_at(r, t), then polygon_intersect's edge tests: a lane is out
      * where a dot product is below 0 (not where it is NaN). */
     quad_f64 px = quad_load(r->ox + first) + quad_load(r->dx + first) * *t;
@@ -120,9 +121,9 @@ static quad_mask polygon_intersect4(const shape *s, const ray8 *r, int first, qu
         vec3 a = d->points[i], e = s->edge_in[i];
         quad_f64 side = quad_dot(px - quad_splat(a.x), py - quad_splat(a.y), pz - quad_splat(a.z), quad_splat(e.x),
                                  quad_splat(e.y), quad_splat(e.z));
-        hit &= ~(side < quad_splat(0));
+        inside &= ~(side < quad_splat(0));
     }
-    return hit;
+    return inside;
 }
 
 /* (u, v) are the affine coordinates of the point along the edges from point

@@ -37,7 +37,8 @@ static glint_status init_as(shape *s, const shape_kind *k, const glint_shape *de
     if (!xf_invert(&s->to_world, &s->to_object))
         return error_set(err, GLINT_ERR_INVALID, "transform is singular or not finite");
     s->has_transform = !xf_is_identity(&s->to_world);
-    s->quad = !s->has_transform && k->intersect4;
+    /* A combination's is decided as its parts come (shape_parts_changed). */
+    s->quad = !s->has_transform && k->intersect4 && !s->csg;
     glint_status st = params_check(k->params, &s->desc, k->name, err);
     if (st == GLINT_OK && k->init)
         st = k->init(s, err);
@@ -104,9 +105,15 @@ bool shape_span_of(const shape *s, const ray *r, shape_span *span)
     return s->kind->span(s, &o, span);
 }
 
-quad_mask shape_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
+quad_mask shape_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_hit *hit)
 {
-    return s->kind->intersect4(s, r, first, tmax, t);
+    /* A plain kind's hits are all on its main surface; a combination's
+     * kind names the part and leaf of each. */
+    for (int k = 0; k < QUAD; k++) {
+        hit->part[k] = 0;
+        hit->leaf[k] = -1;
+    }
+    return s->kind->intersect4(s, r, first, tmax, hit);
 }
 
 /* Sets out->shading_n to the kind's own shading normal, when it has one,

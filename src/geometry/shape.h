@@ -108,6 +108,27 @@ typedef struct shape_span {
     int leaf_in, leaf_out;
 } shape_span;
 
+/* Four rays at once, lane k of each field ray k's: four lanes of a packet
+ * as the parts of a combination see them (in their object space). */
+typedef struct quad_ray {
+    quad_f64 ox, oy, oz, dx, dy, dz;
+} quad_ray;
+
+/* shape_span for four rays at once, lane k of each field ray k's. */
+typedef struct quad_span {
+    quad_f64 t_in, t_out;
+    quad_mask part_in, part_out;
+    quad_mask leaf_in, leaf_out;
+} quad_span;
+
+/* shape_intersect4's hits: lane k's t, part and leaf as in shape_hit (part
+ * 0 and leaf -1 for a shape that is no combination). */
+typedef struct quad_hit {
+    quad_f64 t;
+    int part[QUAD];
+    int leaf[QUAD];
+} quad_hit;
+
 /* What shading needs to know about a hit point. */
 typedef struct surface {
     vec3 p;         /* world position */
@@ -178,7 +199,8 @@ bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, sha
 
 /* Whether shape_intersect4 takes s: a shape without a transform whose kind
  * tests four lanes at once (spheres and polygons, the shapes most rays
- * meet in the example scenes, and planes). */
+ * meet in the example scenes, and planes), or a combination of still
+ * parts whose kinds give their spans four lanes at once (csg.c). */
 static inline bool shape_has_intersect4(const shape *s)
 {
     return s->quad;
@@ -186,11 +208,11 @@ static inline bool shape_has_intersect4(const shape *s)
 
 /* shape_intersect with tmin 0 for the four rays of *r from lane `first` on,
  * lane k with its own tmax[k], for a shape shape_has_intersect4 takes: the
- * mask of the lanes that hit and, in those lanes, *t. Each lane gets the
- * bits shape_intersect gives (the part is always 0 for these kinds), as
- * its arithmetic is the same, in the same order. The accelerator's shape
- * callbacks test a packet's lanes with it. */
-quad_mask shape_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t);
+ * mask of the lanes that hit and, in those lanes, hit's t, part and leaf.
+ * Each lane gets the bits shape_intersect gives, as its arithmetic is the
+ * same, in the same order. The accelerator's shape callbacks test a
+ * packet's lanes with it. */
+quad_mask shape_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_hit *hit);
 
 /* Describes the surface at hit on world ray r, all but u and v. */
 void shape_surface(const shape *s, const ray *r, const shape_hit *hit, surface *out);

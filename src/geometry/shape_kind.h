@@ -49,10 +49,18 @@ struct shape_kind {
      * it. A combination walks its convex parts by their spans instead of
      * their crossings one at a time. NULL: not convex. */
     bool (*span)(const shape *s, const ray *r, shape_span *out);
+    /* span for four rays at once, in object space: each lane's bits as span
+     * gives them (leaf_in and leaf_out left alone), and the mask of the
+     * lanes for which span says true. NULL: lanes one at a time. A
+     * combination whose parts all have it finds its hits four lanes at a
+     * time. */
+    quad_mask (*span4)(const shape *s, const quad_ray *r, quad_span *out);
     /* intersect with tmin 0 for the four lanes of *r from `first` on, each
-     * lane's bits as intersect gives them; NULL: the accelerator tests
-     * lanes one by one. Unbounded kinds must have it. */
-    quad_mask (*intersect4)(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t);
+     * lane's bits as intersect gives them: hit->t, and for a combination
+     * hit->part and hit->leaf (shape_intersect4 sets the others' to 0 and
+     * -1). NULL: the accelerator tests lanes one by one. Unbounded kinds
+     * must have it. */
+    quad_mask (*intersect4)(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_hit *hit);
     /* Fills out->n (object space, any length) from out->p_obj and part. */
     void (*surface)(const shape *s, int part, surface *out);
     /* The normal to shade with at out->p_obj (object space, any length,

@@ -12,14 +12,32 @@ static bool sphere_span(const shape *s, const ray *r, shape_span *out)
                      &out->t_out);
 }
 
+/* sphere_span for four rays: the same arithmetic in each lane. A lane
+ * whose roots are both 0 (quadratic4 leaves those out) or whose direction
+ * is zero spans nothing, as the combinations that read spans take it:
+ * quadratic's span there, one point at most, is empty too. */
+static quad_mask sphere_span4(const shape *s, const quad_ray *r, quad_span *out)
+{
+    const glint_shape *d = &s->desc;
+    quad_f64 ocx = r->ox - quad_splat(d->center.x);
+    quad_f64 ocy = r->oy - quad_splat(d->center.y);
+    quad_f64 ocz = r->oz - quad_splat(d->center.z);
+    quad_f64 a = quad_dot(r->dx, r->dy, r->dz, r->dx, r->dy, r->dz);
+    quad_f64 b = quad_splat(2) * quad_dot(ocx, ocy, ocz, r->dx, r->dy, r->dz);
+    quad_f64 c = quad_dot(ocx, ocy, ocz, ocx, ocy, ocz) - quad_splat(d->radius * d->radius);
+    out->part_in = out->part_out = (quad_mask){0};
+    return quadratic4(a, b, c, &out->t_in, &out->t_out) & (a != quad_splat(0));
+}
+
 static bool sphere_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
     shape_span span;
     return sphere_span(s, r, &span) && span_hit(&span, tmin, tmax, hit);
 }
 
-static quad_mask sphere_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_f64 *t)
+static quad_mask sphere_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_hit *hit)
 {
+    quad_f64 *t = &hit->t;
     const glint_shape *d = &s->desc;
     quad_f64 dx = quad_load(r->dx + first), dy = quad_load(r->dy + first), dz = quad_load(r->dz + first);
     quad_f64 ocx = quad_load(r->ox + first) - quad_splat(d->center.x);
@@ -35,7 +53,7 @@ static quad_mask sphere_intersect4(const shape *s, const ray8 *r, int first, qua
      * refused by either. */
     quad_mask near = (t0 > quad_splat(0)) & (t0 < tmax), far = (t1 > quad_splat(0)) & (t1 < tmax);
     *t = quad_select(near, t0, t1);
-    quad_mask hit = real & (near | far);
+    quad_mask hits = real & (near | far);
     /* A zero direction (never from glint's own rays) takes the scalar path. */
     quad_mask flat = a == quad_splat(0);
     for (int k = 0; k < QUAD; k++) {
@@ -43,10 +61,10 @@ static quad_mask sphere_intersect4(const shape *s, const ray8 *r, int first, qua
             continue;
         ray one = ray8_get(r, first + k);
         shape_hit h = {0};
-        hit[k] = sphere_intersect(s, &one, 0, tmax[k], &h) ? -1 : 0;
+        hits[k] = sphere_intersect(s, &one, 0, tmax[k], &h) ? -1 : 0;
         (*t)[k] = h.t;
     }
-    return hit;
+    return hits;
 }
 
 /* u is the longitude (0.5 at +z, seam at -z), v runs from 0 at the north
@@ -86,6 +104,6 @@ static double sphere_sample(const shape *s, double u1, double u2, vec3 *p, vec3 
 const shape_kind sphere_kind = {
     .closed = shape_always_closed,
     .name = "sphere", .id = GLINT_SHAPE_SPHERE, .params = PARAM_TABLE(SPHERE_PARAMS), .max_crossings = 2,
-    .intersect = sphere_intersect, .span = sphere_span, .intersect4 = sphere_intersect4,
+    .intersect = sphere_intersect, .span = sphere_span, .span4 = sphere_span4, .intersect4 = sphere_intersect4,
     .surface = sphere_surface, .uv = sphere_uv, .bounds = sphere_bounds, .sample = sphere_sample,
 };

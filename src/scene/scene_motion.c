@@ -62,6 +62,8 @@ glint_status glint_scene_move_shape(glint_scene *scene, int index, int count, co
      * ray's time. */
     for (int up = moving->part_of; up >= 0; up = scene->shapes[up].part_of)
         scene->shapes[up].pose_count = count;
+    if (moving->part_of >= 0)
+        shape_parts_changed(scene->shapes, moving->part_of);
     /* Its light moves with it. */
     emitters_follow_shape(scene->emitters, scene->emitter_count, index, moving);
     return GLINT_OK;

@@ -1,8 +1,9 @@
 /* test_csg.c - unions, intersections and differences against the sets they
  * stand for: which points of a grid are inside, the silhouettes of two
  * overlapping balls combined each way, a lens of two spheres focusing at
- * the lensmaker's focal length, shadows through a glass combination, and
- * the parts a combination refuses. */
+ * the lensmaker's focal length, shadows through a glass combination, the
+ * four-lane test against the one-ray one, and the parts a combination
+ * refuses. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -12,6 +13,7 @@
 #include "glint.h"
 #include "first_crossing.h"
 #include "one_sample_scene.h"
+#include "geometry/shape.h"
 #include "scene/scene.h"
 
 #define assert_near(a, b, eps) assert_true(fabs((double)(a) - (double)(b)) <= (eps))
@@ -261,9 +263,6 @@ static void test_shadow_through_a_combination(void **state)
     }
 }
 
-/* What a combination refuses, in words: a part that is not closed, a part
- * of something that is not a combination, a transform of its own, and a
- * part that would move. */
 /* A mirror ball shows the other ball of its union as it shows a ball
  * beside it that is no part of it: a ray leaving one part may meet
  * another. The image is the same either way, and the reflection is there. */
@@ -296,6 +295,144 @@ static void test_parts_see_each_other(void **state)
     glint_image_free(&im[1]);
 }
 
+/* A number in [-1, 1) from a small xorshift generator. */
+static double unit_noise(uint32_t *state)
+{
+    *state ^= *state << 13;
+    *state ^= *state >> 17;
+    *state ^= *state << 5;
+    return *state / 2147483648.0 - 1;
+}
+
+static int add_part(glint_scene *s, int csg, glint_shape sh, const glint_transform *xf, int mat)
+{
+    glint_error err;
+    int i = glint_scene_add_part(s, csg, &sh, mat, xf, &err);
+    if (i < 0)
+        fail_msg("%s", err.message);
+    return i;
+}
+
+/* A die as bench/csg.yaml makes it, turned and moved: a cube rounded by a
+ * ball (an intersection) minus three pips, all placed by one transform. */
+static int add_die(glint_scene *s, const glint_transform *xf, int ivory, int pip)
+{
+    int die = add_combination(s, -1, GLINT_SHAPE_DIFFERENCE, -1);
+    int rounded = add_combination(s, die, GLINT_SHAPE_INTERSECTION, -1);
+    glint_shape cube = glint_shape_default(GLINT_SHAPE_BOX), ball = glint_shape_default(GLINT_SHAPE_SPHERE);
+    cube.min = (glint_vec3){-0.4, -0.4, -0.4};
+    cube.max = (glint_vec3){0.4, 0.4, 0.4};
+    ball.radius = 0.55;
+    add_part(s, rounded, cube, xf, ivory);
+    add_part(s, rounded, ball, xf, ivory);
+    const glint_vec3 pips[3] = {{0, 0.46, 0}, {-0.2, 0.2, 0.46}, {0.46, 0.1, 0.1}};
+    for (int i = 0; i < 3; i++) {
+        ball.center = pips[i];
+        ball.radius = 0.09;
+        add_part(s, die, ball, xf, pip);
+    }
+    return die;
+}
+
+/* Combinations of still balls and boxes find their hits four lanes at a
+ * time (shape_intersect4), each lane bit for bit what shape_intersect
+ * finds one ray at a time: the hit's t, part (flipped where a difference
+ * cut it) and leaf, for rays from outside and inside, across a die, a
+ * union of a turned box and a ball, a lens, a difference of two
+ * intersections, and an intersection whose parts miss each other. A
+ * combination holding a cylinder, or a part that moves, takes lanes one at
+ * a time. */
+static void test_four_lanes_match_one(void **state)
+{
+    glint_scene *s = glint_scene_new();
+    int ivory = flat(s, 1, 1, 1), pip = flat(s, 0, 0, 0);
+    glint_transform turned = glint_transform_rotate(glint_transform_identity(), (glint_vec3){0, 1, 0}, 23);
+    turned = glint_transform_rotate(turned, (glint_vec3){1, 0, 0}, 31);
+    turned = glint_transform_translate(turned, 0.2, -0.1, 0.3);
+    int die = add_die(s, &turned, ivory, pip);
+    int both = add_combination(s, -1, GLINT_SHAPE_UNION, -1);
+    glint_shape cube = glint_shape_default(GLINT_SHAPE_BOX);
+    cube.min = (glint_vec3){-0.6, -0.3, -0.5};
+    cube.max = (glint_vec3){0.2, 0.5, 0.4};
+    add_part(s, both, cube, &turned, ivory);
+    add_ball(s, both, (glint_vec3){0.3, 0.1, 0}, 0.5, pip);
+    int lens = add_combination(s, -1, GLINT_SHAPE_INTERSECTION, -1);
+    add_ball(s, lens, (glint_vec3){0, 0, 0.7}, 1, ivory);
+    add_ball(s, lens, (glint_vec3){0, 0, -0.7}, 1, pip);
+    int cut = add_combination(s, -1, GLINT_SHAPE_DIFFERENCE, -1);
+    int outer = add_combination(s, cut, GLINT_SHAPE_INTERSECTION, -1), inner = add_combination(s, cut, GLINT_SHAPE_INTERSECTION, -1);
+    add_part(s, outer, cube, NULL, ivory);
+    add_ball(s, outer, (glint_vec3){-0.2, 0.1, 0}, 0.6, ivory);
+    add_ball(s, inner, (glint_vec3){-0.2, 0.3, 0.1}, 0.4, pip);
+    add_part(s, inner, cube, &turned, pip);
+    int apart = add_combination(s, -1, GLINT_SHAPE_INTERSECTION, -1);
+    add_ball(s, apart, (glint_vec3){-0.6, 0, 0}, 0.5, ivory);
+    add_ball(s, apart, (glint_vec3){0.6, 0, 0}, 0.5, pip);
+    const int quads[] = {die, both, lens, cut, apart};
+    uint32_t seed = 7;
+    for (int c = 0; c < 5; c++) {
+        const shape *sh = &s->shapes[quads[c]];
+        assert_true(shape_has_intersect4(sh));
+        int hits = 0, misses = 0, flipped = 0;
+        for (int round = 0; round < 2000; round++) {
+            ray8 r;
+            double tmax[RAY8];
+            for (int i = 0; i < RAY8; i++) {
+                /* From a unit or two away, or from inside, towards a
+                 * point within the combination's reach. */
+                double reach = round % 4 ? 2.5 : 0.3;
+                vec3 o = v3(reach * unit_noise(&seed), reach * unit_noise(&seed), reach * unit_noise(&seed));
+                vec3 aim = v3(0.7 * unit_noise(&seed), 0.7 * unit_noise(&seed), 0.7 * unit_noise(&seed));
+                ray8_set(&r, i, (ray){o, v3_sub(aim, o)});
+                tmax[i] = i % 3 ? INFINITY : 1 + unit_noise(&seed);
+            }
+            for (int q = 0; q < RAY8; q += QUAD) {
+                quad_hit qh;
+                quad_mask m = shape_intersect4(sh, &r, q, quad_load(tmax + q), &qh);
+                for (int k = 0; k < QUAD; k++) {
+                    ray one = ray8_get(&r, q + k);
+                    shape_hit h;
+                    bool want = shape_intersect(sh, &one, 0, tmax[q + k], &h);
+                    assert_int_equal(m[k] != 0, want);
+                    if (!want) {
+                        misses++;
+                        continue;
+                    }
+                    double t = qh.t[k];
+                    assert_memory_equal(&t, &h.t, sizeof t);
+                    assert_int_equal(qh.part[k], h.part);
+                    assert_int_equal(qh.leaf[k], h.leaf);
+                    hits++;
+                    flipped += (h.part & SHAPE_PART_FLIPPED) != 0;
+                }
+            }
+        }
+        /* The balls of `apart` share no point: nothing to hit. */
+        assert_true(quads[c] == apart ? hits == 0 : hits > 1000);
+        assert_true(misses > 1000);
+        if (quads[c] == die || quads[c] == cut)
+            assert_true(flipped > 20);
+    }
+    int mixed = add_combination(s, -1, GLINT_SHAPE_UNION, -1);
+    add_ball(s, mixed, (glint_vec3){0, 0, 0}, 1, ivory);
+    glint_shape tube = glint_shape_default(GLINT_SHAPE_CYLINDER);
+    tube.radius = tube.height = 1;
+    add_part(s, mixed, tube, NULL, ivory);
+    assert_false(shape_has_intersect4(&s->shapes[mixed]));
+    int rolling = add_combination(s, -1, GLINT_SHAPE_UNION, -1);
+    int ball = add_ball(s, rolling, (glint_vec3){0, 0, 0}, 1, ivory);
+    add_ball(s, rolling, (glint_vec3){1, 0, 0}, 1, ivory);
+    assert_true(shape_has_intersect4(&s->shapes[rolling]));
+    glint_transform poses[2] = {glint_transform_identity(), glint_transform_translate(glint_transform_identity(), 0, 1, 0)};
+    glint_error err;
+    assert_int_equal(glint_scene_move_shape(s, ball, 2, poses, &err), GLINT_OK);
+    assert_false(shape_has_intersect4(&s->shapes[rolling]));
+    glint_scene_free(s);
+}
+
+/* What a combination refuses, in words: a part that is not closed, a part
+ * of something that is not a combination, a transform of its own, and a
+ * part that would move. */
 static void test_refusals(void **state)
 {
     glint_scene *s = glint_scene_new();
@@ -335,6 +472,7 @@ int main(void)
         cmocka_unit_test(test_lens_focuses_at_its_focal_length),
         cmocka_unit_test(test_shadow_through_a_combination),
         cmocka_unit_test(test_parts_see_each_other),
+        cmocka_unit_test(test_four_lanes_match_one),
         cmocka_unit_test(test_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);

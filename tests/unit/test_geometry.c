@@ -463,17 +463,19 @@ static void test_shape_intersect4_matches(void **state)
                 tmax[i] = i == 5 ? INFINITY : i == 6 ? fabs(v[6]) * 0.2 : fabs(v[6]);
             }
             for (int q = 0; q < RAY8; q += QUAD) {
-                quad_f64 t;
-                quad_mask m = shape_intersect4(&s, &r, q, quad_load(tmax + q), &t);
+                quad_hit qh;
+                quad_mask m = shape_intersect4(&s, &r, q, quad_load(tmax + q), &qh);
                 for (int k = 0; k < QUAD; k++) {
                     ray one = ray8_get(&r, q + k);
                     shape_hit h;
                     bool want = shape_intersect(&s, &one, 0, tmax[q + k], &h);
                     assert_int_equal(m[k] != 0, want);
-                    double tk = t[k];
+                    double tk = qh.t[k];
                     if (want) {
                         assert_memory_equal(&tk, &h.t, sizeof h.t);
                         assert_int_equal(h.part, 0);
+                        assert_int_equal(qh.part[k], 0);
+                        assert_int_equal(qh.leaf[k], -1);
                     }
                     hits += want;
                     misses += !want;
