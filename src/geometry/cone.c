@@ -42,7 +42,7 @@ static bool cone_intersect(const shape *s, const ray *r, double tmin, double tma
     double y_in, y_out;
     if (!slab(o.y, dir.y, 0, d->height, &y_in, &y_out))
         return false;
-    cone_roots q;
+    cone_roots q = {0}; /* the roots stay 0 when there are none */
     q.a = dir.x * dir.x + dir.z * dir.z - k2 * dir.y * dir.y;
     q.b = 2 * (o.x * dir.x + o.z * dir.z + k2 * below_apex * dir.y);
     q.c = o.x * o.x + o.z * o.z - k2 * below_apex * below_apex;
