@@ -377,7 +377,8 @@ static quad_mask csg_intersect4(const shape *s, const ray8 *r, int first, quad_f
 {
     const quad_ray w = {quad_load(r->ox + first), quad_load(r->oy + first), quad_load(r->oz + first),
                         quad_load(r->dx + first), quad_load(r->dy + first), quad_load(r->dz + first)};
-    mapped_quad mapped = {0};
+    mapped_quad mapped;
+    mapped.id = 0; /* nothing mapped yet: the rays need no clearing */
     quad_mask found = {0};
     crossing c;
     if (s->convex) {
