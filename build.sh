@@ -121,6 +121,7 @@ test)
     # than the 2 GiB limit leaves beside the fuzzer's own memory.
     CC=clang build build-fuzz -DGLINT_WERROR=ON -DGLINT_FUZZ=ON -DGLINT_MPI=OFF -DGLINT_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
     fuzz scene 8192
+    fuzz nff 8192
     fuzz mesh 16384
     fuzz texture 16384 -rss_limit_mb=3072
     fuzz cli 4096 -close_fd_mask=3

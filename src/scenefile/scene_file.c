@@ -25,6 +25,7 @@
 #include "core/open_file.h"
 #include "scene/scene.h"
 #include "scenefile/loader.h"
+#include "scenefile/scene_bytes.h"
 #include "scenefile/scene_file.h"
 #include "scenefile/scene_reader.h"
 
@@ -238,58 +239,6 @@ static void read_bytes(loader *l, const char *data, size_t size, const char *nam
         read_root(l, doc.root);
 }
 
-/* Reads all of the stream f, named `name`, to its end, at most
- * SCENE_FILE_MAX_BYTES; NULL with a message in err on failure. */
-static char *read_all(FILE *f, const char *name, size_t *size, glint_error *err)
-{
-    char *data = NULL;
-    size_t cap = 0, n = 0, got;
-    do {
-        if (!array_reserve((void **)&data, &cap, n + 65536, 1)) {
-            free(data);
-            error_set(err, GLINT_ERR_NOMEM, "out of memory reading '%s'", name);
-            return NULL;
-        }
-        /* One byte past the limit tells a stream at the limit from a larger one. */
-        size_t left = (size_t)SCENE_FILE_MAX_BYTES + 1 - n;
-        n += got = fread(data + n, 1, cap - n < left ? cap - n : left, f);
-    } while (got > 0 && n <= (size_t)SCENE_FILE_MAX_BYTES);
-    if (ferror(f))
-        error_set(err, GLINT_ERR_IO, "cannot read scene '%s': %s", name, strerror(errno));
-    else if (n > (size_t)SCENE_FILE_MAX_BYTES)
-        error_set(err, GLINT_ERR_INVALID, "scene '%s' is too large: more than %ld bytes (the limit)", name,
-                  SCENE_FILE_MAX_BYTES);
-    else {
-        *size = n;
-        return data;
-    }
-    free(data);
-    return NULL;
-}
-
-/* Reads a whole file (bounded), with *st its status; NULL with a message in
- * err on failure: "cannot include" for an include, which is what the user
- * wrote at the include's place. */
-static char *slurp(const char *path, bool include, size_t *size, struct stat *st, glint_error *err)
-{
-    int errnum;
-    FILE *f = open_file_stream(path, st, &errnum);
-    if (!f) {
-        error_set(err, GLINT_ERR_IO, "cannot %s '%s': %s", include ? "include" : "read scene", path,
-                  open_file_reason(errnum));
-        return NULL;
-    }
-    char *data = NULL;
-    /* The size first, so that a file too large is refused unread. */
-    if (st->st_size > SCENE_FILE_MAX_BYTES)
-        error_set(err, GLINT_ERR_INVALID, "scene '%s' is too large: %lld bytes (limit %ld)", path,
-                  (long long)st->st_size, SCENE_FILE_MAX_BYTES);
-    else
-        data = read_all(f, path, size, err);
-    fclose(f);
-    return data;
-}
-
 static void read_file(loader *l, const char *path, const ynode *from)
 {
     char canonical[PATH_MAX];
@@ -329,7 +278,7 @@ static void read_file(loader *l, const char *path, const ynode *from)
     glint_error err;
     size_t size = 0;
     struct stat st;
-    char *data = slurp(path, from != NULL, &size, &st, &err);
+    char *data = scene_bytes_of_file(path, from != NULL, &size, &st, &err);
     if (data && scene_note_file(l->scene, &st, &err)) {
         free(data);
         data = NULL;
@@ -563,7 +512,7 @@ static glint_scene *yaml_load_stream(FILE *in, const char *name, const glint_loa
     name = name ? name : "<stream>";
     glint_error unread;
     size_t size = 0;
-    char *data = read_all(in, name, &size, &unread);
+    char *data = scene_bytes_of_stream(in, name, &size, &unread);
     glint_scene *scene = data ? load(options, err, name, body_stream, data, size)
                               : load(options, err, name, body_unread, &unread, 0);
     free(data);

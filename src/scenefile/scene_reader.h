@@ -1,7 +1,7 @@
 /* scene_reader.h - the scene-file formats glint reads, one record each.
  *
  * A format is one reader exporting one scene_reader (the YAML reader in
- * scene_file.c); scene_readers.c lists them, one line each, and picks the
+ * scene_file.c, the NFF reader in nff_read.c); scene_readers.c lists them, one line each, and picks the
  * reader for a file by its name's extension, YAML for any other name. The
  * public glint_scene_load_file, _load_memory and _load_stream go through it.
  * Adding a format: docs/architecture.md. */
@@ -21,7 +21,7 @@ typedef struct scene_reader {
     glint_scene *(*load_stream)(FILE *in, const char *name, const glint_load_options *options, glint_error *err);
 } scene_reader;
 
-extern const scene_reader yaml_scene_reader;
+extern const scene_reader yaml_scene_reader, nff_scene_reader;
 
 /* The reader of the file called `name`, by its extension: the first reader
  * that lists it, else the YAML reader. */

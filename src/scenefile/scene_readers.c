@@ -4,7 +4,7 @@
 #include <strings.h>
 #include "scenefile/scene_reader.h"
 
-static const scene_reader *const READERS[] = {&yaml_scene_reader};
+static const scene_reader *const READERS[] = {&yaml_scene_reader, &nff_scene_reader};
 
 const scene_reader *scene_reader_for(const char *name)
 {
