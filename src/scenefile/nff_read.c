@@ -201,8 +201,8 @@ static bool read_view(nff *n)
     return true;
 }
 
-/* `f` r g b Kd Ks Shine T ior: Kd is also the ambient share, Ks both the
- * highlight and the mirror reflectance, T the refracted share (its index
+/* `f` r g b Kd Ks Shine T ior: Ks is both the highlight and the mirror
+ * reflectance, T the refracted share, filtered by the colour (its index
  * unused, and 1, where T is 0). */
 static bool read_fill(nff *n)
 {
@@ -212,7 +212,6 @@ static bool read_fill(nff *n)
     glint_material m = glint_material_default();
     m.color = linear(v);
     m.diffuse = v[3];
-    m.ambient = v[3] < 0 ? 0 : v[3] > 1 ? 1 : v[3];
     m.specular = v[4];
     m.reflectivity = v[4];
     m.shininess = v[5];
@@ -220,7 +219,7 @@ static bool read_fill(nff *n)
     /* The SPD write an index of 0 for what transmits nothing. */
     m.ior = v[6] == 0 && v[7] <= 0 ? 1 : v[7];
     m.transparency = 0;
-    m.tint = 0;
+    m.tint = 1;
     glint_error call;
     int k = glint_scene_add_material(n->scene, NULL, &m, &call);
     if (k < 0)
@@ -457,11 +456,11 @@ static bool read_entity(nff *n)
     return fail(n, "unknown entity '%s' (NFF has v, b, l, f, c, s, p, pp and # comments)", quoted(n, q));
 }
 
-/* Adds the lights, sqrt(L) / (2 L) each as the SPD suggests for L lights,
- * times their colours, and the same for the ambient light. */
+/* Adds the lights, sqrt(L) / (2 L) each as the SPD suggest for L lights,
+ * times their colours. */
 static bool add_lights(nff *n)
 {
-    double share = n->light_count > 0 ? sqrt(n->light_count) / (2.0 * n->light_count) : 0.5;
+    double share = sqrt(n->light_count) / (2.0 * n->light_count);
     glint_error call;
     for (int i = 0; i < n->light_count; i++) {
         glint_light l = n->lights[i];
@@ -469,9 +468,7 @@ static bool add_lights(nff *n)
         if (glint_scene_add_light(n->scene, &l, &call) < 0)
             return fail_call(n, &call);
     }
-    glint_settings s = glint_scene_get_settings(n->scene);
-    s.ambient_light = (glint_color){share, share, share};
-    return glint_scene_set_settings(n->scene, &s, &call) ? fail_call(n, &call) : true;
+    return true;
 }
 
 /* Reads the NFF text data[0..size) named `name` into a new scene. */
@@ -488,6 +485,9 @@ static glint_scene *read_nff(const char *data, size_t size, const char *name, gl
     s.samples_per_pixel = 1;
     s.max_depth = 5;
     s.background = (glint_color){0, 0, 0};
+    /* The SPD's reference images have none: faces turned from every
+     * light are black. */
+    s.ambient_light = (glint_color){0, 0, 0};
     glint_error call;
     if (glint_scene_set_settings(n.scene, &s, &call))
         fail_call(&n, &call);
