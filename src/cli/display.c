@@ -10,7 +10,6 @@
  * on a machine whose every core renders, the window may lag a moment
  * behind the render rather than slow it. */
 #define _GNU_SOURCE /* gettid */
-#include <SDL.h>
 #include <pthread.h>
 #include <stdarg.h>
 #include <stdbool.h>
@@ -21,6 +20,7 @@
 #include <sys/resource.h>
 #include <unistd.h>
 #include "cli/display.h"
+#include "cli/sdl_calls.h"
 #include "image/srgb.h"
 #include "render/film.h"
 
@@ -33,6 +33,9 @@
 /* The placeholder: a checkerboard of squares this wide, in two dim greys. */
 #define CHECKER 16
 static const unsigned char CHECKER_GREYS[2] = {0x1c, 0x2c};
+
+/* SDL was loaded and started on the window's thread (start_sdl). */
+static bool sdl_loaded;
 
 typedef struct tile_rect {
     int x0, y0, x1, y1;
@@ -165,7 +168,7 @@ static void draw_rect(display *d, const tile_rect *t, const tile_rect *within, S
             }
             Uint8 r = srgb_byte(rgb[0]), g = srgb_byte(rgb[1]), b = srgb_byte(rgb[2]);
             /* SDL_MapRGB's own formula, inline, but for palettes. */
-            Uint32 v = f->palette ? SDL_MapRGB(f, r, g, b)
+            Uint32 v = f->palette ? sdl->MapRGB(f, r, g, b)
                                   : (Uint32)(r >> f->Rloss) << f->Rshift | (Uint32)(g >> f->Gloss) << f->Gshift |
                                         (Uint32)(b >> f->Bloss) << f->Bshift | f->Amask;
             memcpy(row + (size_t)wx * bytes, &v, (size_t)bytes); /* little-endian: the low bytes */
@@ -180,10 +183,10 @@ static void draw_placeholder(display *d)
     SDL_Surface *s = d->surface;
     Uint32 grey[2];
     for (int k = 0; k < 2; k++)
-        grey[k] = SDL_MapRGB(s->format, CHECKER_GREYS[k], CHECKER_GREYS[k], CHECKER_GREYS[k]);
+        grey[k] = sdl->MapRGB(s->format, CHECKER_GREYS[k], CHECKER_GREYS[k], CHECKER_GREYS[k]);
     for (int y = 0; y < s->h; y += CHECKER)
         for (int x = 0; x < s->w; x += CHECKER)
-            SDL_FillRect(s, &(SDL_Rect){x, y, CHECKER, CHECKER}, grey[(x / CHECKER + y / CHECKER) & 1]);
+            sdl->FillRect(s, &(SDL_Rect){x, y, CHECKER, CHECKER}, grey[(x / CHECKER + y / CHECKER) & 1]);
 }
 
 /* The window's surface taken again (it is SDL's, and changes with the
@@ -191,7 +194,7 @@ static void draw_placeholder(display *d)
  * far, or, once the render is over, the image. False when memory runs out. */
 static bool draw_all(display *d, bool finished)
 {
-    d->surface = SDL_GetWindowSurface(d->window);
+    d->surface = sdl->GetWindowSurface(d->window);
     if (!d->surface || !map_axis(&d->across, d->surface->w, d->width) ||
         !map_axis(&d->down, d->surface->h, d->height))
         return false;
@@ -210,17 +213,21 @@ static bool draw_all(display *d, bool finished)
 /* SDL started on this thread; false with d->why set otherwise. */
 static bool start_sdl(display *d)
 {
+    glint_error err;
+    if (!sdl_calls_load(&err))
+        return failed(d, "%s", err.message);
+    sdl_loaded = true;
     /* glint catches the signals itself; the window's pixels are SDL's
      * surface, never a GPU driver's (none is needed, and none leaves its
      * allocations behind at exit); the screensaver is left alone, which
      * keeps SDL off the session bus. */
-    SDL_SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
-    SDL_SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
-    SDL_SetHint(SDL_HINT_VIDEO_ALLOW_SCREENSAVER, "1");
-    if (SDL_InitSubSystem(SDL_INIT_VIDEO) != 0)
-        return failed(d, "%s", SDL_GetError());
+    sdl->SetHint(SDL_HINT_NO_SIGNAL_HANDLERS, "1");
+    sdl->SetHint(SDL_HINT_FRAMEBUFFER_ACCELERATION, "0");
+    sdl->SetHint(SDL_HINT_VIDEO_ALLOW_SCREENSAVER, "1");
+    if (sdl->InitSubSystem(SDL_INIT_VIDEO) != 0)
+        return failed(d, "%s", sdl->GetError());
     /* Without a usable display SDL falls back to drivers that draw nowhere. */
-    const char *driver = SDL_GetCurrentVideoDriver();
+    const char *driver = sdl->GetCurrentVideoDriver();
     if (!driver || strcmp(driver, "offscreen") == 0 || strcmp(driver, "dummy") == 0)
         return failed(d, "SDL found no screen to show it on (its video driver is '%s')", driver ? driver : "none");
     return true;
@@ -233,18 +240,18 @@ static bool open_window(display *d)
     /* SDL never shrinks a window to the screen: scaled here, keeping the aspect. */
     int w = d->width, h = d->height;
     SDL_Rect usable;
-    if (SDL_GetDisplayUsableBounds(0, &usable) == 0 && usable.w > 0 && usable.h > 0 &&
+    if (sdl->GetDisplayUsableBounds(0, &usable) == 0 && usable.w > 0 && usable.h > 0 &&
         (w > usable.w || h > usable.h)) {
         double sx = (double)usable.w / w, sy = (double)usable.h / h, scale = sx < sy ? sx : sy;
         w = (int)(w * scale) > 0 ? (int)(w * scale) : 1;
         h = (int)(h * scale) > 0 ? (int)(h * scale) : 1;
     }
-    d->window = SDL_CreateWindow(d->title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, w, h, 0);
+    d->window = sdl->CreateWindow(d->title, SDL_WINDOWPOS_CENTERED, SDL_WINDOWPOS_CENTERED, w, h, 0);
     if (!d->window)
-        return failed(d, "%s", SDL_GetError());
+        return failed(d, "%s", sdl->GetError());
     if (!draw_all(d, false))
-        return failed(d, "%s", d->surface ? "out of memory" : SDL_GetError());
-    SDL_UpdateWindowSurface(d->window);
+        return failed(d, "%s", d->surface ? "out of memory" : sdl->GetError());
+    sdl->UpdateWindowSurface(d->window);
     return true;
 }
 
@@ -317,7 +324,7 @@ static user_events take_events(void)
 {
     user_events u = {0};
     SDL_Event ev;
-    while (SDL_PollEvent(&ev)) {
+    while (sdl->PollEvent(&ev)) {
         if (ev.type == SDL_QUIT || (ev.type == SDL_WINDOWEVENT && ev.window.event == SDL_WINDOWEVENT_CLOSE))
             u.closed = true;
         else if (ev.type == SDL_KEYDOWN && (ev.key.keysym.sym == SDLK_ESCAPE || ev.key.keysym.sym == SDLK_q))
@@ -383,15 +390,15 @@ static void show_until_closed(display *d)
                 cli_complain(CLI_EXIT_INTERNAL, "--display: the window closed, out of memory to draw it");
                 return;
             }
-            SDL_UpdateWindowSurface(d->window);
+            sdl->UpdateWindowSurface(d->window);
         } else {
             for (size_t i = 0; i < fresh; i++)
                 draw_rect(d, &d->taken[d->shown + i], &d->taken[d->shown + i], &d->changed[i]);
             d->shown += fresh;
             if (u.exposed)
-                SDL_UpdateWindowSurface(d->window);
+                sdl->UpdateWindowSurface(d->window);
             else if (fresh > 0)
-                SDL_UpdateWindowSurfaceRects(d->window, d->changed, (int)fresh);
+                sdl->UpdateWindowSurfaceRects(d->window, d->changed, (int)fresh);
         }
         /* Set after the frame it describes is on screen. */
         if (percent != shown_percent || finished != shown_finished) {
@@ -400,7 +407,7 @@ static void show_until_closed(display *d)
                 snprintf(title, sizeof title, "%s - done in %.3f s", d->title, seconds);
             else
                 snprintf(title, sizeof title, "%s - %d%%", d->title, percent);
-            SDL_SetWindowTitle(d->window, title);
+            sdl->SetWindowTitle(d->window, title);
             shown_percent = percent;
             shown_finished = finished;
         }
@@ -447,8 +454,9 @@ static void *window_thread(void *arg)
         show_until_closed(d);
     }
     if (d->window)
-        SDL_DestroyWindow(d->window);
-    SDL_Quit();
+        sdl->DestroyWindow(d->window);
+    if (sdl_loaded)
+        sdl->Quit();
     return NULL;
 }
 

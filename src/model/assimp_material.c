@@ -8,6 +8,7 @@
 #include <assimp/GltfMaterial.h>
 #include <assimp/material.h>
 #include "core/error.h"
+#include "model/assimp_calls.h"
 #include "model/assimp_material.h"
 #include "model/model_build.h"
 
@@ -16,7 +17,7 @@ static double get_float(const struct aiMaterial *m, const char *key, unsigned ty
 {
     ai_real v = 0;
     unsigned n = 1;
-    if (aiGetMaterialFloatArray(m, key, type, index, &v, &n) != AI_SUCCESS || n < 1 || !isfinite(v))
+    if (assimp->GetMaterialFloatArray(m, key, type, index, &v, &n) != AI_SUCCESS || n < 1 || !isfinite(v))
         return fallback;
     return v;
 }
@@ -24,7 +25,7 @@ static double get_float(const struct aiMaterial *m, const char *key, unsigned ty
 static bool get_color(const struct aiMaterial *m, const char *key, unsigned type, unsigned index, glint_color *out)
 {
     struct aiColor4D c;
-    if (aiGetMaterialColor(m, key, type, index, &c) != AI_SUCCESS)
+    if (assimp->GetMaterialColor(m, key, type, index, &c) != AI_SUCCESS)
         return false;
     out->r = isfinite(c.r) ? fmax(c.r, 0) : 0;
     out->g = isfinite(c.g) ? fmax(c.g, 0) : 0;
@@ -35,7 +36,7 @@ static bool get_color(const struct aiMaterial *m, const char *key, unsigned type
 static bool get_string(const struct aiMaterial *m, const char *key, unsigned type, unsigned index,
                        struct aiString *out)
 {
-    return aiGetMaterialString(m, key, type, index, out) == AI_SUCCESS && out->length > 0;
+    return assimp->GetMaterialString(m, key, type, index, out) == AI_SUCCESS && out->length > 0;
 }
 
 /* True for a material Assimp made up because the file gave none: the
@@ -78,7 +79,7 @@ static glint_material from_gltf(const struct aiMaterial *a)
     struct aiString mode;
     if (get_string(a, AI_MATKEY_GLTF_ALPHAMODE, &mode) && strcmp(mode.data, "BLEND") == 0) {
         struct aiColor4D c;
-        double alpha = aiGetMaterialColor(a, AI_MATKEY_BASE_COLOR, &c) == AI_SUCCESS && isfinite(c.a) ? c.a : 1;
+        double alpha = assimp->GetMaterialColor(a, AI_MATKEY_BASE_COLOR, &c) == AI_SUCCESS && isfinite(c.a) ? c.a : 1;
         m.transparency = model_clamp(1 - alpha, 0, 1 - m.refraction);
     }
     return m;

@@ -17,6 +17,7 @@
 #include <assimp/config.h>
 #include <assimp/postprocess.h>
 #include "core/error.h"
+#include "model/assimp_calls.h"
 #include "model/assimp_check.h"
 #include "model/assimp_io.h"
 #include "model/assimp_material.h"
@@ -46,7 +47,7 @@ void assimp_assert_failed(const char *expression, const char *file, int line)
 /* Assimp's message, on one line of printable characters. */
 static void assimp_message(char *out, size_t size)
 {
-    const char *msg = aiGetErrorString();
+    const char *msg = assimp->GetErrorString();
     size_t n = 0;
     for (; msg && msg[n] && msg[n] != '\n' && msg[n] != '\r' && n + 1 < size; n++)
         out[n] = (unsigned char)msg[n] < 32 || msg[n] == 127 ? '?' : msg[n];
@@ -96,9 +97,17 @@ static const struct aiScene *assimp_read(assimp_source *src, const char *file, g
      * is quadratic in the vertices that share a point. */
     const unsigned flags = aiProcess_Triangulate | aiProcess_JoinIdenticalVertices | aiProcess_PreTransformVertices |
                            aiProcess_SortByPType | aiProcess_ValidateDataStructure | aiProcess_FindInvalidData;
-    struct aiPropertyStore *props = aiCreatePropertyStore();
-    aiSetImportPropertyInteger(props, AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
-    aiSetImportPropertyInteger(props, AI_CONFIG_IMPORT_NO_SKELETON_MESHES, 1);
+    glint_error load;
+    if (!assimp_calls_load(&load)) {
+        if (load.status == GLINT_ERR_NOMEM)
+            error_set(err, GLINT_ERR_NOMEM, "%s: out of memory", file);
+        else
+            *err = load;
+        return NULL;
+    }
+    struct aiPropertyStore *props = assimp->CreatePropertyStore();
+    assimp->SetImportPropertyInteger(props, AI_CONFIG_PP_SBP_REMOVE, aiPrimitiveType_POINT | aiPrimitiveType_LINE);
+    assimp->SetImportPropertyInteger(props, AI_CONFIG_IMPORT_NO_SKELETON_MESHES, 1);
     struct aiFileIO io;
     assimp_io_init(&io, src);
     char msg[400] = "";
@@ -106,26 +115,26 @@ static const struct aiScene *assimp_read(assimp_source *src, const char *file, g
     pthread_mutex_lock(&assimp_lock);
     failed_assertion = NULL;
     src->read = src->size;
-    const struct aiScene *ai = aiImportFileExWithProperties(src->name, aiProcess_ValidateDataStructure, &io, props);
+    const struct aiScene *ai = assimp->ImportFileExWithProperties(src->name, aiProcess_ValidateDataStructure, &io, props);
     if (ai) {
         if (!failed_assertion)
             s = check_read(ai, file, err);
-        aiReleaseImport(ai);
+        assimp->ReleaseImport(ai);
         ai = NULL;
         src->read = src->size;
         if (!failed_assertion && !s)
-            ai = aiImportFileExWithProperties(src->name, flags, &io, props);
+            ai = assimp->ImportFileExWithProperties(src->name, flags, &io, props);
     }
     if (!ai && !s)
         assimp_message(msg, sizeof msg);
     const char *assertion = failed_assertion;
     pthread_mutex_unlock(&assimp_lock);
-    aiReleasePropertyStore(props);
+    assimp->ReleasePropertyStore(props);
     if (ai && !assertion && !src->refused && !(ai->mFlags & AI_SCENE_FLAGS_INCOMPLETE) && ai->mNumMeshes > 0)
         return ai;
     bool empty = ai != NULL;
     if (ai)
-        aiReleaseImport(ai);
+        assimp->ReleaseImport(ai);
     /* A file refused says why before anything Assimp made of its absence. */
     if (src->refused)
         *err = src->refusal;
@@ -221,7 +230,7 @@ static int import_memory(glint_scene *scene, const unsigned char *data, size_t s
     int mesh = -1;
     if (ai) {
         mesh = build(scene, ai, strengths, strength_count, job, err);
-        aiReleaseImport(ai);
+        assimp->ReleaseImport(ai);
     }
     free(strengths);
     return mesh;
