@@ -2,7 +2,8 @@
  * glint's settings, camera, materials, lights and shapes as docs/nff.md
  * says; a rendered sphere against the background; the broken files, each
  * with its exact message; and the seven SPD scenes, which load with the
- * number of primitives each is made of (skipped without the shared data). */
+ * number of primitives each is made of and look like the SPD's own
+ * renderings (skipped without the shared data). */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -14,6 +15,8 @@
 #include <string.h>
 #include "glint.h"
 #include "core/transform.h"
+#include "image/srgb.h"
+#include "image/texture_image.h"
 #include "scene/scene.h"
 
 #define assert_near(a, b, eps) assert_true(fabs((double)(a) - (double)(b)) <= (eps))
@@ -201,6 +204,82 @@ static void test_spd_scenes(void **state)
     }
 }
 
+/* The mean of each f x f block of an 8-bit sRGB image, as 0..1. */
+static double *shrink(const unsigned char *srgb, int width, int height, int f)
+{
+    int w = width / f, h = height / f;
+    double *out = calloc(3 * (size_t)w * (size_t)h, sizeof *out);
+    assert_non_null(out);
+    for (int y = 0; y < h * f; y++)
+        for (int x = 0; x < w * f; x++)
+            for (int c = 0; c < 3; c++)
+                out[3 * ((size_t)(y / f) * (size_t)w + (size_t)(x / f)) + (size_t)c] +=
+                    srgb[3 * ((size_t)y * (size_t)width + (size_t)x) + (size_t)c] / (255.0 * f * f);
+    return out;
+}
+
+/* The seven SPD scenes look like the SPD's own renderings: each rendered
+ * at 128 x 128 (4 samples) and its reference at 512 x 512, both shrunk by
+ * averaging to 64 x 64, differ by at most the RMSE below (over the sRGB
+ * channels, 0 to 1). The references were made with a lighting model of
+ * their own (brighter where many lights add up, as in balls and tree);
+ * the bounds are what glint's documented mapping gives, measured, plus
+ * 0.01. Lights 1.5 times as bright overshoot rings' and tetra's (0.155,
+ * 0.045); mount without its four glass balls is at 0.138. */
+static void test_spd_look_like_references(void **state)
+{
+    const char *data = getenv("GLINT_SHARED_DATA");
+    char probe[4096];
+    snprintf(probe, sizeof probe, "%s/spd/balls-reference.png", data ? data : "");
+    FILE *f = data ? fopen(probe, "r") : NULL;
+    if (!f)
+        skip();
+    fclose(f);
+    const struct {
+        const char *name;
+        double most;
+    } SPD[] = {
+        {"balls", 0.18}, {"gears", 0.126}, {"mount", 0.059}, {"rings", 0.135},
+        {"teapot", 0.082}, {"tetra", 0.038}, {"tree", 0.174},
+    };
+    enum { SIDE = 128, SHOWN = 64 };
+    for (size_t i = 0; i < sizeof SPD / sizeof SPD[0]; i++) {
+        char path[4200];
+        snprintf(path, sizeof path, "%s/spd/%s.nff", data, SPD[i].name);
+        glint_error err;
+        glint_scene *s = glint_scene_load_file(path, NULL, &err);
+        if (!s)
+            fail_msg("%s", err.message);
+        glint_settings set = glint_scene_get_settings(s);
+        set.width = set.height = SIDE;
+        set.samples_per_pixel = 4;
+        assert_int_equal(glint_scene_set_settings(s, &set, &err), GLINT_OK);
+        glint_render_options o = {.threads = 0};
+        glint_image im;
+        assert_int_equal(glint_render(s, &o, &im, NULL, &err), GLINT_OK);
+        unsigned char *mine = malloc(3 * SIDE * SIDE);
+        assert_non_null(mine);
+        srgb_encode(mine, im.pixels, 3 * SIDE * SIDE);
+        snprintf(path, sizeof path, "%s/spd/%s-reference.png", data, SPD[i].name);
+        texture_image ref;
+        assert_int_equal(texture_image_load_file(&ref, path, &err), GLINT_OK);
+        assert_true(ref.width == 512 && ref.height == 512 && ref.srgb);
+        double *a = shrink(mine, SIDE, SIDE, SIDE / SHOWN), *b = shrink(ref.srgb, 512, 512, 512 / SHOWN);
+        double sum = 0;
+        for (int k = 0; k < 3 * SHOWN * SHOWN; k++)
+            sum += (a[k] - b[k]) * (a[k] - b[k]);
+        double rmse = sqrt(sum / (3 * SHOWN * SHOWN));
+        print_message("%s: RMSE %.4f against its reference (at most %.3f)\n", SPD[i].name, rmse, SPD[i].most);
+        assert_true(rmse <= SPD[i].most);
+        free(a);
+        free(b);
+        free(mine);
+        texture_image_free(&ref);
+        glint_image_free(&im);
+        glint_scene_free(s);
+    }
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -208,6 +287,7 @@ int main(void)
         cmocka_unit_test(test_sphere_on_background),
         cmocka_unit_test(test_broken_files),
         cmocka_unit_test(test_spd_scenes),
+        cmocka_unit_test(test_spd_look_like_references),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
