@@ -6,11 +6,12 @@
  * instances, no callbacks, no filters), and then, per
  * pixel, traces the camera ray through the pixel's centre and, from its hit,
  * one shadow ray to each light the hit faces: exactly the rays of a 1-sample
- * glint render of an opaque scene. It reports the trace time (after the
+ * glint render of an opaque scene. Spheres are Embree's own (sphere
+ * points), as the SPD balls need. It reports the trace time (after the
  * build) and the rays per second, for single rays and for packets of 8
  * (4 x 2 pixels), which is what Embree can do at best on this machine.
  *
- *   bench_ceiling SCENE.yaml [--threads N] [--packet 1|8] [--runs N]
+ *   bench_ceiling SCENE.yaml|SCENE.nff [--threads N] [--packet 1|8] [--runs N]
  *
  * Prints one line: `ceiling: WxH, T threads, packet P: build B s, trace S s
  * (median of N), R rays, M Mrays/s`. */
@@ -77,16 +78,46 @@ static void add_plane(RTCDevice dev, RTCScene rtc, const shape *sh)
     rtcReleaseGeometry(g);
 }
 
+/* The spheres without a transform as one geometry of Embree's own exact
+ * spheres (sphere points: centre and radius in single precision). */
+static void add_spheres(RTCDevice dev, RTCScene rtc, const glint_scene *s)
+{
+    int count = 0;
+    for (int i = 0; i < s->shape_count; i++)
+        count += s->shapes[i].desc.kind == GLINT_SHAPE_SPHERE;
+    if (count == 0)
+        return;
+    RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_SPHERE_POINT);
+    float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float),
+                                       (size_t)count);
+    for (int i = 0, k = 0; i < s->shape_count; i++) {
+        const shape *sh = &s->shapes[i];
+        if (sh->desc.kind != GLINT_SHAPE_SPHERE)
+            continue;
+        if (sh->has_transform)
+            die("the ceiling takes spheres without a transform only");
+        v[4 * k] = (float)sh->desc.center.x;
+        v[4 * k + 1] = (float)sh->desc.center.y;
+        v[4 * k + 2] = (float)sh->desc.center.z;
+        v[4 * k + 3] = (float)sh->desc.radius;
+        k++;
+    }
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(rtc, g);
+    rtcReleaseGeometry(g);
+}
+
 /* One triangle geometry per placed mesh, its vertices moved to world space,
- * and two triangles per plane. */
+ * two triangles per plane, and the spheres as Embree's. */
 static RTCScene build_scene(RTCDevice dev, const glint_scene *s)
 {
     RTCScene rtc = rtcNewScene(dev);
     for (int i = 0; i < s->shape_count; i++)
         if (s->shapes[i].desc.kind == GLINT_SHAPE_PLANE)
             add_plane(dev, rtc, &s->shapes[i]);
-        else
-            die("the ceiling takes meshes and planes only");
+        else if (s->shapes[i].desc.kind != GLINT_SHAPE_SPHERE)
+            die("the ceiling takes meshes, planes and spheres only");
+    add_spheres(dev, rtc, s);
     for (int i = 0; i < s->instance_count; i++) {
         const instance *inst = &s->instances[i];
         const mesh *m = &s->meshes[inst->mesh];

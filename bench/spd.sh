@@ -4,7 +4,8 @@
 # one sample a pixel, ray depth 5, 2 threads, the whole process timed (start,
 # parse, build, render, write a PNG). Runs alternate, glint then Tachyon, and
 # each side's median is reported with glint's speed-up and its geometric
-# mean over the scenes. Tachyon (Debian's tachyon-bin-nox) is installed when
+# mean over the scenes. Then, for balls and tetra, glint's trace against a
+# bare Embree loop's (bench/ceiling.c). Tachyon (Debian's tachyon-bin-nox) is installed when
 # missing and root.
 #
 #   bench/spd.sh                     build/glint, 5 runs each
@@ -58,3 +59,32 @@ for s in "${SCENES[@]}"; do
 done
 awk -v s="$log_sum" -v n="${#SCENES[@]}" 'BEGIN { printf "geometric mean: glint %.2fx faster\n", exp(s / n) }'
 echo "($RUNS runs each, alternating; medians of the whole process; $(nproc) cores)"
+
+# The ceiling: bench_ceiling (beside glint) traces the camera and shadow
+# rays of a 1-sample render through bare Embree, with Embree's own spheres
+# and triangles, in packets of 8. glint renders the same rays with --depth 0
+# (no reflections); its trace time is its render's less a 1x1 render's (the
+# build). At 2048 x 2048, where a trace takes long enough to time.
+CEILING="$(dirname "$GLINT")/bench_ceiling"
+[[ -x "$CEILING" ]] || die "no bench_ceiling beside $GLINT: build it (cmake --build BUILD --target bench_ceiling)"
+# render_seconds ARGS...: the render time in glint's summary line.
+render_seconds() {
+    "$GLINT" "$@" --depth 0 --threads 2 -o "$WORK/ceiling.png" 2>&1 | tail -n 1 | grep -oE '[0-9.]+ s,' | grep -oE '[0-9.]+'
+}
+echo
+echo "| scene | glint trace s | ceiling-8 trace s | glint/ceiling |"
+echo "| ----- | ------------: | ----------------: | ------------: |"
+for s in balls tetra; do
+    sed 's/^resolution .*/resolution 2048 2048/' "$SPD/$s.nff" >"$WORK/$s-2048.nff"
+    g=() c=()
+    for ((r = 0; r < RUNS; r++)); do
+        full=$(render_seconds "$WORK/$s-2048.nff")
+        build=$(render_seconds "$WORK/$s-2048.nff" -w 1 -h 1)
+        g+=("$(awk -v a="$full" -v b="$build" 'BEGIN { printf "%.4f\n", a - b }')")
+        c+=("$("$CEILING" "$WORK/$s-2048.nff" --threads 2 --packet 8 --runs 1 | grep -oE 'trace [0-9.]+' | grep -oE '[0-9.]+')")
+    done
+    gm=$(printf '%s\n' "${g[@]}" | median)
+    cm=$(printf '%s\n' "${c[@]}" | median)
+    printf "| %-5s | %13.3f | %17.3f | %12.0f%% |\n" "$s" "$gm" "$cm" "$(awk -v a="$gm" -v b="$cm" 'BEGIN { print 100 * b / a }')"
+done
+echo "(2048x2048, 1 sample, camera and shadow rays only; target 70%)"
