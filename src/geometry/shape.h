@@ -70,7 +70,7 @@ typedef struct shape {
     int *parts;
     int part_count;
     size_t part_cap;
-    const struct shape *family;
+    const struct shape *family; /* a combination's (only they read it) */
     int part_of;              /* the combination it is a part of, or -1: it stands alone */
     /* A closed mesh as a part (mesh_part.c): its mesh's solid, owned by
      * the mesh; its triangles' materials when `material` is -1. */

@@ -399,9 +399,12 @@ static int add_shape(glint_scene *scene, int csg, const glint_shape *desc, const
     const shape *before = scene->shapes;
     if (grow((void **)&scene->shapes, &scene->shape_cap, scene->shape_count, sizeof(shape), "shapes", err))
         return -1;
-    /* Growing may have moved the array, which every combination points at. */
-    for (int i = 0; scene->shapes != before && i < scene->shape_count; i++)
-        scene->shapes[i].family = scene->shapes;
+    /* Growing may have moved the array, which every combination points at
+     * (and only they: a scene of thousands of plain shapes is not walked
+     * again at each doubling). */
+    for (int i = 0; scene->shapes != before && scene->combinations && i < scene->shape_count; i++)
+        if (scene->shapes[i].csg)
+            scene->shapes[i].family = scene->shapes;
     shape *parent = csg >= 0 ? &scene->shapes[csg] : NULL;
     if (parent && !array_reserve((void **)&parent->parts, &parent->part_cap, (size_t)parent->part_count + 1,
                                  sizeof *parent->parts)) {
@@ -441,6 +444,7 @@ static int add_shape(glint_scene *scene, int csg, const glint_shape *desc, const
             scene->emitters[scene->emitter_count++] = emitter;
         }
     }
+    scene->combinations += s->csg;
     return scene->shape_count++;
 }
 

@@ -30,6 +30,7 @@ struct glint_scene {
     shape *shapes;
     int shape_count;
     size_t shape_cap;
+    int combinations;         /* how many of the shapes are unions, intersections or differences */
     unsigned transform_ids;   /* the last transform number given to a part (shape.transform_id) */
     light *lights;
     int light_count;
