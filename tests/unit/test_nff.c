@@ -165,18 +165,26 @@ static void test_broken_files(void **state)
     }
 }
 
+/* The shared data folder (GLINT_SHARED_DATA), or the test skipped when
+ * its file `probe` is not there. */
+static const char *shared_data_or_skip(const char *probe)
+{
+    const char *data = getenv("GLINT_SHARED_DATA");
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", data ? data : "", probe);
+    FILE *f = data ? fopen(path, "r") : NULL;
+    if (!f)
+        skip();
+    fclose(f);
+    return data;
+}
+
 /* The seven SPD scenes load, each with its primitives: spheres and
  * cylinders or cones as shapes, a fill's polygons one flat mesh and its
  * smooth patches one smooth mesh. */
 static void test_spd_scenes(void **state)
 {
-    const char *data = getenv("GLINT_SHARED_DATA");
-    char probe[4096];
-    snprintf(probe, sizeof probe, "%s/spd/balls.nff", data ? data : "");
-    FILE *f = data ? fopen(probe, "r") : NULL;
-    if (!f)
-        skip();
-    fclose(f);
+    const char *data = shared_data_or_skip("spd/balls.nff");
     const struct {
         const char *name;
         int shapes, lights, meshes, triangles;
@@ -228,13 +236,7 @@ static double *shrink(const unsigned char *srgb, int width, int height, int f)
  * 0.045); mount without its four glass balls is at 0.138. */
 static void test_spd_look_like_references(void **state)
 {
-    const char *data = getenv("GLINT_SHARED_DATA");
-    char probe[4096];
-    snprintf(probe, sizeof probe, "%s/spd/balls-reference.png", data ? data : "");
-    FILE *f = data ? fopen(probe, "r") : NULL;
-    if (!f)
-        skip();
-    fclose(f);
+    const char *data = shared_data_or_skip("spd/balls-reference.png");
     const struct {
         const char *name;
         double most;
