@@ -1,5 +1,6 @@
 /* accel_build.c - building the Embree device and scenes, and releasing them:
- * the shapes' user geometry (planes set aside for the queries), each mesh
+ * the shapes' user geometry (planes set aside for the queries), each sphere
+ * set's own, each mesh
  * placed once as world-space triangles of the top scene, and a mesh placed
  * more often as one triangle scene placed by Embree instances. Building
  * stops when the caller's cancel flag is set. */
@@ -42,7 +43,8 @@ static bool sort_shapes(accel *a)
     if (!a->prim_shape || !a->planes)
         return false;
     for (int i = 0; i < a->shape_count; i++) {
-        if (a->shapes[i].part_of >= 0)
+        /* Sphere sets are geometries of their own (add_sphere_sets). */
+        if (a->shapes[i].part_of >= 0 || a->shapes[i].set)
             continue;
         if (!shape_is_bounded(&a->shapes[i]))
             a->planes[a->plane_count++] = i;
@@ -63,6 +65,27 @@ static void add_shapes(accel *a)
     rtcCommitGeometry(g);
     rtcAttachGeometryByID(a->scene, g, SHAPES_ID);
     rtcReleaseGeometry(g);
+}
+
+/* Each sphere set as a user geometry of its own, one primitive per
+ * sphere, after the instances' IDs. */
+static void add_sphere_sets(accel *a)
+{
+    unsigned id = 1u + (unsigned)a->instance_count;
+    for (int i = 0; i < a->shape_count; i++) {
+        const shape *s = &a->shapes[i];
+        if (!s->set)
+            continue;
+        RTCGeometry g = rtcNewGeometry(a->device, RTC_GEOMETRY_TYPE_USER);
+        rtcSetGeometryUserPrimitiveCount(g, (unsigned)s->set->count);
+        rtcSetGeometryUserData(g, (void *)s);
+        rtcSetGeometryBoundsFunction(g, accel_spheres_bounds, (void *)s);
+        rtcSetGeometryIntersectFunction(g, accel_spheres_intersect);
+        rtcSetGeometryOccludedFunction(g, accel_spheres_occluded);
+        rtcCommitGeometry(g);
+        rtcAttachGeometryByID(a->scene, g, id++);
+        rtcReleaseGeometry(g);
+    }
 }
 
 /* A triangle geometry over the mesh's indices, with the given vertices and,
@@ -248,6 +271,7 @@ glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *er
         }
         if (a->prim_count > 0)
             add_shapes(a);
+        add_sphere_sets(a);
         rtcCommitScene(a->scene);
     }
     rtcSetDeviceErrorFunction(a->device, NULL, NULL);

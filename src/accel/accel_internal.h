@@ -7,7 +7,9 @@
  * shapes' user-geometry callbacks; accel_query.c runs the packet queries,
  * with the planes tested outside Embree, and the triangles' shadow filter.
  *
- * Analytic shapes are one user geometry, one primitive per shape; Embree's
+ * Analytic shapes are one user geometry, one primitive per shape, but for
+ * sphere sets, each a user geometry of its own, one primitive per sphere,
+ * at 1 + instance_count + j for set j (accel_spheres.c); Embree's
  * rays are single precision, so each query keeps the double-precision ray in
  * an extended intersection context and the callbacks test shapes exactly
  * with it. Planes, unbounded, would be a candidate for every ray; the
@@ -18,6 +20,7 @@
 #ifndef GLINT_ACCEL_ACCEL_INTERNAL_H
 #define GLINT_ACCEL_ACCEL_INTERNAL_H
 
+#include <math.h>
 #include <embree3/rtcore.h>
 #include "accel/accel.h"
 #include "accel/seen_set.h"
@@ -106,6 +109,37 @@ static inline unsigned hit_lane_uint(const struct RTCHitN *hit, unsigned n, unsi
     return ((const unsigned *)hit)[field * n + i];
 }
 
+/* Box lo..hi into *out, padded so the float ray in Embree's traversal
+ * never misses a box that the exact double test would hit. */
+static inline void accel_pad_bounds(vec3 lo, vec3 hi, struct RTCBounds *out)
+{
+    double pad = 1e-6 * (v3_length(v3_sub(hi, lo)) + fmax(v3_length(lo), v3_length(hi)));
+    out->lower_x = nextafterf((float)(lo.x - pad), -INFINITY);
+    out->lower_y = nextafterf((float)(lo.y - pad), -INFINITY);
+    out->lower_z = nextafterf((float)(lo.z - pad), -INFINITY);
+    out->upper_x = nextafterf((float)(hi.x + pad), INFINITY);
+    out->upper_y = nextafterf((float)(hi.y + pad), INFINITY);
+    out->upper_z = nextafterf((float)(hi.z + pad), INFINITY);
+}
+
+/* Records in lane i of a packet of n that it hit shape `index` at (t, part):
+ * for a combination, the part's shape it hit. A sphere set's hits, though
+ * from a geometry of their own, are marked as the shapes' (SHAPES_ID). */
+static inline void record_hit(const struct RTCIntersectFunctionNArguments *args, unsigned n, unsigned i, int index,
+                              double t, int part)
+{
+    query *q = (query *)args->context;
+    struct RTCRayHitN *rh = args->rayhit;
+    q->tmax[i] = t;
+    q->hit_t[i] = t;
+    q->hit_part[i] = part;
+    q->index[i] = index;
+    *ray_lane_tfar((struct RTCRayN *)rh, n, i) = float_far(t);
+    *rayhit_lane_uint(rh, n, HIT_GEOM, i) = SHAPES_ID;
+    *rayhit_lane_uint(rh, n, HIT_PRIM, i) = args->primID;
+    *rayhit_lane_uint(rh, n, HIT_INST, i) = RTC_INVALID_GEOMETRY_ID;
+}
+
 /* Multiplies into lane i what one crossing passes; false once nothing
  * passes. */
 static inline bool pass_through(query *q, unsigned i, const accel_hit *h)
@@ -135,6 +169,12 @@ static inline int instance_of(unsigned geom, unsigned inst)
 void accel_shape_bounds(const struct RTCBoundsFunctionArguments *args);
 void accel_shape_intersect(const struct RTCIntersectFunctionNArguments *args);
 void accel_shape_occluded(const struct RTCOccludedFunctionNArguments *args);
+
+/* The same callbacks for a sphere set's user geometry (accel_spheres.c),
+ * whose user data is the set's shape and whose primitives are its spheres. */
+void accel_spheres_bounds(const struct RTCBoundsFunctionArguments *args);
+void accel_spheres_intersect(const struct RTCIntersectFunctionNArguments *args);
+void accel_spheres_occluded(const struct RTCOccludedFunctionNArguments *args);
 
 /* The occlusion filter of a mesh some placement of which lets light through
  * (accel_query.c): Embree found a triangle on a shadow segment; the hit is

@@ -7,42 +7,13 @@
 #include <math.h>
 #include "accel/accel_internal.h"
 
-/* Pads float bounds so the float ray in Embree's traversal never misses a
- * box that the exact double test would hit. */
-static float pad_down(double v, double pad) { return nextafterf((float)(v - pad), -INFINITY); }
-static float pad_up(double v, double pad) { return nextafterf((float)(v + pad), INFINITY); }
-
-/* The bounds padded as above, for primitive primID's shape. */
+/* The bounds of primitive primID's shape, padded (accel_pad_bounds). */
 void accel_shape_bounds(const struct RTCBoundsFunctionArguments *args)
 {
     const accel *a = args->geometryUserPtr;
     vec3 lo, hi;
     shape_bounds(&a->shapes[a->prim_shape[args->primID]], &lo, &hi);
-    double pad = 1e-6 * (v3_length(v3_sub(hi, lo)) + fmax(v3_length(lo), v3_length(hi)));
-    struct RTCBounds *b = args->bounds_o;
-    b->lower_x = pad_down(lo.x, pad);
-    b->lower_y = pad_down(lo.y, pad);
-    b->lower_z = pad_down(lo.z, pad);
-    b->upper_x = pad_up(hi.x, pad);
-    b->upper_y = pad_up(hi.y, pad);
-    b->upper_z = pad_up(hi.z, pad);
-}
-
-/* Records in lane i of a packet of n that it hit shape `index` at (t, part):
- * for a combination, the part's shape it hit. */
-static inline void record_hit(const struct RTCIntersectFunctionNArguments *args, unsigned n, unsigned i, int index,
-                              double t, int part)
-{
-    query *q = (query *)args->context;
-    struct RTCRayHitN *rh = args->rayhit;
-    q->tmax[i] = t;
-    q->hit_t[i] = t;
-    q->hit_part[i] = part;
-    q->index[i] = index;
-    *ray_lane_tfar((struct RTCRayN *)rh, n, i) = float_far(t);
-    *rayhit_lane_uint(rh, n, HIT_GEOM, i) = args->geomID;
-    *rayhit_lane_uint(rh, n, HIT_PRIM, i) = args->primID;
-    *rayhit_lane_uint(rh, n, HIT_INST, i) = RTC_INVALID_GEOMETRY_ID;
+    accel_pad_bounds(lo, hi, args->bounds_o);
 }
 
 /* accel_shape_intersect's work for n = args->N lanes, one at a time: inlined twice,

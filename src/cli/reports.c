@@ -40,6 +40,11 @@ static int check_one(const cli_options *o, const char *path)
     print_count(" ", c.textures, "texture", "textures");
     print_count(", ", c.materials, "material", "materials");
     print_count(", ", c.shapes, "shape", "shapes");
+    if (c.sphere_sets > 0) {
+        print_count(" (", c.sphere_sets, "sphere set", "sphere sets");
+        print_count(" of ", c.set_spheres, "sphere", "spheres");
+        putchar(')');
+    }
     print_count(", ", c.lights, "light", "lights");
     if (c.meshes > 0) {
         print_count(", ", c.meshes, "mesh", "meshes");

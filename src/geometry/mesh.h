@@ -48,10 +48,13 @@ struct mesh_solid {
 };
 
 /* The material of shape s where a hit on its `part` is: its own, or for a
- * mesh part without one, the triangle's. */
+ * mesh part without one, the triangle's; for a sphere set, the sphere's. */
 static inline int shape_material(const shape *s, int part)
 {
-    return s->material >= 0 ? s->material : s->solid->view.materials[part & ~SHAPE_PART_FLIPPED];
+    if (s->material >= 0)
+        return s->material;
+    part &= ~SHAPE_PART_FLIPPED;
+    return s->set ? s->set->materials[part] : s->solid->view.materials[part];
 }
 
 /* Makes m->solid, once: checks that m is the closed surface of a solid

@@ -61,6 +61,13 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
     return init_as(s, shape_kind_of(desc->kind), desc, NULL, to_world, material, err);
 }
 
+void shape_init_sphere_set(shape *s, sphere_set *set)
+{
+    glint_shape desc = {.kind = GLINT_SHAPE_SPHERE};
+    init_as(s, &sphere_set_kind, &desc, NULL, NULL, -1, NULL);
+    s->set = set;
+}
+
 glint_status shape_init_mesh_part(shape *s, const struct mesh_solid *solid, const glint_transform *to_world,
                                   int material, glint_error *err)
 {

@@ -41,6 +41,16 @@ static inline quad_mask plane_hit4(vec3 point, vec3 n, const ray8 *r, int first,
 
 typedef struct shape_kind shape_kind;
 
+/* The spheres of a sphere set (glint_scene_add_spheres, sphere_set.c):
+ * plain spheres without a transform, each with its own material, held as
+ * one shape at a fraction of the memory a shape each would take. Its
+ * shape's hits name the sphere as their part. */
+typedef struct sphere_set {
+    int count;
+    double (*balls)[4];       /* each sphere's centre x, y, z and radius */
+    int *materials;           /* each sphere's material */
+} sphere_set;
+
 /* A combination (csg.c) holds at most this many parts, nested at most this
  * deep: its walk keeps each part's next crossing on the stack. */
 #define SHAPE_MAX_PARTS 256
@@ -75,6 +85,7 @@ typedef struct shape {
     /* A closed mesh as a part (mesh_part.c): its mesh's solid, owned by
      * the mesh; its triangles' materials when `material` is -1. */
     const struct mesh_solid *solid;
+    sphere_set *set;          /* a sphere set's spheres, owned by the scene */
     bool csg;                 /* it is a combination (its kind's csg) */
     /* Its solid is convex, so shape_span_of answers for it: a kind with a
      * span, or an intersection of convex parts (shape_parts_changed). */
@@ -155,6 +166,10 @@ glint_status shape_init(shape *s, const glint_shape *desc, const glint_transform
  * `material` or, -1, its triangles' own. */
 glint_status shape_init_mesh_part(shape *s, const struct mesh_solid *solid, const glint_transform *transform,
                                   int material, glint_error *err);
+
+/* shape_init for a sphere set: s holds `set`'s spheres, whose values the
+ * caller has checked, and names one by its index as a hit's part. */
+void shape_init_sphere_set(shape *s, sphere_set *set);
 
 /* Makes s move over the shutter through `count` (2 or more) invertible
  * world transforms, evenly spaced, in straight lines between them (each
@@ -259,11 +274,15 @@ void shape_left_behind_rule(const shape *s, bool *always, bool *when_leaving);
  * finite area (a plane), which fills neither. */
 double shape_sample(const shape *s, double u1, double u2, vec3 *p, vec3 *n);
 
-/* The centre of s in object space (its kind's `center`): where spherical
- * and cylindrical mappings are centred unless they give their own. */
-static inline vec3 shape_center(const shape *s)
+/* The centre of s in object space (its kind's `center`; for a sphere set,
+ * that of its sphere `part`): where spherical and cylindrical mappings are
+ * centred unless they give their own. */
+static inline vec3 shape_center(const shape *s, int part)
 {
-    return s->center;
+    if (!s->set)
+        return s->center;
+    const double *ball = s->set->balls[part & ~SHAPE_PART_FLIPPED];
+    return v3(ball[0], ball[1], ball[2]);
 }
 
 

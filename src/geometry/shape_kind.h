@@ -42,7 +42,8 @@ struct shape_kind {
     /* Checks what the table cannot (rules across fields) and fills the
      * fields of s derived from s->desc; NULL: nothing to do. */
     glint_status (*init)(shape *s, glint_error *err);
-    /* shape_intersect for a ray already in object space. */
+    /* shape_intersect for a ray already in object space (NULL only for a
+     * sphere set). */
     bool (*intersect)(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
     /* For a convex solid: where r's whole line is inside it (out->t_in,
      * t_out, part_in, part_out), in one go; false when the line misses
@@ -90,6 +91,11 @@ extern const shape_kind sphere_kind, plane_kind, polygon_kind, box_kind, cylinde
  * registry, as a scene file's `mesh` is no shape and only
  * glint_scene_add_mesh_part makes one. */
 extern const shape_kind mesh_part_kind;
+
+/* Many spheres as one shape (sphere_set.c): not in the registry either,
+ * as only glint_scene_add_spheres makes one. It has no intersect: the
+ * accelerator tests its spheres one by one (accel_spheres.c). */
+extern const shape_kind sphere_set_kind;
 
 /* "a" or "an", as the name of a kind of object takes it in a message ("an
  * intersection"). */

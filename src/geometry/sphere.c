@@ -1,15 +1,12 @@
 /* sphere.c - spheres in object space: centre and radius. */
 #include <stddef.h>
 #include "geometry/shape_kind.h"
-#include "geometry/shape_math.h"
+#include "geometry/sphere_math.h"
 
 static bool sphere_span(const shape *s, const ray *r, shape_span *out)
 {
-    const glint_shape *d = &s->desc;
-    vec3 oc = v3_sub(r->o, d->center);
     *out = (shape_span){0};
-    return quadratic(v3_dot(r->d, r->d), 2 * v3_dot(oc, r->d), v3_dot(oc, oc) - d->radius * d->radius, &out->t_in,
-                     &out->t_out);
+    return sphere_span_at(s->desc.center, s->desc.radius, r, &out->t_in, &out->t_out);
 }
 
 /* sphere_span for four rays: the same arithmetic in each lane. A lane
@@ -31,40 +28,12 @@ static quad_mask sphere_span4(const shape *s, const quad_ray *r, quad_span *out)
 
 static bool sphere_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit)
 {
-    shape_span span;
-    return sphere_span(s, r, &span) && span_hit(&span, tmin, tmax, hit);
+    return sphere_hit_at(s->desc.center, s->desc.radius, r, tmin, tmax, hit);
 }
 
 static quad_mask sphere_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_hit *hit)
 {
-    quad_f64 *t = &hit->t;
-    const glint_shape *d = &s->desc;
-    quad_f64 dx = quad_load(r->dx + first), dy = quad_load(r->dy + first), dz = quad_load(r->dz + first);
-    quad_f64 ocx = quad_load(r->ox + first) - quad_splat(d->center.x);
-    quad_f64 ocy = quad_load(r->oy + first) - quad_splat(d->center.y);
-    quad_f64 ocz = quad_load(r->oz + first) - quad_splat(d->center.z);
-    quad_f64 a = quad_dot(dx, dy, dz, dx, dy, dz);
-    quad_f64 b = quad_splat(2) * quad_dot(ocx, ocy, ocz, dx, dy, dz);
-    quad_f64 c = quad_dot(ocx, ocy, ocz, ocx, ocy, ocz) - quad_splat(d->radius * d->radius);
-    quad_f64 t0, t1;
-    quad_mask real = quadratic4(a, b, c, &t0, &t1);
-    /* sphere_intersect's offers with tmin 0: t0 if it lies in (0, tmax),
-     * else t1 if that does (t1 < t0 is never true). Roots both zero are
-     * refused by either. */
-    quad_mask near = (t0 > quad_splat(0)) & (t0 < tmax), far = (t1 > quad_splat(0)) & (t1 < tmax);
-    *t = quad_select(near, t0, t1);
-    quad_mask hits = real & (near | far);
-    /* A zero direction (never from glint's own rays) takes the scalar path. */
-    quad_mask flat = a == quad_splat(0);
-    for (int k = 0; k < QUAD; k++) {
-        if (!flat[k])
-            continue;
-        ray one = ray8_get(r, first + k);
-        shape_hit h = {0};
-        hits[k] = sphere_intersect(s, &one, 0, tmax[k], &h) ? -1 : 0;
-        (*t)[k] = h.t;
-    }
-    return hits;
+    return sphere_hits4_at(s->desc.center, s->desc.radius, r, first, tmax, &hit->t);
 }
 
 /* u is the longitude (0.5 at +z, seam at -z), v runs from 0 at the north

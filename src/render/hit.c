@@ -6,13 +6,15 @@
 #include "render/hit.h"
 #include "render/surface_coords.h"
 
-/* Whether every surface of s blocks all light: its material's, or every
- * part's of a combination. */
+/* Whether every surface of s blocks all light: its material's, every
+ * part's of a combination, or each sphere's or triangle's of a set or
+ * mesh part without one. */
 static bool shape_blocks(const glint_scene *scene, const shape *s)
 {
     if (s->material < 0 && !s->csg) {
-        for (int k = 0; k < s->solid->view.triangle_count; k++)
-            if (!material_is_opaque(&scene->materials[s->solid->view.materials[k]].m))
+        int parts = s->set ? s->set->count : s->solid->view.triangle_count;
+        for (int k = 0; k < parts; k++)
+            if (!material_is_opaque(&scene->materials[shape_material(s, k)].m))
                 return false;
         return true;
     }
@@ -34,7 +36,7 @@ color hit_texture_color(const glint_scene *scene, const accel_hit *h, const glin
     const shape *sh = h->shape >= 0 ? shape_at(&scene->shapes[h->shape], h->time, &moved) : NULL;
     if (sh && t->mapping.kind == GLINT_MAP_UV && !t->kind->solid)
         shape_surface_uv(sh, s);
-    vec3 center = sh ? shape_center(sh) : mesh_center(hit_mesh(scene, h));
+    vec3 center = sh ? shape_center(sh, s->part) : mesh_center(hit_mesh(scene, h));
     if (!(width > 0) || !texture_filters(t))
         return texture_eval(t, s, center, (uv_extent){0, 0});
     double u, v;

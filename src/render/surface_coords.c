@@ -13,7 +13,7 @@ void coord_spot_init(const glint_scene *scene, const accel_hit *h, const surface
     if (h->shape >= 0) {
         at->sh = shape_at(&scene->shapes[h->shape], h->time, &at->moved_shape);
         at->to_object = at->sh->has_transform ? &at->sh->to_object : NULL;
-        at->center = shape_center(at->sh);
+        at->center = shape_center(at->sh, s->part);
     } else {
         const instance *inst = instance_at(&scene->instances[h->instance], h->time, &at->moved_instance);
         at->me = hit_mesh(scene, h);

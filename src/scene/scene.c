@@ -44,8 +44,15 @@ void glint_scene_free(glint_scene *s)
     id_table_free(&s->texture_names);
     id_table_free(&s->material_names);
     scene_motion_free(s);
-    for (int i = 0; i < s->shape_count; i++)
+    for (int i = 0; i < s->shape_count; i++) {
         free(s->shapes[i].parts);
+        sphere_set *set = s->shapes[i].set;
+        if (set) {
+            free(set->balls);
+            free(set->materials);
+            free(set);
+        }
+    }
     free(s->shapes);
     free(s->lights);
     free(s->area_lights);
@@ -454,6 +461,65 @@ int glint_scene_add_shape(glint_scene *scene, const glint_shape *desc, int mat, 
     return add_shape(scene, -1, desc, NULL, mat, xf, err);
 }
 
+/* Checks sphere k of glint_scene_add_spheres' arrays. */
+static glint_status check_set_sphere(const glint_scene *scene, int k, glint_vec3 center, double radius, int mat,
+                                     glint_error *err)
+{
+    if (!isfinite(center.x) || !isfinite(center.y) || !isfinite(center.z))
+        return error_set(err, GLINT_ERR_INVALID, "sphere %d of the set: its centre is not finite", k);
+    if (!(radius > 0) || !isfinite(radius))
+        return error_set(err, GLINT_ERR_INVALID, "sphere %d of the set: radius must be positive, got %g", k, radius);
+    if (mat < 0 || mat >= scene->material_count)
+        return error_set(err, GLINT_ERR_INVALID, "sphere %d of the set: material %d does not exist", k, mat);
+    if (rgb_max(material_emission(&scene->materials[mat].m)) > 0)
+        return error_set(err, GLINT_ERR_INVALID,
+                         "sphere %d of the set: material %d glows, and a set's spheres light nothing: add glowing "
+                         "spheres one by one", k, mat);
+    return GLINT_OK;
+}
+
+int glint_scene_add_spheres(glint_scene *scene, int count, const glint_vec3 *centers, const double *radii,
+                            const int *materials, glint_error *err)
+{
+    if (count < 1 || count > SCENE_MAX_ITEMS) {
+        error_set(err, GLINT_ERR_INVALID, "a sphere set holds 1 to %d spheres, got %d", SCENE_MAX_ITEMS, count);
+        return -1;
+    }
+    if (!centers || !radii || !materials) {
+        error_set(err, GLINT_ERR_INVALID, "a sphere set needs its centres, radii and materials");
+        return -1;
+    }
+    for (int k = 0; k < count; k++)
+        if (check_set_sphere(scene, k, centers[k], radii[k], materials[k], err))
+            return -1;
+    if (grow((void **)&scene->shapes, &scene->shape_cap, scene->shape_count, sizeof(shape), "shapes", err))
+        return -1;
+    sphere_set *set = calloc(1, sizeof *set);
+    if (set) {
+        set->balls = malloc((size_t)count * sizeof *set->balls);
+        set->materials = malloc((size_t)count * sizeof *set->materials);
+    }
+    if (!set || !set->balls || !set->materials) {
+        if (set) {
+            free(set->balls);
+            free(set->materials);
+        }
+        free(set);
+        error_set(err, GLINT_ERR_NOMEM, "out of memory adding a sphere set");
+        return -1;
+    }
+    set->count = count;
+    for (int k = 0; k < count; k++) {
+        set->balls[k][0] = centers[k].x;
+        set->balls[k][1] = centers[k].y;
+        set->balls[k][2] = centers[k].z;
+        set->balls[k][3] = radii[k];
+    }
+    memcpy(set->materials, materials, (size_t)count * sizeof *materials);
+    shape_init_sphere_set(&scene->shapes[scene->shape_count], set);
+    return scene->shape_count++;
+}
+
 int glint_scene_add_part(glint_scene *scene, int csg, const glint_shape *desc, int mat, const glint_transform *xf,
                          glint_error *err)
 {
@@ -516,9 +582,14 @@ const char *glint_scene_get_output(const glint_scene *scene)
 glint_scene_counts glint_scene_get_counts(const glint_scene *scene)
 {
     glint_scene_counts c = {scene->texture_count, scene->material_count, scene->shape_count, scene->light_count,
-                            scene->mesh_count, scene->instance_count, 0};
+                            scene->mesh_count, scene->instance_count, 0, 0, 0};
     for (int i = 0; i < scene->mesh_count; i++)
         c.triangles += scene->meshes[i].triangle_count;
+    for (int i = 0; i < scene->shape_count; i++)
+        if (scene->shapes[i].set) {
+            c.sphere_sets++;
+            c.set_spheres += scene->shapes[i].set->count;
+        }
     return c;
 }
 

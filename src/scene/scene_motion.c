@@ -51,6 +51,9 @@ glint_status glint_scene_move_shape(glint_scene *scene, int index, int count, co
     if (s->kind->csg)
         return error_set(err, GLINT_ERR_INVALID, "%s %s cannot move over the shutter: move its parts",
                          object_article(s->kind->name), s->kind->name);
+    if (s->set)
+        return error_set(err, GLINT_ERR_INVALID, "a sphere set cannot move over the shutter: add moving spheres "
+                         "one by one");
     transform *copy;
     glint_status st = copy_poses(count, poses, &copy, err);
     if (st)

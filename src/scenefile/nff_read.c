@@ -34,6 +34,16 @@ typedef struct gathered_mesh {
     int vertex_count, triangle_count;
 } gathered_mesh;
 
+/* Spheres gathered into one sphere set: a million spheres take a tenth of
+ * the memory and load time they would as a shape each. */
+typedef struct gathered_spheres {
+    glint_vec3 *centers;
+    double *radii;
+    int *materials;
+    size_t center_cap, radius_cap, material_cap;
+    int count;
+} gathered_spheres;
+
 typedef struct nff {
     const char *name, *p, *end, *line_start;
     int line;
@@ -45,6 +55,7 @@ typedef struct nff {
     bool failed;
     bool viewed;                /* a `v` has been read */
     int material;               /* the last `f`'s, or -1 */
+    bool transmits;             /* the last `f` lets light through */
     /* Lights are added once all are known: each gets sqrt(L) / (2 L). */
     glint_light *lights;
     size_t light_cap;
@@ -52,6 +63,9 @@ typedef struct nff {
     /* The smooth patches (`pp`) and the flat polygons (`p`) since the last
      * `f`: one mesh each. */
     gathered_mesh smooth, flat;
+    /* The spheres: those whose fill lets light through apart, so that a
+     * shadow ray stops at the others without asking what passes. */
+    gathered_spheres opaque, clear;
     polygon_work polygon;
 } nff;
 
@@ -246,6 +260,7 @@ static bool read_fill(nff *n)
     if (k < 0)
         return fail_call(n, &call);
     n->material = k;
+    n->transmits = v[6] != 0;
     return true;
 }
 
@@ -348,15 +363,41 @@ static bool read_sphere(nff *n)
 {
     double v[4];
     int k = -1;
-    if (!numbers(n, "a sphere's value", v, 4) || !material(n, &k))
+    if (!numbers(n, "a sphere's value", v, 4))
         return false;
-    glint_shape s = glint_shape_default(GLINT_SHAPE_SPHERE);
-    s.center = (glint_vec3){v[0], v[1], v[2]};
-    s.radius = fabs(v[3]);
+    if (v[3] == 0)
+        return fail(n, "a sphere's radius must not be 0");
+    if (!material(n, &k))
+        return false;
+    gathered_spheres *g = n->transmits ? &n->clear : &n->opaque;
+    size_t need = (size_t)g->count + 1;
+    if (!array_reserve((void **)&g->centers, &g->center_cap, need, sizeof *g->centers) ||
+        !array_reserve((void **)&g->radii, &g->radius_cap, need, sizeof *g->radii) ||
+        !array_reserve((void **)&g->materials, &g->material_cap, need, sizeof *g->materials)) {
+        fail(n, "out of memory");
+        n->err->status = GLINT_ERR_NOMEM;
+        return false;
+    }
+    g->centers[g->count] = (glint_vec3){v[0], v[1], v[2]};
+    g->radii[g->count] = fabs(v[3]);
+    g->materials[g->count++] = k;
+    return true;
+}
+
+/* Adds the spheres gathered as one sphere set. */
+static bool flush_spheres(nff *n, gathered_spheres *g)
+{
     glint_error call;
-    if (glint_scene_add_shape(n->scene, &s, k, NULL, &call) < 0)
+    if (g->count > 0 && glint_scene_add_spheres(n->scene, g->count, g->centers, g->radii, g->materials, &call) < 0)
         return fail_call(n, &call);
     return true;
+}
+
+static void free_spheres(gathered_spheres *g)
+{
+    free(g->centers);
+    free(g->radii);
+    free(g->materials);
 }
 
 /* A polygon's or patch's vertex count: a whole number from 3. */
@@ -424,7 +465,7 @@ static bool flush_mesh(nff *n, gathered_mesh *g)
 {
     if (g->triangle_count == 0)
         return true;
-    glint_mesh_data m = {.positions = g->positions, .normals = g == &n->smooth ? g->normals : NULL,
+    glint_mesh_data m = {.positions = g->positions, .normals = g->normals,
                          .vertex_count = g->vertex_count, .indices = g->indices,
                          .triangle_count = g->triangle_count, .material = n->material};
     glint_error call;
@@ -555,9 +596,11 @@ static glint_scene *read_nff(const char *data, size_t size, const char *name, gl
         error_set(err, GLINT_ERR_INVALID, "%s: no view: an NFF file starts with 'v'", name);
         n.failed = true;
     }
-    if (!n.failed && flush_meshes(&n))
+    if (!n.failed && flush_meshes(&n) && flush_spheres(&n, &n.opaque) && flush_spheres(&n, &n.clear))
         add_lights(&n);
     free(n.lights);
+    free_spheres(&n.opaque);
+    free_spheres(&n.clear);
     free_mesh(&n.smooth);
     free_mesh(&n.flat);
     polygon_work_free(&n.polygon);

@@ -451,11 +451,33 @@ static int mesh_of_part(const glint_scene *s, const shape *part)
     return m;
 }
 
+/* A sphere set's spheres as items of the objects list, a sphere each:
+ * loaded again, they render the same. */
+static void write_sphere_set(const plan *p, const sphere_set *set, int indent)
+{
+    glint_shape sphere = glint_shape_default(GLINT_SHAPE_SPHERE);
+    for (int k = 0; k < set->count; k++) {
+        sphere.center = (glint_vec3){set->balls[k][0], set->balls[k][1], set->balls[k][2]};
+        sphere.radius = set->balls[k][3];
+        ymap m = object_begin(p, indent, false);
+        ymap_key(&m, "type");
+        fputs(sphere_kind.name, p->f);
+        yw_params(&m, sphere_kind.params, &sphere, false);
+        ymap_key(&m, "material");
+        material_value(p, set->materials[k]);
+        object_end(p, &m);
+    }
+}
+
 /* Shape i as an item of an objects list indented by `indent`, and a
  * combination's parts as its own objects list. */
 static void write_shape(const plan *p, int i, int indent)
 {
     const shape *sh = &p->scene->shapes[i];
+    if (sh->set) {
+        write_sphere_set(p, sh->set, indent);
+        return;
+    }
     if (sh->solid) {
         write_mesh(p, mesh_of_part(p->scene, sh), indent, sh->material, sh->has_transform, &sh->to_world);
         return;

@@ -52,6 +52,12 @@ two="two.yaml: ok: 2 textures, 4 materials, 2 shapes, 2 lights, 2 meshes (3 tria
 expect "one of each" 0 "$one" -- --check one.yaml
 expect "one mesh" 0 "mesh.yaml: ok: 1 texture, 2 materials, 1 shape, 1 light, 1 mesh (1 triangle) placed once" -- --check mesh.yaml
 expect "several of each" 0 "$two" -- --check two.yaml
+# NFF spheres are sphere sets: one of the spheres of opaque fills, one of
+# those that let light through.
+printf '%s\n' v 'from 0 0 5' 'at 0 0 0' 'up 0 1 0' 'angle 40' 'hither 1' 'resolution 8 8' 'l 0 5 5' \
+    's 0 0 0 1' 's 2 0 0 1' 'f 1 1 1 1 0 0 0.5 1.5' 's -2 0 0 1' 'c 0 0 0 1 0 2 0 1' >spheres.nff
+expect "sphere sets" 0 "spheres.nff: ok: 0 textures, 2 materials, 3 shapes (2 sphere sets of 3 spheres), 1 light" \
+    -- --check spheres.nff
 expect "nothing in the scene" 0 "bare.yaml: ok: 0 textures, 0 materials, 0 shapes, 0 lights" -- --check bare.yaml
 expect "several files, stdin among them, all valid" 0 "$two
 <stdin>: ok: 1 texture, 1 material, 1 shape, 1 light" -- two.yaml --check -

@@ -30,7 +30,7 @@ static glint_scene *load(const char *text, glint_error *err)
 
 /* Every entity: the view's camera and size, the background, lights with
  * and without colour (each sqrt(L) / (2 L) of it; no ambient light),
- * a fill's material, a sphere, a cone and a cylinder along their axes,
+ * a fill's material, a sphere (its radius's size), a cone and a cylinder along their axes,
  * open, a polygon and a smooth patch. */
 static void test_every_entity(void **state)
 {
@@ -64,10 +64,13 @@ static void test_every_entity(void **state)
     assert_near(m->color.g, glint_srgb_to_linear(0.5), 1e-15);
     assert_true(m->diffuse == 0.8 && m->specular == 0.3 && m->reflectivity == 0.3 && m->shininess == 20);
     assert_true(m->refraction == 0.25 && m->ior == 1.5 && m->transparency == 0 && m->tint == 1);
+    /* The spheres are one sphere set, added last. */
     assert_int_equal(s->shape_count, 3);
-    assert_int_equal(s->shapes[0].desc.kind, GLINT_SHAPE_SPHERE);
-    assert_true(s->shapes[0].desc.radius == 0.5);
-    const shape *cone = &s->shapes[1], *tube = &s->shapes[2];
+    const sphere_set *balls = s->shapes[2].set;
+    assert_non_null(balls);
+    assert_int_equal(balls->count, 1);
+    assert_true(balls->balls[0][2] == 0.5 && balls->balls[0][3] == 0.5 && balls->materials[0] == 0);
+    const shape *cone = &s->shapes[0], *tube = &s->shapes[1];
     assert_int_equal(cone->desc.kind, GLINT_SHAPE_CONE);
     assert_true(cone->desc.radius == 0.3 && cone->desc.top_radius == 0.1 && cone->desc.height == 2);
     assert_false(cone->desc.capped || cone->desc.top_capped);
@@ -150,6 +153,7 @@ static void test_broken_files(void **state)
         const char *body, *message;
     } AFTER_VIEW[] = {
         {"c 0 0 0 1 0 0 0 1\n", "t.nff:8:17: a cone's base and apex are the same point"},
+        {"s 1 2 3 -0\n", "t.nff:8:9: a sphere's radius must not be 0"},
         {"p 2\n0 0 0\n1 0 0\n", "t.nff:8:3: a polygon's vertex count must be a whole number from 3 to 1048576, got 2"},
         {"p 3\n0 0 0\n1 0 0\n2 0 0\n", NULL},
         {"pp 3\n0 0 0 0 0 1\n1 0 0 0 0 1\n", "t.nff:11:1: the file ends where a patch's vertex or normal should be"},
@@ -179,19 +183,20 @@ static const char *shared_data_or_skip(const char *probe)
     return data;
 }
 
-/* The seven SPD scenes load, each with its primitives: spheres and
- * cylinders or cones as shapes, a fill's polygons one flat mesh and its
- * smooth patches one smooth mesh. */
+/* The seven SPD scenes load, each with its primitives: cylinders or cones
+ * as shapes, the spheres as sphere sets (those that let light through
+ * apart), a fill's polygons one flat mesh and its smooth patches one
+ * smooth mesh. */
 static void test_spd_scenes(void **state)
 {
     const char *data = shared_data_or_skip("spd/balls.nff");
     const struct {
         const char *name;
-        int shapes, lights, meshes, triangles;
+        int shapes, sets, spheres, lights, meshes, triangles;
     } SPD[] = {
-        {"balls", 7381, 3, 1, 2},     {"gears", 0, 5, 65, 36610}, {"mount", 4, 1, 1, 8192},
-        {"rings", 8400, 3, 1, 2},     {"teapot", 0, 2, 3, 2328},  {"tetra", 0, 1, 1, 4096},
-        {"tree", 8190, 7, 1, 2},
+        {"balls", 1, 1, 7381, 3, 1, 2},    {"gears", 0, 0, 0, 5, 65, 36610}, {"mount", 1, 1, 4, 1, 1, 8192},
+        {"rings", 4201, 1, 4200, 3, 1, 2}, {"teapot", 0, 0, 0, 2, 3, 2328},  {"tetra", 0, 0, 0, 1, 1, 4096},
+        {"tree", 4096, 1, 4095, 7, 1, 2},
     };
     for (size_t i = 0; i < sizeof SPD / sizeof SPD[0]; i++) {
         char path[4200];
@@ -200,7 +205,10 @@ static void test_spd_scenes(void **state)
         glint_scene *s = glint_scene_load_file(path, NULL, &err);
         if (!s)
             fail_msg("%s", err.message);
-        assert_int_equal(s->shape_count, SPD[i].shapes);
+        glint_scene_counts c = glint_scene_get_counts(s);
+        assert_int_equal(c.shapes, SPD[i].shapes);
+        assert_int_equal(c.sphere_sets, SPD[i].sets);
+        assert_int_equal(c.set_spheres, SPD[i].spheres);
         assert_int_equal(s->light_count, SPD[i].lights);
         assert_int_equal(s->mesh_count, SPD[i].meshes);
         int triangles = 0;

@@ -249,7 +249,7 @@ static void uv_on(const glint_shape *d, glint_mapping m, vec3 p, double *u, doub
     glint_error err;
     assert_int_equal(shape_init(&s, d, NULL, 0, &err), GLINT_OK);
     surface at = at_object_point(p);
-    mapping_apply(&m, &at, shape_center(&s), u, v);
+    mapping_apply(&m, &at, shape_center(&s, 0), u, v);
 }
 
 /* Spherical and cylindrical mappings without a center go around the shape
