@@ -44,6 +44,7 @@ typedef struct loader {
     bool keyed;                                  /* some value was keyed */
     bool streaming;                              /* objects read while parsed: an attempt, silent,
                                                     given up at any problem (scene_file.c) */
+    struct sphere_run *spheres;                  /* plain spheres not yet added (read_spheres.c) */
 } loader;
 
 /* A model file already imported, so that every object placing it shares
@@ -181,5 +182,22 @@ bool read_transform(loader *l, const ynode *n, glint_transform *t);
 
 /* Adds one object (a shape, a group or a mesh), inside context outer. */
 void read_object(loader *l, const ynode *n, const context *outer);
+
+/* ----------------------------------------------------- read_spheres.c */
+
+/* Takes sphere s, read for an object inside ctx, into the run of plain
+ * spheres when it is one (no transform, not a part of a combination, a
+ * material that does not glow, nothing keyed so far); false when the
+ * caller adds it as a shape, after spheres_flush. */
+bool spheres_gather(loader *l, const glint_shape *s, const context *ctx);
+
+/* Adds the run of plain spheres gathered so far, in file order: a run of
+ * SPHERE_RUN or more as one sphere set (glint_scene_add_spheres), a
+ * shorter one a shape each. Called before any other object is added and
+ * at the end of the objects. */
+void spheres_flush(loader *l);
+
+/* Frees the run, added or not. */
+void spheres_free(loader *l);
 
 #endif

@@ -262,6 +262,9 @@ void read_object(loader *l, const ynode *n, const context *outer)
     int type = object_type(l, n, &kind);
     if (type < 0)
         return;
+    /* Whatever else comes adds after the spheres before it. */
+    if (kind != &sphere_kind)
+        spheres_flush(l);
     const char *keys[24];
     int count = 0;
     if (type == OBJECT_SHAPE) {
@@ -336,8 +339,11 @@ void read_object(loader *l, const ynode *n, const context *outer)
     read_params(l, n, kind->params, kind->name, &s);
     if (ctx.material == -1)
         diag_at(&l->d, n, "%s needs 'material'", kind->name);
+    if (ctx.material < 0 || l->d.count != before || spheres_gather(l, &s, &ctx))
+        return;
+    spheres_flush(l);
     glint_error err;
-    if (ctx.material >= 0 && l->d.count == before && add_to(l, &ctx, &s, &ctx.to_world, &err) < 0)
+    if (add_to(l, &ctx, &s, &ctx.to_world, &err) < 0)
         diag_error(&l->d, n, &err);
 }
 

@@ -353,6 +353,9 @@ static glint_scene *load_once(const glint_load_options *o, glint_error *err, con
     l.fog = (glint_fog){.kind = GLINT_FOG_NONE, .color = {1, 1, 1}};
     body(&l, data, size, name);
     if (l.d.count == 0)
+        spheres_flush(&l);
+    spheres_free(&l);
+    if (l.d.count == 0)
         finish(&l, name);
     for (int i = 0; i < l.doc_count; i++)
         ydoc_free(&l.docs[i]);

@@ -1,8 +1,8 @@
 /* test_sphere_set.c - sphere sets (glint_scene_add_spheres): their hits
  * found exactly and named by sphere, the same image as the spheres added
  * one by one (textures, glass, shadows through it, mirrors), the checks on
- * their values with the exact messages, and a scene file written from a
- * set that renders the same. */
+ * their values with the exact messages, a scene file written from a set
+ * that renders the same, and which spheres of a scene file become sets. */
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -174,6 +174,56 @@ static void test_scene_file_keeps_the_picture(void **state)
     free(text);
 }
 
+/* Appends `count` plain spheres, on a line from x, to the scene text at *p. */
+static void put_spheres(char **p, int count, double x, const char *indent)
+{
+    for (int i = 0; i < count; i++)
+        *p += sprintf(*p, "%s- {type: sphere, center: [%g, 0, -9], radius: 0.2, material: m}\n", indent, x + 0.5 * i);
+}
+
+/* A scene file's runs of 256 or more plain spheres become sphere sets, in
+ * their place among the objects; shorter runs, glowing spheres, moved ones
+ * and any sphere of an animated scene stay a shape each. */
+static void test_scene_file_runs_become_sets(void **state)
+{
+    char *text = malloc(200000), *p = text;
+    assert_non_null(text);
+    p += sprintf(p, "materials:\n  m: {color: [1, 1, 1]}\n  lamp: {emission: [1, 1, 1]}\nobjects:\n");
+    put_spheres(&p, 300, -70, "");
+    p += sprintf(p, "- {type: box, min: [-1, -1, -12], max: [1, 1, -10], material: m}\n");
+    put_spheres(&p, 10, 0, "");
+    p += sprintf(p, "- {type: sphere, radius: 0.5, center: [0, 3, -9], material: lamp}\n");
+    p += sprintf(p, "- type: group\n  transform: [{translate: [0, 1, 0]}]\n  objects:\n");
+    put_spheres(&p, 300, -70, "  ");
+    put_spheres(&p, 256, -60, "");
+    glint_error err;
+    glint_scene *s = glint_scene_load_memory(text, strlen(text), "runs.yaml", NULL, &err);
+    if (!s)
+        fail_msg("%s", err.message);
+    assert_int_equal(s->shape_count, 1 + 1 + 10 + 1 + 300 + 1);
+    assert_non_null(s->shapes[0].set);
+    assert_int_equal(s->shapes[0].set->count, 300);
+    assert_true(s->shapes[0].set->balls[299][0] == -70 + 0.5 * 299);
+    assert_int_equal(s->shapes[1].desc.kind, GLINT_SHAPE_BOX);
+    for (int i = 2; i < 2 + 10 + 1 + 300; i++)
+        assert_null(s->shapes[i].set);
+    assert_int_equal(s->emitter_count, 1);
+    assert_int_equal(s->shapes[313].set->count, 256);
+    glint_scene_free(s);
+
+    /* Something keyed before the spheres: a shape each. */
+    p = text + sprintf(text, "camera: {position: {keys: [[0, [0, 0, 5]], [1, [0, 0, 6]]]}}\n"
+                             "materials:\n  m: {color: [1, 1, 1]}\nobjects:\n");
+    put_spheres(&p, 300, -70, "");
+    s = glint_scene_load_memory(text, strlen(text), "keyed.yaml", NULL, &err);
+    if (!s)
+        fail_msg("%s", err.message);
+    assert_int_equal(s->shape_count, 300);
+    assert_null(s->shapes[0].set);
+    glint_scene_free(s);
+    free(text);
+}
+
 /* Adds a set of one sphere and checks the error it gets. */
 static void expect_refused(glint_scene *s, glint_vec3 center, double radius, int mat, const char *message)
 {
@@ -229,6 +279,7 @@ int main(void)
         cmocka_unit_test(test_hits_name_their_sphere),
         cmocka_unit_test(test_renders_as_its_spheres),
         cmocka_unit_test(test_scene_file_keeps_the_picture),
+        cmocka_unit_test(test_scene_file_runs_become_sets),
         cmocka_unit_test(test_values_are_checked),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
