@@ -136,12 +136,6 @@ static uint32_t key_hash(uint8_t question, const char *path)
     return id_hash_text(path) ^ question;
 }
 
-static uint32_t stored_hash(const void *answers, uint32_t id)
-{
-    const answer *a = &((const answer *)answers)[id];
-    return key_hash(a->question, a->path);
-}
-
 static bool stored_equal(const void *answers, uint32_t id, const void *key)
 {
     const answer *a = &((const answer *)answers)[id];
@@ -165,8 +159,7 @@ static answer *add(file_log *log, const answer *a)
     if (log->count < UINT32_MAX - 1 &&
         array_reserve((void **)&log->answers, &log->cap, log->count + 1, sizeof *log->answers)) {
         log->answers[log->count] = *a;
-        if (id_table_add(&log->index, key_hash(a->question, a->path), (uint32_t)log->count, stored_hash,
-                         log->answers))
+        if (id_table_add(&log->index, key_hash(a->question, a->path), (uint32_t)log->count))
             return &log->answers[log->count++];
     }
     free(a->path);

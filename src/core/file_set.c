@@ -11,11 +11,6 @@ static uint32_t id_hash(file_id f)
     return id_hash_words(words, 4);
 }
 
-static uint32_t stored_hash(const void *files, uint32_t id)
-{
-    return id_hash(((const file_id *)files)[id]);
-}
-
 static bool stored_equal(const void *files, uint32_t id, const void *key)
 {
     const file_id *a = &((const file_id *)files)[id], *b = key;
@@ -38,7 +33,7 @@ long file_set_add(file_set *s, dev_t dev, ino_t ino)
     if (s->count >= UINT32_MAX - 1 || !array_reserve((void **)&s->files, &s->cap, s->count + 1, sizeof *s->files))
         return -1;
     s->files[s->count] = key;
-    if (!id_table_add(&s->index, id_hash(key), (uint32_t)s->count, stored_hash, s->files))
+    if (!id_table_add(&s->index, id_hash(key), (uint32_t)s->count))
         return -1;
     return (long)s->count++;
 }

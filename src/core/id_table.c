@@ -16,12 +16,12 @@ uint32_t id_hash_text(const char *s)
 static void place(id_table *t, uint32_t h, uint32_t id)
 {
     size_t i = (size_t)h & t->mask;
-    while (t->slots[i])
+    while (t->slots[i].id)
         i = (i + 1) & t->mask;
-    t->slots[i] = id + 1;
+    t->slots[i] = (id_slot){id + 1, h};
 }
 
-bool id_table_reserve(id_table *t, size_t n, id_hash_fn hash, const void *keys)
+bool id_table_reserve(id_table *t, size_t n)
 {
     size_t slots = t->slots ? t->mask + 1 : 0;
     if (n <= slots / 4 * 3)
@@ -34,22 +34,22 @@ bool id_table_reserve(id_table *t, size_t n, id_hash_fn hash, const void *keys)
         want *= 2;
     }
     size_t bytes;
-    uint32_t *fresh = size_mul(want, sizeof *fresh, &bytes) ? calloc(want, sizeof *fresh) : NULL;
+    id_slot *fresh = size_mul(want, sizeof *fresh, &bytes) ? calloc(want, sizeof *fresh) : NULL;
     if (!fresh)
         return false;
     id_table old = *t;
     t->slots = fresh;
     t->mask = want - 1;
     for (size_t i = 0; i < slots; i++)
-        if (old.slots[i])
-            place(t, hash(keys, old.slots[i] - 1), old.slots[i] - 1);
+        if (old.slots[i].id)
+            place(t, old.slots[i].hash, old.slots[i].id - 1);
     free(old.slots);
     return true;
 }
 
-bool id_table_add(id_table *t, uint32_t h, uint32_t new_id, id_hash_fn hash, const void *keys)
+bool id_table_add(id_table *t, uint32_t h, uint32_t new_id)
 {
-    if (!id_table_reserve(t, t->count + 1, hash, keys))
+    if (!id_table_reserve(t, t->count + 1))
         return false;
     place(t, h, new_id);
     t->count++;

@@ -23,13 +23,6 @@ static void position_key(const float *p, uint32_t key[3])
         key[k] = coordinate_bits(p[k]);
 }
 
-static uint32_t position_hash(const void *keys, uint32_t id)
-{
-    uint32_t key[3];
-    position_key((const float *)keys + 3 * (size_t)id, key);
-    return id_hash_words(key, 3);
-}
-
 static bool position_equal(const void *keys, uint32_t id, const void *key)
 {
     uint32_t stored[3];
@@ -40,12 +33,11 @@ static bool position_equal(const void *keys, uint32_t id, const void *key)
 bool crease_weld(const float *positions, size_t count, uint32_t *weld)
 {
     id_table t = {0};
-    bool ok = id_table_reserve(&t, count, position_hash, positions);
+    bool ok = id_table_reserve(&t, count);
     for (size_t i = 0; ok && i < count; i++) {
         uint32_t key[3];
         position_key(positions + 3 * i, key);
-        ok = id_table_intern(&t, id_hash_words(key, 3), key, (uint32_t)i, position_hash, position_equal, positions,
-                             &weld[i]);
+        ok = id_table_intern(&t, id_hash_words(key, 3), key, (uint32_t)i, position_equal, positions, &weld[i]);
     }
     id_table_free(&t);
     return ok;

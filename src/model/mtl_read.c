@@ -116,12 +116,6 @@ static void skip_options(scan_line *l, double *bm)
     }
 }
 
-static uint32_t name_hash(const void *keys, uint32_t id)
-{
-    const mtl_library *lib = keys;
-    return id_hash_text(lib->text + lib->items[id].name);
-}
-
 static bool name_equal(const void *keys, uint32_t id, const void *key)
 {
     const mtl_library *lib = keys;
@@ -145,8 +139,7 @@ static glint_status read_newmtl(mtl_library *lib, scan_line *l, scan_pos at, mtl
         return out_of_memory(l->file, err);
     const char *name = lib->text + offset;
     uint32_t id;
-    if (!id_table_intern(&lib->index, id_hash_text(name), name, (uint32_t)lib->count, name_hash, name_equal, lib,
-                         &id))
+    if (!id_table_intern(&lib->index, id_hash_text(name), name, (uint32_t)lib->count, name_equal, lib, &id))
         return out_of_memory(l->file, err);
     bool fresh = id == lib->count;
     if (fresh)

@@ -180,11 +180,6 @@ static uint32_t corner_key_hash(const obj_corner *c)
     return (id_hash_words(w, 3) & ~7u) | ((uint32_t)c->v & 7);
 }
 
-static uint32_t corner_hash(const void *keys, uint32_t id)
-{
-    return corner_key_hash((const obj_corner *)keys + id);
-}
-
 static bool corner_equal(const void *keys, uint32_t id, const void *key)
 {
     const obj_corner *a = (const obj_corner *)keys + id, *b = key;
@@ -241,12 +236,12 @@ glint_status obj_corner_id(obj_parser *r, const scan_line *l, scan_pos at, const
     }
     /* Sized from the vertices read so far: most files give them all first. */
     if (!r->corner_index.slots &&
-        !id_table_reserve(&r->corner_index, m->position_count, corner_hash, m->corners))
+        !id_table_reserve(&r->corner_index, m->position_count))
         return obj_out_of_memory(r, err);
     if (id_table_find(&r->corner_index, corner_key_hash(c), c, corner_equal, m->corners, id))
         return GLINT_OK;
     glint_status s = corner_new(r, l, at, c, id, err);
-    if (!s && !id_table_add(&r->corner_index, corner_key_hash(c), *id, corner_hash, m->corners))
+    if (!s && !id_table_add(&r->corner_index, corner_key_hash(c), *id))
         s = obj_out_of_memory(r, err);
     return s;
 }

@@ -46,11 +46,6 @@ static uint32_t vertex_hash(const vertex_key *key)
     return hash_u32((uint32_t)(h >> 32) ^ (uint32_t)h);
 }
 
-static uint32_t key_hash(const void *keys, uint32_t id)
-{
-    return vertex_hash((const vertex_key *)keys + id);
-}
-
 static bool key_equal(const void *keys, uint32_t id, const void *key)
 {
     return memcmp((const vertex_key *)keys + id, key, sizeof(vertex_key)) == 0;
@@ -62,8 +57,7 @@ static __attribute__((noinline)) glint_status join_key(joiner *j, const vertex_k
 {
     if (!array_reserve((void **)&j->keys, &j->cap, j->count + 1, sizeof *j->keys))
         return out_of_memory(j->file, j->err);
-    if (!id_table_intern(&j->index, vertex_hash(key), key, (uint32_t)j->count, key_hash, key_equal, j->keys,
-                         slot))
+    if (!id_table_intern(&j->index, vertex_hash(key), key, (uint32_t)j->count, key_equal, j->keys, slot))
         return out_of_memory(j->file, j->err);
     if (*slot == j->count) {
         if (j->count >= MODEL_MAX_COUNT)
@@ -149,7 +143,7 @@ static glint_status generate(obj_model *m, double crease, const char *file, obj_
         for (int k = 0; k < 3; k++)
             at[3 * n + k] = weld[m->corners[m->triangles[3 * (size_t)smooth[n] + k]].v];
     /* Sized for about one vertex a position, as on a smooth surface. */
-    if (!s && !id_table_reserve(&j.index, m->position_count, key_hash, j.keys))
+    if (!s && !id_table_reserve(&j.index, m->position_count))
         s = out_of_memory(file, err);
     /* The faces with normals, those between the ones listed as smooth. */
     for (size_t t = 0, n = 0; !s && t < nt; t++) {

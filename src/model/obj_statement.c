@@ -239,12 +239,6 @@ static glint_status read_name(obj_parser *r, scan_line *l, scan_pos at, const ch
     return GLINT_OK;
 }
 
-static uint32_t name_hash(const void *keys, uint32_t id)
-{
-    const obj_model *m = keys;
-    return id_hash_text(m->text + m->materials[id]);
-}
-
 static bool name_equal(const void *keys, uint32_t id, const void *key)
 {
     const obj_model *m = keys;
@@ -264,8 +258,8 @@ static glint_status read_usemtl(obj_parser *r, scan_line *l, scan_pos at, glint_
         return obj_out_of_memory(r, err);
     const char *name = m->text + offset;
     uint32_t id;
-    if (!id_table_intern(&r->name_index, id_hash_text(name), name, (uint32_t)m->material_count, name_hash,
-                         name_equal, m, &id))
+    if (!id_table_intern(&r->name_index, id_hash_text(name), name, (uint32_t)m->material_count, name_equal, m,
+                         &id))
         return obj_out_of_memory(r, err);
     if (id == m->material_count)
         m->materials[m->material_count++] = offset;

@@ -146,21 +146,11 @@ glint_status glint_scene_set_fog(glint_scene *scene, const glint_fog *fog, glint
     return s;
 }
 
-/* The hash tables' view of the names they hold: keys are the scene's
- * arrays of textures or materials, ids their indices. */
-static uint32_t texture_name_hash(const void *keys, uint32_t id)
-{
-    return id_hash_text(((const texture *)keys)[id].name);
-}
-
+/* The name tables' comparisons: keys are the scene's arrays of textures
+ * or materials, ids their indices. */
 static bool texture_name_equal(const void *keys, uint32_t id, const void *name)
 {
     return strcmp(((const texture *)keys)[id].name, name) == 0;
-}
-
-static uint32_t material_name_hash(const void *keys, uint32_t id)
-{
-    return id_hash_text(((const material *)keys)[id].name);
 }
 
 static bool material_name_equal(const void *keys, uint32_t id, const void *name)
@@ -191,7 +181,7 @@ static int append_texture(glint_scene *scene, texture *t, const char *name, glin
     if (!s)
         s = copy_name(&t->name, name, err);
     if (!s && name &&
-        !id_table_reserve(&scene->texture_names, scene->texture_names.count + 1, texture_name_hash, scene->textures))
+        !id_table_reserve(&scene->texture_names, scene->texture_names.count + 1))
         s = error_set(err, GLINT_ERR_NOMEM, "out of memory adding textures");
     if (s) {
         texture_release(t);
@@ -200,8 +190,7 @@ static int append_texture(glint_scene *scene, texture *t, const char *name, glin
     scene->textures[scene->texture_count] = *t;
     /* Room was reserved above: entering cannot fail. */
     if (name)
-        id_table_add(&scene->texture_names, id_hash_text(name), (uint32_t)scene->texture_count, texture_name_hash,
-                     scene->textures);
+        id_table_add(&scene->texture_names, id_hash_text(name), (uint32_t)scene->texture_count);
     return scene->texture_count++;
 }
 
@@ -326,8 +315,7 @@ int glint_scene_add_material(glint_scene *scene, const char *name, const glint_m
         grow((void **)&scene->materials, &scene->material_cap, scene->material_count, sizeof(material),
              "materials", err))
         return -1;
-    if (name && !id_table_reserve(&scene->material_names, scene->material_names.count + 1, material_name_hash,
-                                  scene->materials)) {
+    if (name && !id_table_reserve(&scene->material_names, scene->material_names.count + 1)) {
         error_set(err, GLINT_ERR_NOMEM, "out of memory adding materials");
         return -1;
     }
@@ -337,8 +325,7 @@ int glint_scene_add_material(glint_scene *scene, const char *name, const glint_m
     slot->m = *m;
     /* Room was reserved above: entering cannot fail. */
     if (name)
-        id_table_add(&scene->material_names, id_hash_text(name), (uint32_t)scene->material_count,
-                     material_name_hash, scene->materials);
+        id_table_add(&scene->material_names, id_hash_text(name), (uint32_t)scene->material_count);
     return scene->material_count++;
 }
 

@@ -110,12 +110,7 @@ static glint_status add_anchor(builder *b, yanchor **list, int *count, size_t *c
     return GLINT_OK;
 }
 
-/* The anchor table's view of doc->anchors. */
-static uint32_t anchor_hash(const void *keys, uint32_t id)
-{
-    return id_hash_text(((const yanchor *)keys)[id].name);
-}
-
+/* The anchor table's comparison of a stored anchor with a name. */
 static bool anchor_equal(const void *keys, uint32_t id, const void *name)
 {
     return strcmp(((const yanchor *)keys)[id].name, name) == 0;
@@ -132,8 +127,7 @@ static glint_status remember_anchor(builder *b, const yaml_char_t *name, ynode *
     if (s)
         return s;
     uint32_t id = (uint32_t)d->anchor_count - 1, first;
-    if (!id_table_intern(&b->anchor_ids, anchor_hash(d->anchors, id), name, id, anchor_hash, anchor_equal,
-                         d->anchors, &first) ||
+    if (!id_table_intern(&b->anchor_ids, id_hash_text((const char *)name), name, id, anchor_equal, d->anchors, &first) ||
         !array_reserve((void **)&b->latest, &b->latest_cap, (size_t)id + 1, sizeof *b->latest))
         return out_of_memory(b);
     /* A later anchor of the same name hides the earlier one, as in YAML. */
