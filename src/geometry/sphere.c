@@ -36,16 +36,17 @@ static quad_mask sphere_intersect4(const shape *s, const ray8 *r, int first, qua
     return sphere_hits4_at(s->desc.center, s->desc.radius, r, first, tmax, &hit->t);
 }
 
-/* u is the longitude (0.5 at +z, seam at -z), v runs from 0 at the north
- * (+y) pole to 1 at the south pole. */
-static void sphere_surface(const shape *s, int part, surface *out)
+/* About shape_center, the sphere's centre (a set's sphere `part`'s). u is
+ * the longitude (0.5 at +z, seam at -z), v runs from 0 at the north (+y)
+ * pole to 1 at the south pole. */
+void sphere_surface(const shape *s, int part, surface *out)
 {
-    out->n = v3_sub(out->p_obj, s->desc.center);
+    out->n = v3_sub(out->p_obj, shape_center(s, part));
 }
 
-static void sphere_uv(const shape *s, int part, surface *out)
+void sphere_uv(const shape *s, int part, surface *out)
 {
-    spherical_uv(v3_normalize(v3_sub(out->p_obj, s->desc.center)), &out->u, &out->v);
+    spherical_uv(v3_normalize(v3_sub(out->p_obj, shape_center(s, part))), &out->u, &out->v);
 }
 
 static void sphere_bounds(const shape *s, vec3 *lo, vec3 *hi)

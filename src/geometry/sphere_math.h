@@ -1,7 +1,8 @@
-/* sphere_math.h - the exact ray test of a sphere given by its centre and
- * radius, which sphere shapes (sphere.c) and sphere sets (sphere_set.c and
- * the accelerator's callbacks for them) share, so that a sphere gives the
- * same bits whichever holds it. Inline: it runs for every candidate. */
+/* sphere_math.h - what sphere shapes (sphere.c) and sphere sets
+ * (sphere_set.c and the accelerator's callbacks for them) share, so that a
+ * sphere gives the same bits whichever holds it: the exact ray test of a
+ * sphere given by its centre and radius (inline: it runs for every
+ * candidate), and its normal and (u, v). */
 #ifndef GLINT_GEOMETRY_SPHERE_MATH_H
 #define GLINT_GEOMETRY_SPHERE_MATH_H
 
@@ -56,5 +57,10 @@ static inline quad_mask sphere_hits4_at(vec3 center, double radius, const ray8 *
     }
     return hits;
 }
+
+/* The sphere kind's surface and uv (sphere.c): about shape_center(s,
+ * part), so that a sphere set's sphere `part` takes them too. */
+void sphere_surface(const shape *s, int part, surface *out);
+void sphere_uv(const shape *s, int part, surface *out);
 
 #endif

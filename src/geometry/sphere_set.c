@@ -3,21 +3,10 @@
  * shape record of its own takes hundreds. The accelerator gives each sphere
  * a primitive of its own and tests it with the arithmetic sphere shapes use
  * (sphere_math.h), so a set renders the bits its spheres would as shapes;
- * here is what shading asks of a hit on one. */
+ * here is its kind, whose normal and (u, v) are the sphere kind's. */
 #include <limits.h>
 #include "geometry/shape_kind.h"
-#include "geometry/shape_math.h"
-
-static void set_surface(const shape *s, int part, surface *out)
-{
-    out->n = v3_sub(out->p_obj, shape_center(s, part));
-}
-
-/* A sphere's own mapping (sphere.c's), about the sphere hit. */
-static void set_uv(const shape *s, int part, surface *out)
-{
-    spherical_uv(v3_normalize(v3_sub(out->p_obj, shape_center(s, part))), &out->u, &out->v);
-}
+#include "geometry/sphere_math.h"
 
 const shape_kind sphere_set_kind = {
     .name = "sphere set",
@@ -25,7 +14,8 @@ const shape_kind sphere_set_kind = {
     /* A line may cross any number of its spheres, so a ray leaving one is
      * never taken to have left the set behind (shape_left_behind_rule). */
     .max_crossings = INT_MAX,
-    .surface = set_surface,
-    .uv = set_uv,
+    /* A sphere's own, about the sphere hit (shape_center). */
+    .surface = sphere_surface,
+    .uv = sphere_uv,
     /* No bounds of its own: the accelerator bounds each sphere. */
 };

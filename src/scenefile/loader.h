@@ -10,6 +10,7 @@
 
 #include "core/params.h"
 #include "scene/scene.h"
+#include "scenefile/sphere_list.h"
 #include "scenefile/yaml_read.h"
 
 #define MAX_INCLUDE_DEPTH 16
@@ -44,7 +45,7 @@ typedef struct loader {
     bool keyed;                                  /* some value was keyed */
     bool streaming;                              /* objects read while parsed: an attempt, silent,
                                                     given up at any problem (scene_file.c) */
-    struct sphere_run *spheres;                  /* plain spheres not yet added (read_spheres.c) */
+    sphere_list spheres;                         /* plain spheres not yet added (read_spheres.c) */
 } loader;
 
 /* A model file already imported, so that every object placing it shares
@@ -197,7 +198,5 @@ bool spheres_gather(loader *l, const glint_shape *s, const context *ctx);
  * at the end of the objects. */
 void spheres_flush(loader *l);
 
-/* Frees the run, added or not. */
-void spheres_free(loader *l);
 
 #endif

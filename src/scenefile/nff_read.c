@@ -21,6 +21,7 @@
 #include "scenefile/scene_bytes.h"
 #include "scenefile/scene_file.h"
 #include "scenefile/scene_reader.h"
+#include "scenefile/sphere_list.h"
 
 /* The longest word the reader quotes back in a message. */
 #define QUOTED 40
@@ -33,16 +34,6 @@ typedef struct gathered_mesh {
     size_t position_cap, normal_cap, index_cap;
     int vertex_count, triangle_count;
 } gathered_mesh;
-
-/* Spheres gathered into one sphere set: a million spheres take a tenth of
- * the memory and load time they would as a shape each. */
-typedef struct gathered_spheres {
-    glint_vec3 *centers;
-    double *radii;
-    int *materials;
-    size_t center_cap, radius_cap, material_cap;
-    int count;
-} gathered_spheres;
 
 typedef struct nff {
     const char *name, *p, *end, *line_start;
@@ -65,7 +56,7 @@ typedef struct nff {
     gathered_mesh smooth, flat;
     /* The spheres: those whose fill lets light through apart, so that a
      * shadow ray stops at the others without asking what passes. */
-    gathered_spheres opaque, clear;
+    sphere_list opaque, clear;
     polygon_work polygon;
 } nff;
 
@@ -369,35 +360,20 @@ static bool read_sphere(nff *n)
         return fail(n, "a sphere's radius must not be 0");
     if (!material(n, &k))
         return false;
-    gathered_spheres *g = n->transmits ? &n->clear : &n->opaque;
-    size_t need = (size_t)g->count + 1;
-    if (!array_reserve((void **)&g->centers, &g->center_cap, need, sizeof *g->centers) ||
-        !array_reserve((void **)&g->radii, &g->radius_cap, need, sizeof *g->radii) ||
-        !array_reserve((void **)&g->materials, &g->material_cap, need, sizeof *g->materials)) {
-        fail(n, "out of memory");
-        n->err->status = GLINT_ERR_NOMEM;
-        return false;
-    }
-    g->centers[g->count] = (glint_vec3){v[0], v[1], v[2]};
-    g->radii[g->count] = fabs(v[3]);
-    g->materials[g->count++] = k;
-    return true;
+    if (sphere_list_add(n->transmits ? &n->clear : &n->opaque, (glint_vec3){v[0], v[1], v[2]}, fabs(v[3]), k))
+        return true;
+    fail(n, "out of memory");
+    n->err->status = GLINT_ERR_NOMEM;
+    return false;
 }
 
 /* Adds the spheres gathered as one sphere set. */
-static bool flush_spheres(nff *n, gathered_spheres *g)
+static bool flush_spheres(nff *n, const sphere_list *g)
 {
     glint_error call;
     if (g->count > 0 && glint_scene_add_spheres(n->scene, g->count, g->centers, g->radii, g->materials, &call) < 0)
         return fail_call(n, &call);
     return true;
-}
-
-static void free_spheres(gathered_spheres *g)
-{
-    free(g->centers);
-    free(g->radii);
-    free(g->materials);
 }
 
 /* A polygon's or patch's vertex count: a whole number from 3. */
@@ -599,8 +575,8 @@ static glint_scene *read_nff(const char *data, size_t size, const char *name, gl
     if (!n.failed && flush_meshes(&n) && flush_spheres(&n, &n.opaque) && flush_spheres(&n, &n.clear))
         add_lights(&n);
     free(n.lights);
-    free_spheres(&n.opaque);
-    free_spheres(&n.clear);
+    sphere_list_free(&n.opaque);
+    sphere_list_free(&n.clear);
     free_mesh(&n.smooth);
     free_mesh(&n.flat);
     polygon_work_free(&n.polygon);

@@ -354,7 +354,7 @@ static glint_scene *load_once(const glint_load_options *o, glint_error *err, con
     body(&l, data, size, name);
     if (l.d.count == 0)
         spheres_flush(&l);
-    spheres_free(&l);
+    sphere_list_free(&l.spheres);
     if (l.d.count == 0)
         finish(&l, name);
     for (int i = 0; i < l.doc_count; i++)
