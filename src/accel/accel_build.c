@@ -4,6 +4,7 @@
  * placed once as world-space triangles of the top scene, and a mesh placed
  * more often as one triangle scene placed by Embree instances. Building
  * stops when the caller's cancel flag is set. */
+#include <limits.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include "accel/accel_internal.h"
@@ -34,24 +35,39 @@ static bool build_progress(void *user, double done)
 
 /* Sorts the shapes into planes, which the queries test themselves (an
  * unbounded plane would be a candidate for every ray, through a callback),
- * and the rest, one user-geometry primitive each; the parts of
- * combinations are met only through them. False when memory runs out. */
+ * and the rest, one user-geometry primitive for each piece of their bounds
+ * (shape_pieces: a long shape at a slant is more than one box); the parts
+ * of combinations are met only through them. False when memory runs out. */
 static bool sort_shapes(accel *a)
 {
-    a->prim_shape = malloc(((size_t)a->shape_count + 1) * sizeof *a->prim_shape);
+    unsigned char *pieces = malloc((size_t)a->shape_count + 1);
     a->planes = malloc(((size_t)a->shape_count + 1) * sizeof *a->planes);
-    if (!a->prim_shape || !a->planes)
+    if (!pieces || !a->planes) {
+        free(pieces);
         return false;
+    }
+    size_t prims = 0;
     for (int i = 0; i < a->shape_count; i++) {
         /* Sphere sets are geometries of their own (add_sphere_sets). */
-        if (a->shapes[i].part_of >= 0 || a->shapes[i].set)
-            continue;
-        if (!shape_is_bounded(&a->shapes[i]))
-            a->planes[a->plane_count++] = i;
-        else
-            a->prim_shape[a->prim_count++] = i;
+        bool own = a->shapes[i].part_of < 0 && !a->shapes[i].set && shape_is_bounded(&a->shapes[i]);
+        pieces[i] = own ? (unsigned char)shape_pieces(&a->shapes[i]) : 0;
+        prims += pieces[i];
     }
-    return true;
+    a->prim_shape = malloc((prims + 1) * sizeof *a->prim_shape);
+    a->prim_piece = malloc(prims + 1);
+    a->prim_pieces = malloc(prims + 1);
+    bool ok = a->prim_shape && a->prim_piece && a->prim_pieces && prims <= INT_MAX;
+    for (int i = 0; ok && i < a->shape_count; i++) {
+        if (a->shapes[i].part_of < 0 && !a->shapes[i].set && !shape_is_bounded(&a->shapes[i]))
+            a->planes[a->plane_count++] = i;
+        for (int k = 0; k < pieces[i]; k++) {
+            a->prim_piece[a->prim_count] = (unsigned char)k;
+            a->prim_pieces[a->prim_count] = pieces[i];
+            a->prim_shape[a->prim_count++] = i;
+        }
+    }
+    free(pieces);
+    return ok;
 }
 
 static void add_shapes(accel *a)
@@ -299,6 +315,8 @@ void accel_free(accel *a)
         free(a->flat_vertices[i]);
     free(a->flat_vertices);
     free(a->prim_shape);
+    free(a->prim_piece);
+    free(a->prim_pieces);
     free(a->planes);
     if (a->device)
         rtcReleaseDevice(a->device);

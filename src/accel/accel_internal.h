@@ -7,7 +7,9 @@
  * shapes' user-geometry callbacks; accel_query.c runs the packet queries,
  * with the planes tested outside Embree, and the triangles' shadow filter.
  *
- * Analytic shapes are one user geometry, one primitive per shape, but for
+ * Analytic shapes are one user geometry, one primitive per piece of a
+ * shape's bounds (one box, or slices of a long shape at a slant, each of
+ * which tests the whole shape), but for
  * sphere sets, each a user geometry of its own, one primitive per sphere,
  * at 1 + instance_count + j for set j (accel_spheres.c); Embree's
  * rays are single precision, so each query keeps the double-precision ray in
@@ -39,6 +41,8 @@ struct accel {
     const shape *shapes;
     int shape_count;
     int *prim_shape;          /* user geometry primitive -> shape index (planes left out) */
+    unsigned char *prim_piece;  /* and which piece of the shape's bounds it is */
+    unsigned char *prim_pieces; /* of how many (shape_pieces) */
     int prim_count;
     int *planes;              /* shape indices of the planes, tested outside Embree */
     int plane_count;
@@ -70,6 +74,8 @@ typedef struct query {
     const double *time;       /* and their times over the shutter, or NULL: nothing moves */
     double tmax[ACCEL_PACKET];   /* every query starts at t = 0 */
     int skip[ACCEL_PACKET];      /* a shape lane i cannot meet, or -1 */
+    int tested[ACCEL_PACKET];    /* the shape lane i was last tested against, or -1: another
+                                    piece of it (prim_piece) need not test it again */
     int index[ACCEL_PACKET];     /* the shape lane i hit, or -1 */
     double hit_t[ACCEL_PACKET];  /* and where: its shape_hit, by field */
     int hit_part[ACCEL_PACKET];

@@ -174,6 +174,7 @@ static void packet_init(query *q, const ray8 *r, const double tmax[ACCEL_PACKET]
     q->r = r;
     /* A quad of lanes at a time; Embree's fields are floats and ints. */
     memcpy(q->skip, skip, sizeof q->skip);
+    memset(q->tested, 0xff, sizeof q->tested);
     for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
         quad_mask on = quad_from_bools(active + i);
         quad_i32 lane_valid = __builtin_convertvector(on, quad_i32);

@@ -1,5 +1,6 @@
 /* accel_shapes.c - the analytic shapes inside Embree: one user geometry,
- * one primitive per bounded shape, whose callbacks Embree calls during a
+ * one primitive per piece of a bounded shape's bounds (shape_pieces),
+ * whose callbacks Embree calls during a
  * query. They test each lane's double-precision ray (kept in the query)
  * exactly, four lanes at a time where the shape allows, and record the hit
  * in the query; for a shadow query they block the lane, or filter its light
@@ -7,12 +8,14 @@
 #include <math.h>
 #include "accel/accel_internal.h"
 
-/* The bounds of primitive primID's shape, padded (accel_pad_bounds). */
+/* The bounds of primitive primID's piece of its shape, padded
+ * (accel_pad_bounds). */
 void accel_shape_bounds(const struct RTCBoundsFunctionArguments *args)
 {
     const accel *a = args->geometryUserPtr;
     vec3 lo, hi;
-    shape_bounds(&a->shapes[a->prim_shape[args->primID]], &lo, &hi);
+    shape_piece_bounds(&a->shapes[a->prim_shape[args->primID]], a->prim_piece[args->primID],
+                       a->prim_pieces[args->primID], &lo, &hi);
     accel_pad_bounds(lo, hi, args->bounds_o);
 }
 
@@ -24,8 +27,9 @@ static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *
 {
     query *q = (query *)args->context;
     for (unsigned i = 0; i < n; i++) {
-        if (!args->valid[i] || q->skip[i] == index)
+        if (!args->valid[i] || q->skip[i] == index || q->tested[i] == index)
             continue;
+        q->tested[i] = index;
         float tfar = *ray_lane_tfar((struct RTCRayN *)args->rayhit, n, i);
         shape_hit h;
         /* A triangle found first may have shortened the ray below q->tmax. */
@@ -107,6 +111,9 @@ void accel_shape_occluded(const struct RTCOccludedFunctionNArguments *args)
         if (opaque) {
             /* Blocking twice is harmless, so no record of it is kept. */
             shape_hit h;
+            if (q->tested[i] == index)
+                continue;
+            q->tested[i] = index;
             if (shape_intersect(at, &r, 0, q->tmax[i], &h))
                 *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
             continue;

@@ -194,7 +194,66 @@ bool shape_is_bounded(const shape *s)
     return s->kind->bounds != NULL;
 }
 
-void shape_bounds(const shape *s, vec3 *lo, vec3 *hi)
+/* The world box of the object box with centre c and half extents h under
+ * s's transform: the image's centre, and along each world axis the sum of
+ * the half extents' reach (|M| h), the eight corners' extremes. */
+static void mapped_box(const shape *s, vec3 c, vec3 h, vec3 *lo, vec3 *hi)
+{
+    const double(*m)[4] = s->to_world.m;
+    vec3 mid = xf_point(&s->to_world, c);
+    vec3 e = v3(fabs(m[0][0]) * h.x + fabs(m[0][1]) * h.y + fabs(m[0][2]) * h.z,
+                fabs(m[1][0]) * h.x + fabs(m[1][1]) * h.y + fabs(m[1][2]) * h.z,
+                fabs(m[2][0]) * h.x + fabs(m[2][1]) * h.y + fabs(m[2][2]) * h.z);
+    *lo = v3_sub(mid, e);
+    *hi = v3_add(mid, e);
+}
+
+/* Along which object axis s's box a..b reaches furthest in the world. */
+static int long_axis(const shape *s, vec3 a, vec3 b)
+{
+    vec3 e = v3_sub(b, a);
+    double len[3] = {v3_length(xf_vector(&s->to_world, v3(e.x, 0, 0))),
+                     v3_length(xf_vector(&s->to_world, v3(0, e.y, 0))),
+                     v3_length(xf_vector(&s->to_world, v3(0, 0, e.z)))};
+    return len[0] >= len[1] && len[0] >= len[2] ? 0 : len[1] >= len[2] ? 1 : 2;
+}
+
+/* Slice `piece` of `pieces` of the object box a..b, cut across axis k:
+ * its centre and half extents. */
+static void slice(vec3 a, vec3 b, int k, int piece, int pieces, vec3 *c, vec3 *h)
+{
+    double *pa = k == 0 ? &a.x : k == 1 ? &a.y : &a.z, *pb = k == 0 ? &b.x : k == 1 ? &b.y : &b.z;
+    double from = *pa, span = *pb - *pa;
+    *pa = from + span * piece / pieces;
+    *pb = piece + 1 == pieces ? *pb : from + span * (piece + 1) / pieces;
+    *c = v3_scale(v3_add(a, b), 0.5);
+    *h = v3_scale(v3_sub(b, a), 0.5);
+}
+
+int shape_pieces(const shape *s)
+{
+    if (!shape_is_bounded(s) || !s->has_transform || s->pose_count)
+        return 1;
+    vec3 a, b;
+    s->kind->bounds(s, &a, &b);
+    int k = long_axis(s, a, b), best = 1;
+    double best_area = INFINITY;
+    for (int n = 1; n <= SHAPE_MAX_PIECES; n++) {
+        /* Every slice's box has the same size. */
+        vec3 c, h, lo, hi;
+        slice(a, b, k, 0, n, &c, &h);
+        mapped_box(s, c, h, &lo, &hi);
+        vec3 e = v3_sub(hi, lo);
+        double area = n * (e.x * e.y + e.y * e.z + e.z * e.x);
+        if (area < 0.9 * best_area) {
+            best_area = area;
+            best = n;
+        }
+    }
+    return best;
+}
+
+void shape_piece_bounds(const shape *s, int piece, int pieces, vec3 *lo, vec3 *hi)
 {
     if (!shape_is_bounded(s)) {
         *lo = v3(-SHAPE_PLANE_EXTENT, -SHAPE_PLANE_EXTENT, -SHAPE_PLANE_EXTENT);
@@ -208,20 +267,28 @@ void shape_bounds(const shape *s, vec3 *lo, vec3 *hi)
         *hi = b;
         return;
     }
+    if (!s->pose_count) {
+        vec3 c, h;
+        slice(a, b, pieces > 1 ? long_axis(s, a, b) : 0, piece, pieces, &c, &h);
+        mapped_box(s, c, h, lo, hi);
+        return;
+    }
     /* An affine map sends the object box to a parallelepiped whose extremes
      * are among the images of its eight corners. Between two poses each
      * corner moves in a straight line, so the poses' boxes hold it. */
     *lo = v3(INFINITY, INFINITY, INFINITY);
     *hi = v3(-INFINITY, -INFINITY, -INFINITY);
-    int poses = s->pose_count ? s->pose_count : 1;
-    for (int k = 0; k < poses; k++) {
-        const transform *m = s->pose_count ? &s->poses[k] : &s->to_world;
+    for (int k = 0; k < s->pose_count; k++)
         for (int i = 0; i < 8; i++) {
-            vec3 c = xf_point(m, v3(i & 1 ? b.x : a.x, i & 2 ? b.y : a.y, i & 4 ? b.z : a.z));
+            vec3 c = xf_point(&s->poses[k], v3(i & 1 ? b.x : a.x, i & 2 ? b.y : a.y, i & 4 ? b.z : a.z));
             *lo = min3(*lo, c);
             *hi = max3(*hi, c);
         }
-    }
+}
+
+void shape_bounds(const shape *s, vec3 *lo, vec3 *hi)
+{
+    shape_piece_bounds(s, 0, 1, lo, hi);
 }
 
 int shape_max_crossings(const shape *s)

@@ -4,7 +4,7 @@
  * behind one record (shape_kind.h) and works in object space; shape.c
  * validates descriptions and moves rays and results between world and
  * object space through the shape's transform. Embree sees shapes only
- * through shape_bounds and shape_intersect. */
+ * through shape_piece_bounds (shape_bounds) and shape_intersect. */
 #ifndef GLINT_GEOMETRY_SHAPE_H
 #define GLINT_GEOMETRY_SHAPE_H
 
@@ -248,6 +248,23 @@ void shape_surface_uv(const shape *s, surface *out);
  * for an unbounded shape (a plane) a box SHAPE_PLANE_EXTENT from the origin
  * each way. */
 void shape_bounds(const shape *s, vec3 *lo, vec3 *hi);
+
+/* The most boxes shape_pieces bounds a shape with. */
+#define SHAPE_MAX_PIECES 8
+
+/* How many boxes the accelerator bounds s with, 1 to SHAPE_MAX_PIECES: a
+ * long shape at a slant (an SPD ring's cylinders) fills little of its one
+ * world box, which many rays then enter only to miss it. Its object box
+ * is cut across its longest axis into equal slices, as many as make the
+ * slices' world boxes' total area (what a ray crossing them meets) least,
+ * a slice more only for a tenth less. 1 for a shape without a transform,
+ * a moving shape and an unbounded one. */
+int shape_pieces(const shape *s);
+
+/* The world box of slice `piece` of `pieces` (shape_pieces' count, or 1:
+ * the whole of shape_bounds) of s. Each bounds part of the shape; a ray
+ * meeting the box is tested against the whole shape. */
+void shape_piece_bounds(const shape *s, int piece, int pieces, vec3 *lo, vec3 *hi);
 
 /* False for shapes with no bounds (planes): the accelerator tests those
  * itself, as a hierarchy would offer them to every ray. */

@@ -1210,6 +1210,48 @@ static void test_bounds_rotated_box(void **state)
     bounds_are(&s, v3(4, 18, 18), v3(16, 22, 42));
 }
 
+/* A thin cylinder (radius 0.1, height 4) turned 45 degrees about z: its
+ * one world box is 2.97 x 2.97 x 0.2, area 20.0. Cut across its height
+ * into n slices, each box is 0.707 (0.2 + 4 / n) wide in x and y: the
+ * total areas for n = 1..8 are 20.0, 12.2, 9.65, 8.48, 7.82, 7.45, 7.21,
+ * 7.09, and a slice more pays only for a tenth less, so 6. Slice 0 holds
+ * object heights 0 to 2/3: its box is centred on the image of (0, 1/3, 0)
+ * with half extents 0.707 (0.1 + 1/3) in x and y. The slices' boxes
+ * together reach as far as the whole box. Shapes whose box is square with
+ * the world, or that move, keep one box. */
+static void test_pieces_of_a_slanted_cylinder(void **state)
+{
+    glint_transform m = glint_transform_rotate(glint_transform_identity(), v3(0, 0, 1), 45);
+    shape s = MAKE(axial_d(GLINT_SHAPE_CYLINDER, v3(0, 0, 0), 0.1, 4, false), &m);
+    assert_int_equal(shape_pieces(&s), 6);
+    double c = sqrt(0.5), reach = c * (0.1 + 1.0 / 3);
+    vec3 mid = v3(-c / 3, c / 3, 0), lo, hi;
+    shape_piece_bounds(&s, 0, 6, &lo, &hi);
+    VNEAR(lo, v3_sub(mid, v3(reach, reach, 0.1)));
+    VNEAR(hi, v3_add(mid, v3(reach, reach, 0.1)));
+    vec3 all_lo, all_hi, most = v3(-INFINITY, -INFINITY, -INFINITY), least = v3(INFINITY, INFINITY, INFINITY);
+    shape_bounds(&s, &all_lo, &all_hi);
+    for (int piece = 0; piece < 6; piece++) {
+        shape_piece_bounds(&s, piece, 6, &lo, &hi);
+        least = v3(fmin(least.x, lo.x), fmin(least.y, lo.y), fmin(least.z, lo.z));
+        most = v3(fmax(most.x, hi.x), fmax(most.y, hi.y), fmax(most.z, hi.z));
+    }
+    VNEAR(least, all_lo);
+    VNEAR(most, all_hi);
+    VNEAR(all_lo, v3(-c * 4.1, -c * 0.1, -0.1));
+    VNEAR(all_hi, v3(c * 0.1, c * 4.1, 0.1));
+
+    glint_transform moved = glint_transform_translate(glint_transform_identity(), 1, 2, 3);
+    s = MAKE(axial_d(GLINT_SHAPE_CYLINDER, v3(0, 0, 0), 0.1, 4, false), &moved);
+    assert_int_equal(shape_pieces(&s), 1);
+    s = MAKE(axial_d(GLINT_SHAPE_CYLINDER, v3(0, 0, 0), 0.1, 4, false), NULL);
+    assert_int_equal(shape_pieces(&s), 1);
+    s = MAKE(axial_d(GLINT_SHAPE_CYLINDER, v3(0, 0, 0), 0.1, 4, false), &m);
+    transform poses[2] = {s.to_world, s.to_world};
+    shape_move(&s, poses, 2);
+    assert_int_equal(shape_pieces(&s), 1);
+}
+
 /* For x -> A x + t, the unit sphere's image reaches furthest along world
  * axis i at t + A A^T e_i / |A^T e_i|: the bounds must hold those points. */
 static void test_bounds_transformed_sphere(void **state)
@@ -1683,6 +1725,7 @@ int main(void)
         cmocka_unit_test(test_bounds),
         cmocka_unit_test(test_bounds_rotated_box),
         cmocka_unit_test(test_bounds_transformed_sphere),
+        cmocka_unit_test(test_pieces_of_a_slanted_cylinder),
         cmocka_unit_test(test_validation),
         cmocka_unit_test(test_disk),
         cmocka_unit_test(test_disk_validation),
