@@ -45,10 +45,13 @@ typedef struct accel_geometry {
      * then returns GLINT_ERR_CANCELLED. */
     const volatile int *cancel;
     /* The camera samples the render will take (width x height x samples a
-     * pixel, whatever the threads, tiles or ranks): with few for each
-     * triangle, a quicker build of a looser BVH saves more time than its
-     * rays lose. */
+     * pixel, whatever the threads, tiles or ranks), and how many bounces
+     * each may take beyond its first hit (the scene's max_depth when some
+     * material reflects, refracts or lets light through, else 0): with few
+     * samples for each triangle, bounces counted as samples too, a quicker
+     * build of a looser BVH saves more time than its rays lose. */
     double camera_samples;
+    int bounces;
 } accel_geometry;
 
 /* Builds the Embree device and scenes: one user geometry for every shape;

@@ -343,6 +343,15 @@ static glint_status run_workers(job *j, int count, worker *sum, glint_error *err
     return fits ? GLINT_OK : error_set(err, GLINT_ERR_NOMEM, "out of memory for the threads' tiles");
 }
 
+/* Whether some material of the scene sends rays on from its hits. */
+static bool some_material_branches(const glint_scene *scene)
+{
+    for (int i = 0; i < scene->material_count; i++)
+        if (material_branches(&scene->materials[i].m))
+            return true;
+    return false;
+}
+
 /* Frees the film unless it is the caller's. */
 static void drop_film(job *j)
 {
@@ -409,7 +418,8 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
                               .shape_opaque = shape_opaque,
                               .instance_opaque = instance_opaque,
                               .cancel = o->cancel,
-                              .camera_samples = (double)s->width * s->height * s->samples_per_pixel};
+                              .camera_samples = (double)s->width * s->height * s->samples_per_pixel,
+                              .bounces = some_material_branches(scene) ? s->max_depth : 0};
         st = accel_build(&acc, &geo, err);
     }
     /* A build the cancel flag stopped goes on as a render that finished no

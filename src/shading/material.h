@@ -49,6 +49,13 @@ color material_filter(const glint_material *m, color surface_color);
 /* Whether light travelling inside m is absorbed. */
 static inline bool material_absorbs(const glint_material *m) { return m->absorption.distance > 0; }
 
+/* Whether a ray hitting m sends rays on: reflected, refracted or straight
+ * through. */
+static inline bool material_branches(const glint_material *m)
+{
+    return m->reflectivity > 0 || m->refraction > 0 || m->transparency > 0;
+}
+
 /* What `length` inside absorbing m leaves of light, per channel:
  * color^(length / distance), as exp(-material_optical_depth). */
 color material_absorbed(const glint_material *m, double length);

@@ -63,7 +63,7 @@ static void find_hits(const glint_scene *scene, ray8 *r, accel_hit hits[ACCEL_PA
     bool *shape_opaque, *instance_opaque;
     assert_true(hit_opacity(scene, &shape_opaque, &instance_opaque));
     accel_geometry g = {1, scene->shapes, scene->shape_count, scene->meshes, scene->mesh_count,
-                        scene->instances, scene->instance_count, shape_opaque, instance_opaque, NULL, 0};
+                        scene->instances, scene->instance_count, shape_opaque, instance_opaque, NULL, 0, 0};
     accel *a;
     glint_error err;
     assert_int_equal(accel_build(&a, &g, &err), GLINT_OK);

@@ -40,7 +40,7 @@ static accel *build(const glint_scene *s, bool **shape_opaque, bool **instance_o
 {
     assert_true(hit_opacity(s, shape_opaque, instance_opaque));
     accel_geometry g = {1, s->shapes, s->shape_count, s->meshes, s->mesh_count,
-                        s->instances, s->instance_count, *shape_opaque, *instance_opaque, NULL, 0};
+                        s->instances, s->instance_count, *shape_opaque, *instance_opaque, NULL, 0, 0};
     accel *a;
     glint_error err;
     assert_int_equal(accel_build(&a, &g, &err), GLINT_OK);

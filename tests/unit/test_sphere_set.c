@@ -90,7 +90,7 @@ static void test_hits_name_their_sphere(void **state)
     assert_true(hit_opacity(s, &shape_opaque, &instance_opaque));
     assert_false(shape_opaque[1]); /* the glass ball lets light through */
     accel_geometry g = {1, s->shapes, s->shape_count, s->meshes, s->mesh_count,
-                        s->instances, s->instance_count, shape_opaque, instance_opaque, NULL, 0};
+                        s->instances, s->instance_count, shape_opaque, instance_opaque, NULL, 0, 0};
     accel *a;
     glint_error err;
     assert_int_equal(accel_build(&a, &g, &err), GLINT_OK);
