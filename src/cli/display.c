@@ -288,7 +288,7 @@ static void clear_progress_line(void)
  * where on stderr. */
 static void save_image(display *d)
 {
-    glint_image shot = {d->width, d->height, film_pixels_alloc(d->width, d->height)};
+    glint_image shot = {d->width, d->height, film_pixels_alloc(d->width, d->height, true)};
     clear_progress_line();
     if (!shot.pixels) {
         cli_complain(CLI_EXIT_INTERNAL, "s: out of memory for a copy of the image to save");
@@ -528,7 +528,7 @@ display *display_start(volatile sig_atomic_t *cancel, int *code)
 bool display_show(display *d, const cli_options *o, const cli_run *r, int *code)
 {
     int w = r->settings.width, h = r->settings.height;
-    float *pixels = film_pixels_alloc(w, h);
+    float *pixels = film_pixels_alloc(w, h, true);
     char *save_path = strdup(strcmp(r->dest.path, "-") == 0 ? r->dest.default_path : r->dest.path);
     if (!pixels || !save_path) {
         free(pixels);

@@ -241,7 +241,7 @@ glint_status lead_render(MPI_Comm comm, const glint_scene *scene, const glint_re
     }
     for (int r = 0; r < ranks; r++)
         l.stops[r] = MPI_REQUEST_NULL;
-    l.pixels = status ? NULL : film_pixels_alloc(l.layout.width, l.layout.height);
+    l.pixels = status ? NULL : film_pixels_alloc(l.layout.width, l.layout.height, true);
     pthread_mutex_init(&l.lock, NULL);
     atomic_init(&l.local_done, 0);
     if (!l.pixels)

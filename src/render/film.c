@@ -11,7 +11,7 @@
 /* The huge page size of x86-64 and arm64 kernels with 4 KiB pages. */
 #define HUGE_PAGE ((uintptr_t)2 << 20)
 
-float *film_pixels_alloc(int width, int height)
+float *film_pixels_alloc(int width, int height, bool black)
 {
     size_t bytes = (size_t)width * (size_t)height * 3 * sizeof(float);
     /* An image is written once, page after page, by the render threads:
@@ -22,20 +22,21 @@ float *film_pixels_alloc(int width, int height)
      * which the kernel is asked to back as such; it may refuse
      * (transparent huge pages off), and nothing else changes. */
     if (bytes < HUGE_PAGE)
-        return calloc(bytes / sizeof(float), sizeof(float));
+        return black ? calloc(bytes / sizeof(float), sizeof(float)) : malloc(bytes + !bytes);
     size_t span = (bytes + HUGE_PAGE - 1) & ~(HUGE_PAGE - 1);
     void *pixels = NULL;
     if (posix_memalign(&pixels, HUGE_PAGE, span) != 0)
         return NULL;
     madvise(pixels, span, MADV_HUGEPAGE);
-    memset(pixels, 0, bytes);
+    if (black)
+        memset(pixels, 0, bytes);
     return pixels;
 }
 
-bool film_init(film *f, int width, int height, int samples)
+bool film_init(film *f, int width, int height, int samples, bool black)
 {
     *f = (film){.width = width, .height = height, .samples = samples, .exposure_scale = 1};
-    f->pixels = film_pixels_alloc(width, height);
+    f->pixels = film_pixels_alloc(width, height, black);
     return f->pixels != NULL;
 }
 

@@ -58,7 +58,7 @@ static film_block render(film *f, int x0, bool careful)
 static void test_average_and_nan_rule(void **state)
 {
     film f;
-    assert_true(film_init(&f, WIDTH, HEIGHT, SAMPLES));
+    assert_true(film_init(&f, WIDTH, HEIGHT, SAMPLES, true));
     /* The inactive lane's pixel is never written. */
     float *p7 = f.pixels + 3 * (1 * WIDTH + 3);
     p7[0] = p7[1] = p7[2] = 7;
@@ -91,7 +91,7 @@ static void test_average_and_nan_rule(void **state)
 static void test_nan_check_covers_every_float(void **state)
 {
     film f;
-    assert_true(film_init(&f, WIDTH, HEIGHT, 1));
+    assert_true(film_init(&f, WIDTH, HEIGHT, 1, true));
     for (int x = 0; x < WIDTH; x++) {
         for (int k = 0; k < 3; k++) {
             float *p = (float *)pixel(&f, x, 1) + k;
@@ -112,7 +112,7 @@ static void test_nan_check_covers_every_float(void **state)
 static void test_clear(void **state)
 {
     film f;
-    assert_true(film_init(&f, WIDTH, HEIGHT, 1));
+    assert_true(film_init(&f, WIDTH, HEIGHT, 1, true));
     for (int i = 0; i < 3 * WIDTH * HEIGHT; i++)
         f.pixels[i] = 1;
     film_clear(&f, 2, 1, 5, 2);

@@ -7,6 +7,7 @@
 #include <setjmp.h>
 #include <stdint.h>
 #include <cmocka.h>
+#include <malloc.h>
 #include <math.h>
 #include <stdbool.h>
 #include <string.h>
@@ -753,6 +754,33 @@ static void test_cancel_keeps_finished_tiles(void **state)
     glint_scene_free(s);
 }
 
+/* A render's image is not cleared before it starts: every pixel is
+ * written once its tile is done. glibc is asked to fill what it hands out
+ * with 0xaa bytes (a negative float) and to keep large blocks on its heap,
+ * where that applies; the image must then be exactly the one a render
+ * keeping partial tiles (which starts black) gives, with several threads,
+ * small tiles and odd edges. */
+static void test_every_pixel_written(void **state)
+{
+    enum { W = 1001, H = 777 };
+    glint_scene *s = new_scene(W, H, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 30);
+    add_quad(s, (glint_vec3){-1, -1, -5}, (glint_vec3){1, -1, -5}, (glint_vec3){1, 1, -5},
+             (glint_vec3){-1, 1, -5}, flat(s, 0.25, 0.5, 0.75));
+    glint_render_options o = {.threads = 2, .tile_size = 13};
+    glint_image fresh, black;
+    mallopt(M_MMAP_THRESHOLD, 64 << 20);
+    mallopt(M_PERTURB, 0x55);
+    glint_status st = glint_render(s, &o, &fresh, NULL, NULL);
+    mallopt(M_PERTURB, 0);
+    assert_int_equal(st, GLINT_OK);
+    o.keep_partial = 1;
+    assert_int_equal(glint_render(s, &o, &black, NULL, NULL), GLINT_OK);
+    assert_memory_equal(fresh.pixels, black.pixels, (size_t)W * H * 3 * sizeof(float));
+    glint_image_free(&fresh);
+    glint_image_free(&black);
+    glint_scene_free(s);
+}
+
 static void test_bad_transforms_are_refused(void **state)
 {
     glint_scene *s = new_scene(8, 8, (glint_vec3){0, 0, 0}, (glint_vec3){0, 0, -1}, (glint_vec3){0, 1, 0}, 30);
@@ -1299,6 +1327,7 @@ int main(void)
         cmocka_unit_test(test_progress_reports_every_tile_in_order),
         cmocka_unit_test(test_cancel_flag_stops_the_render),
         cmocka_unit_test(test_cancel_keeps_finished_tiles),
+        cmocka_unit_test(test_every_pixel_written),
         cmocka_unit_test(test_bad_transforms_are_refused),
         cmocka_unit_test(test_planes_are_infinite_and_lose_ties),
     };
