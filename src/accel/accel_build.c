@@ -48,24 +48,26 @@ static bool sort_shapes(accel *a)
     }
     size_t prims = 0;
     for (int i = 0; i < a->shape_count; i++) {
+        const shape *s = &a->shapes[i];
+        pieces[i] = 0;
         /* Sphere sets are geometries of their own (add_sphere_sets). */
-        bool own = a->shapes[i].part_of < 0 && !a->shapes[i].set && shape_is_bounded(&a->shapes[i]);
-        pieces[i] = own ? (unsigned char)shape_pieces(&a->shapes[i]) : 0;
-        prims += pieces[i];
+        if (s->part_of >= 0 || s->set)
+            continue;
+        if (!shape_is_bounded(s))
+            a->planes[a->plane_count++] = i;
+        else
+            prims += pieces[i] = (unsigned char)shape_pieces(s);
     }
     a->prim_shape = malloc((prims + 1) * sizeof *a->prim_shape);
     a->prim_piece = malloc(prims + 1);
     a->prim_pieces = malloc(prims + 1);
     bool ok = a->prim_shape && a->prim_piece && a->prim_pieces && prims <= INT_MAX;
-    for (int i = 0; ok && i < a->shape_count; i++) {
-        if (a->shapes[i].part_of < 0 && !a->shapes[i].set && !shape_is_bounded(&a->shapes[i]))
-            a->planes[a->plane_count++] = i;
+    for (int i = 0; ok && i < a->shape_count; i++)
         for (int k = 0; k < pieces[i]; k++) {
             a->prim_piece[a->prim_count] = (unsigned char)k;
             a->prim_pieces[a->prim_count] = pieces[i];
             a->prim_shape[a->prim_count++] = i;
         }
-    }
     free(pieces);
     return ok;
 }
@@ -222,10 +224,10 @@ static bool add_meshes(accel *a, const accel_geometry *geo)
  * bounce are not neighbours, and a looser BVH costs them far more: each
  * bounce a sample may take counts as a sample (SPD mount, 8,192 triangles
  * under glass balls, depth 5, 32 camera samples a triangle: 19% faster
- * for the whole process with MEDIUM). The choice depends on the scene and its settings alone,
- * never on threads, tiles or ranks: a triangle hit exactly on an edge it
- * shares is one triangle or the other by the BVH's order, so each render
- * must build the same one for the same bytes. */
+ * for the whole process with MEDIUM). The choice depends on the scene and
+ * its settings alone, never on threads, tiles or ranks: a triangle hit
+ * exactly on an edge it shares is one triangle or the other by the BVH's
+ * order, so each render must build the same one for the same bytes. */
 #define QUICK_BUILD_SAMPLES_PER_TRIANGLE 100.0
 
 static enum RTCBuildQuality build_quality(const accel_geometry *geo)

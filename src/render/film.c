@@ -22,7 +22,7 @@ float *film_pixels_alloc(int width, int height, bool black)
      * which the kernel is asked to back as such; it may refuse
      * (transparent huge pages off), and nothing else changes. */
     if (bytes < HUGE_PAGE)
-        return black ? calloc(bytes / sizeof(float), sizeof(float)) : malloc(bytes + !bytes);
+        return black ? calloc(bytes / sizeof(float), sizeof(float)) : malloc(bytes);
     size_t span = (bytes + HUGE_PAGE - 1) & ~(HUGE_PAGE - 1);
     void *pixels = NULL;
     if (posix_memalign(&pixels, HUGE_PAGE, span) != 0)

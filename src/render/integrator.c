@@ -220,7 +220,7 @@ static color shade_local(const glint_scene *scene, const ray *r, const shade_poi
     double transmitted = m->transparency + m->refraction;
     color kept = transmitted > 0 ? rgb_scale(direct, 1 - transmitted) : direct;
     b->on = 0;
-    if (depth >= scene->settings.max_depth || (transmitted <= 0 && m->reflectivity <= 0))
+    if (depth >= scene->settings.max_depth || !material_branches(m))
         return kept;
 
     double mirror = m->reflectivity;

@@ -423,8 +423,7 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
         st = accel_build(&acc, &geo, err);
     }
     /* A build the cancel flag stopped goes on as a render that finished no
-     * tile. */
-    /* The image after the hierarchy: the build's scratch memory is given
+     * tile. The image after the hierarchy: the build's scratch memory is given
      * back before the image's pages are touched, so a scene of a million
      * spheres peaks 25 MiB lower at 1920x1080. Every pixel is written once
      * its tile is done, so the image starts black only where a cancelled
