@@ -230,13 +230,41 @@ static bool add_meshes(accel *a, const accel_geometry *geo)
  * order, so each render must build the same one for the same bytes. */
 #define QUICK_BUILD_SAMPLES_PER_TRIANGLE 100.0
 
-static enum RTCBuildQuality build_quality(const accel_geometry *geo)
+/* The triangles of the scene's meshes, each mesh once. */
+static double mesh_triangles(const accel_geometry *geo)
 {
     double triangles = 0;
     for (int i = 0; i < geo->mesh_count; i++)
         triangles += geo->meshes[i].triangle_count;
+    return triangles;
+}
+
+static enum RTCBuildQuality build_quality(const accel_geometry *geo)
+{
+    double triangles = mesh_triangles(geo);
     double samples = geo->camera_samples * (1.0 + geo->bounces);
     return samples < QUICK_BUILD_SAMPLES_PER_TRIANGLE * triangles ? RTC_BUILD_QUALITY_LOW : RTC_BUILD_QUALITY_MEDIUM;
+}
+
+/* Incoherent rays (reflections, refractions and the shadow segments from
+ * their hits) are traced one at a time where the tree is mostly analytic
+ * shapes, and large: an incoherent packet's lanes part near the root, and
+ * every user primitive any lane reaches then costs a callback over the
+ * packet. Measured, 2 threads, depth 5, the same bytes: SPD rings (8,400
+ * shapes) 20% faster, balls (7,382 spheres) 6%; random reflective spheres
+ * 5% faster at 1,000 and 20% at 3,000, but 0-10% slower at 30 to 300, as
+ * the seed room (22 shapes) is 5% slower; SPD mount (8,192 triangles, 4
+ * spheres) 18% slower, Embree meeting a packet's triangles together. Like
+ * the build quality, this depends on the scene alone. */
+#define APART_MIN_PRIMITIVES 1000.0
+
+static bool rays_apart(const accel *a, const accel_geometry *geo)
+{
+    double primitives = a->prim_count;
+    for (int i = 0; i < a->shape_count; i++)
+        if (a->shapes[i].set)
+            primitives += a->shapes[i].set->count;
+    return primitives >= APART_MIN_PRIMITIVES && primitives >= mesh_triangles(geo);
 }
 
 glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *err)
@@ -289,6 +317,7 @@ glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *er
             accel_free(a);
             return error_set(err, GLINT_ERR_NOMEM, "out of memory building the accelerator");
         }
+        a->apart = rays_apart(a, geo);
         if (a->prim_count > 0)
             add_shapes(a);
         add_sphere_sets(a);

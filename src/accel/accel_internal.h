@@ -47,6 +47,7 @@ struct accel {
     int *planes;              /* shape indices of the planes, tested outside Embree */
     int plane_count;
     bool instanced;           /* some mesh is placed through Embree instances */
+    bool apart;               /* incoherent queries trace each lane alone (rays_apart) */
     const bool *shape_opaque; /* per shape, or NULL */
     const volatile int *cancel; /* the build stops once it is set, or NULL */
     enum RTCBuildQuality quality; /* of every BVH built (build_quality) */
@@ -64,7 +65,8 @@ static inline bool shape_opaque(const accel *a, int index)
 /* A query's state, for a packet of ACCEL_PACKET rays; Embree passes
  * &ctx back to the callbacks, and ctx comes first so the callbacks can
  * recover the whole query from it. Lane i holds the double-precision ray
- * of Embree's lane i. */
+ * of Embree's lane i, or of its one ray when lane i is traced alone
+ * (query_lane). */
 typedef struct query {
     struct RTCIntersectContext ctx;
     const accel *acc;
@@ -82,7 +84,15 @@ typedef struct query {
     color through[ACCEL_PACKET];
     color depth[ACCEL_PACKET];   /* optical depth each lane's crossings add up */
     seen_set *seen;           /* shadow queries: what each lane was filtered by */
+    int alone;                /* the lane traced alone (accel->apart), or -1 */
 } query;
+
+/* The query's lane for lane i of a callback's n rays: i itself for glint's
+ * packets; for a lane traced alone, Embree's one ray is that lane. */
+static inline unsigned query_lane(const query *q, unsigned n, unsigned i)
+{
+    return n == 1 && q->alone >= 0 ? (unsigned)q->alone : i;
+}
 
 /* Lane i of Embree's structure-of-arrays rays and hits, as its C++ helpers
  * (RTCRayN_tfar, RTCHitN_u, RTCRayHitN_RayN, ...) index them: a ray is 12
@@ -128,18 +138,20 @@ static inline void accel_pad_bounds(vec3 lo, vec3 hi, struct RTCBounds *out)
     out->upper_z = nextafterf((float)(hi.z + pad), INFINITY);
 }
 
-/* Records in lane i of a packet of n that it hit shape `index` at (t, part):
- * for a combination, the part's shape it hit. A sphere set's hits, though
- * from a geometry of their own, are marked as the shapes' (SHAPES_ID). */
+/* Records in lane i of a callback's n rays that it hit shape `index` at
+ * (t, part): for a combination, the part's shape it hit. A sphere set's
+ * hits, though from a geometry of their own, are marked as the shapes'
+ * (SHAPES_ID). */
 static inline void record_hit(const struct RTCIntersectFunctionNArguments *args, unsigned n, unsigned i, int index,
                               double t, int part)
 {
     query *q = (query *)args->context;
     struct RTCRayHitN *rh = args->rayhit;
-    q->tmax[i] = t;
-    q->hit_t[i] = t;
-    q->hit_part[i] = part;
-    q->index[i] = index;
+    unsigned lane = query_lane(q, n, i);
+    q->tmax[lane] = t;
+    q->hit_t[lane] = t;
+    q->hit_part[lane] = part;
+    q->index[lane] = index;
     *ray_lane_tfar((struct RTCRayN *)rh, n, i) = float_far(t);
     *rayhit_lane_uint(rh, n, HIT_GEOM, i) = SHAPES_ID;
     *rayhit_lane_uint(rh, n, HIT_PRIM, i) = args->primID;

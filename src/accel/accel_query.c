@@ -4,7 +4,8 @@
  * glint's double rays, tests the planes itself first, in double, four lanes
  * at a time, and lets Embree look only nearer; shadow segments are filtered
  * through the planes, the shapes (accel_shapes.c) and the triangles they
- * cross, each surface once. */
+ * cross, each surface once. Rays that are not neighbours go through
+ * Embree one at a time in scenes of many analytic shapes (rays_apart). */
 #include <math.h>
 #include <string.h>
 #include "accel/accel_internal.h"
@@ -17,6 +18,7 @@ void accel_triangle_occluded(const struct RTCFilterFunctionNArguments *args)
     for (unsigned i = 0; i < args->N; i++) {
         if (!args->valid[i])
             continue;
+        unsigned lane = query_lane(q, args->N, i);
         accel_hit h = {
             .t = *ray_lane_tfar(args->ray, args->N, i),
             .shape = -1,
@@ -25,10 +27,10 @@ void accel_triangle_occluded(const struct RTCFilterFunctionNArguments *args)
             .triangle = hit_lane_uint(args->hit, args->N, HIT_PRIM, i),
             .b1 = hit_lane_float(args->hit, args->N, HIT_U, i),
             .b2 = hit_lane_float(args->hit, args->N, HIT_V, i),
-            .time = lane_time(q, i),
+            .time = lane_time(q, lane),
         };
         uint64_t key = (uint64_t)(h.instance + 1) << 32 | h.triangle;
-        if (!seen_add(&q->seen[i], key) || pass_through(q, i, &h))
+        if (!seen_add(&q->seen[lane], key) || pass_through(q, lane, &h))
             args->valid[i] = 0;
     }
 }
@@ -161,6 +163,7 @@ static void packet_init(query *q, const ray8 *r, const double tmax[ACCEL_PACKET]
 {
     rtcInitIntersectContext(&q->ctx);
     q->seen = NULL;
+    q->alone = -1;
     /* Embree's coherent packet traversal pays only for neighbouring rays
      * through a flat scene of triangles (the bunny: 15% fewer instructions).
      * Where analytic shapes are candidates (each lane then calls the shape
@@ -204,6 +207,64 @@ static void packet_init(query *q, const ray8 *r, const double tmax[ACCEL_PACKET]
     memset(p->flags, 0, sizeof p->flags);
 }
 
+/* Lane i of Embree's packet p as one ray. */
+static struct RTCRay lane_ray(const struct RTCRay8 *p, int i)
+{
+    return (struct RTCRay){.org_x = p->org_x[i], .org_y = p->org_y[i], .org_z = p->org_z[i],
+                           .tnear = p->tnear[i], .dir_x = p->dir_x[i], .dir_y = p->dir_y[i],
+                           .dir_z = p->dir_z[i], .time = p->time[i], .tfar = p->tfar[i],
+                           .mask = p->mask[i], .id = p->id[i], .flags = p->flags[i]};
+}
+
+/* Embree's nearest hit for each valid lane of rh: the packet at once, or,
+ * for rays that are not neighbours where the accelerator traces them
+ * apart (rays_apart), each lane alone. */
+static void nearest_hits(query *q, int valid[ACCEL_PACKET], bool coherent, struct RTCRayHit8 *rh)
+{
+    const accel *a = q->acc;
+    if (coherent || !a->apart) {
+        rtcIntersect8(valid, a->scene, &q->ctx, rh);
+        return;
+    }
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        if (!valid[i])
+            continue;
+        struct RTCRayHit one = {.ray = lane_ray(&rh->ray, i),
+                                .hit = {.geomID = RTC_INVALID_GEOMETRY_ID,
+                                        .primID = RTC_INVALID_GEOMETRY_ID,
+                                        .instID = {RTC_INVALID_GEOMETRY_ID}}};
+        q->alone = i;
+        rtcIntersect1(a->scene, &q->ctx, &one);
+        rh->ray.tfar[i] = one.ray.tfar;
+        rh->hit.u[i] = one.hit.u;
+        rh->hit.v[i] = one.hit.v;
+        rh->hit.primID[i] = one.hit.primID;
+        rh->hit.geomID[i] = one.hit.geomID;
+        rh->hit.instID[0][i] = one.hit.instID[0];
+    }
+    q->alone = -1;
+}
+
+/* Whether Embree finds each valid lane of p blocked (its tfar then
+ * -INFINITY), as nearest_hits traces them. */
+static void blocked_lanes(query *q, int valid[ACCEL_PACKET], bool coherent, struct RTCRay8 *p)
+{
+    const accel *a = q->acc;
+    if (coherent || !a->apart) {
+        rtcOccluded8(valid, a->scene, &q->ctx, p);
+        return;
+    }
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        if (!valid[i])
+            continue;
+        struct RTCRay one = lane_ray(p, i);
+        q->alone = i;
+        rtcOccluded1(a->scene, &q->ctx, &one);
+        p->tfar[i] = one.tfar;
+    }
+    q->alone = -1;
+}
+
 void accel_intersect8(const accel *a, const ray8 *r, const double *time, double tmax, const int skip[ACCEL_PACKET],
                       bool coherent, const bool active[ACCEL_PACKET], accel_hit hit[ACCEL_PACKET],
                       bool found[ACCEL_PACKET])
@@ -223,7 +284,7 @@ void accel_intersect8(const accel *a, const ray8 *r, const double *time, double 
         nearest_planes(&q);
         packet_far(&q, &rh.ray);
     }
-    rtcIntersect8(valid, a->scene, &q.ctx, &rh);
+    nearest_hits(&q, valid, coherent, &rh);
     /* Which lanes found something, and which of those a triangle, a quad
      * at a time; then each found lane's hit. */
     for (int i = 0; i < ACCEL_PACKET; i += QUAD) {
@@ -263,7 +324,7 @@ void accel_transmission8(const accel *a, const ray8 *r, const double *time, cons
     }
     if (a->plane_count > 0)
         through_planes(&q, valid, &p);
-    rtcOccluded8(valid, a->scene, &q.ctx, &p);
+    blocked_lanes(&q, valid, coherent, &p);
     for (int i = 0; i < ACCEL_PACKET; i++) {
         seen_free(&seen[i]);
         color d = q.depth[i];

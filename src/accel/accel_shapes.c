@@ -19,7 +19,8 @@ void accel_shape_bounds(const struct RTCBoundsFunctionArguments *args)
     accel_pad_bounds(lo, hi, args->bounds_o);
 }
 
-/* accel_shape_intersect's work for n = args->N lanes, one at a time: inlined twice,
+/* accel_shape_intersect's work for n = args->N lanes (or one lane traced
+ * alone), one at a time: inlined twice,
  * once with n a constant for the packets glint sends, whose lanes are then
  * cheaper to address. */
 static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *args, unsigned n, int index,
@@ -27,16 +28,17 @@ static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *
 {
     query *q = (query *)args->context;
     for (unsigned i = 0; i < n; i++) {
-        if (!args->valid[i] || q->skip[i] == index || q->tested[i] == index)
+        unsigned lane = query_lane(q, n, i);
+        if (!args->valid[i] || q->skip[lane] == index || q->tested[lane] == index)
             continue;
-        q->tested[i] = index;
+        q->tested[lane] = index;
         float tfar = *ray_lane_tfar((struct RTCRayN *)args->rayhit, n, i);
         shape_hit h;
         /* A triangle found first may have shortened the ray below q->tmax. */
-        double tmax = q->tmax[i] < tfar ? q->tmax[i] : (double)tfar;
-        ray r = ray8_get(q->r, (int)i);
+        double tmax = q->tmax[lane] < tfar ? q->tmax[lane] : (double)tfar;
+        ray r = ray8_get(q->r, (int)lane);
         shape moved;
-        if (shape_intersect(shape_at(s, lane_time(q, i), &moved), &r, 0, tmax, &h))
+        if (shape_intersect(shape_at(s, lane_time(q, lane), &moved), &r, 0, tmax, &h))
             record_hit(args, n, i, s->csg ? h.leaf : index, h.t, h.part);
     }
 }
@@ -103,32 +105,33 @@ void accel_shape_occluded(const struct RTCOccludedFunctionNArguments *args)
         return;
     }
     for (unsigned i = 0; i < args->N; i++) {
-        if (!args->valid[i] || q->skip[i] == index)
+        unsigned lane = query_lane(q, args->N, i);
+        if (!args->valid[i] || q->skip[lane] == index)
             continue;
-        ray r = ray8_get(q->r, (int)i);
+        ray r = ray8_get(q->r, (int)lane);
         shape moved;
-        const shape *at = shape_at(s, lane_time(q, i), &moved);
+        const shape *at = shape_at(s, lane_time(q, lane), &moved);
         if (opaque) {
             /* Blocking twice is harmless, so no record of it is kept. */
             shape_hit h;
-            if (q->tested[i] == index)
+            if (q->tested[lane] == index)
                 continue;
-            q->tested[i] = index;
-            if (shape_intersect(at, &r, 0, q->tmax[i], &h))
+            q->tested[lane] = index;
+            if (shape_intersect(at, &r, 0, q->tmax[lane], &h))
                 *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
             continue;
         }
-        if (!seen_add(&q->seen[i], (uint64_t)index))
+        if (!seen_add(&q->seen[lane], (uint64_t)index))
             continue;
         double tmin = 0;
-        accel_hit h = {.shape = index, .instance = -1, .time = lane_time(q, i)};
+        accel_hit h = {.shape = index, .instance = -1, .time = lane_time(q, lane)};
         int crossings = shape_max_crossings(s);
-        for (int crossing = 0; crossing < crossings && shape_intersect(at, &r, tmin, q->tmax[i], &h.on_shape);
+        for (int crossing = 0; crossing < crossings && shape_intersect(at, &r, tmin, q->tmax[lane], &h.on_shape);
              crossing++) {
             h.t = h.on_shape.t;
             if (s->csg)
                 h.shape = h.on_shape.leaf;
-            if (!pass_through(q, i, &h)) {
+            if (!pass_through(q, lane, &h)) {
                 *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
                 break;
             }

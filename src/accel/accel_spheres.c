@@ -51,10 +51,11 @@ void accel_spheres_intersect(const struct RTCIntersectFunctionNArguments *args)
     for (unsigned i = 0; i < args->N; i++) {
         if (!args->valid[i])
             continue;
+        unsigned lane = query_lane(q, args->N, i);
         float tfar = *ray_lane_tfar((struct RTCRayN *)args->rayhit, args->N, i);
         /* A triangle found first may have shortened the ray below q->tmax. */
-        double tmax = q->tmax[i] < tfar ? q->tmax[i] : (double)tfar;
-        ray r = ray8_get(q->r, (int)i);
+        double tmax = q->tmax[lane] < tfar ? q->tmax[lane] : (double)tfar;
+        ray r = ray8_get(q->r, (int)lane);
         shape_hit h;
         if (sphere_hit_at(c, radius, &r, 0, tmax, &h))
             record_hit(args, args->N, i, index, h.t, part);
@@ -83,22 +84,23 @@ void accel_spheres_occluded(const struct RTCOccludedFunctionNArguments *args)
     for (unsigned i = 0; i < args->N; i++) {
         if (!args->valid[i])
             continue;
-        ray r = ray8_get(q->r, (int)i);
-        accel_hit h = {.shape = index, .instance = -1, .time = lane_time(q, i)};
+        unsigned lane = query_lane(q, args->N, i);
+        ray r = ray8_get(q->r, (int)lane);
+        accel_hit h = {.shape = index, .instance = -1, .time = lane_time(q, lane)};
         if (opaque) {
-            if (sphere_hit_at(c, radius, &r, 0, q->tmax[i], &h.on_shape))
+            if (sphere_hit_at(c, radius, &r, 0, q->tmax[lane], &h.on_shape))
                 *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
             continue;
         }
-        if (!seen_add(&q->seen[i], SPHERE_KEY | (uint64_t)index << 32 | args->primID))
+        if (!seen_add(&q->seen[lane], SPHERE_KEY | (uint64_t)index << 32 | args->primID))
             continue;
         /* Each of the sphere's two crossings in the segment filters the light. */
         double tmin = 0;
-        for (int crossing = 0; crossing < 2 && sphere_hit_at(c, radius, &r, tmin, q->tmax[i], &h.on_shape);
+        for (int crossing = 0; crossing < 2 && sphere_hit_at(c, radius, &r, tmin, q->tmax[lane], &h.on_shape);
              crossing++) {
             h.t = tmin = h.on_shape.t;
             h.on_shape.part = (int)args->primID;
-            if (!pass_through(q, i, &h)) {
+            if (!pass_through(q, lane, &h)) {
                 *ray_lane_tfar(args->ray, args->N, i) = -INFINITY;
                 break;
             }
