@@ -893,6 +893,13 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     shade_point sp[ACCEL_PACKET];
     color local[ACCEL_PACKET];
     branches b[ACCEL_PACKET];
+    /* Each lane's ray as a struct, copied out of the packet before the
+     * search, so that shading reads it long after its stores: copied just
+     * before, its 8-byte stores were still on their way when
+     * shape_surface loaded it 16 bytes at a time, and the loads waited. */
+    ray lane_ray[ACCEL_PACKET];
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        lane_ray[i] = ray8_get(r, i);
     accel_intersect8(t->acc, r, t->time, t->reach, skip, depth == 0, active, hits, found);
     /* A large mesh's vertices are seldom in cache: fetch every lane's
      * together rather than one lane's at a time. */
@@ -913,8 +920,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (!found[i])
             continue;
-        ray ri = ray8_get(r, i);
-        shade_begin(t, &ri, &hits[i], path->travelled[i], &sp[i]);
+        shade_begin(t, &lane_ray[i], &hits[i], path->travelled[i], &sp[i]);
         if (fog && fog_hides(&scene->fog, sp[i].hit.t))
             found[i] = false;
         else if (occlusion)
@@ -931,8 +937,8 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     unsigned sent = 0; /* bit k: some lane sends a ray of kind k */
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (found[i]) {
-            ray ri = ray8_get(r, i);
-            local[i] = shade_local(scene, &ri, &sp[i], local[i], depth, path->weight[i], path->wavelength[i], &b[i]);
+            local[i] = shade_local(scene, &lane_ray[i], &sp[i], local[i], depth, path->weight[i], path->wavelength[i],
+                                   &b[i]);
             sent |= b[i].on;
         }
     }
