@@ -16,6 +16,10 @@
 #   depth-of-field  scenes/depth-of-field.yaml / bench/depth-of-field.pov:
 #                   a thin lens, 640x480; S samples a pixel (glint's Sobol
 #                   sampler; POV-Ray's focal_blur with S blur_samples)
+#   depth-of-field-adaptive  the same, glint with adaptive sampling: S/4
+#                   samples a pixel (at least 2), more where they differ
+#                   by over 0.05, up to 2 S; POV-Ray as above (its own
+#                   early stop is no better a sample, bench/README.md)
 #
 #   GLINT_BIN=/path/to/glint bench/equal-noise.sh [CASE ...]   (default: all)
 #   BENCH_RUNS=5 ...                         5 runs of each (default 3)
@@ -36,7 +40,8 @@ command -v povray >/dev/null 2>&1 || die "povray is missing (Debian: apt-get ins
 CASES=("$@")
 [[ ${#CASES[@]} -gt 0 ]] || CASES=(soft-light cornell-box depth-of-field)
 for c in "${CASES[@]}"; do
-    [[ $c =~ ^(soft-light|cornell-box|depth-of-field)$ ]] || die "no case '$c' (soft-light cornell-box depth-of-field)"
+    [[ $c =~ ^(soft-light|cornell-box|depth-of-field|depth-of-field-adaptive)$ ]] ||
+        die "no case '$c' (soft-light cornell-box depth-of-field depth-of-field-adaptive)"
 done
 
 # POV-Ray's Debian configuration reads scenes only from a few folders: /tmp is one.
@@ -57,6 +62,11 @@ glint_run() {
     depth-of-field)
         cp "$ROOT/scenes/depth-of-field.yaml" "$WORK/scene.yaml"
         flags=(--spp "$2" --sampler sobol) ;;
+    depth-of-field-adaptive)
+        # The 1024-sample reference is uniform, as the other cases'.
+        local set="  samples: $(($2 / 4 < 2 ? 2 : $2 / 4))\n  adaptive: {threshold: 0.05, max_samples: $((2 * $2))}"
+        [[ $2 == 1024 ]] && set="  samples: 1024"
+        sed "s/^  samples: 64$/$set\n  sampler: sobol/" "$ROOT/scenes/depth-of-field.yaml" >"$WORK/scene.yaml" ;;
     esac
     "$GLINT_BIN" "$WORK/scene.yaml" "${flags[@]}" --threads 2 --bit-depth 16 -o "$3" 2>&1 |
         sed -n 's/.*threads: \([0-9.]*\) s,.*/\1/p'
@@ -67,9 +77,9 @@ povray_run() {
     case $1 in
     soft-light) args=(+W640 +H480 "Declare=LIGHT_N=$(isqrt "$2")") ;;
     cornell-box) args=(+W640 +H640 "Declare=LIGHT_N=$(isqrt "$2")") ;;
-    depth-of-field) args=(+W640 +H480 "Declare=BLUR_N=$2") ;;
+    depth-of-field*) args=(+W640 +H480 "Declare=BLUR_N=$2") ;;
     esac
-    (cd "$WORK" && povray "$1.pov" -D "${args[@]}" +FP16 "+O$3" -A +WT2 2>&1) |
+    (cd "$WORK" && povray "${1%-adaptive}.pov" -D "${args[@]}" +FP16 "+O$3" -A +WT2 2>&1) |
         sed -n 's/.*Trace Time:.*(\([0-9.]*\) seconds).*/\1/p'
 }
 isqrt() { awk -v s="$1" 'BEGIN { print int(sqrt(s) + 0.5) }'; }
