@@ -167,8 +167,9 @@ typedef struct glint_settings {
     double filter_radius;      /* in pixels, 0.5..16; 0: the filter's own default (box 0.5,
                                   tent 1, gaussian 1.5, mitchell 2, lanczos 3) */
     int adaptive_max_samples;  /* 0: every pixel takes samples_per_pixel; else, sampler sobol,
-                                  samples_per_pixel..4096: a pixel whose samples differ by more
-                                  than adaptive_threshold takes more, up to this many */
+                                  samples_per_pixel..4096: the pixels of a block of 4 x 2 where
+                                  some pixel's samples differ by more than adaptive_threshold
+                                  take more, up to this many */
     double adaptive_threshold; /* the largest difference in any channel (0..1, after exposure)
                                   between a pixel's samples that needs no more */
     int light_samples;         /* 0: each area light and emitter sends its own samples from each

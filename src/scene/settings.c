@@ -124,8 +124,8 @@ param_table filter_params(void)
 /* settings.adaptive, a map of its own in a scene file. */
 static const param ADAPTIVE_PARAMS[] = {
     {.key = "threshold", .type = PARAM_NUMBER, SETTING(adaptive_threshold), .def = {0.05}, .lo = 0, .hi = 1,
-     .meaning = "a pixel whose samples differ by more than this in any channel (0..1, as displayed) takes "
-                "more; lower is smoother and slower"},
+     .meaning = "where a pixel's samples differ by more than this in any channel (0..1, as displayed), its "
+                "block of 4 x 2 pixels takes more; lower is smoother and slower"},
     {.key = "max_samples", .type = PARAM_INTEGER, SETTING(adaptive_max_samples), .def = {64}, .lo = 1,
      .hi = 4096, .meaning = "the most samples a pixel takes, at least samples"},
 };

@@ -328,17 +328,23 @@ static void test_edge_profile_is_the_filters_integral(void **state)
 }
 
 /* Adaptive sampling: only the pixels the edge crosses (column 16, with
- * the box of radius 0.5) see samples that differ, and each takes the most
- * allowed; the others keep the first 4. */
+ * the box of radius 0.5) see samples that differ, and the blocks of 4 x 2
+ * pixels holding them, columns 16 to 19 of all four rows, take the most
+ * allowed; the others keep the first 4. The wall's pixels in those blocks
+ * stay exactly the wall's colour. */
 static void test_adaptive_sampling_spends_samples_on_the_edge(void **state)
 {
     (void)state;
     glint_render_stats stats;
     glint_image img = edge_image(GLINT_FILTER_BOX, 0, 4, 40, &stats);
-    assert_int_equal(stats.samples, 32 * 4 * 4 + 4 * (40 - 4));
-    /* With its 40 samples the edge pixel is within a sample's worth of the wall's share, 0.7. */
-    for (int y = 0; y < 4; y++)
+    assert_int_equal(stats.samples, 32 * 4 * 4 + 4 * 4 * (40 - 4));
+    for (int y = 0; y < 4; y++) {
+        /* With its 40 samples the edge pixel is within a sample's worth of the wall's share, 0.7. */
         assert_near(img.pixels[3 * (y * 32 + 16)], 0.25 + 0.5 * 0.7, 0.5 / 40 + 1e-6);
+        for (int x = 17; x < 20; x++)
+            assert_true(img.pixels[3 * (y * 32 + x)] == 0.75f);
+        assert_true(img.pixels[3 * (y * 32 + 15)] == 0.25f);
+    }
     glint_image_free(&img);
 }
 
