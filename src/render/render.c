@@ -115,11 +115,11 @@ __attribute__((always_inline)) static inline void trace_sample(tracer *t, const 
  * samples differ (POV-Ray's +AM2 compares neighbours too): a pixel's own
  * few samples often agree where the picture does not, the four samples of
  * a blurred checker all landing on dark cells, say, and it then kept that
- * colour. On the depth of field, starting from 9 samples up to 72, the
- * noise was that of 64 samples everywhere; with neighbours it is reached
- * with half the samples (bench/README.md). The block is the same for any
- * tile size, thread or rank count, so the choice depends on its pixels'
- * samples alone, and its packets stay full. */
+ * colour. On the depth of field, from 9 samples up to 72, each pixel
+ * judged alone gave the noise of about 36 uniform samples; judged by
+ * blocks, that of 64, with half of 64's samples (bench/README.md). The
+ * block is the same for any tile size, thread or rank count, so the choice
+ * depends on its pixels' samples alone, and its packets stay full. */
 static void trace_more_samples(tracer *t, const job *j, const pixel_block_samples *bs,
                                const bool active[ACCEL_PACKET], bool careful, film_block *b, uint64_t *extra)
 {
