@@ -64,12 +64,31 @@ objects:
     material: grid
     transform: [{ translate: [0, 0.01, 0] }, { scale: 1.5 }]
 EOF
+# A floor of an image tiled by a planar mapping, repeated both ways and
+# read from its mipmap levels, which the Moon of the default scene (a
+# sphere, clamped along v) never reaches: code the training misses is
+# compiled for size, libm's floor called instead of one instruction
+# (bench's textured row: see bench/README.md).
+cat >"$train/tiles.yaml" <<EOF
+glint: 1
+settings: { width: 160, height: 120, samples: 4, sampler: regular }
+camera: { position: [0, 3, 7], look_at: [0, 0.6, 0], fov: 40 }
+textures:
+  tiles: { type: image, file: $PWD/assets/moon.jpg, wrap_v: repeat, mapping: { type: planar, scale: 1.5 } }
+materials:
+  tiles: { texture: tiles, specular: 0 }
+lights:
+  - { type: point, position: [4, 8, 6] }
+objects:
+  - { type: plane, normal: [0, 1, 0], material: tiles }
+EOF
 glint="$dir/glint"
 "$glint" -o "$train/seed-room.ppm" -w 200 -h 200 --threads 1 --quiet
 "$glint" "$train/grid.yaml" -o "$train/grid.ppm" --threads 1 --quiet
 "$glint" scenes/depth-of-field.yaml -o "$train/lens.ppm" -w 160 -h 120 --spp 16 --sampler sobol --threads 1 --quiet
 "$glint" scenes/csg.yaml -o "$train/csg.ppm" -w 120 -h 80 --threads 1 --quiet
 "$glint" scenes/still-life.yaml -o "$train/still.ppm" -w 120 -h 80 --threads 1 --quiet
+"$glint" "$train/tiles.yaml" -o "$train/tiles.ppm" --threads 1 --quiet
 
 cmake -S . -B "$dir" -DGLINT_PGO=use >/dev/null
 cmake --build "$dir" -j "$jobs"
