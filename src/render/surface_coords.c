@@ -79,9 +79,34 @@ void coord_gradients(const coord_spot *at, const texture *t, vec3 n, vec3 *g_u, 
     *g_v = v3_add(v3_scale(t1, dv[0]), v3_scale(t2, dv[1]));
 }
 
+/* How far a linear function of gradient g reaches over the footprint: a
+ * point q of the disc square to d lands on the surface at
+ * q - d (q . n) / (d . n), where g gives q . h, h = g - n (g . d) / (d . n);
+ * the most that reaches over a disc of radius 1 is h's part square to d.
+ * No normalised axes, so no square root but the last. */
+static double linear_reach(vec3 g, vec3 n, vec3 d, double inv_cos)
+{
+    vec3 h = v3_madd(g, n, -v3_dot(g, d) * inv_cos);
+    vec3 square = v3_madd(h, d, -v3_dot(h, d));
+    return sqrt(v3_dot(square, square));
+}
+
 uv_extent coord_footprint(const coord_spot *at, const texture *t, vec3 n, vec3 d, double width, double u,
                           double v)
 {
+    vec3 g_u, g_v;
+    if (mapping_gradients(t, &g_u, &g_v)) {
+        /* A linear map's gradients, carried to the world as normals are. */
+        if (at->to_object) {
+            g_u = xf_normal(at->to_object, g_u);
+            g_v = xf_normal(at->to_object, g_v);
+        }
+        /* A ray nearly along the surface stretches the footprint a million
+         * times at most. */
+        double cos_t = v3_dot(d, n);
+        double inv_cos = 1 / (fabs(cos_t) > 1e-6 ? cos_t : copysign(1e-6, cos_t));
+        return (uv_extent){width * linear_reach(g_u, n, d, inv_cos), width * linear_reach(g_v, n, d, inv_cos)};
+    }
     /* The ellipse's axes: `width` across the ray's slant, and stretched by
      * 1 / cos along it; a ray nearly square to the surface has no slant. */
     vec3 across, along, p = at->s->p;
@@ -93,31 +118,14 @@ uv_extent coord_footprint(const coord_spot *at, const texture *t, vec3 n, vec3 d
         along = v3_normalize(slant);
         across = v3_cross(n, along);
     }
-    double stretch = width / fmax(cos_t, 1e-6), ua, va, ub, vb;
-    vec3 g_u, g_v;
-    if (mapping_gradients(t, &g_u, &g_v)) {
-        /* A linear map's gradients, carried to the world as normals are. */
-        if (at->to_object) {
-            g_u = xf_normal(at->to_object, g_u);
-            g_v = xf_normal(at->to_object, g_v);
-        }
-        ua = v3_dot(g_u, across) * width;
-        va = v3_dot(g_v, across) * width;
-        ub = v3_dot(g_u, along) * stretch;
-        vb = v3_dot(g_v, along) * stretch;
-    } else {
-        /* One step along each axis from the hit, whose coordinates are
-         * known, gives how u and v change along it: a level needs no more
-         * precision, and each step is a mapping (often trigonometry) of
-         * its own. */
-        double e = coord_step(p), u1, v1, u2, v2;
-        coord_at(at, t, v3_madd(p, across, e), &u1, &v1);
-        coord_at(at, t, v3_madd(p, along, e), &u2, &v2);
-        ua = unwrapped(u1 - u) / e * width;
-        va = unwrapped(v1 - v) / e * width;
-        ub = unwrapped(u2 - u) / e * stretch;
-        vb = unwrapped(v2 - v) / e * stretch;
-    }
+    /* One step along each axis from the hit, whose coordinates are known,
+     * gives how u and v change along it: a level needs no more precision,
+     * and each step is a mapping (often trigonometry) of its own. */
+    double stretch = width / fmax(cos_t, 1e-6), e = coord_step(p), u1, v1, u2, v2;
+    coord_at(at, t, v3_madd(p, across, e), &u1, &v1);
+    coord_at(at, t, v3_madd(p, along, e), &u2, &v2);
+    double ua = unwrapped(u1 - u) / e * width, va = unwrapped(v1 - v) / e * width;
+    double ub = unwrapped(u2 - u) / e * stretch, vb = unwrapped(v2 - v) / e * stretch;
     /* A linear function over an ellipse of axes a and b spans
      * sqrt((g . a)^2 + (g . b)^2). */
     return (uv_extent){sqrt(ua * ua + ub * ub), sqrt(va * va + vb * vb)};

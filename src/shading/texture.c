@@ -2,6 +2,7 @@
  * passes, the uv mappings, and the checker and image look-ups. */
 #include <math.h>
 #include <stddef.h>
+#include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -237,12 +238,33 @@ color image_eval(const texture_image *img, double u, double v, glint_wrap wrap_u
     return rgb_lerp(top, bottom, ty);
 }
 
+/* The level of a footprint `texels` wide, finite and from 1 to 2^30: k
+ * where it is 2^k texels (log2, exactly), and between two such sizes the
+ * blend growing with the width itself, texels / 2^k - 1, rather than with
+ * its logarithm (within 0.09 of log2). Both come from the bits: libm's
+ * log2 would be a call, spilling every register a sample's shading
+ * holds, and its series a chain of divisions and multiplications the
+ * look-ups then wait for. */
+static double level_of_width(double texels)
+{
+    uint64_t bits;
+    memcpy(&bits, &texels, sizeof bits);
+    int k = (int)(bits >> 52) - 1023;
+    bits = (bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL;
+    double fraction;
+    memcpy(&fraction, &bits, sizeof fraction);
+    return k + (fraction - 1);
+}
+
 double image_level(const texture_image *img, uv_extent covered)
 {
     double texels = fmax(covered.u * img->width, covered.v * img->height);
     if (!(texels > 1) || img->level_count < 2)
         return 0;
-    double level = log2(texels), top = img->level_count - 1;
+    double top = img->level_count - 1;
+    if (!(texels < 0x1p30))
+        return top; /* and NaN-free past any image's size */
+    double level = level_of_width(texels);
     return level < top ? level : top;
 }
 

@@ -102,8 +102,9 @@ color checker_eval(color a, color b, double cell, double u, double v);
 color image_eval(const texture_image *img, double u, double v, glint_wrap wrap_u, glint_wrap wrap_v);
 
 /* The level of img (0: itself; fractions between) whose texels are as
- * wide as a sample covering `covered`: log2 of the texels it spans along
- * u or v, whichever is more, within the levels img has. */
+ * wide as a sample covering `covered`, within the levels img has: for a
+ * footprint of w texels along u or v, whichever is more, k where w is 2^k
+ * and k + w / 2^k - 1 between (within 0.09 of log2 w). */
 double image_level(const texture_image *img, uv_extent covered);
 
 /* image_eval at `level` of img: bilinear in the two levels either side of
