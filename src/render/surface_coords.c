@@ -79,16 +79,16 @@ void coord_gradients(const coord_spot *at, const texture *t, vec3 n, vec3 *g_u, 
     *g_v = v3_add(v3_scale(t1, dv[0]), v3_scale(t2, dv[1]));
 }
 
-/* How far a linear function of gradient g reaches over the footprint: a
- * point q of the disc square to d lands on the surface at
+/* How far a linear function of gradient g reaches over the footprint,
+ * squared: a point q of the disc square to d lands on the surface at
  * q - d (q . n) / (d . n), where g gives q . h, h = g - n (g . d) / (d . n);
- * the most that reaches over a disc of radius 1 is h's part square to d.
- * No normalised axes, so no square root but the last. */
-static double linear_reach(vec3 g, vec3 n, vec3 d, double inv_cos)
+ * the most that reaches over a disc of radius 1 is the length of h's part
+ * square to d. No normalised axes, so no square root. */
+static double linear_reach2(vec3 g, vec3 n, vec3 d, double inv_cos)
 {
     vec3 h = v3_madd(g, n, -v3_dot(g, d) * inv_cos);
     vec3 square = v3_madd(h, d, -v3_dot(h, d));
-    return sqrt(v3_dot(square, square));
+    return v3_dot(square, square);
 }
 
 uv_extent coord_footprint(const coord_spot *at, const texture *t, vec3 n, vec3 d, double width, double u,
@@ -105,7 +105,8 @@ uv_extent coord_footprint(const coord_spot *at, const texture *t, vec3 n, vec3 d
          * times at most. */
         double cos_t = v3_dot(d, n);
         double inv_cos = 1 / (fabs(cos_t) > 1e-6 ? cos_t : copysign(1e-6, cos_t));
-        return (uv_extent){width * linear_reach(g_u, n, d, inv_cos), width * linear_reach(g_v, n, d, inv_cos)};
+        double width2 = width * width;
+        return (uv_extent){width2 * linear_reach2(g_u, n, d, inv_cos), width2 * linear_reach2(g_v, n, d, inv_cos)};
     }
     /* The ellipse's axes: `width` across the ray's slant, and stretched by
      * 1 / cos along it; a ray nearly square to the surface has no slant. */
@@ -128,5 +129,5 @@ uv_extent coord_footprint(const coord_spot *at, const texture *t, vec3 n, vec3 d
     double ub = unwrapped(u2 - u) / e * stretch, vb = unwrapped(v2 - v) / e * stretch;
     /* A linear function over an ellipse of axes a and b spans
      * sqrt((g . a)^2 + (g . b)^2). */
-    return (uv_extent){sqrt(ua * ua + ub * ub), sqrt(va * va + vb * vb)};
+    return (uv_extent){ua * ua + ub * ub, va * va + vb * vb};
 }

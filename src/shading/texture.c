@@ -136,7 +136,7 @@ void mapping_apply(const glint_mapping *m, const surface *s, vec3 center, double
         *v = s->v;
         return;
     case GLINT_MAP_PLANAR:
-        if (v3_length(m->u_axis) == 0) {
+        if (v3_dot(m->u_axis, m->u_axis) == 0) { /* no axes given; no square root to say so */
             /* x / 1 is x: no division for the default scale. */
             *u = scale == 1 ? d.x : d.x / scale;
             *v = scale == 1 ? d.z : d.z / scale;
@@ -164,7 +164,7 @@ bool mapping_gradients(const texture *t, vec3 *g_u, vec3 *g_v)
     if (m->kind != GLINT_MAP_PLANAR)
         return false;
     double scale = m->scale > 0 ? m->scale : 1.0;
-    bool axes = v3_length(m->u_axis) != 0;
+    bool axes = v3_dot(m->u_axis, m->u_axis) != 0;
     vec3 a = v3_scale(axes ? v3_normalize(m->u_axis) : v3(1, 0, 0), 1 / scale);
     vec3 b = v3_scale(axes ? v3_normalize(m->v_axis) : v3(0, 0, 1), 1 / scale);
     if (!t->placed) {
@@ -238,33 +238,35 @@ color image_eval(const texture_image *img, double u, double v, glint_wrap wrap_u
     return rgb_lerp(top, bottom, ty);
 }
 
-/* The level of a footprint `texels` wide, finite and from 1 to 2^30: k
- * where it is 2^k texels (log2, exactly), and between two such sizes the
- * blend growing with the width itself, texels / 2^k - 1, rather than with
- * its logarithm (within 0.09 of log2). Both come from the bits: libm's
- * log2 would be a call, spilling every register a sample's shading
- * holds, and its series a chain of divisions and multiplications the
- * look-ups then wait for. */
-static double level_of_width(double texels)
+/* The level of a footprint whose width in texels, squared, is `area`
+ * (finite, from 1 to 2^60): half its log2, from its bits. With area =
+ * m 2^e (m from 1 to 2), (e + m - 1) / 2: exact where area is a power of
+ * 2, growing with the area between. libm's log2 would be a call, spilling
+ * every register a sample's shading holds, and a series a chain of
+ * divisions and multiplications the look-ups wait for. */
+static double level_of_area(double area)
 {
     uint64_t bits;
-    memcpy(&bits, &texels, sizeof bits);
-    int k = (int)(bits >> 52) - 1023;
+    memcpy(&bits, &area, sizeof bits);
+    int e = (int)(bits >> 52) - 1023;
     bits = (bits & 0x000fffffffffffffULL) | 0x3ff0000000000000ULL;
-    double fraction;
-    memcpy(&fraction, &bits, sizeof fraction);
-    return k + (fraction - 1);
+    double m;
+    memcpy(&m, &bits, sizeof m);
+    return 0.5 * (e + (m - 1));
 }
 
 double image_level(const texture_image *img, uv_extent covered)
 {
-    double texels = fmax(covered.u * img->width, covered.v * img->height);
-    if (!(texels > 1) || img->level_count < 2)
+    double w = img->width, h = img->height;
+    double along_u = covered.u2 * (w * w), along_v = covered.v2 * (h * h);
+    /* Compared, not libm's fmax: a call. */
+    double area = along_u > along_v ? along_u : along_v;
+    if (!(area > 1) || img->level_count < 2)
         return 0;
     double top = img->level_count - 1;
-    if (!(texels < 0x1p30))
+    if (!(area < 0x1p60))
         return top; /* and NaN-free past any image's size */
-    double level = level_of_width(texels);
+    double level = level_of_area(area);
     return level < top ? level : top;
 }
 

@@ -18,9 +18,11 @@
 typedef struct texture_kind texture_kind;
 
 /* How far along u and along v a sample's footprint reaches on the
- * surface, in texture coordinates; 0 and 0: a point (no filtering). */
+ * surface, in texture coordinates, squared (finding the reach itself
+ * would take square roots its users need not wait for); 0 and 0: a point
+ * (no filtering). */
 typedef struct uv_extent {
-    double u, v;
+    double u2, v2;
 } uv_extent;
 
 /* Decodes the image file at path into *out for an image texture: the
@@ -103,8 +105,9 @@ color image_eval(const texture_image *img, double u, double v, glint_wrap wrap_u
 
 /* The level of img (0: itself; fractions between) whose texels are as
  * wide as a sample covering `covered`, within the levels img has: for a
- * footprint of w texels along u or v, whichever is more, k where w is 2^k
- * and k + w / 2^k - 1 between (within 0.09 of log2 w). */
+ * footprint of w texels along u or v, whichever is more, with w^2 = m 2^e
+ * (m from 1 to 2), (e + m - 1) / 2: log2 w wherever w is a power of the
+ * square root of 2, within 0.043 of it between. */
 double image_level(const texture_image *img, uv_extent covered);
 
 /* image_eval at `level` of img: bilinear in the two levels either side of

@@ -62,8 +62,9 @@ static void test_levels_are_means(void **state)
 }
 
 /* The level is log2 of the texels a footprint spans along u or v, the
- * larger, within the levels there are; at level 0 the look-up is the plain
- * bilinear one, and between levels a blend of the two either side. */
+ * larger, within the levels there are: exactly at whole and half levels,
+ * within 0.043 between; at level 0 the look-up is the plain bilinear one,
+ * and between levels a blend of the two either side. */
 static void test_level_and_blend(void **state)
 {
     (void)state;
@@ -73,10 +74,14 @@ static void test_level_and_blend(void **state)
     texture_image img = {.width = 8, .height = 4, .hdr = px};
     assert_int_equal(texture_image_build_levels(&img, NULL), GLINT_OK);
     assert_int_equal(img.level_count, 4);
-    assert_near(image_level(&img, (uv_extent){0.5, 0}), 2, 1e-12);   /* 4 texels across */
+    /* Extents squared: 0.5 across is 4 texels, 1 down is 4 texels. */
+    assert_near(image_level(&img, (uv_extent){0.25, 0}), 2, 1e-12);  /* 4 texels across */
     assert_near(image_level(&img, (uv_extent){0, 1}), 2, 1e-12);     /* 4 texels down */
-    assert_near(image_level(&img, (uv_extent){0.1, 0}), 0, 0);       /* under a texel */
-    assert_near(image_level(&img, (uv_extent){100, 100}), 3, 0);     /* past the last level */
+    assert_near(image_level(&img, (uv_extent){0.125, 0}), 1.5, 1e-12); /* 2 sqrt 2 across */
+    assert_near(image_level(&img, (uv_extent){12.0 / 64, 0}), 1.75, 1e-12); /* sqrt 12 across */
+    assert_near(image_level(&img, (uv_extent){12.0 / 64, 0}), log2(sqrt(12)), 0.043);
+    assert_near(image_level(&img, (uv_extent){0.01, 0}), 0, 0);      /* under a texel */
+    assert_near(image_level(&img, (uv_extent){1e4, 1e4}), 3, 0);     /* past the last level */
     for (double u = -0.3; u < 1.3; u += 0.071)
         for (double v = 0.02; v < 1; v += 0.13) {
             color a = image_eval(&img, u, v, GLINT_WRAP_REPEAT, GLINT_WRAP_CLAMP);
@@ -218,10 +223,10 @@ static void test_planar_footprint_from_gradients(void **state)
     va = (va - v) / step * width;
     ub = (ub - u) / step * width / cos_t;
     vb = (vb - v) / step * width / cos_t;
-    assert_true(fabs(got.u - sqrt(ua * ua + ub * ub)) < 1e-6 * got.u);
-    assert_true(fabs(got.v - sqrt(va * va + vb * vb)) < 1e-6 * got.v);
+    assert_true(fabs(got.u2 - (ua * ua + ub * ub)) < 2e-6 * got.u2);
+    assert_true(fabs(got.v2 - (va * va + vb * vb)) < 2e-6 * got.v2);
     /* Not a trivial answer: the turn and the stretch mix both axes in. */
-    assert_true(got.u > 0.03 && got.v > 0.07 && got.v > 2 * got.u);
+    assert_true(got.u2 > 0.03 * 0.03 && got.v2 > 0.07 * 0.07 && got.v2 > 4 * got.u2);
     glint_scene_free(s);
 }
 
