@@ -339,7 +339,9 @@ static int add_die(glint_scene *s, const glint_transform *xf, int ivory, int pip
  * finds one ray at a time: the hit's t, part (flipped where a difference
  * cut it) and leaf, for rays from outside and inside, across a die, a
  * union of a turned box and a ball, a lens, a difference of two
- * intersections, and an intersection whose parts miss each other. A
+ * intersections, and an intersection whose parts miss each other (a
+ * difference's lanes whose cut parts lie clear of its first part skip the
+ * walk, so the die checks that shortcut against the walk too). A
  * combination holding a cylinder, or a part that moves, takes lanes one at
  * a time. */
 static void test_four_lanes_match_one(void **state)
