@@ -50,10 +50,10 @@ double coord_step(vec3 p);
 void coord_gradients(const coord_spot *at, const texture *t, vec3 n, vec3 *g_u, vec3 *g_v);
 
 /* How far along t's u and v the footprint of a sample reaches at the hit,
- * whose coordinates (coord_at's) are (u, v): a disc `width` across, square
- * to the unit ray direction d, laid on the surface of unit normal n (an
- * ellipse, longer the more the surface is slanted to the ray), seen
- * through the gradients of u and v. */
+ * squared (uv_extent), whose coordinates (coord_at's) are (u, v): a disc
+ * `width` across, square to the unit ray direction d, laid on the surface
+ * of unit normal n (an ellipse, longer the more the surface is slanted to
+ * the ray), seen through the gradients of u and v. */
 uv_extent coord_footprint(const coord_spot *at, const texture *t, vec3 n, vec3 d, double width, double u,
                           double v);
 
