@@ -30,20 +30,19 @@ color hit_texture_color(const glint_scene *scene, const accel_hit *h, const glin
                         vec3 d, double width)
 {
     const texture *t = &scene->textures[m->texture];
-    /* Meshes carry their uv already; shapes compute it only when a
-     * texture of (u, v) asks. */
-    shape moved;
-    const shape *sh = h->shape >= 0 ? shape_at(&scene->shapes[h->shape], h->time, &moved) : NULL;
-    if (sh && t->mapping.kind == GLINT_MAP_UV && !t->kind->solid)
-        shape_surface_uv(sh, s);
-    vec3 center = sh ? shape_center(sh, s->part) : mesh_center(hit_mesh(scene, h));
-    if (!(width > 0) || !texture_filters(t))
-        return texture_eval(t, s, center, (uv_extent){0, 0});
-    double u, v;
-    mapping_apply(&t->mapping, s, center, &u, &v);
-    vec3 q = texture_place(t, v3(u, v, 0));
+    /* The shape or mesh hit and its centre, found once for the look-up and
+     * for the footprint. */
     coord_spot at;
     coord_spot_init(scene, h, s, &at);
+    /* Meshes carry their uv already; shapes compute it only when a
+     * texture of (u, v) asks. */
+    if (at.sh && t->mapping.kind == GLINT_MAP_UV && !t->kind->solid)
+        shape_surface_uv(at.sh, s);
+    if (!(width > 0) || !texture_filters(t))
+        return texture_eval(t, s, at.center, (uv_extent){0, 0});
+    double u, v;
+    mapping_apply(&t->mapping, s, at.center, &u, &v);
+    vec3 q = texture_place(t, v3(u, v, 0));
     return t->kind->eval(t, q.x, q.y, coord_footprint(&at, t, s->n, d, width, q.x, q.y));
 }
 

@@ -123,6 +123,10 @@ bool texture_set_file(texture *t, const char *path)
     return true;
 }
 
+/* Whether a planar mapping was given its axes (both or neither, as
+ * mapping_validate checks); no square root to say so. */
+static bool planar_axes_given(const glint_mapping *m) { return v3_dot(m->u_axis, m->u_axis) != 0; }
+
 void mapping_apply(const glint_mapping *m, const surface *s, vec3 center, double *u, double *v)
 {
     double scale = m->scale > 0 ? m->scale : 1.0;
@@ -136,7 +140,7 @@ void mapping_apply(const glint_mapping *m, const surface *s, vec3 center, double
         *v = s->v;
         return;
     case GLINT_MAP_PLANAR:
-        if (v3_dot(m->u_axis, m->u_axis) == 0) { /* no axes given; no square root to say so */
+        if (!planar_axes_given(m)) {
             /* x / 1 is x: no division for the default scale. */
             *u = scale == 1 ? d.x : d.x / scale;
             *v = scale == 1 ? d.z : d.z / scale;
@@ -164,7 +168,7 @@ bool mapping_gradients(const texture *t, vec3 *g_u, vec3 *g_v)
     if (m->kind != GLINT_MAP_PLANAR)
         return false;
     double scale = m->scale > 0 ? m->scale : 1.0;
-    bool axes = v3_dot(m->u_axis, m->u_axis) != 0;
+    bool axes = planar_axes_given(m);
     vec3 a = v3_scale(axes ? v3_normalize(m->u_axis) : v3(1, 0, 0), 1 / scale);
     vec3 b = v3_scale(axes ? v3_normalize(m->v_axis) : v3(0, 0, 1), 1 / scale);
     if (!t->placed) {
