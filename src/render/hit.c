@@ -1,7 +1,7 @@
 /* hit.c - which shapes and mesh placements block all light: the opacity
  * lists the accelerator is built with, once a render. The per-hit calls
- * are in hit.h (which says why); a textured hit's colour, which may
- * measure the footprint it covers. */
+ * are in hit.h (which says why); where a textured hit reads its texture,
+ * which may measure the footprint it covers. */
 #include <stdlib.h>
 #include "render/hit.h"
 #include "render/surface_coords.h"
@@ -26,24 +26,27 @@ static bool shape_blocks(const glint_scene *scene, const shape *s)
     return true;
 }
 
-color hit_texture_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s,
-                        vec3 d, double width)
+void hit_texture_where(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s, vec3 d,
+                       double width, texture_read *out)
 {
-    const texture *t = &scene->textures[m->texture];
+    const texture *t = out->t = &scene->textures[m->texture];
+    out->covered = (uv_extent){0, 0};
+    if (t->kind->solid) {
+        out->at = texture_place(t, s->p_obj);
+        return;
+    }
     /* The shape or mesh hit and its centre, found once for the look-up and
      * for the footprint. */
     coord_spot at;
     coord_spot_init(scene, h, s, &at);
     /* Meshes carry their uv already; shapes compute it only when a
      * texture of (u, v) asks. */
-    if (at.sh && t->mapping.kind == GLINT_MAP_UV && !t->kind->solid)
+    if (at.sh && t->mapping.kind == GLINT_MAP_UV)
         shape_surface_uv(at.sh, s);
-    if (!(width > 0) || !texture_filters(t))
-        return texture_eval(t, s, at.center, (uv_extent){0, 0});
-    double u, v;
-    mapping_apply(&t->mapping, s, at.center, &u, &v);
-    vec3 q = texture_place(t, v3(u, v, 0));
-    return t->kind->eval(t, q.x, q.y, coord_footprint(&at, t, s->n, d, width, q.x, q.y));
+    out->at.z = 0;
+    texture_uv(t, s, at.center, &out->at.x, &out->at.y);
+    if (width > 0 && texture_filters(t))
+        out->covered = coord_footprint(&at, t, s->n, d, width, out->at.x, out->at.y);
 }
 
 bool hit_opacity(const glint_scene *scene, bool **shapes, bool **instances)

@@ -57,22 +57,44 @@ static __attribute__((unused)) void hit_surface(const glint_scene *scene, const 
         mesh_surface(hit_mesh(scene, h), inst, r, h->triangle, h->b1, h->b2, &h->t, s);
 }
 
-/* hit_color for a textured material (most materials have none). */
-color hit_texture_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s,
-                        vec3 d, double width);
+/* Where a textured hit reads its texture t: a solid texture at its placed
+ * point `at`; any other at placed (u, v) = (at.x, at.y), over a footprint
+ * reaching `covered` about them. */
+typedef struct texture_read {
+    const texture *t;
+    vec3 at;
+    uv_extent covered;
+} texture_read;
 
-/* The colour of material m (hit_material's) at the surface s of hit h
- * (hit_surface's), seen along unit direction d by a sample whose
- * footprint there is `width` across (0: a point): its colour, or its
- * texture's there, an image's averaged over the footprint when it filters
- * (texture_filters). A shape's uv is filled into s only when the texture
- * maps by it; a mesh carries its own. Inline, unlike the others: the test
- * for a texture is kept small enough to be inlined at each hit, apart from
- * the look-up. */
+/* Where the hit h (hit_surface's s) on material m, which has a texture,
+ * reads it, seen along unit direction d by a sample whose footprint there
+ * is `width` across (0: a point, no filtering). A shape's uv is filled
+ * into s only when the texture maps by it; a mesh carries its own. Apart
+ * from the look-up (texture_read_color) so that a packet finds where all
+ * its lanes read before it reads any: each lane's chain from hit to texel
+ * is long, and the processor overlaps the lanes' look-ups only when they
+ * no longer wait behind each other's (a tiled image floor: 26% faster). */
+void hit_texture_where(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s, vec3 d,
+                       double width, texture_read *out);
+
+/* The colour read at r (hit_texture_where's). */
+static inline color texture_read_color(const texture_read *r)
+{
+    if (r->t->kind->solid)
+        return r->t->kind->solid(r->t, r->at);
+    return texture_at_placed(r->t, r->at.x, r->at.y, r->covered);
+}
+
+/* The colour of material m at the hit h (hit_surface's s), as
+ * hit_texture_where's arguments say, for one hit alone. */
 static inline color hit_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s,
                               vec3 d, double width)
 {
-    return m->texture < 0 ? m->color : hit_texture_color(scene, h, m, s, d, width);
+    if (m->texture < 0)
+        return m->color;
+    texture_read r;
+    hit_texture_where(scene, h, m, s, d, width, &r);
+    return texture_read_color(&r);
 }
 
 /* The shape a ray leaving hit h along d cannot meet again, which the

@@ -48,7 +48,7 @@ static color shadow_filter(void *user, const ray *r, const accel_hit *hit, color
         surface s;
         hit_surface(scene, r, &h, &s);
         if (m->texture >= 0)
-            base = hit_texture_color(scene, &h, m, &s, r->d, 0);
+            base = hit_color(scene, &h, m, &s, r->d, 0);
         if (material_absorbs(m)) {
             color d = material_optical_depth(m, h.t);
             *depth = rgb_madd(*depth, d, v3_dot(r->d, s.n) > 0 ? 1 : -1);
@@ -79,10 +79,9 @@ typedef struct paths {
 } paths;
 
 /* Describes the hit h of ray r for shading, its distance refined where
- * Embree's was single precision (hit_surface), for a ray that has
- * travelled `travelled` before it (the footprint a texture is averaged
- * over widens with the whole path). */
-static void shade_begin(const tracer *t, const ray *r, const accel_hit *h, double travelled, shade_point *sp)
+ * Embree's was single precision (hit_surface), all but its colour
+ * (shade_colors). */
+static void shade_begin(const tracer *t, const ray *r, const accel_hit *h, shade_point *sp)
 {
     const glint_scene *scene = t->scene;
     sp->hit = *h;
@@ -94,8 +93,29 @@ static void shade_begin(const tracer *t, const ray *r, const accel_hit *h, doubl
     sp->n = front ? sp->s.n : v3_neg(sp->s.n);
     sp->ns = front ? sp->s.shading_n : v3_neg(sp->s.shading_n);
     sp->origin = offset_point(sp->s.p, sp->n);
-    sp->base = hit_color(scene, &sp->hit, sp->m, &sp->s, r->d,
-                         t->cone_width + t->cone_spread * (travelled + sp->hit.t));
+}
+
+/* The surface colours of a packet's lanes in `found` (shade_begin's), seen
+ * along rays r that have travelled path->travelled before them (the
+ * footprint a texture is averaged over widens with the whole path): where
+ * every textured lane reads is found before any reads (hit.h says why). */
+static void shade_colors(const tracer *t, const ray r[ACCEL_PACKET], const bool found[ACCEL_PACKET],
+                         const paths *path, shade_point sp[ACCEL_PACKET])
+{
+    texture_read reads[ACCEL_PACKET];
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        if (!found[i])
+            continue;
+        if (sp[i].m->texture < 0) {
+            sp[i].base = sp[i].m->color;
+            continue;
+        }
+        double width = t->cone_width + t->cone_spread * (path->travelled[i] + sp[i].hit.t);
+        hit_texture_where(t->scene, &sp[i].hit, sp[i].m, &sp[i].s, r[i].d, width, &reads[i]);
+    }
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        if (found[i] && sp[i].m->texture >= 0)
+            sp[i].base = texture_read_color(&reads[i]);
 }
 
 /* The shadow segment from sp, seen along ray r, towards light l sampled
@@ -920,10 +940,15 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (!found[i])
             continue;
-        shade_begin(t, &lane_ray[i], &hits[i], path->travelled[i], &sp[i]);
+        shade_begin(t, &lane_ray[i], &hits[i], &sp[i]);
         if (fog && fog_hides(&scene->fog, sp[i].hit.t))
             found[i] = false;
-        else if (occlusion)
+    }
+    shade_colors(t, lane_ray, found, path, sp);
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        if (!found[i])
+            continue;
+        if (occlusion)
             local[i] = glow(&sp[i]);
         else
             local[i] = rgb_add(ambient_term(scene, &sp[i]), glow(&sp[i]));

@@ -38,11 +38,7 @@ void coord_at(const coord_spot *at, const texture *t, vec3 q, double *u, double 
         else
             mesh_uv_at(at->me, at->triangle, near.p_obj, &near.u, &near.v);
     }
-    double mu, mv;
-    mapping_apply(&t->mapping, &near, at->center, &mu, &mv);
-    vec3 placed = texture_place(t, v3(mu, mv, 0));
-    *u = placed.x;
-    *v = placed.y;
+    texture_uv(t, &near, at->center, u, v);
 }
 
 void coord_tangents(vec3 n, vec3 *t1, vec3 *t2)

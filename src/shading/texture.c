@@ -7,6 +7,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include "core/error.h"
+#include "core/lanes.h"
 #include "core/registry.h"
 #include "geometry/shape_math.h"
 #include "shading/texture.h"
@@ -102,6 +103,8 @@ glint_status texture_init(texture *t, const glint_texture *desc, image_load_fn l
         return error_set(err, GLINT_ERR_INVALID, "%s transform is singular or not finite", what);
     t->placed = !xf_is_identity(&place);
     t->mapping = desc->mapping;
+    if (t->mapping.kind == GLINT_MAP_PLANAR)
+        t->planar = planar_map_of(&t->mapping, t->placed ? &t->to_texture : NULL);
     t->desc = *desc;
     t->desc.transform = place;
     t->desc.file = NULL;
@@ -127,28 +130,40 @@ bool texture_set_file(texture *t, const char *path)
  * mapping_validate checks); no square root to say so. */
 static bool planar_axes_given(const glint_mapping *m) { return v3_dot(m->u_axis, m->u_axis) != 0; }
 
+planar_map planar_map_of(const glint_mapping *m, const transform *to_texture)
+{
+    double scale = m->scale > 0 ? m->scale : 1.0;
+    bool axes = planar_axes_given(m);
+    vec3 a = v3_scale(axes ? v3_normalize(m->u_axis) : v3(1, 0, 0), 1 / scale);
+    vec3 b = v3_scale(axes ? v3_normalize(m->v_axis) : v3(0, 0, 1), 1 / scale);
+    /* Before placing, u = a . (p - c) and v = b . (p - c), where c is the
+     * mapping's centre (the origin unless given): a planar mapping starts
+     * from the origin of the shape's coordinates, so neighbouring shapes
+     * continue one pattern (a floor of tiles). */
+    planar_map map = {a, b, -v3_dot(a, m->center), -v3_dot(b, m->center)};
+    if (!to_texture)
+        return map;
+    /* Placing maps (u, v, 0) by the first two rows of to_texture. */
+    const double (*x)[4] = to_texture->m;
+    return (planar_map){v3_add(v3_scale(a, x[0][0]), v3_scale(b, x[0][1])),
+                        v3_add(v3_scale(a, x[1][0]), v3_scale(b, x[1][1])),
+                        x[0][0] * map.u0 + x[0][1] * map.v0 + x[0][3], x[1][0] * map.u0 + x[1][1] * map.v0 + x[1][3]};
+}
+
 void mapping_apply(const glint_mapping *m, const surface *s, vec3 center, double *u, double *v)
 {
     double scale = m->scale > 0 ? m->scale : 1.0;
-    /* A planar mapping starts from the origin of the shape's coordinates,
-     * so neighbouring shapes continue one pattern (a floor of tiles). */
-    vec3 origin = m->center_given || m->kind == GLINT_MAP_PLANAR ? m->center : center;
-    vec3 d = v3_sub(s->p_obj, origin);
+    vec3 d = v3_sub(s->p_obj, m->center_given ? m->center : center);
     switch (m->kind) {
     case GLINT_MAP_UV:
         *u = s->u;
         *v = s->v;
         return;
-    case GLINT_MAP_PLANAR:
-        if (!planar_axes_given(m)) {
-            /* x / 1 is x: no division for the default scale. */
-            *u = scale == 1 ? d.x : d.x / scale;
-            *v = scale == 1 ? d.z : d.z / scale;
-        } else {
-            *u = v3_dot(d, v3_normalize(m->u_axis)) / scale;
-            *v = v3_dot(d, v3_normalize(m->v_axis)) / scale;
-        }
+    case GLINT_MAP_PLANAR: {
+        planar_map map = planar_map_of(m, NULL);
+        planar_map_apply(&map, s->p_obj, u, v);
         return;
+    }
     case GLINT_MAP_SPHERICAL:
         spherical_uv(v3_normalize(d), u, v);
         return;
@@ -160,27 +175,6 @@ void mapping_apply(const glint_mapping *m, const surface *s, vec3 center, double
     }
     }
     *u = *v = 0;
-}
-
-bool mapping_gradients(const texture *t, vec3 *g_u, vec3 *g_v)
-{
-    const glint_mapping *m = &t->mapping;
-    if (m->kind != GLINT_MAP_PLANAR)
-        return false;
-    double scale = m->scale > 0 ? m->scale : 1.0;
-    bool axes = planar_axes_given(m);
-    vec3 a = v3_scale(axes ? v3_normalize(m->u_axis) : v3(1, 0, 0), 1 / scale);
-    vec3 b = v3_scale(axes ? v3_normalize(m->v_axis) : v3(0, 0, 1), 1 / scale);
-    if (!t->placed) {
-        *g_u = a;
-        *g_v = b;
-        return true;
-    }
-    /* texture_place's map of (u, v, 0): its first two rows, on u and v. */
-    const double (*x)[4] = t->to_texture.m;
-    *g_u = v3_add(v3_scale(a, x[0][0]), v3_scale(b, x[0][1]));
-    *g_v = v3_add(v3_scale(a, x[1][0]), v3_scale(b, x[1][1]));
-    return true;
 }
 
 color checker_eval(color a, color b, double cell, double u, double v)
@@ -196,16 +190,39 @@ color checker_eval(color a, color b, double cell, double u, double v)
     return *chosen;
 }
 
-static color texel(const texture_image *img, int x, int y)
+/* A texel's linear channels, from index i of its first, in a quad's first
+ * three lanes: one conversion to double for all three. Inlined where
+ * `hdr` is a constant, so the test for the format runs once a look-up. */
+static inline quad_f64 texel(const texture_image *img, bool hdr, size_t i)
 {
-    size_t i = 3 * ((size_t)y * img->width + x);
-    return rgb(texture_image_at(img, i), texture_image_at(img, i + 1), texture_image_at(img, i + 2));
+    quad_f32 f = hdr ? (quad_f32){img->hdr[i], img->hdr[i + 1], img->hdr[i + 2], 0}
+                     : (quad_f32){img->linear[img->srgb[i]], img->linear[img->srgb[i + 1]],
+                                  img->linear[img->srgb[i + 2]], 0};
+    return __builtin_convertvector(f, quad_f64);
+}
+
+/* rgb_lerp on quads: a (1 - t) + b t, lane by lane, the same bits. */
+static inline quad_f64 quad_lerp(quad_f64 a, quad_f64 b, double t)
+{
+    return a * quad_splat(1.0 - t) + b * quad_splat(t);
+}
+
+/* The bilinear blend of the texels at rows y0 and y1 and columns x0 and x1
+ * of img, weights tx and ty of the second of each. */
+static inline color bilinear(const texture_image *img, bool hdr, int x0, int x1, int y0, int y1, double tx,
+                             double ty)
+{
+    size_t row0 = (size_t)y0 * img->width, row1 = (size_t)y1 * img->width;
+    quad_f64 top = quad_lerp(texel(img, hdr, 3 * (row0 + x0)), texel(img, hdr, 3 * (row0 + x1)), tx);
+    quad_f64 bottom = quad_lerp(texel(img, hdr, 3 * (row1 + x0)), texel(img, hdr, 3 * (row1 + x1)), tx);
+    quad_f64 c = quad_lerp(top, bottom, ty);
+    return rgb(c[0], c[1], c[2]);
 }
 
 /* Along an axis of n texels wrapped by w, the texels *i0 and *i1 either
  * side of coordinate c and the weight *t of *i1. A mirrored coordinate is
  * first folded into [0, 1], where it then reads as clamped. */
-static void wrap_axis(double c, int n, glint_wrap w, int *i0, int *i1, double *t)
+static inline __attribute__((always_inline)) void wrap_axis(double c, int n, glint_wrap w, int *i0, int *i1, double *t)
 {
     if (w == GLINT_WRAP_MIRROR) {
         double folded = c - 2 * floor(0.5 * c);
@@ -237,9 +254,7 @@ color image_eval(const texture_image *img, double u, double v, glint_wrap wrap_u
     double tx, ty;
     wrap_axis(u, img->width, wrap_u, &x0, &x1, &tx);
     wrap_axis(v, img->height, wrap_v, &y0, &y1, &ty);
-    color top = rgb_lerp(texel(img, x0, y0), texel(img, x1, y0), tx);
-    color bottom = rgb_lerp(texel(img, x0, y1), texel(img, x1, y1), tx);
-    return rgb_lerp(top, bottom, ty);
+    return img->hdr ? bilinear(img, true, x0, x1, y0, y1, tx, ty) : bilinear(img, false, x0, x1, y0, y1, tx, ty);
 }
 
 /* The level of a footprint whose width in texels, squared, is `area`

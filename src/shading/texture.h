@@ -30,6 +30,15 @@ typedef struct uv_extent {
  * one file. `user` is the caller's. */
 typedef glint_status (*image_load_fn)(void *user, const char *path, texture_image *out, glint_error *err);
 
+/* A planar mapping, and the texture's placement after it, as one affine
+ * map of the object-space point p: placed u = g_u . p + u0, v = g_v . p +
+ * v0. Composed once, so a look-up takes two dot products, and g_u and g_v
+ * are the gradients a footprint is measured with. */
+typedef struct planar_map {
+    vec3 g_u, g_v;
+    double u0, v0;
+} planar_map;
+
 typedef struct texture {
     char *name;                /* may be NULL */
     const texture_kind *kind;
@@ -39,6 +48,7 @@ typedef struct texture {
     texture_image image;       /* image texture, linear RGB */
     bool placed;               /* the description's transform is not the identity */
     transform to_texture;      /* its inverse: from the thing's space (or uv) to the texture's */
+    planar_map planar;         /* a planar mapping's, placed (planar_map_of) */
     /* What it was made from, for writing the scene back as a file
      * (glint_scene_write_yaml); desc.file is owned, and NULL for an image
      * decoded from memory. */
@@ -91,10 +101,26 @@ glint_status mapping_validate(const glint_mapping *m, glint_error *err);
  * spherical and cylindrical mappings without a center_given are centred. */
 void mapping_apply(const glint_mapping *m, const surface *s, vec3 center, double *u, double *v);
 
+/* Planar mapping m (which mapping_validate accepts) followed by the
+ * placement to_texture (NULL: none) as one affine map. */
+planar_map planar_map_of(const glint_mapping *m, const transform *to_texture);
+
+/* map's (u, v) at object-space point p. */
+static inline void planar_map_apply(const planar_map *map, vec3 p, double *u, double *v)
+{
+    *u = v3_dot(map->g_u, p) + map->u0;
+    *v = v3_dot(map->g_v, p) + map->v0;
+}
+
 /* For a texture whose placed (u, v) are a linear function of the
  * object-space point (a planar mapping): their gradients there, in object
  * space; false for any other mapping. */
-bool mapping_gradients(const texture *t, vec3 *g_u, vec3 *g_v);
+static inline bool mapping_gradients(const texture *t, vec3 *g_u, vec3 *g_v)
+{
+    *g_u = t->planar.g_u;
+    *g_v = t->planar.g_v;
+    return t->mapping.kind == GLINT_MAP_PLANAR;
+}
 
 /* The colour of checker cells at (u, v): a where floor(u/cell) + floor(v/cell) is even. */
 color checker_eval(color a, color b, double cell, double u, double v);
@@ -122,28 +148,38 @@ static inline vec3 texture_place(const texture *t, vec3 p)
     return t->placed ? xf_point(&t->to_texture, p) : p;
 }
 
+/* The colour of texture t at placed texture coordinates (u, v), for a
+ * sample covering `covered` of them. The checker, the texture of most
+ * floors, is looked up inline: through its record it cost the seed room
+ * 0.4% of its instructions. */
+static inline color texture_at_placed(const texture *t, double u, double v, uv_extent covered)
+{
+    if (t->kind == &checker_texture)
+        return checker_eval(t->a, t->b, t->cell, u, v);
+    return t->kind->eval(t, u, v, covered);
+}
+
 /* The colour of texture t at texture coordinates (u, v), placed, for a
  * sample covering `covered` of the placed coordinates. */
 static inline color texture_at_uv(const texture *t, double u, double v, uv_extent covered)
 {
     vec3 q = texture_place(t, v3(u, v, 0));
-    if (t->kind == &checker_texture)
-        return checker_eval(t->a, t->b, t->cell, q.x, q.y);
-    return t->kind->eval(t, q.x, q.y, covered);
+    return texture_at_placed(t, q.x, q.y, covered);
 }
 
-/* The colour of texture t at surface s of a thing whose centre is center
- * (as for mapping_apply), or a solid texture's at s's point, for a sample
- * covering `covered` of its placed (u, v). The checker, the texture of most
- * floors, is looked up inline: through its record it cost the seed room
- * 0.4% of its instructions. */
-static inline color texture_eval(const texture *t, const surface *s, vec3 center, uv_extent covered)
+/* The placed texture coordinates of surface s under texture t's mapping,
+ * on a thing whose centre is center (as for mapping_apply). */
+static inline void texture_uv(const texture *t, const surface *s, vec3 center, double *u, double *v)
 {
-    if (t->kind->solid)
-        return t->kind->solid(t, texture_place(t, s->p_obj));
-    double u, v;
-    mapping_apply(&t->mapping, s, center, &u, &v);
-    return texture_at_uv(t, u, v, covered);
+    if (t->mapping.kind == GLINT_MAP_PLANAR) {
+        planar_map_apply(&t->planar, s->p_obj, u, v);
+        return;
+    }
+    double mu, mv;
+    mapping_apply(&t->mapping, s, center, &mu, &mv);
+    vec3 q = texture_place(t, v3(mu, mv, 0));
+    *u = q.x;
+    *v = q.y;
 }
 
 /* Whether t's colour depends on how much of it a sample covers: an image

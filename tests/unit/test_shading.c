@@ -384,8 +384,7 @@ static void test_checker_3d(void **state)
                  {{0.3, 0.3, 0.3}, 0},  /* 1 + 1 + 1 */
                  {{-0.3, 0.6, 0.1}, 1}}; /* -2 + 2 + 0 */
     for (size_t i = 0; i < sizeof cases / sizeof cases[0]; i++) {
-        surface sf = {.p_obj = cases[i].p, .u = 0.1, .v = 0.1};
-        color c = texture_eval(&t, &sf, v3(0, 0, 0), (uv_extent){0, 0});
+        color c = t.kind->solid(&t, texture_place(&t, cases[i].p));
         assert_true(c.r == cases[i].red && c.b == 1 - cases[i].red);
     }
     /* Straight up, (0, 1, 0): cell indices 0, 4 and 0. */
