@@ -37,7 +37,7 @@ static __attribute__((unused)) const glint_material *hit_material(const glint_sc
 }
 
 /* Describes the surface at hit h of ray r, all but a shape's uv (which
- * hit_color computes when a texture asks). A mesh hit's h->t is Embree's
+ * hit_texture_where computes when a texture asks). A mesh hit's h->t is Embree's
  * single-precision distance until this refines it in double precision, so
  * anything that compares the distance exactly (fog) comes after it. */
 static __attribute__((unused)) void hit_surface(const glint_scene *scene, const ray *r, accel_hit *h, surface *s)
