@@ -5,14 +5,16 @@
 
 #include <stdint.h>
 
-/* A 32-bit integer finaliser with good avalanche (lowbias32 constants). */
+/* The steps of a 32-bit integer finaliser with good avalanche (lowbias32
+ * constants) on x, in place: an unsigned 32-bit integer or a vector of
+ * them, so that hash_u32 and its four-lane form (noise.c) are one
+ * definition. */
+#define HASH_U32_STEPS(x) \
+    ((x) ^= (x) >> 16, (x) *= 0x7feb352dU, (x) ^= (x) >> 15, (x) *= 0x846ca68bU, (x) ^= (x) >> 16)
+
 static inline uint32_t hash_u32(uint32_t x)
 {
-    x ^= x >> 16;
-    x *= 0x7feb352dU;
-    x ^= x >> 15;
-    x *= 0x846ca68bU;
-    x ^= x >> 16;
+    HASH_U32_STEPS(x);
     return x;
 }
 

@@ -85,6 +85,19 @@ static inline quad_f64 quad_sqrt(quad_f64 v)
 static inline quad_f64 quad_sqrt(quad_f64 v) { return (quad_f64){sqrt(v[0]), sqrt(v[1]), sqrt(v[2]), sqrt(v[3])}; }
 #endif
 
+/* floor of every lane, as floor's. */
+static inline quad_f64 quad_floor(quad_f64 v)
+{
+#if defined(__AVX__)
+    return (quad_f64)_mm256_round_pd((__m256d)v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
+#elif defined(__SSE4_1__)
+    __m128d lo = _mm_floor_pd((__m128d){v[0], v[1]}), hi = _mm_floor_pd((__m128d){v[2], v[3]});
+    return (quad_f64){lo[0], lo[1], hi[0], hi[1]};
+#else
+    return (quad_f64){floor(v[0]), floor(v[1]), floor(v[2]), floor(v[3])};
+#endif
+}
+
 /* flags[i] = lane i of m is set. */
 static inline void quad_mask_store(bool flags[QUAD], quad_mask m)
 {

@@ -3,6 +3,7 @@
  * are in hit.h (which says why); where a textured hit reads its texture,
  * which may measure the footprint it covers. */
 #include <stdlib.h>
+#include <string.h>
 #include "render/hit.h"
 #include "render/surface_coords.h"
 
@@ -47,6 +48,39 @@ void hit_texture_where(const glint_scene *scene, const accel_hit *h, const glint
     texture_uv(t, s, at.center, &out->at.x, &out->at.y);
     if (width > 0 && texture_filters(t))
         out->covered = coord_footprint(&at, t, s->n, d, width, out->at.x, out->at.y);
+}
+
+void texture_read_colors8(const texture_read reads[ACCEL_PACKET], const bool wanted[ACCEL_PACKET],
+                          color out[ACCEL_PACKET])
+{
+    bool left[ACCEL_PACKET];
+    memcpy(left, wanted, sizeof left);
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        const texture *t = reads[i].t;
+        if (!left[i] || !t->kind->solid4)
+            continue;
+        int lane[QUAD], n = 0;
+        for (int j = i; j < ACCEL_PACKET && n < QUAD; j++)
+            if (left[j] && reads[j].t == t)
+                lane[n++] = j;
+        /* Lanes past n repeat the first's point, and are not read. */
+        quad_f64 p[3];
+        for (int l = 0; l < QUAD; l++) {
+            vec3 at = reads[lane[l < n ? l : 0]].at;
+            p[0][l] = at.x;
+            p[1][l] = at.y;
+            p[2][l] = at.z;
+        }
+        color c[QUAD];
+        t->kind->solid4(t, p, n, c);
+        for (int l = 0; l < n; l++) {
+            out[lane[l]] = c[l];
+            left[lane[l]] = false;
+        }
+    }
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        if (left[i])
+            out[i] = texture_read_color(&reads[i]);
 }
 
 bool hit_opacity(const glint_scene *scene, bool **shapes, bool **instances)

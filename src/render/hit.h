@@ -85,6 +85,13 @@ static inline color texture_read_color(const texture_read *r)
     return texture_at_placed(r->t, r->at.x, r->at.y, r->covered);
 }
 
+/* texture_read_color of reads[i] into out[i], for each lane i of a packet
+ * in `wanted`: lanes reading one noise texture (a kind with solid4) four
+ * at a time, whose hashes and blends then run on four lanes' points in one
+ * go, where one lane's noise alone leaves most of the processor idle. */
+void texture_read_colors8(const texture_read reads[ACCEL_PACKET], const bool wanted[ACCEL_PACKET],
+                          color out[ACCEL_PACKET]);
+
 /* The colour of material m at the hit h (hit_surface's s), as
  * hit_texture_where's arguments say, for one hit alone. */
 static inline color hit_color(const glint_scene *scene, const accel_hit *h, const glint_material *m, surface *s,

@@ -103,6 +103,7 @@ static void shade_colors(const tracer *t, const ray r[ACCEL_PACKET], const bool 
                          const paths *path, shade_point sp[ACCEL_PACKET])
 {
     texture_read reads[ACCEL_PACKET];
+    bool textured[ACCEL_PACKET] = {false}, any = false;
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (!found[i])
             continue;
@@ -112,10 +113,15 @@ static void shade_colors(const tracer *t, const ray r[ACCEL_PACKET], const bool 
         }
         double width = t->cone_width + t->cone_spread * (path->travelled[i] + sp[i].hit.t);
         hit_texture_where(t->scene, &sp[i].hit, sp[i].m, &sp[i].s, r[i].d, width, &reads[i]);
+        textured[i] = any = true;
     }
+    if (!any)
+        return;
+    color base[ACCEL_PACKET];
+    texture_read_colors8(reads, textured, base);
     for (int i = 0; i < ACCEL_PACKET; i++)
-        if (found[i] && sp[i].m->texture >= 0)
-            sp[i].base = texture_read_color(&reads[i]);
+        if (textured[i])
+            sp[i].base = base[i];
 }
 
 /* The shadow segment from sp, seen along ray r, towards light l sampled

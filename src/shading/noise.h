@@ -11,11 +11,16 @@
 #define GLINT_SHADING_NOISE_H
 
 #include <stdint.h>
+#include "core/lanes.h"
 #include "core/vec.h"
 
 /* The noise at p, from about -1 to 1 (never beyond +-1.04); `layer` picks
  * one of many unrelated noises. 0 where p is not finite or beyond 1e15. */
 double noise_at(vec3 p, uint32_t layer);
+
+/* noise_at of four points, the lanes of p[0] (x), p[1] (y) and p[2] (z):
+ * the same value in each lane as noise_at's for it. */
+quad_f64 noise_at4(const quad_f64 p[3], uint32_t layer);
 
 /* How octaves of noise are layered: octave i is noise at p * lacunarity^i
  * with amplitude gain^i, its own layer. */
@@ -25,12 +30,13 @@ typedef struct noise_octaves {
     double gain;        /* from 0 to 1 */
 } noise_octaves;
 
-/* Fractal Brownian motion: the octaves' sum divided by the sum of their
- * amplitudes, so from about -1 to 1, as one octave is. */
-double noise_fbm(vec3 p, noise_octaves o);
+/* Fractal Brownian motion at four points (noise_at4's lanes): the
+ * octaves' sum divided by the sum of their amplitudes, so from about -1
+ * to 1, as one octave is. */
+quad_f64 noise_fbm4(const quad_f64 p[3], noise_octaves o);
 
-/* Turbulence: as noise_fbm, but of each octave's magnitude, so from 0 to
+/* Turbulence: as noise_fbm4, but of each octave's magnitude, so from 0 to
  * about 1, with sharp creases where an octave crosses 0. */
-double noise_turbulence(vec3 p, noise_octaves o);
+quad_f64 noise_turbulence4(const quad_f64 p[3], noise_octaves o);
 
 #endif

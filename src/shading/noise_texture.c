@@ -32,38 +32,55 @@ static noise_octaves octaves(const texture *t)
     return (noise_octaves){t->desc.octaves, t->desc.lacunarity, t->desc.gain};
 }
 
-/* The pattern's point: p in units of the pattern's scale. */
-static vec3 pattern_point(const texture *t, vec3 p) { return v3_scale(p, 1 / t->desc.scale); }
+/* The pattern's points: p in units of the pattern's scale. */
+static void pattern_points(const texture *t, const quad_f64 p[3], quad_f64 q[3])
+{
+    quad_f64 per = quad_splat(1 / t->desc.scale);
+    for (int k = 0; k < 3; k++)
+        q[k] = p[k] * per;
+}
 
 /* noise: 0.5 + 0.5 fbm(q), so mostly between 0.3 and 0.7. */
-static color noise_at_point(const texture *t, vec3 p)
+static void noise_at_points(const texture *t, const quad_f64 p[3], int lanes, color out[QUAD])
 {
-    return color_map(t, 0.5 + 0.5 * noise_fbm(pattern_point(t, p), octaves(t)));
+    quad_f64 q[3];
+    pattern_points(t, p, q);
+    quad_f64 v = quad_splat(0.5) + quad_splat(0.5) * noise_fbm4(q, octaves(t));
+    for (int i = 0; i < lanes; i++)
+        out[i] = color_map(t, v[i]);
 }
 
 /* marble: 0.5 - 0.5 cos(2 pi (q.x + turbulence fbm(q))), bands one unit of
  * q apart, 0 where q.x is whole. */
-static color marble_at(const texture *t, vec3 p)
+static void marble_at(const texture *t, const quad_f64 p[3], int lanes, color out[QUAD])
 {
-    vec3 q = pattern_point(t, p);
-    double x = q.x + t->desc.turbulence * noise_fbm(q, octaves(t));
-    return color_map(t, 0.5 - 0.5 * cos(2 * M_PI * x));
+    quad_f64 q[3];
+    pattern_points(t, p, q);
+    quad_f64 x = q[0] + quad_splat(t->desc.turbulence) * noise_fbm4(q, octaves(t));
+    for (int i = 0; i < lanes; i++)
+        out[i] = color_map(t, 0.5 - 0.5 * cos(2 * M_PI * x[i]));
 }
 
 /* wood: the fraction of r = |q.xz| + turbulence fbm(q), rings one unit of
  * q apart that darken outwards and start again, as a year's growth does. */
-static color wood_at(const texture *t, vec3 p)
+static void wood_at(const texture *t, const quad_f64 p[3], int lanes, color out[QUAD])
 {
-    vec3 q = pattern_point(t, p);
-    double r = sqrt(q.x * q.x + q.z * q.z) + t->desc.turbulence * noise_fbm(q, octaves(t));
-    return color_map(t, r - floor(r));
+    quad_f64 q[3];
+    pattern_points(t, p, q);
+    quad_f64 r = quad_sqrt(q[0] * q[0] + q[2] * q[2]) + quad_splat(t->desc.turbulence) * noise_fbm4(q, octaves(t));
+    r -= quad_floor(r);
+    for (int i = 0; i < lanes; i++)
+        out[i] = color_map(t, r[i]);
 }
 
 /* granite: min(1, 2 turbulence(q)), flecks with sharp dark creases. */
-static color granite_at(const texture *t, vec3 p)
+static void granite_at(const texture *t, const quad_f64 p[3], int lanes, color out[QUAD])
 {
-    double v = 2 * noise_turbulence(pattern_point(t, p), octaves(t));
-    return color_map(t, v < 1 ? v : 1);
+    quad_f64 q[3];
+    pattern_points(t, p, q);
+    quad_f64 v = quad_splat(2) * noise_turbulence4(q, octaves(t));
+    for (int i = 0; i < lanes; i++)
+        out[i] = color_map(t, v[i] < 1 ? v[i] : 1);
 }
 
 /* The keys of every noise texture, with that kind's defaults. */
@@ -91,11 +108,12 @@ static const param WOOD_TABLE[] = {NOISE_PARAMS(0.1, 4), TURBULENCE_PARAM(0.3)};
 static const param GRANITE_TABLE[] = {NOISE_PARAMS(0.25, 6)};
 
 const texture_kind noise_texture = {.name = "noise", .id = GLINT_TEXTURE_NOISE, .params = PARAM_TABLE(NOISE_TABLE),
-                                    .init = noise_init, .solid = noise_at_point};
+                                    .init = noise_init, .solid = texture_solid_one, .solid4 = noise_at_points};
 const texture_kind marble_texture = {.name = "marble", .id = GLINT_TEXTURE_MARBLE,
-                                     .params = PARAM_TABLE(MARBLE_TABLE), .init = noise_init, .solid = marble_at};
+                                     .params = PARAM_TABLE(MARBLE_TABLE), .init = noise_init,
+                                     .solid = texture_solid_one, .solid4 = marble_at};
 const texture_kind wood_texture = {.name = "wood", .id = GLINT_TEXTURE_WOOD, .params = PARAM_TABLE(WOOD_TABLE),
-                                   .init = noise_init, .solid = wood_at};
+                                   .init = noise_init, .solid = texture_solid_one, .solid4 = wood_at};
 const texture_kind granite_texture = {.name = "granite", .id = GLINT_TEXTURE_GRANITE,
                                       .params = PARAM_TABLE(GRANITE_TABLE), .init = noise_init,
-                                      .solid = granite_at};
+                                      .solid = texture_solid_one, .solid4 = granite_at};

@@ -116,6 +116,14 @@ glint_status texture_init(texture *t, const glint_texture *desc, image_load_fn l
     return s;
 }
 
+color texture_solid_one(const texture *t, vec3 p)
+{
+    quad_f64 q[3] = {quad_splat(p.x), quad_splat(p.y), quad_splat(p.z)};
+    color c[QUAD];
+    t->kind->solid4(t, q, 1, c);
+    return c[0];
+}
+
 bool texture_set_file(texture *t, const char *path)
 {
     char *copy = path ? strdup(path) : NULL;

@@ -10,6 +10,7 @@
 #define GLINT_SHADING_TEXTURE_H
 
 #include "core/color.h"
+#include "core/lanes.h"
 #include "core/params.h"
 #include "core/transform.h"
 #include "geometry/shape.h"
@@ -69,7 +70,15 @@ struct texture_kind {
      * coordinates, where the mapping has no say; NULL: eval at the
      * mapping's (u, v). */
     color (*solid)(const texture *t, vec3 p);
+    /* For a solid kind whose work pays four points at a time (noise): its
+     * colours at the first `lanes` (1 to 4) of four points, the lanes of
+     * p[0], p[1] and p[2] (x, y, z), into out; its `solid` is then
+     * texture_solid_one. NULL for the others. */
+    void (*solid4)(const texture *t, const quad_f64 p[3], int lanes, color out[QUAD]);
 };
+
+/* A solid texture's colour at p, through its kind's solid4 (one lane). */
+color texture_solid_one(const texture *t, vec3 p);
 
 extern const texture_kind checker_texture, image_texture, checker_3d_texture, noise_texture, marble_texture,
     wood_texture, granite_texture;

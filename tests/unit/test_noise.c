@@ -22,6 +22,33 @@ static vec3 scattered(uint32_t i)
               100 * hash_unit(hash4(i, 3, 0, 0)) - 50);
 }
 
+/* Four points as the lanes of x, y and z quads. */
+static void quad_points(const vec3 p[QUAD], quad_f64 q[3])
+{
+    for (int l = 0; l < QUAD; l++) {
+        q[0][l] = p[l].x;
+        q[1][l] = p[l].y;
+        q[2][l] = p[l].z;
+    }
+}
+
+/* fBm and turbulence at one point (every lane alike). */
+static double fbm_at(vec3 p, noise_octaves o)
+{
+    vec3 four[QUAD] = {p, p, p, p};
+    quad_f64 q[3];
+    quad_points(four, q);
+    return noise_fbm4(q, o)[0];
+}
+
+static double turbulence_at(vec3 p, noise_octaves o)
+{
+    vec3 four[QUAD] = {p, p, p, p};
+    quad_f64 q[3];
+    quad_points(four, q);
+    return noise_turbulence4(q, o)[0];
+}
+
 /* Gradient noise is 0 at every lattice point, and its slope there is the
  * corner's gradient: one of the twelve (+-1, +-1, 0) directions, so two
  * components of 1 in size and one of 0. */
@@ -62,7 +89,7 @@ static void test_noise_range(void **state)
     assert_true(differ / n > 0.1);
     noise_octaves o = {6, 2, 0.5};
     for (int i = 0; i < 20000; i++) {
-        double t = noise_turbulence(scattered((uint32_t)i), o), f = noise_fbm(scattered((uint32_t)i), o);
+        double t = turbulence_at(scattered((uint32_t)i), o), f = fbm_at(scattered((uint32_t)i), o);
         assert_true(t >= 0 && t <= 1.04 && fabs(f) <= 1.04);
     }
     assert_true(noise_at(v3(NAN, 0, 0), 0) == 0 && noise_at(v3(0, INFINITY, 0), 0) == 0);
@@ -103,10 +130,33 @@ static void test_noise_values(void **state)
     for (size_t i = 0; i < sizeof table / sizeof table[0]; i++) {
         assert_true(noise_at(table[i].p, 0) == table[i].layer0);
         assert_true(noise_at(table[i].p, 3) == table[i].layer3);
-        assert_true(noise_fbm(table[i].p, (noise_octaves){5, 2, 0.5}) == table[i].fbm5);
+        assert_true(fbm_at(table[i].p, (noise_octaves){5, 2, 0.5}) == table[i].fbm5);
     }
     /* One octave of fBm is the noise itself. */
-    assert_true(noise_fbm(table[1].p, (noise_octaves){1, 2, 0.5}) == table[1].layer0);
+    assert_true(fbm_at(table[1].p, (noise_octaves){1, 2, 0.5}) == table[1].layer0);
+}
+
+/* Four points at once give each point's own values, whatever the others
+ * are (lattice cells apart, on a lattice point, not finite, too far): the
+ * lanes never mix. */
+static void test_noise_lanes(void **state)
+{
+    noise_octaves o = {6, 2, 0.5};
+    for (uint32_t i = 0; i < 2000; i++) {
+        vec3 p[QUAD] = {scattered(4 * i), scattered(4 * i + 1), scattered(4 * i + 2), scattered(4 * i + 3)};
+        if (i % 7 == 0)
+            p[i % QUAD] = i % 2 ? v3(NAN, 1, 2) : v3(3e15, 0.5, 0.5);
+        if (i % 11 == 0)
+            p[(i + 1) % QUAD] = v3(-3, 4, -5);
+        quad_f64 q[3];
+        quad_points(p, q);
+        quad_f64 n = noise_at4(q, i % 5), f = noise_fbm4(q, o), t = noise_turbulence4(q, o);
+        for (int l = 0; l < QUAD; l++) {
+            assert_true(n[l] == noise_at(p[l], i % 5));
+            assert_true(f[l] == fbm_at(p[l], o));
+            assert_true(t[l] == turbulence_at(p[l], o));
+        }
+    }
 }
 
 /* A texture of `kind` from black at 0 to white at 1, made with desc's
@@ -157,13 +207,13 @@ static void test_noise_and_granite(void **state)
     texture noise = grey_map(d);
     noise_octaves o = {d.octaves, d.lacunarity, d.gain};
     vec3 p = v3(0.3, 1.7, -2.2), q = v3_scale(p, 2);
-    assert_near(at(&noise, p).r, 0.5 + 0.5 * noise_fbm(q, o), 1e-15);
+    assert_near(at(&noise, p).r, 0.5 + 0.5 * fbm_at(q, o), 1e-15);
     texture_release(&noise);
     d = glint_texture_default(GLINT_TEXTURE_GRANITE);
     texture granite = grey_map(d);
     o = (noise_octaves){d.octaves, d.lacunarity, d.gain};
     q = v3_scale(p, 1 / d.scale);
-    assert_near(at(&granite, p).r, fmin(1, 2 * noise_turbulence(q, o)), 1e-15);
+    assert_near(at(&granite, p).r, fmin(1, 2 * turbulence_at(q, o)), 1e-15);
     texture_release(&granite);
 }
 
@@ -244,6 +294,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_noise_lattice),     cmocka_unit_test(test_noise_range),
         cmocka_unit_test(test_noise_continuous),  cmocka_unit_test(test_noise_values),
+        cmocka_unit_test(test_noise_lanes),
         cmocka_unit_test(test_patterns_exact),    cmocka_unit_test(test_noise_and_granite),
         cmocka_unit_test(test_color_map),         cmocka_unit_test(test_texture_transform),
     };
