@@ -60,19 +60,14 @@ void texture_read_colors8(const texture_read reads[ACCEL_PACKET], const bool wan
         if (!left[i] || !t->kind->solid4)
             continue;
         int lane[QUAD], n = 0;
+        vec3 points[QUAD];
         for (int j = i; j < ACCEL_PACKET && n < QUAD; j++)
-            if (left[j] && reads[j].t == t)
+            if (left[j] && reads[j].t == t) {
+                points[n] = reads[j].at;
                 lane[n++] = j;
-        /* Lanes past n repeat the first's point, and are not read. */
-        quad_f64 p[3];
-        for (int l = 0; l < QUAD; l++) {
-            vec3 at = reads[lane[l < n ? l : 0]].at;
-            p[0][l] = at.x;
-            p[1][l] = at.y;
-            p[2][l] = at.z;
-        }
+            }
         color c[QUAD];
-        t->kind->solid4(t, p, n, c);
+        texture_solid_points(t, points, n, c);
         for (int l = 0; l < n; l++) {
             out[lane[l]] = c[l];
             left[lane[l]] = false;

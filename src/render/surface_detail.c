@@ -28,11 +28,16 @@ static vec3 height_gradient(const coord_spot *at, const texture *t, vec3 n)
         coord_tangents(n, &t1, &t2);
         vec3 dirs[2] = {t1, t2};
         double e = coord_step(p);
-        for (int k = 0; k < 2; k++) {
-            double below = brightness(t->kind->solid(t, texture_place(t, coord_object_point(at, v3_madd(p, dirs[k], -e)))));
-            double above = brightness(t->kind->solid(t, texture_place(t, coord_object_point(at, v3_madd(p, dirs[k], e)))));
-            g = v3_madd(g, dirs[k], (above - below) / (2 * e));
-        }
+        /* A step back and a step on along each tangent: four points, read
+         * together. */
+        vec3 steps[QUAD];
+        for (int k = 0; k < 2; k++)
+            for (int on = 0; on < 2; on++)
+                steps[2 * k + on] = texture_place(t, coord_object_point(at, v3_madd(p, dirs[k], on ? e : -e)));
+        color heights[QUAD];
+        texture_solid_points(t, steps, QUAD, heights);
+        for (int k = 0; k < 2; k++)
+            g = v3_madd(g, dirs[k], (brightness(heights[2 * k + 1]) - brightness(heights[2 * k])) / (2 * e));
         return g;
     }
     double u, v;

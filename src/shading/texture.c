@@ -118,10 +118,30 @@ glint_status texture_init(texture *t, const glint_texture *desc, image_load_fn l
 
 color texture_solid_one(const texture *t, vec3 p)
 {
-    quad_f64 q[3] = {quad_splat(p.x), quad_splat(p.y), quad_splat(p.z)};
+    color c;
+    texture_solid_points(t, &p, 1, &c);
+    return c;
+}
+
+void texture_solid_points(const texture *t, const vec3 p[], int lanes, color out[])
+{
+    if (!t->kind->solid4) {
+        for (int l = 0; l < lanes; l++)
+            out[l] = t->kind->solid(t, p[l]);
+        return;
+    }
+    /* Lanes past `lanes` repeat the first point, and are not read. */
+    quad_f64 q[3];
+    for (int l = 0; l < QUAD; l++) {
+        vec3 at = p[l < lanes ? l : 0];
+        q[0][l] = at.x;
+        q[1][l] = at.y;
+        q[2][l] = at.z;
+    }
     color c[QUAD];
-    t->kind->solid4(t, q, 1, c);
-    return c[0];
+    t->kind->solid4(t, q, lanes, c);
+    for (int l = 0; l < lanes; l++)
+        out[l] = c[l];
 }
 
 bool texture_set_file(texture *t, const char *path)

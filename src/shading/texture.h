@@ -80,6 +80,10 @@ struct texture_kind {
 /* A solid texture's colour at p, through its kind's solid4 (one lane). */
 color texture_solid_one(const texture *t, vec3 p);
 
+/* A solid texture's colours at points p[0] to p[lanes - 1] (1 to 4), in
+ * its own coordinates, into out: in one go where its kind has solid4. */
+void texture_solid_points(const texture *t, const vec3 p[], int lanes, color out[]);
+
 extern const texture_kind checker_texture, image_texture, checker_3d_texture, noise_texture, marble_texture,
     wood_texture, granite_texture;
 

@@ -217,6 +217,28 @@ static void test_noise_and_granite(void **state)
     texture_release(&granite);
 }
 
+/* Each noise kind's colours at up to four points read together are each
+ * point's read alone; and so for a kind that reads one point at a time
+ * (the solid checker). */
+static void test_points_together(void **state)
+{
+    const glint_texture_kind kinds[] = {GLINT_TEXTURE_NOISE, GLINT_TEXTURE_MARBLE, GLINT_TEXTURE_WOOD,
+                                        GLINT_TEXTURE_GRANITE, GLINT_TEXTURE_CHECKER_3D};
+    for (size_t k = 0; k < sizeof kinds / sizeof kinds[0]; k++) {
+        texture t = grey_map(glint_texture_default(kinds[k]));
+        for (int lanes = 1; lanes <= QUAD; lanes++) {
+            vec3 p[QUAD] = {scattered(1), scattered(2), scattered(3), scattered(4)};
+            color c[QUAD];
+            texture_solid_points(&t, p, lanes, c);
+            for (int l = 0; l < lanes; l++) {
+                color alone = t.kind->solid(&t, p[l]);
+                assert_true(c[l].r == alone.r && c[l].g == alone.g && c[l].b == alone.b);
+            }
+        }
+        texture_release(&t);
+    }
+}
+
 /* Between stops the colour is blended; before the first and past the last
  * it is theirs; two stops at one value make a hard edge. */
 static void test_color_map(void **state)
@@ -294,7 +316,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_noise_lattice),     cmocka_unit_test(test_noise_range),
         cmocka_unit_test(test_noise_continuous),  cmocka_unit_test(test_noise_values),
-        cmocka_unit_test(test_noise_lanes),
+        cmocka_unit_test(test_noise_lanes),       cmocka_unit_test(test_points_together),
         cmocka_unit_test(test_patterns_exact),    cmocka_unit_test(test_noise_and_granite),
         cmocka_unit_test(test_color_map),         cmocka_unit_test(test_texture_transform),
     };
