@@ -91,8 +91,9 @@ uv_extent coord_footprint(const coord_spot *at, const texture *t, vec3 n, vec3 d
                           double v)
 {
     vec3 g_u, g_v;
-    if (mapping_gradients(t, &g_u, &g_v)) {
-        /* A linear map's gradients, carried to the world as normals are. */
+    if (mapping_gradients(t, at->s->p_obj, at->center, &g_u, &g_v)) {
+        /* The mapping's gradients at the hit (a planar mapping's are its
+         * linear map's), carried to the world as normals are. */
         if (at->to_object) {
             g_u = xf_normal(at->to_object, g_u);
             g_v = xf_normal(at->to_object, g_v);

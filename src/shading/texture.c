@@ -158,6 +158,16 @@ bool texture_set_file(texture *t, const char *path)
  * mapping_validate checks); no square root to say so. */
 static bool planar_axes_given(const glint_mapping *m) { return v3_dot(m->u_axis, m->u_axis) != 0; }
 
+/* Gradients g_u and g_v of (u, v) carried through the placement
+ * to_texture, which maps (u, v, 0) by its first two rows. */
+static void placed_gradients(const transform *to_texture, vec3 *g_u, vec3 *g_v)
+{
+    const double (*x)[4] = to_texture->m;
+    vec3 a = *g_u, b = *g_v;
+    *g_u = v3_add(v3_scale(a, x[0][0]), v3_scale(b, x[0][1]));
+    *g_v = v3_add(v3_scale(a, x[1][0]), v3_scale(b, x[1][1]));
+}
+
 planar_map planar_map_of(const glint_mapping *m, const transform *to_texture)
 {
     double scale = m->scale > 0 ? m->scale : 1.0;
@@ -171,11 +181,38 @@ planar_map planar_map_of(const glint_mapping *m, const transform *to_texture)
     planar_map map = {a, b, -v3_dot(a, m->center), -v3_dot(b, m->center)};
     if (!to_texture)
         return map;
-    /* Placing maps (u, v, 0) by the first two rows of to_texture. */
     const double (*x)[4] = to_texture->m;
-    return (planar_map){v3_add(v3_scale(a, x[0][0]), v3_scale(b, x[0][1])),
-                        v3_add(v3_scale(a, x[1][0]), v3_scale(b, x[1][1])),
-                        x[0][0] * map.u0 + x[0][1] * map.v0 + x[0][3], x[1][0] * map.u0 + x[1][1] * map.v0 + x[1][3]};
+    placed_gradients(to_texture, &map.g_u, &map.g_v);
+    return (planar_map){map.g_u, map.g_v, x[0][0] * map.u0 + x[0][1] * map.v0 + x[0][3],
+                        x[1][0] * map.u0 + x[1][1] * map.v0 + x[1][3]};
+}
+
+bool mapping_gradients(const texture *t, vec3 p_obj, vec3 center, vec3 *g_u, vec3 *g_v)
+{
+    const glint_mapping *m = &t->mapping;
+    if (m->kind == GLINT_MAP_PLANAR) {
+        *g_u = t->planar.g_u;
+        *g_v = t->planar.g_v;
+        return true;
+    }
+    if (m->kind != GLINT_MAP_SPHERICAL)
+        return false;
+    /* spherical_uv of d = p - c: u = 1/2 + atan2(x, z) / 2 pi, v = 1/2 -
+     * asin(y / r) / pi, whose gradients are (z, 0, -x) / (2 pi rho^2) and
+     * (x y / rho, -rho, z y / rho) / (pi r^2), rho^2 = x^2 + z^2. Within
+     * a millionth of r of the axis through the poles, where u's grows
+     * without bound and has no direction at the axis itself, false: steps
+     * measure the footprint there. */
+    vec3 d = v3_sub(p_obj, m->center_given ? m->center : center);
+    double r2 = v3_dot(d, d), rho2 = d.x * d.x + d.z * d.z;
+    if (!(rho2 > 1e-12 * r2))
+        return false;
+    double rho = sqrt(rho2), along_u = 1 / (2 * M_PI * rho2), along_v = 1 / (M_PI * r2);
+    *g_u = v3(d.z * along_u, 0, -d.x * along_u);
+    *g_v = v3(d.x * d.y / rho * along_v, -rho * along_v, d.z * d.y / rho * along_v);
+    if (t->placed)
+        placed_gradients(&t->to_texture, g_u, g_v);
+    return true;
 }
 
 void mapping_apply(const glint_mapping *m, const surface *s, vec3 center, double *u, double *v)

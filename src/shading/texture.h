@@ -125,15 +125,12 @@ static inline void planar_map_apply(const planar_map *map, vec3 p, double *u, do
     *v = v3_dot(map->g_v, p) + map->v0;
 }
 
-/* For a texture whose placed (u, v) are a linear function of the
- * object-space point (a planar mapping): their gradients there, in object
- * space; false for any other mapping. */
-static inline bool mapping_gradients(const texture *t, vec3 *g_u, vec3 *g_v)
-{
-    *g_u = t->planar.g_u;
-    *g_v = t->planar.g_v;
-    return t->mapping.kind == GLINT_MAP_PLANAR;
-}
+/* The gradients, in object space, of texture t's placed (u, v) at point
+ * p_obj of a thing whose centre is center (as for mapping_apply): a
+ * planar mapping's, the same everywhere, or a spherical mapping's there
+ * (but on its axis); false for the other mappings, whose footprints are
+ * measured by steps. */
+bool mapping_gradients(const texture *t, vec3 p_obj, vec3 center, vec3 *g_u, vec3 *g_v);
 
 /* The colour of checker cells at (u, v): a where floor(u/cell) + floor(v/cell) is even. */
 color checker_eval(color a, color b, double cell, double u, double v);

@@ -179,11 +179,62 @@ static void test_far_floor_does_not_shimmer(void **state)
     glint_image_free(&bi);
 }
 
+/* Ray r's hit on scene s's shape 0, described into *at_hit, and *spot
+ * (which points at *at_hit). */
+static void hit_shape0(glint_scene *s, ray r, accel_hit *h, surface *at_hit, coord_spot *spot)
+{
+    *h = (accel_hit){.shape = 0, .instance = -1};
+    assert_true(shape_intersect(&s->shapes[0], &r, 0, INFINITY, &h->on_shape));
+    h->t = h->on_shape.t;
+    shape_surface(&s->shapes[0], &r, &h->on_shape, at_hit);
+    coord_spot_init(s, h, at_hit, spot);
+}
+
+/* The footprint of a sample `width` across, seen along d, at a hit
+ * (hit_shape0's) under texture t, measured by central steps of the
+ * mapping itself along the ellipse's axes in the tangent plane: across the
+ * ray's slant, width long; along it, width over the cosine. */
+static uv_extent stepped_footprint(const coord_spot *spot, const texture *t, const surface *at_hit, vec3 d,
+                                   double width)
+{
+    vec3 n = at_hit->n, along = v3_normalize(v3_madd(d, n, -v3_dot(d, n))), across = v3_cross(n, along);
+    vec3 axes[2] = {across, along};
+    double e = 1e-6, reach[2] = {width, width / fabs(v3_dot(d, n))};
+    uv_extent sum = {0, 0};
+    for (int k = 0; k < 2; k++) {
+        double u0, v0, u1, v1;
+        coord_at(spot, t, v3_madd(at_hit->p, axes[k], -e), &u0, &v0);
+        coord_at(spot, t, v3_madd(at_hit->p, axes[k], e), &u1, &v1);
+        double su = (u1 - u0) / (2 * e) * reach[k], sv = (v1 - v0) / (2 * e) * reach[k];
+        sum.u2 += su * su;
+        sum.v2 += sv * sv;
+    }
+    return sum;
+}
+
+/* The footprint coord_footprint gives a sample 0.01 across along ray r at
+ * its hit on scene s's shape 0 under texture t, checked against
+ * stepped_footprint's within `tolerance` (relative). */
+static uv_extent checked_footprint(glint_scene *s, const texture *t, ray r, double tolerance)
+{
+    accel_hit h;
+    surface at_hit;
+    coord_spot spot;
+    hit_shape0(s, r, &h, &at_hit, &spot);
+    double u, v;
+    coord_at(&spot, t, at_hit.p, &u, &v);
+    uv_extent got = coord_footprint(&spot, t, at_hit.n, r.d, 0.01, u, v);
+    uv_extent want = stepped_footprint(&spot, t, &at_hit, r.d, 0.01);
+    assert_true(fabs(got.u2 - want.u2) < tolerance * want.u2);
+    assert_true(fabs(got.v2 - want.v2) < tolerance * want.v2);
+    return got;
+}
+
 /* A planar mapping's footprint comes from its gradients, carried through
  * the plane's own transform (stretched twice along x) and the texture's
  * (0.25-unit tiles, turned 30 degrees): each axis of the footprint
  * ellipse changes u and v as much as stepping the mapping itself along it
- * says, within 1e-6. */
+ * says, within 2e-6. */
 static void test_planar_footprint_from_gradients(void **state)
 {
     (void)state;
@@ -201,32 +252,50 @@ static void test_planar_footprint_from_gradients(void **state)
     glint_transform wide = glint_transform_scale(glint_transform_identity(), 2, 1, 1);
     assert_true(glint_scene_add_shape(s, &plane, glint_scene_add_material(s, NULL, &m, NULL), &wide, &err) >= 0);
     const texture *t = &s->textures[tex];
-    vec3 d = v3_normalize(v3(0.3, -0.5, -0.8));
-    ray r = {v3(0.7, 2, 1.1), d};
-    accel_hit h = {.shape = 0, .instance = -1};
-    assert_true(shape_intersect(&s->shapes[0], &r, 0, INFINITY, &h.on_shape));
-    h.t = h.on_shape.t;
-    surface at_hit;
-    shape_surface(&s->shapes[0], &r, &h.on_shape, &at_hit);
-    coord_spot spot;
-    coord_spot_init(s, &h, &at_hit, &spot);
-    double u, v, width = 0.01;
-    coord_at(&spot, t, at_hit.p, &u, &v);
-    uv_extent got = coord_footprint(&spot, t, at_hit.n, d, width, u, v);
-    /* The ellipse's axes: across the slant, width long; along it, width
-     * over the cosine. */
-    vec3 along = v3_normalize(v3(d.x, 0, d.z)), across = v3(along.z, 0, -along.x);
-    double cos_t = fabs(d.y), step = 1e-4, ua, va, ub, vb;
-    coord_at(&spot, t, v3_madd(at_hit.p, across, step), &ua, &va);
-    coord_at(&spot, t, v3_madd(at_hit.p, along, step), &ub, &vb);
-    ua = (ua - u) / step * width;
-    va = (va - v) / step * width;
-    ub = (ub - u) / step * width / cos_t;
-    vb = (vb - v) / step * width / cos_t;
-    assert_true(fabs(got.u2 - (ua * ua + ub * ub)) < 2e-6 * got.u2);
-    assert_true(fabs(got.v2 - (va * va + vb * vb)) < 2e-6 * got.v2);
+    uv_extent got = checked_footprint(s, t, (ray){v3(0.7, 2, 1.1), v3_normalize(v3(0.3, -0.5, -0.8))}, 2e-6);
     /* Not a trivial answer: the turn and the stretch mix both axes in. */
     assert_true(got.u2 > 0.03 * 0.03 && got.v2 > 0.07 * 0.07 && got.v2 > 4 * got.u2);
+    glint_scene_free(s);
+}
+
+/* The footprint a spherical mapping's gradients give, at a hit on a ball
+ * at (0.3, -0.2, 0.1) of radius 0.9 stretched to (1.5, 1, 0.8) and turned
+ * 20 degrees, under a texture turned 30 degrees and doubled along u: each
+ * axis of the footprint ellipse changes u and v as much as steps of the
+ * mapping itself along it say, within 1e-5; at the ball's pole,
+ * where u turns without bound, the last level (the image's mean), never
+ * NaN. */
+static void test_spherical_footprint_from_gradients(void **state)
+{
+    (void)state;
+    glint_scene *s = glint_scene_new();
+    glint_texture desc = glint_texture_default(GLINT_TEXTURE_CHECKER);
+    desc.mapping.kind = GLINT_MAP_SPHERICAL;
+    desc.transform = glint_transform_scale(glint_transform_rotate(glint_transform_identity(), (glint_vec3){0, 0, 1}, 30),
+                                           2, 1, 1);
+    glint_error err;
+    int tex = glint_scene_add_texture(s, NULL, &desc, &err);
+    assert_true(tex >= 0);
+    glint_material m = glint_material_default();
+    glint_shape ball = {.kind = GLINT_SHAPE_SPHERE, .center = {0.3, -0.2, 0.1}, .radius = 0.9};
+    glint_transform place = glint_transform_rotate(glint_transform_scale(glint_transform_identity(), 1.5, 1, 0.8),
+                                                   (glint_vec3){0, 1, 0}, 20);
+    assert_true(glint_scene_add_shape(s, &ball, glint_scene_add_material(s, NULL, &m, NULL), &place, &err) >= 0);
+    const texture *t = &s->textures[tex];
+    const vec3 eyes[] = {{3, 1.2, 4}, {-2, -1.5, 3}, {0.5, 0.4, -4}};
+    for (size_t i = 0; i < sizeof eyes / sizeof eyes[0]; i++) {
+        uv_extent got = checked_footprint(s, t, (ray){eyes[i], v3_normalize(v3_sub(v3(0.2, -0.1, 0.15), eyes[i]))}, 1e-5);
+        assert_true(got.u2 > 1e-6 && got.v2 > 1e-6);
+    }
+    /* Straight down onto the pole, in the ball's own frame its top. */
+    vec3 top = xf_point(&s->shapes[0].to_world, v3(0.3, 0.7, 0.1));
+    accel_hit h;
+    surface pole;
+    coord_spot spot;
+    hit_shape0(s, (ray){v3_add(top, v3(0, 2, 0)), v3(0, -1, 0)}, &h, &pole, &spot);
+    uv_extent at_pole = coord_footprint(&spot, t, pole.n, v3(0, -1, 0), 0.01, 0.5, 0);
+    texture_image img = {.width = 1024, .height = 512, .level_count = 11};
+    assert_true(image_level(&img, at_pole) == 10);
     glint_scene_free(s);
 }
 
@@ -237,6 +306,7 @@ int main(void)
         cmocka_unit_test(test_level_and_blend),
         cmocka_unit_test(test_far_floor_does_not_shimmer),
         cmocka_unit_test(test_planar_footprint_from_gradients),
+        cmocka_unit_test(test_spherical_footprint_from_gradients),
     };
     return cmocka_run_group_tests(tests, setup_dir, teardown_dir);
 }
