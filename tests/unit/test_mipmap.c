@@ -8,6 +8,7 @@
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdint.h>
+#include <stdlib.h>
 #include <cmocka.h>
 #include "image_test_files.h"
 #include "core/vec.h"
@@ -59,6 +60,28 @@ static void test_levels_are_means(void **state)
     assert_int_equal(srgb.levels[0].srgb[0], srgb_byte(0.5f));
     assert_int_equal(srgb.levels[0].srgb[0], 188);
     texture_image_free(&srgb);
+
+    /* A level of 513 x 513 texels, large enough to be halved in bands of
+     * rows on several threads: every texel the mean below it, once. */
+    enum { SIDE = 1026 };
+    unsigned char *noise = malloc(SIDE * SIDE * 3);
+    assert_non_null(noise);
+    for (int i = 0; i < SIDE * SIDE * 3; i++)
+        noise[i] = (unsigned char)((i * 2654435761u) >> 24);
+    texture_image big = texture_image_borrow(SIDE, SIDE, noise);
+    assert_int_equal(texture_image_build_levels(&big, NULL), GLINT_OK);
+    const texture_image *half = &big.levels[0];
+    assert_int_equal(half->width, SIDE / 2);
+    for (int y = 0; y < half->height; y++)
+        for (int x = 0; x < half->width; x++)
+            for (int c = 0; c < 3; c++) {
+                float sum = 0;
+                for (int k = 0; k < 4; k++)
+                    sum += big.linear[noise[3 * ((2 * y + k / 2) * SIDE + 2 * x + k % 2) + c]];
+                assert_int_equal(half->srgb[3 * (y * half->width + x) + c], srgb_byte(sum / 4));
+            }
+    texture_image_free(&big);
+    free(noise);
 }
 
 /* The level is log2 of the texels a footprint spans along u or v, the
