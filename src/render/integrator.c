@@ -297,12 +297,31 @@ static void environment_seen(const glint_scene *scene, const ray8 *r, const bool
                              bool found[ACCEL_PACKET], shade_point sp[ACCEL_PACKET], color local[ACCEL_PACKET])
 {
     const glint_environment *env = &scene->environment;
+    const texture *t = &scene->textures[env->texture];
+    vec3 points[ACCEL_PACKET];
+    int lane[ACCEL_PACKET], n = 0;
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (found[i] || !active[i])
             continue;
         found[i] = true;
         sp[i].hit.t = INFINITY;
-        local[i] = environment_color(env, &scene->textures[env->texture], v3(r->dx[i], r->dy[i], r->dz[i]));
+        vec3 d = v3(r->dx[i], r->dy[i], r->dz[i]);
+        if (t->kind->solid4) {
+            points[n] = texture_place(t, d);
+            lane[n++] = i;
+        } else {
+            local[i] = environment_color(env, t, d);
+        }
+    }
+    /* A noise sky (a kind with solid4) four lanes at a time, as
+     * environment_color would give each: one at a time it took twice as
+     * long. */
+    for (int k = 0; k < n; k += QUAD) {
+        int m = n - k < QUAD ? n - k : QUAD;
+        color c[QUAD];
+        texture_solid_points(t, points + k, m, c);
+        for (int l = 0; l < m; l++)
+            local[lane[k + l]] = rgb_scale(c[l], env->intensity);
     }
 }
 
