@@ -298,31 +298,30 @@ static void environment_seen(const glint_scene *scene, const ray8 *r, const bool
 {
     const glint_environment *env = &scene->environment;
     const texture *t = &scene->textures[env->texture];
-    vec3 points[ACCEL_PACKET];
-    int lane[ACCEL_PACKET], n = 0;
+    /* A solid sky is read as a solid texture is at hits, so a noise sky's
+     * lanes go four at a time (texture_read_colors8): one at a time it
+     * took twice as long. */
+    texture_read reads[ACCEL_PACKET];
+    bool sky[ACCEL_PACKET] = {false};
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (found[i] || !active[i])
             continue;
         found[i] = true;
         sp[i].hit.t = INFINITY;
         vec3 d = v3(r->dx[i], r->dy[i], r->dz[i]);
-        if (t->kind->solid4) {
-            points[n] = texture_place(t, d);
-            lane[n++] = i;
-        } else {
+        if (t->kind->solid)
+            reads[i] = (texture_read){t, texture_place(t, d), {0, 0}};
+        else
             local[i] = environment_color(env, t, d);
-        }
+        sky[i] = t->kind->solid != NULL;
     }
-    /* A noise sky (a kind with solid4) four lanes at a time, as
-     * environment_color would give each: one at a time it took twice as
-     * long. */
-    for (int k = 0; k < n; k += QUAD) {
-        int m = n - k < QUAD ? n - k : QUAD;
-        color c[QUAD];
-        texture_solid_points(t, points + k, m, c);
-        for (int l = 0; l < m; l++)
-            local[lane[k + l]] = rgb_scale(c[l], env->intensity);
-    }
+    if (!t->kind->solid)
+        return;
+    color seen[ACCEL_PACKET];
+    texture_read_colors8(reads, sky, seen);
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        if (sky[i])
+            local[i] = rgb_scale(seen[i], env->intensity);
 }
 
 /* Adds to direct[i] the light of delta light l that reaches the hit
