@@ -117,15 +117,11 @@ test)
     # flags for a bounded time each (tests/fuzz/README.md); a crash, leak or
     # timeout fails the test. The flags' parser prints as glint does: its
     # stdout and stderr are closed (libFuzzer's own messages still show).
-    # A valid texture may decode to 1.5 GiB (TEXTURE_IMAGE_MAX_BYTES), more
-    # than the 2 GiB limit leaves beside the fuzzer's own memory, and the
-    # largest image (16384 x 16384) takes about 12 s to decode and halve into
-    # its levels in this build: a hang is still caught, at 60 s.
     CC=clang build build-fuzz -DGLINT_WERROR=ON -DGLINT_FUZZ=ON -DGLINT_MPI=OFF -DGLINT_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
     fuzz scene 8192
     fuzz nff 8192
     fuzz mesh 16384
-    fuzz texture 16384 -rss_limit_mb=3072 -timeout=60
+    fuzz texture 16384
     fuzz cli 4096 -close_fd_mask=3
     ;;
 *)

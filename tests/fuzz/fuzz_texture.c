@@ -46,8 +46,8 @@ static void check_decoded(const texture_image *img)
         abort();
     /* Every byte of the pixels must be there. ASan checks the whole buffer
      * at once: reading its bytes one by one would find the same short
-     * buffer, but takes 4 to 9 s more for the largest image allowed (which a
-     * valid arithmetic-coded JPEG of 300 bytes can be), past -timeout. */
+     * buffer, but took 4 to 9 s more for the largest image glint allows
+     * (which a valid arithmetic-coded JPEG of 300 bytes can be). */
     const volatile unsigned char *missing = __asan_region_is_poisoned(img->owned, n * (hdr ? sizeof(float) : 1));
     if (missing) {
         (void)*missing; /* ASan's report: where the buffer ends and who allocated it */
