@@ -216,7 +216,7 @@ static glint_status decode_exr(texture_image *out, const void *data, size_t size
     }
     unsigned long width = (unsigned long)((int64_t)window.max.x - window.min.x + 1);
     unsigned long height = (unsigned long)((int64_t)window.max.y - window.min.y + 1);
-    glint_status st = image_read_alloc(out, width, height, 3 * sizeof(float), what, err);
+    glint_status st = image_read_alloc(out, width, height, 3 * sizeof(float), false, what, err);
     if (st) {
         exr_finish(&ctxt);
         return st;

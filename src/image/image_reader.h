@@ -26,14 +26,15 @@ typedef struct image_reader {
 /* "texture 'WHAT' is corrupt: REASON", as GLINT_ERR_INVALID. */
 glint_status image_read_corrupt(const char *what, const char *reason, glint_error *err);
 
-/* Gives img zeroed room for width x height pixels of `bytes` bytes each,
- * and its size and sRGB table, once the size is within
- * TEXTURE_IMAGE_MAX_SIDE, TEXTURE_IMAGE_MAX_PIXELS and
- * TEXTURE_IMAGE_MAX_BYTES: beyond, GLINT_ERR_INVALID naming the limits,
- * before anything is allocated. The room is zeroed by the system as pages
- * are touched, so a file that claims a large image and ends early costs
- * little memory. */
+/* Gives img room for width x height pixels of `bytes` bytes each, and its
+ * size and sRGB table, once the size is within TEXTURE_IMAGE_MAX_SIDE,
+ * TEXTURE_IMAGE_MAX_PIXELS and TEXTURE_IMAGE_MAX_BYTES: beyond,
+ * GLINT_ERR_INVALID naming the limits, before anything is allocated.
+ * `written_whole`: the decoder writes every pixel before it succeeds, so
+ * the room is left as it comes, on huge pages when large (big_alloc).
+ * Otherwise it is zeroed by the system as pages are touched, so a file
+ * that claims a large image and ends early costs little memory. */
 glint_status image_read_alloc(texture_image *img, unsigned long width, unsigned long height, size_t bytes,
-                              const char *what, glint_error *err);
+                              bool written_whole, const char *what, glint_error *err);
 
 #endif

@@ -80,7 +80,7 @@ static glint_status decode_jpeg(texture_image *out, const void *data, size_t siz
                        "texture '%s' is a CMYK JPEG, which is not supported (save it as RGB)",
                        what);
     else
-        st = image_read_alloc(out, cinfo.image_width, cinfo.image_height, 3, what, err);
+        st = image_read_alloc(out, cinfo.image_width, cinfo.image_height, 3, true, what, err);
     if (st != GLINT_OK) {
         jpeg_destroy_decompress(&cinfo);
         return st;

@@ -21,6 +21,7 @@
 #include <stdlib.h>
 #include <string.h>
 #include <zlib.h>
+#include "core/big_alloc.h"
 #include "core/parallel.h"
 #include "image/png_encode.h"
 #include "image/srgb.h"
@@ -38,7 +39,7 @@ enum { FILTER_NONE = 0, FILTER_UP = 2 };
 /* One slice of rows and, once deflated, its part of the stream. */
 typedef struct slice {
     int first_row, rows;
-    unsigned char *deflated;  /* malloc'd */
+    unsigned char *deflated;  /* its room in the encoder's `deflated` */
     size_t deflated_size;
     uLong adler;              /* Adler-32 of the slice's filtered bytes alone */
 } slice;
@@ -51,6 +52,8 @@ typedef struct encoder {
     int slice_rows;           /* rows of every slice but maybe the last */
     slice *slices;
     int slice_count;
+    unsigned char *deflated;  /* room for every slice's deflated bytes, slice_room each */
+    size_t slice_room;
     atomic_int next;          /* the next slice a thread takes */
     atomic_bool failed;       /* some allocation or zlib call failed */
 } encoder;
@@ -94,18 +97,12 @@ static bool deflate_slice(encoder *e, slice *s, unsigned char *rows, z_stream *z
     bool last = s->first_row + s->rows == e->image->height;
     if (deflateReset(z) != Z_OK || (window > 0 && deflateSetDictionary(z, own - window, (uInt)window) != Z_OK))
         return false;
-    /* The bound covers the final block; a sync flush adds an empty stored
-     * block of 5 bytes at most instead. */
-    size_t bound = deflateBound(z, (uLong)own_size) + 16;
-    s->deflated = malloc(bound);
-    if (!s->deflated)
-        return false;
     z->next_in = own;
     z->avail_in = (uInt)own_size;
     z->next_out = s->deflated;
-    z->avail_out = (uInt)bound;
+    z->avail_out = (uInt)e->slice_room;
     int r = deflate(z, last ? Z_FINISH : Z_SYNC_FLUSH);
-    s->deflated_size = bound - z->avail_out;
+    s->deflated_size = e->slice_room - z->avail_out;
     return (last ? r == Z_STREAM_END : r == Z_OK) && z->avail_in == 0 && z->avail_out > 0;
 }
 
@@ -202,7 +199,7 @@ static bool assemble(const encoder *e, unsigned char **bytes, size_t *size)
     }
     size_t idats = (stream_size + IDAT_MAX - 1) / IDAT_MAX;
     *size = 8 + 25 + 13 + stream_size + 12 * idats + 12;
-    *bytes = malloc(*size);
+    *bytes = big_alloc(*size);
     if (!*bytes)
         return false;
 
@@ -244,18 +241,25 @@ bool png_encode(const glint_image *image, int depth, int threads, unsigned char 
     e.window_rows = (int)((WINDOW + stride - 1) / stride);
     e.slice_count = (image->height + e.slice_rows - 1) / e.slice_rows;
     e.slices = calloc((size_t)e.slice_count, sizeof *e.slices);
+    /* zlib's bound for any stream's deflated size, with no stream to ask,
+     * covers the final block; a sync flush adds an empty stored block of 5
+     * bytes at most instead. One block for all the slices, each touched
+     * only as far as it is written, rather than a block each: one more
+     * copy of the file's bytes in fresh pages. */
+    e.slice_room = deflateBound(NULL, (uLong)((size_t)e.slice_rows * stride)) + 16;
+    e.deflated = e.slices ? big_alloc(e.slice_room * (size_t)e.slice_count) : NULL;
     atomic_init(&e.next, 0);
-    atomic_init(&e.failed, e.slices == NULL);
-    for (int k = 0; e.slices && k < e.slice_count; k++) {
+    atomic_init(&e.failed, e.deflated == NULL);
+    for (int k = 0; e.deflated && k < e.slice_count; k++) {
         e.slices[k].first_row = k * e.slice_rows;
         e.slices[k].rows = image->height - k * e.slice_rows < e.slice_rows ? image->height - k * e.slice_rows
                                                                            : e.slice_rows;
+        e.slices[k].deflated = e.deflated + e.slice_room * (size_t)k;
     }
     if (!atomic_load(&e.failed))
         parallel_run(threads < e.slice_count ? threads : e.slice_count, run, &e, 0);
     bool ok = !atomic_load(&e.failed) && assemble(&e, bytes, size);
-    for (int k = 0; e.slices && k < e.slice_count; k++)
-        free(e.slices[k].deflated);
+    free(e.deflated);
     free(e.slices);
     if (!ok)
         *size = 0;

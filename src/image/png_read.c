@@ -73,7 +73,7 @@ static glint_status decode_png(texture_image *out, const void *data, size_t size
     png.version = PNG_IMAGE_VERSION;
     if (!png_image_begin_read_from_memory(&png, data, size))
         return image_read_corrupt(what, png.message, err);
-    glint_status st = image_read_alloc(out, png.width, png.height, 4, what, err);
+    glint_status st = image_read_alloc(out, png.width, png.height, 4, true, what, err);
     if (st != GLINT_OK) {
         png_image_free(&png);
         return st;

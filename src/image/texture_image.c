@@ -12,6 +12,7 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
+#include "core/big_alloc.h"
 #include "core/error.h"
 #include "core/open_file.h"
 #include "core/word_list.h"
@@ -67,13 +68,14 @@ static glint_status check_size(unsigned long width, unsigned long height, size_t
 }
 
 glint_status image_read_alloc(texture_image *img, unsigned long width, unsigned long height, size_t bytes,
-                              const char *what, glint_error *err)
+                              bool written_whole, const char *what, glint_error *err)
 {
     glint_status st = check_size(width, height, bytes, what, err);
     if (st != GLINT_OK)
         return st;
     /* check_size keeps the product in range. */
-    img->srgb = img->owned = calloc((size_t)width * height, bytes);
+    size_t pixels = (size_t)width * height;
+    img->srgb = img->owned = written_whole ? big_alloc(pixels * bytes) : calloc(pixels, bytes);
     if (!img->owned)
         return error_set(err, GLINT_ERR_NOMEM, "cannot decode texture '%s': out of memory", what);
     img->width = (int)width;

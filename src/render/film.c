@@ -1,15 +1,11 @@
 /* film.c - the image a render fills: allocating and clearing it, and
  * counting and finding the NaN that film.h's rule keeps out of it. Adding
  * samples and writing a block's pixels are inline in film.h. */
-#define _DEFAULT_SOURCE /* madvise */
 #include <stdint.h>
 #include <stdlib.h>
 #include <string.h>
-#include <sys/mman.h>
+#include "core/big_alloc.h"
 #include "render/film.h"
-
-/* The huge page size of x86-64 and arm64 kernels with 4 KiB pages. */
-#define HUGE_PAGE ((uintptr_t)2 << 20)
 
 float *film_pixels_alloc(int width, int height, bool black)
 {
@@ -17,18 +13,9 @@ float *film_pixels_alloc(int width, int height, bool black)
     /* An image is written once, page after page, by the render threads:
      * with 4 KiB pages a 1920x1080 image took 6,000 page faults, 8% of a
      * one-sample render's time, and a 512x512 one's 700 were 14% of the
-     * whole SPD tetra (bench/README.md). An image of a huge page or more
-     * therefore starts on a huge page boundary and spans whole huge pages,
-     * which the kernel is asked to back as such; it may refuse
-     * (transparent huge pages off), and nothing else changes. */
-    if (bytes < HUGE_PAGE)
-        return black ? calloc(bytes / sizeof(float), sizeof(float)) : malloc(bytes);
-    size_t span = (bytes + HUGE_PAGE - 1) & ~(HUGE_PAGE - 1);
-    void *pixels = NULL;
-    if (posix_memalign(&pixels, HUGE_PAGE, span) != 0)
-        return NULL;
-    madvise(pixels, span, MADV_HUGEPAGE);
-    if (black)
+     * whole SPD tetra (bench/README.md). */
+    float *pixels = big_alloc(bytes);
+    if (pixels && black)
         memset(pixels, 0, bytes);
     return pixels;
 }

@@ -57,7 +57,7 @@ typedef struct film_block {
 } film_block;
 
 /* The pixels of a width x height image, 3 floats each, freed with free();
- * NULL when memory runs out. Backed by huge pages where the kernel allows,
+ * NULL when memory runs out. Backed by huge pages from 1 MiB (big_alloc),
  * as an image is written in full once. `black`: every pixel 0; else the
  * pixels are left as they come, for a caller that writes each before any
  * is read: a large image's pages are then first touched, and cleared by

@@ -1,7 +1,7 @@
 /* test_arena.c - the bump allocator of core/arena.h: pieces aligned and
  * apart, and a rollback giving back what was cut since its mark, small
  * pieces, new chunks and large pieces alike, so that the same memory
- * serves again. */
+ * serves again; and core/big_alloc.h's large buffers. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -10,6 +10,7 @@
 #include <malloc.h>
 #include <string.h>
 #include "core/arena.h"
+#include "core/big_alloc.h"
 
 #define CHUNK ((size_t)1 << 20)
 
@@ -97,6 +98,25 @@ static void test_rollback_to_empty(void **state)
     assert_null(a.chunks);
 }
 
+/* big_alloc: small buffers as they come, large ones from a 2 MiB
+ * boundary; every byte writable and the buffer freed with free() (ASan
+ * checks both in the sanitizer build); no room past what a size_t holds. */
+static void test_big_alloc(void **state)
+{
+    static const size_t sizes[] = {0, 1, 4096, BIG_ALLOC_MIN - 1, BIG_ALLOC_MIN, 3 * BIG_ALLOC_MIN + 5};
+    for (size_t k = 0; k < sizeof sizes / sizeof sizes[0]; k++) {
+        unsigned char *p = big_alloc(sizes[k]);
+        assert_non_null(p);
+        if (sizes[k] >= BIG_ALLOC_MIN)
+            assert_int_equal((uintptr_t)p % ((size_t)2 << 20), 0);
+        memset(p, 0x5a, sizes[k] ? sizes[k] : 1);
+        assert_int_equal(p[sizes[k] ? sizes[k] - 1 : 0], 0x5a);
+        free(p);
+    }
+    assert_null(big_alloc(SIZE_MAX));
+    assert_null(big_alloc(SIZE_MAX - ((size_t)1 << 20)));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -104,6 +124,7 @@ int main(void)
         cmocka_unit_test(test_rollback_reuses_the_memory),
         cmocka_unit_test(test_rollback_frees_chunks_and_large_pieces),
         cmocka_unit_test(test_rollback_to_empty),
+        cmocka_unit_test(test_big_alloc),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
