@@ -4,6 +4,7 @@
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
+#include "core/big_alloc.h"
 #include "image/image_format.h"
 #include "image/srgb.h"
 
@@ -17,7 +18,7 @@ static glint_status write_ppm(int fd, const glint_image *image, const glint_imag
     size_t samples = (size_t)image->width * (size_t)image->height * 3, sample_bytes = (size_t)depth / 8;
     if (samples > (SIZE_MAX - header_size) / sample_bytes)
         return image_write_no_memory(path, err);
-    unsigned char *bytes = malloc(header_size + samples * sample_bytes);
+    unsigned char *bytes = big_alloc(header_size + samples * sample_bytes);
     if (!bytes)
         return image_write_no_memory(path, err);
     memcpy(bytes, header, header_size);
