@@ -137,35 +137,38 @@ static void put32(unsigned char *p, uint32_t v)
     p[3] = (unsigned char)v;
 }
 
+/* Seals the chunk at p whose type and `length` bytes of data are in place:
+ * its length before them, its CRC after; returns the byte after. */
+static unsigned char *seal_chunk(unsigned char *p, size_t length)
+{
+    put32(p, (uint32_t)length);
+    put32(p + 8 + length, (uint32_t)crc32_z(crc32_z(0, NULL, 0), p + 4, 4 + length));
+    return p + 12 + length;
+}
+
 /* Writes a chunk at p: length, type, data, CRC; returns the byte after. */
 static unsigned char *put_chunk(unsigned char *p, const char *type, const unsigned char *data, size_t length)
 {
-    put32(p, (uint32_t)length);
     memcpy(p + 4, type, 4);
     if (length > 0)
         memcpy(p + 8, data, length);
-    put32(p + 8 + length, (uint32_t)crc32_z(crc32_z(0, NULL, 0), p + 4, 4 + length));
-    return p + 12 + length;
+    return seal_chunk(p, length);
 }
 
 /* The zlib stream, written as IDAT chunks of IDAT_MAX bytes (the last
  * shorter) straight into the file's bytes: each piece of the stream is
  * copied once, where it ends up. */
 typedef struct idat_writer {
-    unsigned char *chunk;     /* the open chunk's start (its length field) */
+    unsigned char *chunk;     /* the open chunk's start (its length field), or NULL */
     size_t filled;            /* the stream's bytes in it */
 } idat_writer;
 
-/* Closes w's open chunk, if any: its length and CRC; returns the byte after. */
+/* Seals w's open chunk; returns the byte after. */
 static unsigned char *idat_close(idat_writer *w)
 {
-    if (!w->chunk)
-        return NULL;
-    put32(w->chunk, (uint32_t)w->filled);
-    unsigned char *end = w->chunk + 8 + w->filled;
-    put32(end, (uint32_t)crc32_z(crc32_z(0, NULL, 0), w->chunk + 4, 4 + w->filled));
+    unsigned char *end = seal_chunk(w->chunk, w->filled);
     w->chunk = NULL;
-    return end + 4;
+    return end;
 }
 
 /* Appends n bytes of the stream, opening chunks at *p as they fill. */
