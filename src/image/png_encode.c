@@ -3,16 +3,16 @@
  * A PNG image is one zlib stream over the filtered rows, which libpng
  * deflates on one thread: about 45 ms of a 1920x1080 render's wall time.
  * Here the rows are cut into slices of a fixed size, and threads deflate
- * the slices apart. A slice ends on a byte boundary (a sync flush) and its
- * compressor is primed with the 32 KiB of filtered data before it, the
- * whole window deflate may refer back into, so the slices joined in order
- * are one valid deflate stream; its Adler-32 is the slices' combined.
- * The slices depend only on the image's width, which keeps the file the
- * same bytes whatever the thread count.
+ * the slices apart (rows_deflate.c, twice as fast as zlib's fastest
+ * level). A slice ends on a byte boundary (a sync flush) and refers back
+ * only into itself, so the slices joined in order are one valid deflate
+ * stream; its Adler-32 is the slices' combined. The slices depend only on
+ * the image's width, which keeps the file the same bytes whatever the
+ * thread count.
  *
- * Each thread keeps one buffer of rows and one deflate state for all the
- * slices it takes: it sRGB-encodes a slice's rows, and the rows before it
- * that fill the window, filters them in place and deflates them. Fresh
+ * Each thread keeps one buffer of rows and one deflater for all the
+ * slices it takes: it sRGB-encodes a slice's rows (and the row above),
+ * filters them in place and deflates them. Fresh
  * memory costs a page fault a page, about 10 us each on a virtual machine:
  * the whole image's sRGB bytes, a filtered copy of each slice and a deflate
  * state each had made a 1000 x 1000 PNG fault in 7 MB, 1,800 pages. */
@@ -24,13 +24,13 @@
 #include "core/big_alloc.h"
 #include "core/parallel.h"
 #include "image/png_encode.h"
+#include "image/rows_deflate.h"
 #include "image/srgb.h"
 
 /* Filtered bytes per slice, about: large enough that the sync flush and the
- * lost matches at each start cost little (0.1% of the file on the example
- * scenes), small enough to share a 1000-row image among 8 threads. */
+ * matches lost at each start cost little, small enough to share a
+ * 1000-row image among 8 threads. */
 #define SLICE_BYTES (256 * 1024)
-#define WINDOW 32768
 /* IDAT chunks of at most this much of the zlib stream. */
 #define IDAT_MAX (1024 * 1024)
 
@@ -48,26 +48,25 @@ typedef struct encoder {
     const glint_image *image;
     int depth;                /* bits a channel: 8 or 16 */
     size_t row_bytes;         /* 3 * width * depth / 8 */
-    int window_rows;          /* rows before a slice that fill the window, at most */
     int slice_rows;           /* rows of every slice but maybe the last */
     slice *slices;
     int slice_count;
     unsigned char *deflated;  /* room for every slice's deflated bytes, slice_room each */
     size_t slice_room;
     atomic_int next;          /* the next slice a thread takes */
-    atomic_bool failed;       /* some allocation or zlib call failed */
+    atomic_bool failed;       /* some allocation failed */
 } encoder;
 
-/* The rows of slice s and `before` rows ahead of it, filtered, into rows
- * (a filter byte and row_bytes each): sRGB-encoded in place, then from the
- * bottom up each row less the one above it (Up), which is still sRGB
- * there. The image's first row has no row above: it is left unfiltered,
- * as libpng does. Any other first row here needs its row above, encoded
- * at the front of `rows` and not returned. Returns the first row's start. */
-static unsigned char *filtered_rows(const encoder *e, const slice *s, int before, unsigned char *rows)
+/* The rows of slice s, filtered, into rows (a filter byte and row_bytes
+ * each): sRGB-encoded in place, then from the bottom up each row less the
+ * one above it (Up), which is still sRGB there. The image's first row has
+ * no row above: it is left unfiltered, as libpng does. Any other slice's
+ * first row needs its row above, encoded at the front of `rows` and not
+ * returned. Returns the first row's start. */
+static unsigned char *filtered_rows(const encoder *e, const slice *s, unsigned char *rows)
 {
     size_t stride = e->row_bytes + 1, samples = 3 * (size_t)e->image->width;
-    int top = s->first_row - before, from = top > 0 ? top - 1 : 0, count = s->first_row + s->rows - from;
+    int from = s->first_row > 0 ? s->first_row - 1 : 0, count = s->first_row + s->rows - from;
     for (int k = 0; k < count; k++)
         srgb_encode_depth(rows + (size_t)k * stride + 1, e->image->pixels + (size_t)(from + k) * samples, samples,
                           e->depth);
@@ -79,52 +78,35 @@ static unsigned char *filtered_rows(const encoder *e, const slice *s, int before
             row[i] = (unsigned char)(row[i] - above[i]);
     }
     rows[0] = FILTER_NONE;
-    return top > 0 ? rows + stride : rows;
+    return s->first_row > 0 ? rows + stride : rows;
 }
 
-/* Filters the slice's rows, with enough rows before it to fill the window,
- * and deflates them through z: raw deflate, primed with that window, ended
- * with a sync flush, or for the last slice with the final block. */
-static bool deflate_slice(encoder *e, slice *s, unsigned char *rows, z_stream *z)
+/* Filters the slice's rows and deflates them through d, ended with a sync
+ * flush, or for the last slice with the final block. */
+static void deflate_slice(encoder *e, slice *s, unsigned char *rows, rows_deflater *d)
 {
-    size_t stride = e->row_bytes + 1;
-    int before = s->first_row < e->window_rows ? s->first_row : e->window_rows;
-    size_t window = (size_t)before * stride < WINDOW ? (size_t)before * stride : WINDOW;
-    unsigned char *own = filtered_rows(e, s, before, rows) + (size_t)before * stride;
-    size_t own_size = (size_t)s->rows * stride;
+    unsigned char *own = filtered_rows(e, s, rows);
+    size_t own_size = (size_t)s->rows * (e->row_bytes + 1);
     s->adler = adler32_z(adler32_z(0, NULL, 0), own, own_size);
-
     bool last = s->first_row + s->rows == e->image->height;
-    if (deflateReset(z) != Z_OK || (window > 0 && deflateSetDictionary(z, own - window, (uInt)window) != Z_OK))
-        return false;
-    z->next_in = own;
-    z->avail_in = (uInt)own_size;
-    z->next_out = s->deflated;
-    z->avail_out = (uInt)e->slice_room;
-    int r = deflate(z, last ? Z_FINISH : Z_SYNC_FLUSH);
-    s->deflated_size = e->slice_room - z->avail_out;
-    return (last ? r == Z_STREAM_END : r == Z_OK) && z->avail_in == 0 && z->avail_out > 0;
+    s->deflated_size = rows_deflate(d, own, own_size, 3 * e->depth / 8, last, s->deflated);
 }
 
 /* A thread's work: the next slice not taken, until none is left, through
- * its own rows and deflate state. */
+ * its own rows and deflater. */
 static void *run(void *arg)
 {
     encoder *e = arg;
     size_t stride = e->row_bytes + 1;
-    unsigned char *rows = malloc((size_t)(e->window_rows + 1 + e->slice_rows) * stride);
-    z_stream z = {0};
-    /* Memory level 7 (a hash table of 16,384 entries, zlib's default is
-     * 32,768) deflates rendered images 4% to 10% faster than the default,
-     * and the files come out a little smaller, not larger. */
-    bool ok = rows && deflateInit2(&z, 1, Z_DEFLATED, -15, 7, Z_DEFAULT_STRATEGY) == Z_OK;
+    unsigned char *rows = malloc((size_t)(1 + e->slice_rows) * stride);
+    rows_deflater *d = rows_deflater_new();
     int k;
-    while (ok && !atomic_load(&e->failed) && (k = atomic_fetch_add(&e->next, 1)) < e->slice_count)
-        ok = deflate_slice(e, &e->slices[k], rows, &z);
-    if (!ok)
+    if (rows && d)
+        while (!atomic_load(&e->failed) && (k = atomic_fetch_add(&e->next, 1)) < e->slice_count)
+            deflate_slice(e, &e->slices[k], rows, d);
+    else
         atomic_store(&e->failed, true);
-    if (rows)
-        deflateEnd(&z);
+    rows_deflater_free(d);
     free(rows);
     return NULL;
 }
@@ -241,15 +223,12 @@ bool png_encode(const glint_image *image, int depth, int threads, unsigned char 
     encoder e = {.image = image, .depth = depth, .row_bytes = 3 * (size_t)image->width * (size_t)depth / 8};
     size_t stride = e.row_bytes + 1;
     e.slice_rows = stride < SLICE_BYTES ? (int)(SLICE_BYTES / stride) : 1;
-    e.window_rows = (int)((WINDOW + stride - 1) / stride);
     e.slice_count = (image->height + e.slice_rows - 1) / e.slice_rows;
     e.slices = calloc((size_t)e.slice_count, sizeof *e.slices);
-    /* zlib's bound for any stream's deflated size, with no stream to ask,
-     * covers the final block; a sync flush adds an empty stored block of 5
-     * bytes at most instead. One block for all the slices, each touched
-     * only as far as it is written, rather than a block each: one more
-     * copy of the file's bytes in fresh pages. */
-    e.slice_room = deflateBound(NULL, (uLong)((size_t)e.slice_rows * stride)) + 16;
+    /* One block of memory for all the slices, each touched only as far
+     * as it is written, rather than a block each: one more copy of the
+     * file's bytes in fresh pages. */
+    e.slice_room = rows_deflate_bound((size_t)e.slice_rows * stride);
     e.deflated = e.slices ? big_alloc(e.slice_room * (size_t)e.slice_count) : NULL;
     atomic_init(&e.next, 0);
     atomic_init(&e.failed, e.deflated == NULL);

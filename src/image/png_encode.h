@@ -15,10 +15,9 @@
  * PNG file of `depth` (8 or 16) bits a channel in *bytes (malloc'd, *size
  * long): the chunks IHDR, sRGB, IDAT and IEND, each row sRGB-encoded by
  * srgb_encode_depth and Up-filtered (byte by byte, as PNG's filters are
- * for every depth), deflated
- * at zlib's fastest level. The rows are cut into slices of about 256 KiB
- * that threads deflate apart, each primed with the 32 KiB before it, so
- * the file is the same bytes for any number of threads. threads is at
+ * for every depth), deflated by rows_deflate. The rows are cut into slices
+ * of about 256 KiB that threads deflate apart, each referring back only
+ * into itself, so the file is the same bytes for any number of threads. threads is at
  * least 1. False, with *bytes NULL, when memory runs out. */
 bool png_encode(const glint_image *image, int depth, int threads, unsigned char **bytes, size_t *size);
 

@@ -650,9 +650,8 @@ static void chunk_types(const unsigned char *bytes, size_t size, char *types, si
 
 /* The file is the same bytes on any number of threads, and decodes to the
  * film's sRGB bytes: over shapes of image that cut into one slice, several,
- * and slices of a single row wider than the 32 KiB window; a repeating ramp
- * in the top half, where matches reach back into the slice before, and
- * noise below. */
+ * and slices of a single row; a repeating ramp in the top half, of runs
+ * and repeats, and noise below. */
 static void test_png_encode_any_thread_count(void **state)
 {
     static const int shapes[][2] = {{1, 1}, {3, 2}, {301, 900}, {640, 1000}, {12000, 5}, {100000, 3}};
