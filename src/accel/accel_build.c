@@ -282,6 +282,11 @@ glint_status accel_build(accel **out, const accel_geometry *geo, glint_error *er
     a->shapes = geo->shapes;
     a->shape_count = geo->shape_count;
     a->shape_opaque = geo->shape_opaque;
+    a->all_opaque = true;
+    for (int i = 0; i < geo->shape_count; i++)
+        a->all_opaque &= geo->shape_opaque && geo->shape_opaque[i];
+    for (int i = 0; i < geo->instance_count; i++)
+        a->all_opaque &= geo->instance_opaque && geo->instance_opaque[i];
     a->cancel = geo->cancel;
     a->quality = build_quality(geo);
     /* Embree's threads start with the device (start_threads), not lazily in

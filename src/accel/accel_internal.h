@@ -49,6 +49,8 @@ struct accel {
     bool instanced;           /* some mesh is placed through Embree instances */
     bool apart;               /* incoherent queries trace each lane alone (rays_apart) */
     const bool *shape_opaque; /* per shape, or NULL */
+    bool all_opaque;          /* every shape and mesh placement blocks all light: no shadow
+                                 segment is filtered, only blocked or not */
     const volatile int *cancel; /* the build stops once it is set, or NULL */
     enum RTCBuildQuality quality; /* of every BVH built (build_quality) */
 };

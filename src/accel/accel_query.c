@@ -316,16 +316,22 @@ void accel_transmission8(const accel *a, const ray8 *r, const double *time, cons
     packet_init(&q, r, tmax, skip, coherent, active, valid, &p);
     q.filter = filter;
     q.user = user;
-    q.seen = seen;
-    for (unsigned i = 0; i < ACCEL_PACKET; i++) {
-        q.through[i] = rgb(1, 1, 1);
-        q.depth[i] = rgb(0, 0, 0);
-        seen_init(&seen[i]);
+    /* In a scene where everything blocks all light, no surface filters a
+     * segment: it passes whole or not at all, and the lanes need no record
+     * of what they passed (7% of the instructions of a floor's samples). */
+    bool filtered = !a->all_opaque;
+    if (filtered) {
+        q.seen = seen;
+        for (unsigned i = 0; i < ACCEL_PACKET; i++) {
+            q.through[i] = rgb(1, 1, 1);
+            q.depth[i] = rgb(0, 0, 0);
+            seen_init(&seen[i]);
+        }
     }
     if (a->plane_count > 0)
         through_planes(&q, valid, &p);
     blocked_lanes(&q, valid, coherent, &p);
-    for (int i = 0; i < ACCEL_PACKET; i++) {
+    for (int i = 0; filtered && i < ACCEL_PACKET; i++) {
         seen_free(&seen[i]);
         color d = q.depth[i];
         if (d.r != 0 || d.g != 0 || d.b != 0) /* a sum of rounded depths may fall a hair below 0 */
@@ -338,7 +344,8 @@ void accel_transmission8(const accel *a, const ray8 *r, const double *time, cons
         for (int j = 0; j < QUAD; j++) {
             uint64_t bits[3];
             _Static_assert(sizeof bits == sizeof(color), "a colour is three doubles");
-            memcpy(bits, &q.through[i + j], sizeof bits);
+            color passed = filtered ? q.through[i + j] : rgb(1, 1, 1);
+            memcpy(bits, &passed, sizeof bits);
             for (int k = 0; k < 3; k++)
                 bits[k] &= (uint64_t)passes[j];
             memcpy(&through[i + j], bits, sizeof bits);
