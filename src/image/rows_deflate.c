@@ -184,40 +184,35 @@ static void canonical_codes(const uint8_t *len, int n, uint16_t *code)
     }
 }
 
-/* A match length's symbol, its extra bits' count and value. */
-static inline void length_symbol(unsigned length, int *symbol, int *bits, unsigned *extra)
+/* The extra bits after length symbol s (257 to 285), and after distance
+ * code c: what RFC 1951's tables give, as formulas. */
+static inline int length_extra_bits(int s) { return s >= 265 && s < 285 ? (s - 261) / 4 : 0; }
+static inline int distance_extra_bits(int c) { return c >= 4 ? c / 2 - 1 : 0; }
+
+/* A match length's symbol, and the value of its extra bits. */
+static inline int length_symbol(unsigned length, unsigned *extra)
 {
-    if (length <= 10) {
-        *symbol = 257 + (int)length - 3;
-        *bits = 0;
-        *extra = 0;
-    } else if (length == MAX_MATCH) {
-        *symbol = 285;
-        *bits = 0;
-        *extra = 0;
-    } else {
-        unsigned m = length - 3;
-        int e = 31 - __builtin_clz(m) - 2;
-        *symbol = 261 + 4 * e + (int)(m >> e & 3);
-        *bits = e;
-        *extra = m & ((1u << e) - 1);
-    }
+    *extra = 0;
+    if (length <= 10)
+        return 257 + (int)length - 3;
+    if (length == MAX_MATCH)
+        return 285;
+    unsigned m = length - 3;
+    int e = 31 - __builtin_clz(m) - 2;
+    *extra = m & ((1u << e) - 1);
+    return 261 + 4 * e + (int)(m >> e & 3);
 }
 
-/* A distance's code, its extra bits' count and value. */
-static inline void distance_code(unsigned distance, int *code, int *bits, unsigned *extra)
+/* A distance's code, and the value of its extra bits. */
+static inline int distance_code(unsigned distance, unsigned *extra)
 {
-    if (distance <= 4) {
-        *code = (int)distance - 1;
-        *bits = 0;
-        *extra = 0;
-        return;
-    }
+    *extra = 0;
+    if (distance <= 4)
+        return (int)distance - 1;
     unsigned m = distance - 1;
     int e = 31 - __builtin_clz(m) - 1;
-    *code = 2 * e + 2 + (int)(m >> e & 1);
-    *bits = e;
     *extra = m & ((1u << e) - 1);
+    return 2 * e + 2 + (int)(m >> e & 1);
 }
 
 /* ---- Bits ---- */
@@ -393,17 +388,13 @@ static int find_tokens(rows_deflater *d, const unsigned char *in, size_t start, 
         }
         for (size_t k = from; k < i; k++)
             d->litlen_freq[in[k]]++;
-        int dcode, dbits;
-        unsigned dextra;
-        distance_code((unsigned)distance, &dcode, &dbits, &dextra);
+        unsigned ignored; /* the extra bits' values, found again as the block is written */
+        int dcode = distance_code((unsigned)distance, &ignored);
         /* Pieces of 3 to 258 bytes. */
         size_t literals = i - from;
         for (size_t left = length; left >= 3;) {
             size_t piece = left <= MAX_MATCH ? left : left - MAX_MATCH >= 3 ? MAX_MATCH : left - 3;
-            int symbol, bits;
-            unsigned extra;
-            length_symbol((unsigned)piece, &symbol, &bits, &extra);
-            d->litlen_freq[symbol]++;
+            d->litlen_freq[length_symbol((unsigned)piece, &ignored)]++;
             d->dist_freq[dcode]++;
             d->tokens[tokens++] = (token){(uint32_t)literals, (uint16_t)piece, (uint16_t)distance};
             literals = 0;
@@ -428,14 +419,10 @@ static void put_block(bit_writer *w, rows_deflater *d, const unsigned char *in, 
     code_lengths(d->dist_freq, DIST_CODES, 15, d->dist_len);
     header h;
     uint64_t bits = header_plan(d, &h);
-    for (int s = 0; s < LITLEN_CODES; s++) {
-        int extra = s >= 265 && s < 285 ? (s - 261) / 4 : 0;
-        bits += (uint64_t)d->litlen_freq[s] * (d->litlen_len[s] + extra);
-    }
-    for (int c = 0; c < DIST_CODES; c++) {
-        int extra = c >= 4 ? c / 2 - 1 : 0;
-        bits += (uint64_t)d->dist_freq[c] * (d->dist_len[c] + extra);
-    }
+    for (int s = 0; s < LITLEN_CODES; s++)
+        bits += (uint64_t)d->litlen_freq[s] * (d->litlen_len[s] + length_extra_bits(s));
+    for (int c = 0; c < DIST_CODES; c++)
+        bits += (uint64_t)d->dist_freq[c] * (d->dist_len[c] + distance_extra_bits(c));
     if (bits >= 3 + 7 + 32 + 8 * (uint64_t)(end - start)) {
         put_stored(w, in + start, end - start, last);
         return;
@@ -450,12 +437,12 @@ static void put_block(bit_writer *w, rows_deflater *d, const unsigned char *in, 
             put_bits(w, d->litlen_code[*p], d->litlen_len[*p]);
         if (!k->length)
             continue;
-        int symbol, lbits, dcode, dbits;
         unsigned lextra, dextra;
-        length_symbol(k->length, &symbol, &lbits, &lextra);
-        distance_code(k->distance, &dcode, &dbits, &dextra);
-        put_bits(w, d->litlen_code[symbol] | (uint64_t)lextra << d->litlen_len[symbol], d->litlen_len[symbol] + lbits);
-        put_bits(w, d->dist_code[dcode] | (uint64_t)dextra << d->dist_len[dcode], d->dist_len[dcode] + dbits);
+        int symbol = length_symbol(k->length, &lextra), dcode = distance_code(k->distance, &dextra);
+        put_bits(w, d->litlen_code[symbol] | (uint64_t)lextra << d->litlen_len[symbol],
+                 d->litlen_len[symbol] + length_extra_bits(symbol));
+        put_bits(w, d->dist_code[dcode] | (uint64_t)dextra << d->dist_len[dcode],
+                 d->dist_len[dcode] + distance_extra_bits(dcode));
         p += k->length;
     }
     put_bits(w, d->litlen_code[END_OF_BLOCK], d->litlen_len[END_OF_BLOCK]);
