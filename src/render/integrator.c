@@ -9,10 +9,14 @@
 #include "core/square_maps.h"
 #include "render/hit.h"
 #include "render/integrator.h"
+#include "render/lit_lanes.h"
+#include "render/plain_packet.h"
+#include "render/shadow_filter.h"
 #include "render/surface_detail.h"
 #include "shading/environment.h"
 #include "shading/fog.h"
 #include "shading/optics.h"
+#include "shading/phong_lanes.h"
 #include "shading/spectrum.h"
 
 /* New rays start this far off the surface, relative to the scene scale at
@@ -25,36 +29,6 @@ static vec3 offset_point(vec3 p, vec3 n)
     scale = az > scale ? az : scale;
     scale = scale > 1.0 ? scale : 1.0;
     return v3_madd(p, n, 1e-7 * scale);
-}
-
-/* What one surface crossing passes to a shadow ray: every crossing
- * filters, on the way into a thing and on the way out, as a camera ray
- * through it is filtered at both surfaces (shade_local's branches), so a
- * glass ball's shadow is as dark as the ball looks against the sky. Inside
- * an absorbing thing, the segment from where the ray goes in (or starts)
- * to where it comes out absorbs: its optical depth is the exit's distance
- * less the entry's, so the exit adds the depth of its distance and the
- * entry takes away the depth of its own. Only a textured or absorbing
- * surface needs its point described. */
-static color shadow_filter(void *user, const ray *r, const accel_hit *hit, color *depth)
-{
-    const glint_scene *scene = ((tracer *)user)->scene;
-    const glint_material *m = hit_material(scene, hit);
-    if (material_is_opaque(m))
-        return rgb(0, 0, 0);
-    color base = m->color;
-    if (m->texture >= 0 || material_absorbs(m)) {
-        accel_hit h = *hit;
-        surface s;
-        hit_surface(scene, r, &h, &s);
-        if (m->texture >= 0)
-            base = hit_color(scene, &h, m, &s, r->d, 0);
-        if (material_absorbs(m)) {
-            color d = material_optical_depth(m, h.t);
-            *depth = rgb_madd(*depth, d, v3_dot(r->d, s.n) > 0 ? 1 : -1);
-        }
-    }
-    return rgb_scale(material_filter(m, base), m->transparency + m->refraction);
 }
 
 /* What shading needs of a hit, between finding it and finishing its colour. */
@@ -273,17 +247,6 @@ static color shade_local(const glint_scene *scene, const ray *r, const shade_poi
     return kept;
 }
 
-/* Whether the render has been asked to stop: read at every packet, and
- * for every light's shadow packet, since one packet's tree of branches or
- * one shadow packet through millions of surfaces can take seconds. Once
- * seen, it stays seen for the rest of this tracer's tile. */
-static bool stopping(tracer *t)
-{
-    if (t->cancel && *t->cancel)
-        t->stopped = true;
-    return t->stopped;
-}
-
 /* What a ray that hits nothing brings back without an environment. */
 static color miss(const glint_scene *scene)
 {
@@ -294,7 +257,7 @@ static color miss(const glint_scene *scene)
  * along its ray: it becomes a hit at infinity of that colour, local[i],
  * which fog then covers as it covers a miss. */
 static void environment_seen(const glint_scene *scene, const ray8 *r, const bool active[ACCEL_PACKET],
-                             bool found[ACCEL_PACKET], shade_point sp[ACCEL_PACKET], color local[ACCEL_PACKET])
+                             bool found[ACCEL_PACKET], accel_hit hits[ACCEL_PACKET], color local[ACCEL_PACKET])
 {
     const glint_environment *env = &scene->environment;
     const texture *t = &scene->textures[env->texture];
@@ -307,7 +270,7 @@ static void environment_seen(const glint_scene *scene, const ray8 *r, const bool
         if (found[i] || !active[i])
             continue;
         found[i] = true;
-        sp[i].hit.t = INFINITY;
+        hits[i].t = INFINITY;
         vec3 d = v3(r->dx[i], r->dy[i], r->dz[i]);
         if (t->kind->solid)
             reads[i] = (texture_read){t, texture_place(t, d), {0, 0}};
@@ -364,68 +327,20 @@ __attribute__((always_inline)) static inline void light_packet(tracer *t, const 
             direct[i] = rgb_add(direct[i], light_share(&sp[i], &ls[i], through[i], v3(-r->dx[i], -r->dy[i], -r->dz[i])));
 }
 
-/* A packet's shading points as arrays of lanes, gathered once for all the
- * samples its lanes take of the area lights, and the direct light they
- * gather (lit_lanes_take, lit_lanes_give): each sample's steps then run a
- * quad of lanes at a time, where one lane at a time they were a quarter of
- * a Cornell box. A lane not found describes no hit: zeros, shape -1. */
-typedef struct lit_lanes {
-    double p[3][ACCEL_PACKET];        /* the hit */
-    double origin[3][ACCEL_PACKET];   /* where its shadow segments start */
-    double n[3][ACCEL_PACKET], ns[3][ACCEL_PACKET];
-    double surface_n[3][ACCEL_PACKET]; /* the surface's own normal, for hit_left_behind */
-    double to_eye[3][ACCEL_PACKET];
-    double base[3][ACCEL_PACKET];     /* the surface colour */
-    double diffuse[ACCEL_PACKET], specular[ACCEL_PACKET], shininess[ACCEL_PACKET];
-    bool diffuse_in[3][ACCEL_PACKET]; /* the diffuse term has channel c: diffuse and base's c above 0 */
-    bool lobe[ACCEL_PACKET];          /* a specular lobe of a whole exponent (lobe_pow's squarings) */
-    bool fractional[ACCEL_PACKET];    /* a lobe of another exponent: light_share adds that lane's light */
-    bool any_fractional;
-    int shape[ACCEL_PACKET];          /* the hit's shape, or -1 */
-    bool always_behind[ACCEL_PACKET]; /* shape_left_behind_rule's answers for it */
-    bool behind_when_leaving[ACCEL_PACKET];
-    double direct[3][ACCEL_PACKET];   /* the light gathered, */
-    bool gathering;                   /* while this is set (lit_lanes_take to lit_lanes_give) */
-    bool described;                   /* the fields above direct are filled */
-} lit_lanes;
-
 /* Fills ll's description of the lanes' hits, seen along r. */
 static void lit_lanes_describe(const glint_scene *scene, const ray8 *r, const shade_point sp[ACCEL_PACKET],
                                const bool found[ACCEL_PACKET], lit_lanes *ll)
 {
-    memset(ll, 0, offsetof(lit_lanes, direct));
+    lit_lanes_clear(ll);
     for (int i = 0; i < ACCEL_PACKET; i++) {
-        ll->shape[i] = -1;
         if (!found[i])
             continue;
         const shade_point *s = &sp[i];
-        const glint_material *m = s->m;
-        const double p[3] = {s->s.p.x, s->s.p.y, s->s.p.z}, o[3] = {s->origin.x, s->origin.y, s->origin.z};
-        const double n[3] = {s->n.x, s->n.y, s->n.z}, ns[3] = {s->ns.x, s->ns.y, s->ns.z};
-        const double sn[3] = {s->s.n.x, s->s.n.y, s->s.n.z}, eye[3] = {-r->dx[i], -r->dy[i], -r->dz[i]};
-        const double base[3] = {s->base.r, s->base.g, s->base.b};
-        for (int c = 0; c < 3; c++) {
-            ll->p[c][i] = p[c];
-            ll->origin[c][i] = o[c];
-            ll->n[c][i] = n[c];
-            ll->ns[c][i] = ns[c];
-            ll->surface_n[c][i] = sn[c];
-            ll->to_eye[c][i] = eye[c];
-            ll->base[c][i] = base[c];
-            ll->diffuse_in[c][i] = m->diffuse > 0 && base[c] > 0;
-        }
-        ll->diffuse[i] = m->diffuse;
-        ll->specular[i] = m->specular;
-        ll->shininess[i] = m->shininess;
-        bool whole = m->shininess >= 0 && m->shininess <= 65536 && m->shininess == floor(m->shininess);
-        ll->lobe[i] = m->specular > 0 && whole;
-        ll->fractional[i] = m->specular > 0 && !whole;
-        ll->any_fractional |= ll->fractional[i];
-        int k = s->hit.shape;
-        if (k >= 0) {
-            ll->shape[i] = k;
-            shape_left_behind_rule(&scene->shapes[k], &ll->always_behind[i], &ll->behind_when_leaving[i]);
-        }
+        lit_lanes_set_hit(ll, i, scene, &s->hit, s->s.p, s->n, s->ns, s->s.n, v3(-r->dx[i], -r->dy[i], -r->dz[i]));
+        lit_lanes_set_material(ll, i, s->m, s->base);
+        ll->origin[0][i] = s->origin.x;
+        ll->origin[1][i] = s->origin.y;
+        ll->origin[2][i] = s->origin.z;
     }
 }
 
@@ -459,133 +374,6 @@ static void lit_lanes_give(lit_lanes *ll, const bool found[ACCEL_PACKET], color 
             direct[i] = rgb(ll->direct[0][i], ll->direct[1][i], ll->direct[2][i]);
 }
 
-/* The quad of lanes h to h + 3 of an array of a packet's lanes. */
-#define LANES(array, h) quad_load((array) + (h))
-
-/* rgb_max(c) > 0 for a quad of colours, NaN as there. */
-static inline quad_mask quad_rgb_max_positive(const quad_f64 c[3])
-{
-    quad_f64 m = quad_select(c[0] > c[1], c[0], c[1]);
-    return quad_select(m > c[2], m, c[2]) > 0;
-}
-
-/* lobe_pow(x, e) for a quad, each lane's e a whole number in [0, 65536]:
- * the same squarings and products, so the same bits. */
-static inline quad_f64 quad_lobe_pow(quad_f64 x, quad_f64 e)
-{
-    quad_mask n = __builtin_convertvector(e, quad_mask);
-    quad_f64 result = quad_splat(1);
-    while (quad_any(n)) {
-        result = quad_select((n & 1) != 0, result * x, result);
-        x *= x;
-        n >>= 1;
-    }
-    return result;
-}
-
-/* lobe_cos for a quad: the cosine between the light's mirror direction
- * about ns and the eye. */
-static inline quad_f64 quad_lobe_cos(const lit_lanes *ll, int h, const quad_f64 to_light[3])
-{
-    const quad_f64 ns[3] = {LANES(ll->ns[0], h), LANES(ll->ns[1], h), LANES(ll->ns[2], h)};
-    const quad_f64 from[3] = {-to_light[0], -to_light[1], -to_light[2]};
-    quad_f64 k = -2 * quad_dot(from[0], from[1], from[2], ns[0], ns[1], ns[2]);
-    return quad_dot(from[0] + ns[0] * k, from[1] + ns[1] * k, from[2] + ns[2] * k, LANES(ll->to_eye[0], h),
-                    LANES(ll->to_eye[1], h), LANES(ll->to_eye[2], h));
-}
-
-/* Adds to ll's direct light what one light's samples ls bring to each
- * lane's hit (lane i where ls->ok[i]), their radiance weighed by `share`,
- * as light_packet's steps lane by lane would (the same bits): one packet
- * of shadow segments over the lanes they light, for hits of rays at
- * recursion depth `depth`. */
-static void lit_packet(tracer *t, const ray8 *r, const shade_point sp[ACCEL_PACKET], lit_lanes *ll, int depth,
-                       const light_samples8 *ls, double share)
-{
-    ray8 shadow;
-    double n_dot_l[ACCEL_PACKET], lobe_cosine[ACCEL_PACKET];
-    int skip[ACCEL_PACKET];
-    bool lit[ACCEL_PACKET];
-    int count = 0;
-    for (int h = 0; h < ACCEL_PACKET; h += QUAD) {
-        const quad_f64 d[3] = {LANES(ls->to_light[0], h), LANES(ls->to_light[1], h), LANES(ls->to_light[2], h)};
-        const quad_f64 radiance[3] = {LANES(ls->radiance[0], h), LANES(ls->radiance[1], h),
-                                      LANES(ls->radiance[2], h)};
-        quad_f64 facing = quad_dot(LANES(ll->n[0], h), LANES(ll->n[1], h), LANES(ll->n[2], h), d[0], d[1], d[2]);
-        quad_f64 shading = quad_dot(LANES(ll->ns[0], h), LANES(ll->ns[1], h), LANES(ll->ns[2], h), d[0], d[1], d[2]);
-        quad_f64 cosine = quad_lobe_cos(ll, h, d);
-        /* shadow_segment's tests (NaN passes them as it did there), then
-         * phong_reaches's: the diffuse term, or else the lobe. */
-        quad_mask faces = quad_from_bools(ls->ok + h) & ~(facing <= 0) & ~(shading <= 0);
-        quad_mask diffuse = (quad_from_bools(ll->diffuse_in[0] + h) & (radiance[0] > 0)) |
-                            (quad_from_bools(ll->diffuse_in[1] + h) & (radiance[1] > 0)) |
-                            (quad_from_bools(ll->diffuse_in[2] + h) & (radiance[2] > 0));
-        quad_mask shiny = (quad_from_bools(ll->lobe + h) | quad_from_bools(ll->fractional + h)) &
-                          quad_rgb_max_positive(radiance) & (cosine > 0);
-        quad_mask on = faces & (diffuse | shiny);
-        quad_mask_store(lit + h, on);
-        quad_store(n_dot_l + h, shading);
-        quad_store(lobe_cosine + h, cosine);
-        /* hit_left_behind's shape to skip. */
-        quad_f64 leaving = quad_dot(LANES(ll->surface_n[0], h), LANES(ll->surface_n[1], h),
-                                    LANES(ll->surface_n[2], h), d[0], d[1], d[2]);
-        quad_mask behind = quad_from_bools(ll->always_behind + h) |
-                           (quad_from_bools(ll->behind_when_leaving + h) & (leaving > 0));
-        for (int k = 0; k < QUAD; k++) {
-            skip[h + k] = on[k] && behind[k] ? ll->shape[h + k] : -1;
-            count += on[k] != 0;
-        }
-        /* A lane without a segment keeps its own ray. */
-        quad_store(shadow.ox + h, quad_select(on, LANES(ll->origin[0], h), LANES(r->ox, h)));
-        quad_store(shadow.oy + h, quad_select(on, LANES(ll->origin[1], h), LANES(r->oy, h)));
-        quad_store(shadow.oz + h, quad_select(on, LANES(ll->origin[2], h), LANES(r->oz, h)));
-        quad_store(shadow.dx + h, quad_select(on, d[0], LANES(r->dx, h)));
-        quad_store(shadow.dy + h, quad_select(on, d[1], LANES(r->dy, h)));
-        quad_store(shadow.dz + h, quad_select(on, d[2], LANES(r->dz, h)));
-    }
-    if (!count)
-        return;
-    t->rays += (unsigned)count;
-    color through[ACCEL_PACKET];
-    accel_transmission8(t->acc, &shadow, t->time, ls->distance, skip, depth == 0, lit, shadow_filter, t, through);
-    for (int h = 0; h < ACCEL_PACKET; h += QUAD) {
-        const color *th = through + h;
-        const quad_f64 passed[3] = {{th[0].r, th[1].r, th[2].r, th[3].r}, {th[0].g, th[1].g, th[2].g, th[3].g},
-                                    {th[0].b, th[1].b, th[2].b, th[3].b}};
-        /* light_share: black unless something passed; then phong_light,
-         * (base * arriving) * (diffuse * n . l) + arriving * (specular *
-         * lobe_pow(cosine, shininess)) where the cosine is above 0, with
-         * arriving = radiance * share * through. */
-        quad_mask adds = quad_from_bools(lit + h) & ~quad_from_bools(ll->fractional + h);
-        quad_mask passes = quad_rgb_max_positive(passed);
-        quad_f64 weight = LANES(ll->diffuse, h) * LANES(n_dot_l, h);
-        quad_f64 cosine = LANES(lobe_cosine, h);
-        quad_mask shines = quad_from_bools(ll->lobe + h) & (cosine > 0);
-        /* Other lanes' exponents are 0, not whatever a conversion makes of them. */
-        quad_f64 exponent = quad_select(shines, LANES(ll->shininess, h), quad_splat(0));
-        quad_f64 gloss = quad_any(shines) ? LANES(ll->specular, h) * quad_lobe_pow(cosine, exponent) : quad_splat(0);
-        for (int c = 0; c < 3; c++) {
-            quad_f64 arriving = LANES(ls->radiance[c], h) * share * passed[c];
-            quad_f64 out = LANES(ll->base[c], h) * arriving * weight;
-            out = quad_select(shines, out + arriving * gloss, out);
-            /* Black, not left out, where nothing passed: + 0 as there. */
-            out = quad_select(passes, out, quad_splat(0));
-            quad_f64 sum = LANES(ll->direct[c], h);
-            quad_store(ll->direct[c] + h, quad_select(adds, sum + out, sum));
-        }
-    }
-    for (int i = 0; i < ACCEL_PACKET && ll->any_fractional; i++) {
-        if (!lit[i] || !ll->fractional[i])
-            continue;
-        light_sample one = {ray8_dir(&shadow, i), ls->distance[i],
-                            rgb_scale(light_samples8_radiance(ls, i), share)};
-        color add = light_share(&sp[i], &one, through[i], v3(-r->dx[i], -r->dy[i], -r->dz[i]));
-        ll->direct[0][i] += add.r;
-        ll->direct[1][i] += add.g;
-        ll->direct[2][i] += add.b;
-    }
-}
-
 /* Adds to ll's direct light the light of area light l that reaches each
  * lane's hit through its sample u (lane i of u[0] and u[1]) where lanes[i]
  * is set, weighed by `share`. */
@@ -598,7 +386,7 @@ static void area_light_packet(tracer *t, const ray8 *r, const bool lanes[ACCEL_P
         light_moved_lanes(l, t->time, ll->p, u, lanes, &ls);
     else
         l->kind->sample_lanes(l, ll->p, u, lanes, &ls);
-    lit_packet(t, r, sp, ll, depth, &ls, share);
+    lit_lanes_light(t, r, ll, depth, &ls, share);
 }
 
 /* Sample j of a point's 2-D pattern, scrambled by seeds (sobol2_seeds_of
@@ -627,7 +415,7 @@ __attribute__((noinline)) static void area_light_packets(tracer *t, const ray8 *
     sobol2_seeds8 seeds;
     for (int i = 0; i < ACCEL_PACKET; i++)
         sobol2_seeds8_set(&seeds, i, sobol2_seeds_of(hash_u32(key[i] ^ hash_u32((uint32_t)index + 1))));
-    for (int j = 0; j < n && !stopping(t); j++) {
+    for (int j = 0; j < n && !tracer_stopping(t); j++) {
         double u[2][ACCEL_PACKET];
         sobol2_points8((uint32_t)j, &seeds, u[0], u[1]);
         area_light_packet(t, r, found, sp, ll, depth, l, u, 1.0 / n);
@@ -671,7 +459,7 @@ __attribute__((noinline)) static void chosen_light_packets(tracer *t, const ray8
         seeds[i] = sobol2_seeds_of(rot);
         shift[i] = hash_unit(hash_u32(rot ^ 0x2c1b3c6dU));
     }
-    for (int first = 0; first < n && !stopping(t); first += CHOICE_RUN) {
+    for (int first = 0; first < n && !tracer_stopping(t); first += CHOICE_RUN) {
         int run = n - first < CHOICE_RUN ? n - first : CHOICE_RUN;
         int pick[ACCEL_PACKET][CHOICE_RUN], next[ACCEL_PACKET] = {0};
         for (int k = 0; k < run; k++) {
@@ -691,7 +479,7 @@ __attribute__((noinline)) static void chosen_light_packets(tracer *t, const ray8
                 if (chosen < 0 && next[i] < run)
                     chosen = pick[i][next[i]];
             }
-            if (chosen < 0 || stopping(t))
+            if (chosen < 0 || tracer_stopping(t))
                 break;
             bool chose[ACCEL_PACKET];
             double u[2][ACCEL_PACKET] = {{0}};
@@ -728,7 +516,7 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
      * one or two lights. */
     lit_lanes ll;
     ll.described = ll.gathering = false;
-    for (int l = 0; l < scene->light_count + scene->emitter_count && !stopping(t); l++) {
+    for (int l = 0; l < scene->light_count + scene->emitter_count && !tracer_stopping(t); l++) {
         bool emitter = l >= scene->light_count;
         const light *li = emitter ? &scene->emitters[l - scene->light_count] : &scene->lights[l];
         if (li->kind->delta) {
@@ -740,7 +528,7 @@ static void direct_light8(tracer *t, const ray8 *r, const bool found[ACCEL_PACKE
                                emitter ? scene->settings.emission_samples : li->desc.samples, key);
         }
     }
-    if (t->choice && t->choice->count > 0 && !stopping(t)) {
+    if (t->choice && t->choice->count > 0 && !tracer_stopping(t)) {
         lit_lanes_take(&ll, scene, r, sp, found, direct);
         chosen_light_packets(t, r, found, sp, &ll, depth, key);
     }
@@ -776,7 +564,7 @@ __attribute__((noinline)) static void ambient_occlusion8(tracer *t, const bool f
         /* Built here, not for each of the lane's rays: the normal is the same for all. */
         plane_basis(sp[i].ns, &e1[i], &e2[i]);
     }
-    for (int j = 0; j < most && !stopping(t); j++) {
+    for (int j = 0; j < most && !tracer_stopping(t); j++) {
         ray8 shadow;
         double dist[ACCEL_PACKET] = {0};
         int skip[ACCEL_PACKET] = {-1, -1, -1, -1, -1, -1, -1, -1};
@@ -918,49 +706,25 @@ static void trace_branch(tracer *t, const ray8 *r, const bool found[ACCEL_PACKET
     }
 }
 
-/* The colours of up to ACCEL_PACKET rays at recursion depth `depth`, of
- * weights `weight` in their samples, whose random numbers come from
- * key[i]. The rays each hit sends on are traced as packets too, one per
- * kind of branch, over the lanes that send one and have budget left
- * (tracer_trace8), each with a key of its own made from its ray's. */
-static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET],
-                   int depth, const paths *path, const uint32_t key[ACCEL_PACKET], color out[ACCEL_PACKET])
+/* Shades the hits hits[i] of the lanes found[i] of packet r (each lane's
+ * ray also as lane_ray[i]) at recursion depth `depth`, along `path`, keys
+ * as for trace8, each lane by its own steps, and traces the rays they send
+ * on: local[i] is lane i's colour before fog, seen at hits[i].t (a mesh
+ * hit's distance refined), found[i] false where fog hides the hit, and
+ * set, with local[i] the light's colour, where an area light lies
+ * before what the lane hit or, for an active lane, in place of nothing. */
+static void shade_hits(tracer *t, const ray8 *r, const ray lane_ray[ACCEL_PACKET], const bool active[ACCEL_PACKET],
+                       accel_hit hits[ACCEL_PACKET], bool found[ACCEL_PACKET], int depth, const paths *path,
+                       const uint32_t key[ACCEL_PACKET], color local[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
-    if (stopping(t)) {
-        for (int i = 0; i < ACCEL_PACKET; i++)
-            out[i] = rgb(0, 0, 0);
-        return;
-    }
-    accel_hit hits[ACCEL_PACKET];
-    bool found[ACCEL_PACKET];
     shade_point sp[ACCEL_PACKET];
-    color local[ACCEL_PACKET];
     branches b[ACCEL_PACKET];
-    /* Each lane's ray as a struct, copied out of the packet before the
-     * search, so that shading reads it long after its stores: copied just
-     * before, its 8-byte stores were still on their way when
-     * shape_surface loaded it 16 bytes at a time, and the loads waited. */
-    ray lane_ray[ACCEL_PACKET];
-    for (int i = 0; i < ACCEL_PACKET; i++)
-        lane_ray[i] = ray8_get(r, i);
-    accel_intersect8(t->acc, r, t->time, t->reach, skip, depth == 0, active, hits, found);
-    /* A large mesh's vertices are seldom in cache: fetch every lane's
-     * together rather than one lane's at a time. */
-    if (scene->instance_count > 0)
-        for (int i = 0; i < ACCEL_PACKET; i++)
-            if (found[i])
-                hit_prefetch(scene, &hits[i]);
+    bool fog = scene->fog.kind != GLINT_FOG_NONE, occlusion = scene->settings.occlusion_samples > 0;
     /* A hit the fog hides completely looks like a miss, the fog colour
      * exactly (fog_apply gives it at factor 1 whatever the light), so it
      * is not shaded further. Its distance is exact only once described (a
      * mesh hit's is refined). */
-    bool fog = scene->fog.kind != GLINT_FOG_NONE, occlusion = scene->settings.occlusion_samples > 0;
-    /* bools are bytes of 0 or 1: their bits counted are the active lanes. */
-    uint64_t lanes;
-    _Static_assert(sizeof lanes == ACCEL_PACKET * sizeof active[0], "a packet's flags are eight bytes");
-    memcpy(&lanes, active, sizeof lanes);
-    t->rays += (uint64_t)__builtin_popcountll(lanes);
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (!found[i])
             continue;
@@ -1014,7 +778,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
                 rays[i] *= t->spectrum->count;
             most = rays[i] > most ? rays[i] : most;
         }
-        for (int j = 0; j < most && !stopping(t); j++)
+        for (int j = 0; j < most && !tracer_stopping(t); j++)
             trace_branch(t, r, found, sp, b, k, j, rays, depth, path, key, local);
     }
     /* A ray that reaches a surface from inside an absorbing thing has
@@ -1022,17 +786,59 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     for (int i = 0; i < ACCEL_PACKET; i++)
         if (found[i] && !sp[i].front && material_absorbs(sp[i].m))
             local[i] = rgb_mul(local[i], material_absorbed(sp[i].m, sp[i].hit.t));
-    if (scene->area_light_count > 0)
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        found[i] |= glows[i];
+        if (found[i])
+            hits[i].t = sp[i].hit.t;
+    }
+}
+
+/* The colours of up to ACCEL_PACKET rays at recursion depth `depth`, of
+ * weights `weight` in their samples, whose random numbers come from
+ * key[i]. The rays each hit sends on are traced as packets too, one per
+ * kind of branch, over the lanes that send one and have budget left
+ * (tracer_trace8), each with a key of its own made from its ray's. */
+static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const bool active[ACCEL_PACKET],
+                   int depth, const paths *path, const uint32_t key[ACCEL_PACKET], color out[ACCEL_PACKET])
+{
+    const glint_scene *scene = t->scene;
+    if (tracer_stopping(t)) {
         for (int i = 0; i < ACCEL_PACKET; i++)
-            found[i] |= glows[i];
+            out[i] = rgb(0, 0, 0);
+        return;
+    }
+    accel_hit hits[ACCEL_PACKET];
+    bool found[ACCEL_PACKET];
+    color local[ACCEL_PACKET];
+    /* Each lane's ray as a struct, copied out of the packet before the
+     * search, so that shading reads it long after its stores: copied just
+     * before, its 8-byte stores were still on their way when
+     * shape_surface loaded it 16 bytes at a time, and the loads waited. */
+    ray lane_ray[ACCEL_PACKET];
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        lane_ray[i] = ray8_get(r, i);
+    accel_intersect8(t->acc, r, t->time, t->reach, skip, depth == 0, active, hits, found);
+    /* A large mesh's vertices are seldom in cache: fetch every lane's
+     * together rather than one lane's at a time. */
+    if (scene->instance_count > 0)
+        for (int i = 0; i < ACCEL_PACKET; i++)
+            if (found[i])
+                hit_prefetch(scene, &hits[i]);
+    /* bools are bytes of 0 or 1: their bits counted are the active lanes. */
+    uint64_t lanes;
+    _Static_assert(sizeof lanes == ACCEL_PACKET * sizeof active[0], "a packet's flags are eight bytes");
+    memcpy(&lanes, active, sizeof lanes);
+    t->rays += (uint64_t)__builtin_popcountll(lanes);
+    if (!(t->plain && plain_packet_shade(t, r, hits, found, depth, path->travelled, local)))
+        shade_hits(t, r, lane_ray, active, hits, found, depth, path, key, local);
     /* Inactive lanes get the sky too, which nothing reads. Without fog,
      * fog_apply would give a hit's colour back as it is. */
     if (scene->environment.texture >= 0)
-        environment_seen(scene, r, active, found, sp, local);
+        environment_seen(scene, r, active, found, hits, local);
     color sky = miss(scene);
-    if (fog)
+    if (scene->fog.kind != GLINT_FOG_NONE)
         for (int i = 0; i < ACCEL_PACKET; i++)
-            out[i] = found[i] ? fog_apply(&scene->fog, local[i], sp[i].hit.t) : sky;
+            out[i] = found[i] ? fog_apply(&scene->fog, local[i], hits[i].t) : sky;
     else
         for (int i = 0; i < ACCEL_PACKET; i++)
             out[i] = found[i] ? local[i] : sky;

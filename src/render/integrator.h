@@ -43,7 +43,19 @@ typedef struct tracer {
     int budget[ACCEL_PACKET]; /* each lane's branch rays left in its sample */
     const double *time;       /* each lane's time over the shutter, where moving shapes are
                                  (tracer_trace8's), or NULL: nothing moves */
+    bool plain;               /* plain_packet_scene: packets of one plain surface may be shaded as one */
 } tracer;
+
+/* Whether the render has been asked to stop: read at every packet, and
+ * for every light's shadow packet, since one packet's tree of branches or
+ * one shadow packet through millions of surfaces can take seconds. Once
+ * seen, it stays seen for the rest of this tracer's tile. */
+static inline bool tracer_stopping(tracer *t)
+{
+    if (t->cancel && *t->cancel)
+        t->stopped = true;
+    return t->stopped;
+}
 
 /* How far along a ray a tracer of the scene needs to look for hits: past
  * fog_reach (with a margin for Embree's single-precision distances, which a

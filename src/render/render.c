@@ -18,6 +18,7 @@
 #include "render/hit.h"
 #include "render/integrator.h"
 #include "render/pixel_samples.h"
+#include "render/plain_packet.h"
 #include "render/render_tiles.h"
 
 #define MAX_THREADS 1024
@@ -37,6 +38,7 @@ typedef struct job {
     int samples;                  /* each pixel's, before adaptive sampling adds any */
     bool signed_film;             /* pixels take the film's signed path (film.h) */
     bool keys;                    /* tracing uses the samples' keys: tracer_needs_keys */
+    bool plain;                   /* plain_packet_scene */
     uint32_t key_seed;            /* what they are hashed with: the frame's random seed */
     light_choice choice;          /* with settings.light_samples: the area lights and emitters by power */
     spectrum bands;               /* settings.dispersion_bands' colours */
@@ -276,7 +278,8 @@ static void *worker_run(void *arg)
     job *j = w->job;
     tracer t = {.scene = j->scene, .acc = j->acc, .reach = tracer_reach(j->scene), .cancel = j->opts->cancel,
                 .keys = j->keys, .choice = j->scene->settings.light_samples > 0 ? &j->choice : NULL,
-                .spectrum = &j->bands, .cone_width = j->cone_width, .cone_spread = j->cone_spread};
+                .spectrum = &j->bands, .cone_width = j->cone_width, .cone_spread = j->cone_spread,
+                .plain = j->plain};
     const render_feed *f = j->feed;
     const render_layout *l = &j->layout;
     int tile;
@@ -386,6 +389,7 @@ glint_status render_tiles(const glint_scene *scene, const glint_render_options *
 
     j.samples = s->samples_per_pixel;
     j.keys = tracer_needs_keys(scene);
+    j.plain = plain_packet_scene(scene);
     spectrum_init(&j.bands, s->dispersion_bands);
     j.key_seed = glint_settings_random_seed(&scene->settings) ^ 0x4b455953U;
     camera_init(&j.cam, &scene->camera, s->width, s->height);

@@ -339,3 +339,61 @@ glint_status light_init(light *l, const glint_light *d, glint_error *err)
         s = light_falloff_check(l, err);
     return s;
 }
+
+/* light_delta_lanes for the quad of hits p, lanes `on`: the direction to
+ * the light, its distance and radiance, and the lanes it lights at all. */
+static quad_mask delta_quad(const light *l, const quad_f64 p[3], quad_mask on, quad_f64 to_light[3],
+                            quad_f64 *distance, quad_f64 radiance[3])
+{
+    const double colour[3] = {l->desc.color.r, l->desc.color.g, l->desc.color.b};
+    quad_f64 factor = quad_splat(1);
+    if (l->at_infinity) {
+        to_light[0] = quad_splat(-l->dir.x);
+        to_light[1] = quad_splat(-l->dir.y);
+        to_light[2] = quad_splat(-l->dir.z);
+        *distance = quad_splat(INFINITY);
+    } else {
+        const quad_f64 d[3] = {l->desc.position.x - p[0], l->desc.position.y - p[1], l->desc.position.z - p[2]};
+        quad_f64 squared = quad_dot(d[0], d[1], d[2], d[0], d[1], d[2]);
+        if (l->has_cone) {
+            quad_f64 along = -quad_dot(d[0], d[1], d[2], quad_splat(l->dir.x), quad_splat(l->dir.y),
+                                       quad_splat(l->dir.z));
+            on &= ~((along < 0) | (along * along < l->cos_outer * l->cos_outer * squared * (1 - 1e-9)));
+        }
+        *distance = quad_sqrt(squared);
+        on &= *distance != 0;
+        quad_f64 inverse = 1.0 / *distance;
+        for (int c = 0; c < 3; c++)
+            to_light[c] = d[c] * inverse;
+        if (l->has_cone || l->desc.falloff != GLINT_FALLOFF_NONE) {
+            for (int k = 0; k < QUAD; k++) {
+                if (!on[k])
+                    continue;
+                double f = 1;
+                if (l->has_cone)
+                    f = spot_factor(l, -v3_dot(v3(to_light[0][k], to_light[1][k], to_light[2][k]), l->dir));
+                if (l->desc.falloff != GLINT_FALLOFF_NONE)
+                    f *= light_falloff(l, (*distance)[k]);
+                factor[k] = f;
+            }
+        }
+    }
+    for (int c = 0; c < 3; c++)
+        radiance[c] = colour[c] * factor;
+    return on & (factor > 0);
+}
+
+void light_delta_lanes(const light *l, const double p[3][RAY8], const bool active[RAY8], light_samples8 *out)
+{
+    for (int h = 0; h < RAY8; h += QUAD) {
+        const quad_f64 at[3] = {quad_load(p[0] + h), quad_load(p[1] + h), quad_load(p[2] + h)};
+        quad_f64 to_light[3], distance, radiance[3];
+        quad_mask ok = delta_quad(l, at, quad_from_bools(active + h), to_light, &distance, radiance);
+        for (int c = 0; c < 3; c++) {
+            quad_store(out->to_light[c] + h, to_light[c]);
+            quad_store(out->radiance[c] + h, radiance[c]);
+        }
+        quad_store(out->distance + h, distance);
+        quad_mask_store(out->ok + h, ok);
+    }
+}

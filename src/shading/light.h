@@ -251,6 +251,11 @@ static inline bool light_delta_sample(const light *l, vec3 p, light_sample *out)
     return factor > 0;
 }
 
+/* light_delta_sample of delta light l at the lanes of a packet, lane i
+ * at (p[0][i], p[1][i], p[2][i]) for each active[i], not ok for the rest:
+ * the same bits, four lanes at a time. */
+void light_delta_lanes(const light *l, const double p[3][RAY8], const bool active[RAY8], light_samples8 *out);
+
 /* Makes light l move over the shutter through `count` (2 or more)
  * initialised lights of its kind, evenly spaced: l keeps `poses`, which
  * the caller frees after it, and takes the first's place. */
