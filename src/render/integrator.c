@@ -829,7 +829,7 @@ static void trace8(tracer *t, const ray8 *r, const int skip[ACCEL_PACKET], const
     _Static_assert(sizeof lanes == ACCEL_PACKET * sizeof active[0], "a packet's flags are eight bytes");
     memcpy(&lanes, active, sizeof lanes);
     t->rays += (uint64_t)__builtin_popcountll(lanes);
-    if (!(t->plain && plain_packet_shade(t, r, hits, found, depth, path->travelled, local)))
+    if (!(t->plain && plain_packet_shade(t, r, lane_ray, hits, found, depth, path->travelled, local)))
         shade_hits(t, r, lane_ray, active, hits, found, depth, path, key, local);
     /* Inactive lanes get the sky too, which nothing reads. Without fog,
      * fog_apply would give a hit's colour back as it is. */

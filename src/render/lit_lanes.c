@@ -24,24 +24,6 @@ void lit_lanes_set_none(lit_lanes *ll, int i)
     ll->always_behind[i] = ll->behind_when_leaving[i] = false;
 }
 
-void lit_lanes_set_hit(lit_lanes *ll, int i, const glint_scene *scene, const accel_hit *h, vec3 p, vec3 n, vec3 ns,
-                       vec3 surface_n, vec3 to_eye)
-{
-    const double pv[3] = {p.x, p.y, p.z}, nv[3] = {n.x, n.y, n.z}, nsv[3] = {ns.x, ns.y, ns.z};
-    const double sn[3] = {surface_n.x, surface_n.y, surface_n.z}, eye[3] = {to_eye.x, to_eye.y, to_eye.z};
-    for (int c = 0; c < 3; c++) {
-        ll->p[c][i] = pv[c];
-        ll->n[c][i] = nv[c];
-        ll->ns[c][i] = nsv[c];
-        ll->surface_n[c][i] = sn[c];
-        ll->to_eye[c][i] = eye[c];
-    }
-    int k = ll->shape[i] = h->shape;
-    ll->always_behind[i] = ll->behind_when_leaving[i] = false;
-    if (k >= 0)
-        shape_left_behind_rule(&scene->shapes[k], &ll->always_behind[i], &ll->behind_when_leaving[i]);
-}
-
 void lit_lanes_set_material(lit_lanes *ll, int i, const glint_material *m, color base)
 {
     const double channels[3] = {base.r, base.g, base.b};

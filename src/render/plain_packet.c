@@ -91,7 +91,8 @@ static void plain_describe_flat(const glint_scene *scene, const ray8 *r, const a
  * those the fog hides from found, and reads their colours as the
  * integrator's shade_colors does, the footprint widening with
  * travelled[i]; front[i]: lane i sees the surface's front. */
-static void plain_describe_each(const tracer *t, const ray8 *r, accel_hit hits[ACCEL_PACKET], bool found[ACCEL_PACKET],
+static void plain_describe_each(const tracer *t, const ray8 *r, const ray lane_ray[ACCEL_PACKET],
+                                accel_hit hits[ACCEL_PACKET], bool found[ACCEL_PACKET],
                                 const double travelled[ACCEL_PACKET], const glint_material *m, lit_lanes *ll,
                                 bool front[ACCEL_PACKET])
 {
@@ -102,16 +103,16 @@ static void plain_describe_each(const tracer *t, const ray8 *r, accel_hit hits[A
     for (int i = 0; i < ACCEL_PACKET; i++) {
         if (!found[i])
             continue;
-        ray ri = ray8_get(r, i);
-        hit_surface(scene, &ri, &hits[i], &s[i]);
+        const ray *ri = &lane_ray[i];
+        hit_surface(scene, ri, &hits[i], &s[i]);
         if (fog && fog_hides(&scene->fog, hits[i].t)) {
             found[i] = false;
             continue;
         }
-        front[i] = v3_dot(ri.d, s[i].n) < 0;
+        front[i] = v3_dot(ri->d, s[i].n) < 0;
         if (m->texture >= 0) {
             double width = t->cone_width + t->cone_spread * (travelled[i] + hits[i].t);
-            hit_texture_where(scene, &hits[i], m, &s[i], ri.d, width, &reads[i]);
+            hit_texture_where(scene, &hits[i], m, &s[i], ri->d, width, &reads[i]);
         }
     }
     color base[ACCEL_PACKET];
@@ -159,8 +160,9 @@ static void plain_start(const glint_scene *scene, const glint_material *m, const
     }
 }
 
-bool plain_packet_shade(tracer *t, const ray8 *r, accel_hit hits[ACCEL_PACKET], bool found[ACCEL_PACKET], int depth,
-                        const double travelled[ACCEL_PACKET], color local[ACCEL_PACKET])
+bool plain_packet_shade(tracer *t, const ray8 *r, const ray lane_ray[ACCEL_PACKET], accel_hit hits[ACCEL_PACKET],
+                        bool found[ACCEL_PACKET], int depth, const double travelled[ACCEL_PACKET],
+                        color local[ACCEL_PACKET])
 {
     const glint_scene *scene = t->scene;
     const glint_material *m = NULL;
@@ -191,7 +193,7 @@ bool plain_packet_shade(tracer *t, const ray8 *r, accel_hit hits[ACCEL_PACKET], 
             found[i] &= !(fog && fog_hides(&scene->fog, hits[i].t));
         plain_describe_flat(scene, r, hits, found, k, m, &ll, front);
     } else {
-        plain_describe_each(t, r, hits, found, travelled, m, &ll, front);
+        plain_describe_each(t, r, lane_ray, hits, found, travelled, m, &ll, front);
     }
     plain_start(scene, m, front, &ll);
     for (int l = 0; l < scene->light_count && !tracer_stopping(t); l++) {

@@ -194,11 +194,14 @@ static void test_same_bits_in_fog(void **state)
     glint_scene_free(s);
 }
 
-/* A packet of eight rays straight down from above x, z: all on the floor. */
-static void down_at(ray8 *r, double x, double z)
+/* A packet of eight rays straight down from above (x, z), a hundredth
+ * apart along x, and each lane's ray. */
+static void down_at(ray8 *r, double x, double z, ray lanes[ACCEL_PACKET])
 {
-    for (int i = 0; i < ACCEL_PACKET; i++)
-        ray8_set(r, i, (ray){v3(x + 0.01 * i, 3, z), v3(0, -1, 0)});
+    for (int i = 0; i < ACCEL_PACKET; i++) {
+        lanes[i] = (ray){v3(x + 0.01 * i, 3, z), v3(0, -1, 0)};
+        ray8_set(r, i, lanes[i]);
+    }
 }
 
 static void test_taken_only_where_it_may_be(void **state)
@@ -216,16 +219,17 @@ static void test_taken_only_where_it_may_be(void **state)
     double travelled[ACCEL_PACKET] = {0};
     color local[ACCEL_PACKET];
     ray8 r;
+    ray lane_ray[ACCEL_PACKET];
 
     /* All on the checkered floor: taken. */
-    down_at(&r, -3, 3);
+    down_at(&r, -3, 3, lane_ray);
     accel_intersect8(a, &r, NULL, INFINITY, skip, true, active, hits, found);
-    assert_true(plain_packet_shade(&t, &r, hits, found, 0, travelled, local));
+    assert_true(plain_packet_shade(&t, &r, lane_ray, hits, found, 0, travelled, local));
     /* Half on the glass ball (it sends rays on): not taken. */
-    down_at(&r, 2.27, 0);
+    down_at(&r, 2.27, 0, lane_ray);
     accel_intersect8(a, &r, NULL, INFINITY, skip, true, active, hits, found);
     assert_true(found[0] && found[7] && hits[0].shape != hits[7].shape);
-    assert_false(plain_packet_shade(&t, &r, hits, found, 0, travelled, local));
+    assert_false(plain_packet_shade(&t, &r, lane_ray, hits, found, 0, travelled, local));
     accel_free(a);
     free(shape_opaque);
     free(instance_opaque);
