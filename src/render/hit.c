@@ -57,7 +57,7 @@ void texture_read_colors8(const texture_read reads[ACCEL_PACKET], const bool wan
     memcpy(left, wanted, sizeof left);
     for (int i = 0; i < ACCEL_PACKET; i++) {
         const texture *t = reads[i].t;
-        if (!left[i] || !t->kind->solid4)
+        if (!left[i] || (!t->kind->solid4 && !t->kind->eval4))
             continue;
         int lane[QUAD], n = 0;
         vec3 points[QUAD];
@@ -67,7 +67,19 @@ void texture_read_colors8(const texture_read reads[ACCEL_PACKET], const bool wan
                 lane[n++] = j;
             }
         color c[QUAD];
-        texture_solid_points(t, points, n, c);
+        if (t->kind->solid4) {
+            texture_solid_points(t, points, n, c);
+        } else {
+            /* Padding lanes read (0, 0) at no footprint; nothing keeps them. */
+            quad_f64 u = {0}, v = {0}, u2 = {0}, v2 = {0};
+            for (int l = 0; l < n; l++) {
+                u[l] = points[l].x;
+                v[l] = points[l].y;
+                u2[l] = reads[lane[l]].covered.u2;
+                v2[l] = reads[lane[l]].covered.v2;
+            }
+            t->kind->eval4(t, u, v, u2, v2, n, c);
+        }
         for (int l = 0; l < n; l++) {
             out[lane[l]] = c[l];
             left[lane[l]] = false;

@@ -88,7 +88,9 @@ static inline color texture_read_color(const texture_read *r)
 /* texture_read_color of reads[i] into out[i], for each lane i of a packet
  * in `wanted`: lanes reading one noise texture (a kind with solid4) four
  * at a time, whose hashes and blends then run on four lanes' points in one
- * go, where one lane's noise alone leaves most of the processor idle. */
+ * go, where one lane's noise alone leaves most of the processor idle; and
+ * lanes reading one image (a kind with eval4) four at a time, their levels
+ * and texels found together. */
 void texture_read_colors8(const texture_read reads[ACCEL_PACKET], const bool wanted[ACCEL_PACKET],
                           color out[ACCEL_PACKET]);
 

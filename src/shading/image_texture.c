@@ -14,6 +14,13 @@ static color image_at(const texture *t, double u, double v, uv_extent covered)
     return image_eval_level(&t->image, u, v, t->desc.wrap_u, t->desc.wrap_v, level);
 }
 
+static void image_at4(const texture *t, quad_f64 u, quad_f64 v, quad_f64 u2, quad_f64 v2, int lanes,
+                      color out[QUAD])
+{
+    quad_f64 level = t->desc.filter == GLINT_IMAGE_TRILINEAR ? image_level4(&t->image, u2, v2) : quad_splat(0);
+    image_eval_level4(&t->image, u, v, t->desc.wrap_u, t->desc.wrap_v, level, lanes, out);
+}
+
 static const char *const WRAPS[] = {"repeat", "clamp", "mirror"}; /* glint_wrap's order */
 static const char *const FILTERS[] = {"trilinear", "bilinear"}; /* glint_image_filter's order */
 
@@ -34,5 +41,5 @@ static const param IMAGE_PARAMS[] = {
 
 const texture_kind image_texture = {
     .name = "image", .id = GLINT_TEXTURE_IMAGE, .params = PARAM_TABLE(IMAGE_PARAMS), .init = image_init,
-    .eval = image_at,
+    .eval = image_at, .eval4 = image_at4,
 };

@@ -368,6 +368,117 @@ color image_eval_level(const texture_image *img, double u, double v, glint_wrap 
     return c;
 }
 
+/* wrap_axis for four lanes, each along an axis of n[k] texels: the same
+ * operations, so the same bits. */
+static inline __attribute__((always_inline)) void wrap_axis4(quad_f64 c, quad_f64 n, glint_wrap w, quad_mask *i0,
+                                                             quad_mask *i1, quad_f64 *t)
+{
+    if (w == GLINT_WRAP_MIRROR) {
+        quad_f64 folded = c - 2 * quad_floor(0.5 * c);
+        c = quad_select(folded <= 1, folded, 2 - folded);
+    }
+    quad_f64 within = w == GLINT_WRAP_REPEAT
+                          ? c - quad_floor(c)
+                          : quad_select(c < 0, quad_splat(0), quad_select(c > 1, quad_splat(1), c));
+    quad_f64 f = within * n - 0.5;
+    quad_f64 f0 = quad_floor(f);
+    *t = f - f0;
+    quad_mask a = __builtin_convertvector(f0, quad_mask), b = a + 1;
+    quad_mask last = __builtin_convertvector(n, quad_mask) - 1;
+    if (w == GLINT_WRAP_REPEAT) {
+        a = quad_mask_select(a < 0, last, a);
+        b = quad_mask_select(b > last, (quad_mask){0, 0, 0, 0}, b);
+    } else {
+        a = quad_mask_select(a < 0, (quad_mask){0, 0, 0, 0}, a);
+        b = quad_mask_select(b > last, last, b);
+    }
+    *i0 = a;
+    *i1 = b;
+}
+
+/* image_eval of the first `lanes` of four lanes, lane k in image imgs[k]
+ * at (u[k], v[k]), each finite: the texels found four lanes at a time,
+ * read and blended lane by lane as image_eval's. */
+static void image_eval_lanes(const texture_image *const imgs[QUAD], quad_f64 u, quad_f64 v, glint_wrap wrap_u,
+                             glint_wrap wrap_v, int lanes, color out[QUAD])
+{
+    quad_f64 width, height;
+    for (int k = 0; k < QUAD; k++) {
+        width[k] = k < lanes ? imgs[k]->width : 1;
+        height[k] = k < lanes ? imgs[k]->height : 1;
+    }
+    quad_mask x0, x1, y0, y1;
+    quad_f64 tx, ty;
+    wrap_axis4(u, width, wrap_u, &x0, &x1, &tx);
+    wrap_axis4(v, height, wrap_v, &y0, &y1, &ty);
+    for (int k = 0; k < lanes; k++) {
+        const texture_image *img = imgs[k];
+        out[k] = img->hdr ? bilinear(img, true, (int)x0[k], (int)x1[k], (int)y0[k], (int)y1[k], tx[k], ty[k])
+                          : bilinear(img, false, (int)x0[k], (int)x1[k], (int)y0[k], (int)y1[k], tx[k], ty[k]);
+    }
+}
+
+quad_f64 image_level4(const texture_image *img, quad_f64 u2, quad_f64 v2)
+{
+    double w = img->width, h = img->height, top = img->level_count - 1;
+    quad_f64 along_u = u2 * (w * w), along_v = v2 * (h * h);
+    quad_f64 area = quad_select(along_u > along_v, along_u, along_v);
+    if (img->level_count < 2)
+        return quad_splat(0);
+    /* level_of_area, from the bits of each lane's area. */
+    quad_mask bits;
+    memcpy(&bits, &area, sizeof bits);
+    quad_mask e = (bits >> 52) - 1023;
+    bits = (bits & 0x000fffffffffffffLL) | 0x3ff0000000000000LL;
+    quad_f64 m;
+    memcpy(&m, &bits, sizeof m);
+    quad_f64 level = 0.5 * (__builtin_convertvector(e, quad_f64) + (m - 1));
+    level = quad_select(level < top, level, quad_splat(top));
+    level = quad_select(area < 0x1p60, level, quad_splat(top));
+    return quad_select(area > 1, level, quad_splat(0));
+}
+
+void image_eval_level4(const texture_image *img, quad_f64 u, quad_f64 v, glint_wrap wrap_u, glint_wrap wrap_v,
+                       quad_f64 level, int lanes, color out[QUAD])
+{
+    /* Each lane's two levels, as image_eval_level takes them; a lane at a
+     * non-finite point reads nothing and is black. */
+    const texture_image *below[QUAD], *above[QUAD];
+    double blend[QUAD];
+    quad_mask finite = (quad_abs(u) < INFINITY) & (quad_abs(v) < INFINITY);
+    bool any_above = false, all_finite = true;
+    for (int k = 0; k < QUAD; k++) {
+        below[k] = above[k] = img;
+        blend[k] = 0;
+        if (k >= lanes)
+            continue;
+        all_finite &= finite[k] != 0;
+        if (!(level[k] > 0))
+            continue;
+        int kl = (int)level[k];
+        blend[k] = level[k] - kl;
+        below[k] = kl == 0 ? img : &img->levels[kl - 1];
+        if (blend[k] > 0 && kl + 1 < img->level_count) {
+            above[k] = &img->levels[kl];
+            any_above = true;
+        }
+    }
+    if (!all_finite) {
+        /* Rare: each lane on its own, image_eval_level's way. */
+        for (int k = 0; k < lanes; k++)
+            out[k] = image_eval_level(img, u[k], v[k], wrap_u, wrap_v, level[k]);
+        return;
+    }
+    image_eval_lanes(below, u, v, wrap_u, wrap_v, lanes, out);
+    if (!any_above)
+        return;
+    color second[QUAD];
+    image_eval_lanes(above, u, v, wrap_u, wrap_v, lanes, second);
+    for (int k = 0; k < lanes; k++)
+        if (above[k] != img)
+            out[k] = rgb_lerp(out[k], second[k], blend[k]);
+}
+
 void texture_release(texture *t)
 {
     free(t->name);

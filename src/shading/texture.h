@@ -75,6 +75,10 @@ struct texture_kind {
      * p[0], p[1] and p[2] (x, y, z), into out; its `solid` is then
      * texture_solid_one. NULL for the others. */
     void (*solid4)(const texture *t, const quad_f64 p[3], int lanes, color out[QUAD]);
+    /* For a kind whose look-ups pay four at a time (images): eval at the
+     * first `lanes` (1 to 4) of four lanes, lane k at (u[k], v[k])
+     * covering (u2[k], v2[k]), the same colours. NULL for the others. */
+    void (*eval4)(const texture *t, quad_f64 u, quad_f64 v, quad_f64 u2, quad_f64 v2, int lanes, color out[QUAD]);
 };
 
 /* A solid texture's colour at p, through its kind's solid4 (one lane). */
@@ -150,6 +154,16 @@ double image_level(const texture_image *img, uv_extent covered);
  * it, blended (trilinear); at level 0 or below, exactly image_eval. */
 color image_eval_level(const texture_image *img, double u, double v, glint_wrap wrap_u, glint_wrap wrap_v,
                        double level);
+
+/* image_level of four footprints, lane k's (u2[k], v2[k]): the same
+ * values. */
+quad_f64 image_level4(const texture_image *img, quad_f64 u2, quad_f64 v2);
+
+/* image_eval_level of the first `lanes` (1 to 4) of four lanes, lane k
+ * at (u[k], v[k]) and level[k], into out: the same colours, where each
+ * texel is found four lanes at a time. */
+void image_eval_level4(const texture_image *img, quad_f64 u, quad_f64 v, glint_wrap wrap_u, glint_wrap wrap_v,
+                       quad_f64 level, int lanes, color out[QUAD]);
 
 /* Point p (a solid texture's) or (u, v, 0) carried into texture t's own
  * space, when it is placed. */

@@ -10,6 +10,7 @@
 #include <stdint.h>
 #include <stdlib.h>
 #include <cmocka.h>
+#include <math.h>
 #include "image_test_files.h"
 #include "core/vec.h"
 #include "image/srgb.h"
@@ -117,6 +118,61 @@ static void test_level_and_blend(void **state)
             assert_near(mid.b, 0.75 * l1.b + 0.25 * l2.b, 1e-9);
         }
     texture_image_free_levels(&img);
+}
+
+/* Four lanes at a time (image_level4, image_eval_level4), the levels and
+ * colours are those of one lane at a time, bit for bit: sRGB and linear
+ * images, every wrap, points in and far out of [0, 1], between and past
+ * the levels, at every lane count, and at points that are not finite. */
+static void test_four_lanes_as_one(void **state)
+{
+    (void)state;
+    float hdr[13 * 7 * 3];
+    unsigned char bytes[13 * 7 * 3];
+    float linear[256];
+    for (int i = 0; i < 256; i++)
+        linear[i] = (float)(i * i) / 65025.0f;
+    for (int i = 0; i < 13 * 7 * 3; i++) {
+        hdr[i] = (float)((i * 29) % 17) * 0.125f;
+        bytes[i] = (unsigned char)((i * 53) % 256);
+    }
+    texture_image images[2] = {{.width = 13, .height = 7, .hdr = hdr},
+                               {.width = 13, .height = 7, .srgb = bytes, .linear = linear}};
+    const glint_wrap wraps[3] = {GLINT_WRAP_REPEAT, GLINT_WRAP_CLAMP, GLINT_WRAP_MIRROR};
+    for (int im = 0; im < 2; im++) {
+        texture_image *img = &images[im];
+        assert_int_equal(texture_image_build_levels(img, NULL), GLINT_OK);
+        int compared = 0;
+        for (int w = 0; w < 9; w++)
+            for (int j = 0; j < 240; j += 4) {
+                quad_f64 u, v, u2, v2;
+                for (int k = 0; k < QUAD; k++) {
+                    double x = (j + k) * 0.0371;
+                    u[k] = 3.7 * sin(x * 1.3) - 0.4;
+                    v[k] = 2.9 * cos(x * 0.7) + 0.3;
+                    u2[k] = pow(10, fmod(x * 5.3, 7) - 5);
+                    v2[k] = pow(10, fmod(x * 3.1, 7) - 5);
+                }
+                if (j == 100)
+                    u[2] = NAN;
+                if (j == 104)
+                    v[0] = INFINITY;
+                quad_f64 level = image_level4(img, u2, v2);
+                for (int lanes = 1; lanes <= QUAD; lanes++) {
+                    color four[QUAD];
+                    image_eval_level4(img, u, v, wraps[w % 3], wraps[w / 3], level, lanes, four);
+                    for (int k = 0; k < lanes; k++) {
+                        double one_level = image_level(img, (uv_extent){u2[k], v2[k]});
+                        assert_memory_equal(&one_level, &level[k], sizeof one_level);
+                        color one = image_eval_level(img, u[k], v[k], wraps[w % 3], wraps[w / 3], one_level);
+                        assert_memory_equal(&one, &four[k], sizeof one);
+                        compared += one_level > 0 && one_level != floor(one_level);
+                    }
+                }
+            }
+        assert_true(compared > 1000); /* blends between levels were compared */
+        texture_image_free_levels(img);
+    }
 }
 
 /* The image texture file of 64 x 64 texels in one-texel black and white
@@ -327,6 +383,7 @@ int main(void)
     const struct CMUnitTest tests[] = {
         cmocka_unit_test(test_levels_are_means),
         cmocka_unit_test(test_level_and_blend),
+        cmocka_unit_test(test_four_lanes_as_one),
         cmocka_unit_test(test_far_floor_does_not_shimmer),
         cmocka_unit_test(test_planar_footprint_from_gradients),
         cmocka_unit_test(test_spherical_footprint_from_gradients),
