@@ -8,11 +8,13 @@
  * operations in the same order as integrator.c's steps lane by lane, so
  * the same bits (lanes.h). Lane by lane, those steps were 62% of a lit
  * floor's instructions (bench/README.md). Where every lane hit the same
- * flat untextured shape, even the description runs on quads: the normal
- * is the shape's. Anything else (a mirror, glass, a bump map, area lights,
+ * flat shape, untextured or with a texture flat_texture.c reads (a tiled
+ * or checkered floor), even the description runs on quads: the normal is
+ * the shape's. Anything else (a mirror, glass, a bump map, area lights,
  * a packet over two materials) goes the general way. */
 #include <math.h>
 #include <string.h>
+#include "render/flat_texture.h"
 #include "render/hit.h"
 #include "render/lit_lanes.h"
 #include "render/plain_packet.h"
@@ -40,12 +42,16 @@ static bool plain_material(const glint_material *m)
 }
 
 /* Describes into ll the hits of the lanes found[i], all on flat shape k
- * of untextured material m: shade_begin's steps with the shape's normal,
- * on quads; front[i]: lane i sees the shape's front. */
-static void plain_describe_flat(const glint_scene *scene, const ray8 *r, const accel_hit hits[ACCEL_PACKET],
-                                const bool found[ACCEL_PACKET], int k, const glint_material *m, lit_lanes *ll,
-                                bool front[ACCEL_PACKET])
+ * of material m, untextured or with a texture flat_texture reads:
+ * shade_begin's steps with the shape's normal, on quads, the footprint a
+ * texture is averaged over widening with travelled[i]; front[i]: lane i
+ * sees the shape's front. */
+static void plain_describe_flat(const tracer *tr, const ray8 *r, const accel_hit hits[ACCEL_PACKET],
+                                const bool found[ACCEL_PACKET], const double travelled[ACCEL_PACKET], int k,
+                                const glint_material *m, lit_lanes *ll, bool front[ACCEL_PACKET])
 {
+    const glint_scene *scene = tr->scene;
+    const texture *tex = m->texture >= 0 ? &scene->textures[m->texture] : NULL;
     const vec3 flat_n = scene->shapes[k].flat_n;
     const double fn[3] = {flat_n.x, flat_n.y, flat_n.z};
     for (int h = 0; h < ACCEL_PACKET; h += QUAD) {
@@ -60,21 +66,26 @@ static void plain_describe_flat(const glint_scene *scene, const ray8 *r, const a
         const quad_mask flipped = ((quad_mask){part[0], part[1], part[2], part[3]} & SHAPE_PART_FLIPPED) != 0;
         const quad_f64 d[3] = {LANES(r->dx, h), LANES(r->dy, h), LANES(r->dz, h)};
         const quad_f64 o[3] = {LANES(r->ox, h), LANES(r->oy, h), LANES(r->oz, h)};
-        quad_f64 n[3];
+        quad_f64 n[3], p[3];
         for (int c = 0; c < 3; c++) {
-            quad_store(ll->p[c] + h, o[c] + d[c] * t);
+            p[c] = o[c] + d[c] * t;
+            quad_store(ll->p[c] + h, p[c]);
             n[c] = quad_select(flipped, quad_splat(-fn[c]), quad_splat(fn[c]));
         }
         quad_mask faces = quad_dot(d[0], d[1], d[2], n[0], n[1], n[2]) < 0;
         quad_mask_store(front + h, faces);
-        const double base[3] = {m->color.r, m->color.g, m->color.b};
+        quad_f64 base[3] = {quad_splat(m->color.r), quad_splat(m->color.g), quad_splat(m->color.b)};
+        if (tex) {
+            quad_f64 width = tr->cone_width + tr->cone_spread * (LANES(travelled, h) + t);
+            flat_texture_colors4(tex, p, n, d, width, quad_from_bools(found + h), base);
+        }
         for (int c = 0; c < 3; c++) {
             n[c] = quad_select(faces, n[c], -n[c]);
             quad_store(ll->n[c] + h, n[c]);
             quad_store(ll->ns[c] + h, n[c]);
             quad_store(ll->surface_n[c] + h, quad_splat(0));
             quad_store(ll->to_eye[c] + h, -d[c]);
-            quad_store(ll->base[c] + h, quad_splat(base[c]));
+            quad_store(ll->base[c] + h, base[c]);
         }
     }
     for (int i = 0; i < ACCEL_PACKET; i++) {
@@ -187,11 +198,12 @@ bool plain_packet_shade(tracer *t, const ray8 *r, const ray lane_ray[ACCEL_PACKE
     lit_lanes ll; /* each lane filled by the description, found or not */
     bool front[ACCEL_PACKET] = {false};
     const shape *s = k >= 0 ? &scene->shapes[k] : NULL;
-    if (one_shape && s && s->flat && !s->pose_count && m->texture < 0) {
+    if (one_shape && s && s->flat && !s->pose_count &&
+        (m->texture < 0 || flat_texture_on_quads(&scene->textures[m->texture]))) {
         bool fog = scene->fog.kind != GLINT_FOG_NONE;
         for (int i = 0; i < ACCEL_PACKET; i++)
             found[i] &= !(fog && fog_hides(&scene->fog, hits[i].t));
-        plain_describe_flat(scene, r, hits, found, k, m, &ll, front);
+        plain_describe_flat(t, r, hits, found, travelled, k, m, &ll, front);
     } else {
         plain_describe_each(t, r, lane_ray, hits, found, travelled, m, &ll, front);
     }

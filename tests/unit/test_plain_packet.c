@@ -2,15 +2,18 @@
  * (render/plain_packet.c) give the same bits as the integrator's steps
  * lane by lane: a scene's camera packets traced with the shortcut and
  * without, every colour and the count of rays compared, over a plane, a
- * polygon, balls, a smooth mesh, a checker and a noise texture, point,
- * spot and directional lights with falloff, fog, highlights and shadows
- * through glass; and the shortcut taken only where it may be. */
+ * polygon, balls, a smooth mesh, checkers by uv and by plane, the Moon
+ * mapped by plane (trilinear and tiled, bilinear and mirrored, placed) and
+ * noise textures (placed and not), point, spot and directional lights
+ * with falloff, fog, highlights and shadows through glass; and the
+ * shortcut taken only where it may be. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
 #include <stdint.h>
 #include <cmocka.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 #include "render/hit.h"
@@ -37,10 +40,44 @@ static void add_light(glint_scene *s, glint_light l)
     assert_true(glint_scene_add_light(s, &l, &err) >= 0);
 }
 
-/* A floor with a checker, a ball with noise and highlights, a glass ball
- * whose shadow is tinted, a polygon wall, a smooth mesh (a tent of two
+/* What the floor (and the wall) of make_scene wear. */
+typedef enum floor_look {
+    CHECKS_BY_UV,      /* a checker by the plane's own (u, v); the wall red */
+    CHECKS_PLANAR,     /* a checker mapped by plane */
+    MOON_PLANAR,       /* the Moon, trilinear, tiled; the wall the Moon too,
+                        * placed (turned and moved), bilinear and mirrored */
+    NOISE,             /* noise at the hit itself; the wall noise placed */
+} floor_look;
+
+/* The Moon map of glint's sources, as a planar-mapped image texture of
+ * `scale`, or -1 where the sources are not found. */
+static int add_moon(glint_scene *s, double scale, glint_image_filter filter, glint_wrap wrap, bool turned)
+{
+    const char *src = getenv("GLINT_SOURCE_DIR");
+    char path[4096];
+    snprintf(path, sizeof path, "%s/assets/moon.jpg", src ? src : ".");
+    glint_texture t = glint_texture_default(GLINT_TEXTURE_IMAGE);
+    t.file = path;
+    t.filter = filter;
+    t.wrap_u = t.wrap_v = wrap;
+    t.mapping.kind = GLINT_MAP_PLANAR;
+    t.mapping.scale = scale;
+    if (turned) {
+        t.mapping.u_axis = (glint_vec3){1, 0, 0};
+        t.mapping.v_axis = (glint_vec3){0, 1, 0};
+        t.transform = glint_transform_rotate(glint_transform_identity(), (glint_vec3){0, 0, 1}, 30);
+        t.transform = glint_transform_translate(t.transform, 0.2, 0.1, 0);
+    }
+    glint_error err;
+    int k = glint_scene_add_texture(s, NULL, &t, &err);
+    assert_true(k >= 0);
+    return k;
+}
+
+/* A floor of the given look, a ball with noise and highlights, a glass
+ * ball whose shadow is tinted, a polygon wall, a smooth mesh (a tent of two
  * triangles with bent normals), each plain but the glass. */
-static glint_scene *make_scene(void)
+static glint_scene *make_scene(floor_look look)
 {
     glint_scene *s = glint_scene_new();
     assert_non_null(s);
@@ -51,16 +88,29 @@ static glint_scene *make_scene(void)
 
     glint_texture checker = glint_texture_default(GLINT_TEXTURE_CHECKER);
     checker.size = 0.7;
+    if (look == CHECKS_PLANAR)
+        checker.mapping.kind = GLINT_MAP_PLANAR;
     int checks = glint_scene_add_texture(s, "checks", &checker, &err);
     glint_texture noise = glint_texture_default(GLINT_TEXTURE_NOISE);
     noise.scale = 0.3;
     int clouds = glint_scene_add_texture(s, "clouds", &noise, &err);
-    assert_true(checks >= 0 && clouds >= 0);
+    noise.transform = glint_transform_rotate(glint_transform_identity(), (glint_vec3){0, 1, 0}, 20);
+    int placed_clouds = glint_scene_add_texture(s, "placed clouds", &noise, &err);
+    assert_true(checks >= 0 && clouds >= 0 && placed_clouds >= 0);
 
     glint_material m = glint_material_default();
     m.specular = 0;
-    m.texture = checks;
+    m.texture = look == MOON_PLANAR ? add_moon(s, 1.5, GLINT_IMAGE_TRILINEAR, GLINT_WRAP_REPEAT, false)
+                : look == NOISE     ? clouds
+                                    : checks;
     int floor = add_material(s, m);
+    m.texture = look == MOON_PLANAR ? add_moon(s, 3, GLINT_IMAGE_BILINEAR, GLINT_WRAP_MIRROR, true)
+                : look == NOISE     ? placed_clouds
+                                    : -1;
+    m.color = (glint_color){0.9, 0.3, 0.2};
+    m.specular = 0.4;
+    m.shininess = 12;
+    int wall_look = add_material(s, m);
     m = glint_material_default();
     m.texture = clouds;
     m.specular = 0.6;
@@ -83,7 +133,7 @@ static glint_scene *make_scene(void)
     wall.points[2] = (glint_vec3){4, 4, -4};
     wall.points[3] = (glint_vec3){-4, 4, -4};
     wall.point_count = 4;
-    add_shape(s, wall, red);
+    add_shape(s, wall, wall_look);
 
     static const float positions[] = {2, 0, -3, 4, 0, -3, 3, 2, -2, 3, 0, -1};
     static const float normals[] = {-1, 1, 0, 1, 1, 0, 0, 1, 0.3f, 0, 1, 1};
@@ -179,19 +229,23 @@ static void assert_same_both_ways(const glint_scene *scene)
 static void test_same_bits_as_lane_by_lane(void **state)
 {
     (void)state;
-    glint_scene *s = make_scene();
-    assert_same_both_ways(s);
-    glint_scene_free(s);
+    for (floor_look look = CHECKS_BY_UV; look <= NOISE; look++) {
+        glint_scene *s = make_scene(look);
+        assert_same_both_ways(s);
+        glint_scene_free(s);
+    }
 }
 
 static void test_same_bits_in_fog(void **state)
 {
     (void)state;
-    glint_scene *s = make_scene();
-    glint_fog fog = {.kind = GLINT_FOG_LINEAR, .color = {0.5, 0.5, 0.55}, .start = 2, .end = 9};
-    assert_int_equal(glint_scene_set_fog(s, &fog, NULL), GLINT_OK);
-    assert_same_both_ways(s);
-    glint_scene_free(s);
+    for (floor_look look = CHECKS_BY_UV; look <= MOON_PLANAR; look += MOON_PLANAR - CHECKS_BY_UV) {
+        glint_scene *s = make_scene(look);
+        glint_fog fog = {.kind = GLINT_FOG_LINEAR, .color = {0.5, 0.5, 0.55}, .start = 2, .end = 9};
+        assert_int_equal(glint_scene_set_fog(s, &fog, NULL), GLINT_OK);
+        assert_same_both_ways(s);
+        glint_scene_free(s);
+    }
 }
 
 /* A packet of eight rays straight down from above (x, z), a hundredth
@@ -207,7 +261,7 @@ static void down_at(ray8 *r, double x, double z, ray lanes[ACCEL_PACKET])
 static void test_taken_only_where_it_may_be(void **state)
 {
     (void)state;
-    glint_scene *s = make_scene();
+    glint_scene *s = make_scene(CHECKS_BY_UV);
     bool *shape_opaque, *instance_opaque;
     accel *a = build(s, &shape_opaque, &instance_opaque);
     spectrum bands;
