@@ -78,7 +78,8 @@ typedef color (*accel_filter_fn)(void *user, const ray *r, const accel_hit *hit,
  * nothing moves), with t in (0, tmax) (tmax may be INFINITY): found[i] says whether
  * ray i, if active[i], hit, and hit[i] is then its nearest hit. Inactive
  * lanes find nothing. skip[i] is a shape ray i cannot meet (the one it
- * leaves, when shape_is_left_behind says so), which is then not tested at
+ * leaves, or the combination holding it, when hit_left_behind says so),
+ * which is then not tested at
  * all, or -1. `coherent` says the rays are neighbours (a camera's, and
  * their shadow rays), which Embree's packet traversal can exploit. */
 void accel_intersect8(const accel *a, const ray8 *r, const double *time, double tmax, const int skip[ACCEL_PACKET],

@@ -46,12 +46,14 @@ static inline void intersect_lanes(const struct RTCIntersectFunctionNArguments *
 /* Shape `index` (s, which shape_intersect4 takes) for the four lanes of a
  * packet of glint's from lane `first` on: the mask of the valid lanes that
  * hit it in (0, tmax) and do not skip it, and *t. Every lane is tested,
- * the invalid ones too, which costs less than picking them out. */
+ * the invalid ones too, which costs less than picking them out; but not
+ * when no valid lane wants it: the shadow rays leaving a shape (a die,
+ * skipped as a whole) met its bounds first, and tested it to no end. */
 static inline quad_mask shape_quad(const query *q, const int *valid, int index, const shape *s, int first,
                                    quad_f64 tmax, quad_hit *hit)
 {
-    return shape_intersect4(s, q->r, first, tmax, hit) & quad_int_ne(valid + first, 0) &
-           quad_int_ne(q->skip + first, index);
+    quad_mask wanted = quad_int_ne(valid + first, 0) & quad_int_ne(q->skip + first, index);
+    return quad_any(wanted) ? shape_intersect4(s, q->r, first, tmax, hit) & wanted : wanted;
 }
 
 /* intersect_lanes for a packet of glint's and a shape that

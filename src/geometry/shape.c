@@ -316,6 +316,29 @@ void shape_left_behind_rule(const shape *s, bool *always, bool *when_leaving)
     *when_leaving = s->kind->max_crossings <= 2 && !s->kind->saddle;
 }
 
+int shape_left_behind_by(const shape *family, int k, bool *always, bool *when_leaving)
+{
+    const shape *s = &family[k];
+    if (s->part_of < 0) {
+        shape_left_behind_rule(s, always, when_leaving);
+        return k;
+    }
+    *always = *when_leaving = false;
+    if (!s->convex)
+        return -1;
+    int top = k;
+    for (int child = k, up = s->part_of; up >= 0; child = up, up = family[up].part_of) {
+        const shape *c = &family[up];
+        bool within = c->desc.kind == GLINT_SHAPE_INTERSECTION ||
+                      (c->desc.kind == GLINT_SHAPE_DIFFERENCE && c->part_count > 0 && c->parts[0] == child);
+        if (!within)
+            return -1;
+        top = up;
+    }
+    *when_leaving = true;
+    return top;
+}
+
 bool shape_is_left_behind(const shape *s, vec3 n, vec3 d)
 {
     bool always, when_leaving;

@@ -284,6 +284,17 @@ bool shape_is_left_behind(const shape *s, vec3 n, vec3 d);
  * convex: left behind when n . d > 0). */
 void shape_left_behind_rule(const shape *s, bool *always, bool *when_leaving);
 
+/* The shape a ray leaving the surface of shape k of `family` (the scene's
+ * shapes) may skip, under the rule *always or *when_leaving as
+ * shape_left_behind_rule gives them, or -1. A shape standing alone: k
+ * itself, by its own rule. A part of a combination (hits name such
+ * leaves): the outermost combination, when k is convex and every
+ * combination above it is an intersection, or a difference whose first
+ * part holds k. That combination then lies within k, and its surface at
+ * the hit is k's own (not a cut, turned round), so a ray leaving k outward
+ * never meets it again: skipped when leaving only. -1 for other parts. */
+int shape_left_behind_by(const shape *family, int k, bool *always, bool *when_leaving);
+
 /* A point of s's surface in world space for (u1, u2) in [0, 1)^2, *n its
  * unit outward (front) normal; returns the density of such points per
  * unit of world area (the same everywhere for a shape without a transform

@@ -107,13 +107,17 @@ static inline color hit_color(const glint_scene *scene, const accel_hit *h, cons
 }
 
 /* The shape a ray leaving hit h along d cannot meet again, which the
- * accelerator then need not test (accel_intersect8's skip), or -1. n is
- * the surface's outward normal there (hit_surface's s.n). Mesh triangles
- * are never skipped: a ray may meet the same mesh again. */
+ * accelerator then need not test (accel_intersect8's skip), or -1: the
+ * shape hit, or the combination it is a part of (shape_left_behind_by). n
+ * is the surface's outward normal there (hit_surface's s.n). Mesh
+ * triangles are never skipped: a ray may meet the same mesh again. */
 static __attribute__((unused)) int hit_left_behind(const glint_scene *scene, const accel_hit *h, vec3 n, vec3 d)
 {
-    int k = h->shape;
-    return k >= 0 && shape_is_left_behind(&scene->shapes[k], n, d) ? k : -1;
+    if (h->shape < 0)
+        return -1;
+    bool always, when_leaving;
+    int skip = shape_left_behind_by(scene->shapes, h->shape, &always, &when_leaving);
+    return always || (when_leaving && v3_dot(n, d) > 0) ? skip : -1;
 }
 
 /* Asks the processor to start loading what hit_surface will read of h: a

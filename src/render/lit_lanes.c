@@ -13,14 +13,14 @@ void lit_lanes_clear(lit_lanes *ll)
 {
     memset(ll, 0, offsetof(lit_lanes, direct));
     for (int i = 0; i < ACCEL_PACKET; i++)
-        ll->shape[i] = -1;
+        ll->leaves_behind[i] = -1;
 }
 
 void lit_lanes_set_none(lit_lanes *ll, int i)
 {
     for (int c = 0; c < 3; c++)
         ll->p[c][i] = ll->n[c][i] = ll->ns[c][i] = ll->surface_n[c][i] = ll->to_eye[c][i] = ll->base[c][i] = 0;
-    ll->shape[i] = -1;
+    ll->leaves_behind[i] = -1;
     ll->always_behind[i] = ll->behind_when_leaving[i] = false;
 }
 
@@ -101,7 +101,7 @@ void lit_lanes_light(tracer *t, const ray8 *r, lit_lanes *ll, int depth, const l
         quad_mask behind = quad_from_bools(ll->always_behind + h) |
                            (quad_from_bools(ll->behind_when_leaving + h) & (leaving > 0));
         for (int k = 0; k < QUAD; k++) {
-            skip[h + k] = on[k] && behind[k] ? ll->shape[h + k] : -1;
+            skip[h + k] = on[k] && behind[k] ? ll->leaves_behind[h + k] : -1;
             count += on[k] != 0;
         }
         /* A lane without a segment keeps its own ray. */

@@ -25,8 +25,8 @@ typedef struct lit_lanes {
     bool lobe[ACCEL_PACKET];          /* a specular lobe of a whole exponent (lobe_pow's squarings) */
     bool fractional[ACCEL_PACKET];    /* a lobe of another exponent: that lane's light by phong_light */
     bool any_fractional;
-    int shape[ACCEL_PACKET];          /* the hit's shape, or -1 */
-    bool always_behind[ACCEL_PACKET]; /* shape_left_behind_rule's answers for it */
+    int leaves_behind[ACCEL_PACKET];  /* the shape a ray leaving the hit may skip, or -1, */
+    bool always_behind[ACCEL_PACKET]; /* and when (shape_left_behind_by's answers) */
     bool behind_when_leaving[ACCEL_PACKET];
     double direct[3][ACCEL_PACKET];   /* the light gathered, */
     bool gathering;                   /* while the integrator gathers it here */
@@ -58,10 +58,11 @@ static inline void lit_lanes_set_hit(lit_lanes *ll, int i, const glint_scene *sc
         ll->surface_n[c][i] = sn[c];
         ll->to_eye[c][i] = eye[c];
     }
-    int k = ll->shape[i] = h->shape;
+    ll->leaves_behind[i] = -1;
     ll->always_behind[i] = ll->behind_when_leaving[i] = false;
-    if (k >= 0)
-        shape_left_behind_rule(&scene->shapes[k], &ll->always_behind[i], &ll->behind_when_leaving[i]);
+    if (h->shape >= 0)
+        ll->leaves_behind[i] = shape_left_behind_by(scene->shapes, h->shape, &ll->always_behind[i],
+                                                    &ll->behind_when_leaving[i]);
 }
 
 /* Lane i of ll is of material m and surface colour base. */

@@ -88,11 +88,14 @@ static void plain_describe_flat(const tracer *tr, const ray8 *r, const accel_hit
             quad_store(ll->base[c] + h, base[c]);
         }
     }
+    /* A flat shape is always left behind (hit_left_behind), unless it is
+     * a part of a combination. */
+    bool always, when_leaving;
+    int skip = shape_left_behind_by(scene->shapes, k, &always, &when_leaving);
     for (int i = 0; i < ACCEL_PACKET; i++) {
-        /* A flat shape is always left behind (hit_left_behind). */
-        ll->shape[i] = k;
-        ll->always_behind[i] = true;
-        ll->behind_when_leaving[i] = false;
+        ll->leaves_behind[i] = skip;
+        ll->always_behind[i] = always;
+        ll->behind_when_leaving[i] = when_leaving;
     }
     lit_lanes_set_one_material(ll, m);
 }

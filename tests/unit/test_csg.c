@@ -2,8 +2,8 @@
  * stand for: which points of a grid are inside, the silhouettes of two
  * overlapping balls combined each way, a lens of two spheres focusing at
  * the lensmaker's focal length, shadows through a glass combination, the
- * four-lane test against the one-ray one, and the parts a combination
- * refuses. */
+ * four-lane test against the one-ray one, the combinations a ray leaving
+ * them may skip, and the parts a combination refuses. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -432,6 +432,76 @@ static void test_four_lanes_match_one(void **state)
     glint_scene_free(s);
 }
 
+/* A ray leaving a combination's surface where that surface is a convex
+ * part's own, within which the whole combination lies, never meets the
+ * combination again, so it may skip it (shape_left_behind_by): the die's
+ * rounded cube (a difference's first part, an intersection), not its
+ * pips' hollows, nor a union's parts, nor a torus's. Checked from hits all
+ * over a turned die, in many directions: every leaving ray that skips the
+ * die meets it nowhere, and the hollows are seen and never skipped. */
+static void test_leaving_skips_the_die(void **state)
+{
+    glint_scene *s = glint_scene_new();
+    int ivory = flat(s, 1, 1, 1), pip = flat(s, 0, 0, 0);
+    glint_transform turned = glint_transform_rotate(glint_transform_identity(), (glint_vec3){0, 1, 0}, 23);
+    turned = glint_transform_rotate(turned, (glint_vec3){1, 0, 0}, 31);
+    int die = add_die(s, &turned, ivory, pip);
+    const shape *d = &s->shapes[die];
+    int rounded = d->parts[0], cube = s->shapes[rounded].parts[0], first_pip = d->parts[1];
+    bool always, when_leaving;
+    assert_int_equal(shape_left_behind_by(s->shapes, cube, &always, &when_leaving), die);
+    assert_false(always);
+    assert_true(when_leaving);
+    assert_int_equal(shape_left_behind_by(s->shapes, first_pip, &always, &when_leaving), -1);
+    assert_false(always || when_leaving);
+    int both = add_combination(s, -1, GLINT_SHAPE_UNION, -1);
+    int one_of_two = add_ball(s, both, (glint_vec3){4, 0, 0}, 1, ivory);
+    add_ball(s, both, (glint_vec3){5, 0, 0}, 1, ivory);
+    assert_int_equal(shape_left_behind_by(s->shapes, one_of_two, &always, &when_leaving), -1);
+    int ring = add_combination(s, -1, GLINT_SHAPE_DIFFERENCE, -1);
+    glint_shape torus = glint_shape_default(GLINT_SHAPE_TORUS);
+    torus.radius = 1;
+    torus.minor_radius = 0.25;
+    int tube = add_part(s, ring, torus, NULL, ivory);
+    add_ball(s, ring, (glint_vec3){2, 0, 0}, 0.5, ivory);
+    assert_int_equal(shape_left_behind_by(s->shapes, tube, &always, &when_leaving), -1);
+    /* A ball standing alone is its own rule's. */
+    int alone = add_ball(s, -1, (glint_vec3){9, 0, 0}, 1, ivory);
+    assert_int_equal(shape_left_behind_by(s->shapes, alone, &always, &when_leaving), alone);
+    assert_true(when_leaving && !always);
+
+    d = &s->shapes[die];
+    uint32_t seed = 11;
+    int skipped = 0, hollows = 0;
+    for (int round = 0; round < 4000; round++) {
+        vec3 o = v3_scale(v3(unit_noise(&seed), unit_noise(&seed), unit_noise(&seed)), 3);
+        vec3 aim = v3_scale(v3(unit_noise(&seed), unit_noise(&seed), unit_noise(&seed)), 0.45);
+        ray in = {o, v3_sub(aim, o)};
+        shape_hit h;
+        if (!shape_intersect(d, &in, 0, INFINITY, &h))
+            continue;
+        surface sf;
+        shape_surface(&s->shapes[h.leaf], &in, &h, &sf);
+        int skip = shape_left_behind_by(s->shapes, h.leaf, &always, &when_leaving);
+        hollows += (h.part & SHAPE_PART_FLIPPED) != 0;
+        if ((h.part & SHAPE_PART_FLIPPED) != 0)
+            assert_int_equal(skip, -1);
+        for (int b = 0; b < 8 && skip >= 0; b++) {
+            vec3 dir = v3_normalize(v3(unit_noise(&seed), unit_noise(&seed), unit_noise(&seed)));
+            if (!(v3_dot(sf.n, dir) > 1e-3))
+                continue;
+            ray leave = {sf.p, dir};
+            shape_hit again;
+            if (shape_intersect(d, &leave, 1e-9, INFINITY, &again))
+                fail_msg("the die met again at t = %g", again.t);
+            skipped++;
+        }
+    }
+    assert_true(skipped > 2000);
+    assert_true(hollows > 10);
+    glint_scene_free(s);
+}
+
 /* What a combination refuses, in words: a part that is not closed, a part
  * of something that is not a combination, a transform of its own, and a
  * part that would move. */
@@ -475,6 +545,7 @@ int main(void)
         cmocka_unit_test(test_shadow_through_a_combination),
         cmocka_unit_test(test_parts_see_each_other),
         cmocka_unit_test(test_four_lanes_match_one),
+        cmocka_unit_test(test_leaving_skips_the_die),
         cmocka_unit_test(test_refusals),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
