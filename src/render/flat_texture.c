@@ -64,11 +64,18 @@ void flat_texture_colors4(const texture *t, const quad_f64 p[3], const quad_f64 
             lane[count++] = k;
     if (!count)
         return;
-    color c[QUAD];
+    /* Channel c of lane lane[l]'s colour, in got[c][l]. */
+    quad_f64 got[3];
     if (t->kind->solid) {
         quad_f64 at[3];
+        color c[QUAD];
         quads_gather(p, at, 3, lane, count);
         t->kind->solid4(t, at, count, c);
+        for (int l = 0; l < count; l++) {
+            got[0][l] = c[l].r;
+            got[1][l] = c[l].g;
+            got[2][l] = c[l].b;
+        }
     } else {
         /* planar_map_apply, and coord_footprint with the planar mapping's
          * gradients, for each lane. */
@@ -90,15 +97,22 @@ void flat_texture_colors4(const texture *t, const quad_f64 p[3], const quad_f64 
         quad_f64 in[4];
         quads_gather(read, in, 4, lane, count);
         if (t->kind->eval4) {
-            t->kind->eval4(t, in[0], in[1], in[2], in[3], count, c);
+            t->kind->eval4(t, in[0], in[1], in[2], in[3], count, got);
         } else {
-            for (int l = 0; l < count; l++)
-                c[l] = texture_at_placed(t, in[0][l], in[1][l], (uv_extent){in[2][l], in[3][l]});
+            for (int l = 0; l < count; l++) {
+                color c = texture_at_placed(t, in[0][l], in[1][l], (uv_extent){in[2][l], in[3][l]});
+                got[0][l] = c.r;
+                got[1][l] = c.g;
+                got[2][l] = c.b;
+            }
         }
     }
-    for (int l = 0; l < count; l++) {
-        out[0][lane[l]] = c[l].r;
-        out[1][lane[l]] = c[l].g;
-        out[2][lane[l]] = c[l].b;
+    if (count == QUAD) {
+        /* Every lane, in order: the quads as they are. */
+        memcpy(out, got, sizeof got);
+        return;
     }
+    for (int c = 0; c < 3; c++)
+        for (int l = 0; l < count; l++)
+            out[c][lane[l]] = got[c][l];
 }

@@ -71,14 +71,16 @@ void texture_read_colors8(const texture_read reads[ACCEL_PACKET], const bool wan
             texture_solid_points(t, points, n, c);
         } else {
             /* Padding lanes read (0, 0) at no footprint; nothing keeps them. */
-            quad_f64 u = {0}, v = {0}, u2 = {0}, v2 = {0};
+            quad_f64 u = {0}, v = {0}, u2 = {0}, v2 = {0}, channels[3];
             for (int l = 0; l < n; l++) {
                 u[l] = points[l].x;
                 v[l] = points[l].y;
                 u2[l] = reads[lane[l]].covered.u2;
                 v2[l] = reads[lane[l]].covered.v2;
             }
-            t->kind->eval4(t, u, v, u2, v2, n, c);
+            t->kind->eval4(t, u, v, u2, v2, n, channels);
+            for (int l = 0; l < n; l++)
+                c[l] = rgb(channels[0][l], channels[1][l], channels[2][l]);
         }
         for (int l = 0; l < n; l++) {
             out[lane[l]] = c[l];

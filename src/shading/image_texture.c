@@ -15,7 +15,7 @@ static color image_at(const texture *t, double u, double v, uv_extent covered)
 }
 
 static void image_at4(const texture *t, quad_f64 u, quad_f64 v, quad_f64 u2, quad_f64 v2, int lanes,
-                      color out[QUAD])
+                      quad_f64 out[3])
 {
     quad_f64 level = t->desc.filter == GLINT_IMAGE_TRILINEAR ? image_level4(&t->image, u2, v2) : quad_splat(0);
     image_eval_level4(&t->image, u, v, t->desc.wrap_u, t->desc.wrap_v, level, lanes, out);

@@ -77,8 +77,9 @@ struct texture_kind {
     void (*solid4)(const texture *t, const quad_f64 p[3], int lanes, color out[QUAD]);
     /* For a kind whose look-ups pay four at a time (images): eval at the
      * first `lanes` (1 to 4) of four lanes, lane k at (u[k], v[k])
-     * covering (u2[k], v2[k]), the same colours. NULL for the others. */
-    void (*eval4)(const texture *t, quad_f64 u, quad_f64 v, quad_f64 u2, quad_f64 v2, int lanes, color out[QUAD]);
+     * covering (u2[k], v2[k]), the same colours, channel c of lane k's in
+     * out[c][k]. NULL for the others. */
+    void (*eval4)(const texture *t, quad_f64 u, quad_f64 v, quad_f64 u2, quad_f64 v2, int lanes, quad_f64 out[3]);
 };
 
 /* A solid texture's colour at p, through its kind's solid4 (one lane). */
@@ -160,10 +161,10 @@ color image_eval_level(const texture_image *img, double u, double v, glint_wrap 
 quad_f64 image_level4(const texture_image *img, quad_f64 u2, quad_f64 v2);
 
 /* image_eval_level of the first `lanes` (1 to 4) of four lanes, lane k
- * at (u[k], v[k]) and level[k], into out: the same colours, where each
- * texel is found four lanes at a time. */
+ * at (u[k], v[k]) and level[k], channel c of its colour into out[c][k]:
+ * the same colours, each texel found and blended four lanes at a time. */
 void image_eval_level4(const texture_image *img, quad_f64 u, quad_f64 v, glint_wrap wrap_u, glint_wrap wrap_v,
-                       quad_f64 level, int lanes, color out[QUAD]);
+                       quad_f64 level, int lanes, quad_f64 out[3]);
 
 /* Point p (a solid texture's) or (u, v, 0) carried into texture t's own
  * space, when it is placed. */
