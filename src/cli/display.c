@@ -497,6 +497,14 @@ display *display_start(volatile sig_atomic_t *cancel, int *code)
         *code = cli_complain(CLI_EXIT_USAGE, "--display needs a screen, and neither DISPLAY nor WAYLAND_DISPLAY is set");
         return NULL;
     }
+    /* SDL asks the session's D-Bus for an input method. Where no session
+     * bus is named, libdbus would start one: it forks this threaded
+     * process to run dbus-launch, and under AddressSanitizer the child
+     * has hung before its exec, the window never opening. glint needs no
+     * bus: an address that names none makes libdbus give up at once. Set
+     * before the window's thread starts (glint's own threads start later). */
+    if (!getenv("DBUS_SESSION_BUS_ADDRESS"))
+        setenv("DBUS_SESSION_BUS_ADDRESS", "disabled:", 0);
     display *d = calloc(1, sizeof *d);
     if (!d) {
         *code = cli_complain(CLI_EXIT_INTERNAL, "out of memory for the window");

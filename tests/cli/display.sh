@@ -33,6 +33,14 @@ done
 [ -s display.txt ] || { echo "FAIL: Xvfb did not start: $(cat xvfb.log)"; exit 1; }
 export DISPLAY=":$(head -n 1 display.txt)"
 unset WAYLAND_DISPLAY
+# No session bus, as on a bare X server: libdbus, asked for one, would fork
+# glint and run dbus-launch (the fork hung under ASan). A dbus-launch first
+# on PATH that leaves a mark tells whether glint let it.
+unset DBUS_SESSION_BUS_ADDRESS
+mkdir bin
+printf '#!/bin/sh\ntouch "%s/dbus-launch-ran"\nexit 1\n' "$PWD" >bin/dbus-launch
+chmod +x bin/dbus-launch
+export PATH="$PWD/bin:$PATH"
 
 # start PROGRAM ARGS...: once no earlier glint window is left, runs
 # PROGRAM ARGS in the background, its stderr in err.txt, and sets pid and
@@ -260,4 +268,5 @@ if [ -x "$GLINT_MPI" ] && command -v mpirun >/dev/null; then
         test "$(grep -c "glint: --display needs a screen, and neither DISPLAY nor WAYLAND_DISPLAY is set" err.txt)" = 1
     check "glint-mpi, no display: nothing written" test ! -e mpi-none.png
 fi
+check "no window started a session bus (dbus-launch)" test ! -e dbus-launch-ran
 finish
