@@ -3,7 +3,8 @@
  * two octaves of those four points in one eight-lane vector: one 512-bit
  * instruction a step where the processor has them (the noise has no
  * division or square root, whose 512-bit forms slow the core: see
- * core/lanes.h), two 256-bit ones elsewhere, as four lanes took before. */
+ * core/lanes.h), and elsewhere the narrower instructions two quads took
+ * before. */
 #include <math.h>
 #include "core/hash.h"
 #include "shading/noise.h"
@@ -149,12 +150,13 @@ static inline quad_f64 octave_sum(const quad_f64 p[3], noise_octaves o, bool mag
 {
     quad_f64 sum = quad_splat(0);
     double amplitude = 1, total = 0, frequency = 1;
+    const octo_f64 x = octo_join(p[0], p[0]), y = octo_join(p[1], p[1]), z = octo_join(p[2], p[2]);
     for (int i = 0; i < o.count; i += 2) {
         /* A last odd octave is paired with itself, its copy not added. */
         int pair = i + 1 < o.count ? 2 : 1;
         octo_f64 f = octo_join(quad_splat(frequency), quad_splat(pair == 2 ? frequency * o.lacunarity : frequency));
         const uint32_t layers[2] = {(uint32_t)i, (uint32_t)(i + pair - 1)};
-        octo_f64 n = noise_at8(octo_join(p[0], p[0]) * f, octo_join(p[1], p[1]) * f, octo_join(p[2], p[2]) * f, layers);
+        octo_f64 n = noise_at8(x * f, y * f, z * f, layers);
         if (magnitude)
             n = octo_abs(n);
         const quad_f64 octave[2] = {octo_low(n), octo_high(n)};
