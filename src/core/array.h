@@ -7,8 +7,10 @@
 #include <stddef.h>
 
 /* Makes room for `need` items of `size` bytes in *items, whose room is *cap
- * items, doubling it (from 16) until it fits. False, with *items and *cap
- * unchanged, when the bytes would not fit in a size_t or memory runs out. */
+ * items, doubling it (from 16) until it fits; room of BIG_ALLOC_MIN bytes
+ * or more is big_alloc's, on huge pages (core/big_alloc.h). *items is
+ * freed with free(). False, with *items and *cap unchanged, when the bytes
+ * would not fit in a size_t or memory runs out. */
 static inline bool array_reserve(void **items, size_t *cap, size_t need, size_t size);
 
 /* array_reserve when the room has to grow. */

@@ -1,7 +1,8 @@
 /* test_arena.c - the bump allocator of core/arena.h: pieces aligned and
  * apart, and a rollback giving back what was cut since its mark, small
  * pieces, new chunks and large pieces alike, so that the same memory
- * serves again; and core/big_alloc.h's large buffers. */
+ * serves again; core/big_alloc.h's large buffers; and core/array.h's
+ * growing arrays, which move onto them once large. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -10,6 +11,7 @@
 #include <malloc.h>
 #include <string.h>
 #include "core/arena.h"
+#include "core/array.h"
 #include "core/big_alloc.h"
 
 #define CHUNK ((size_t)1 << 20)
@@ -117,6 +119,34 @@ static void test_big_alloc(void **state)
     assert_null(big_alloc(SIZE_MAX - ((size_t)1 << 20)));
 }
 
+/* An array grown an item at a time keeps every item through each move:
+ * its room doubles from 16, and from BIG_ALLOC_MIN bytes on it starts on a
+ * 2 MiB boundary (big_alloc's); freed with free(). Room past what a size_t
+ * holds is refused with the array unchanged. */
+static void test_array_grows_onto_big_alloc(void **state)
+{
+    int64_t *items = NULL;
+    size_t cap = 0, n = 3 * BIG_ALLOC_MIN / sizeof *items + 7;
+    for (size_t i = 0; i < n; i++) {
+        assert_true(array_reserve((void **)&items, &cap, i + 1, sizeof *items));
+        items[i] = (int64_t)(i * 2654435761u);
+        size_t doubling = 16;
+        while (doubling < i + 1)
+            doubling *= 2;
+        assert_int_equal(cap, doubling);
+        if (cap * sizeof *items >= BIG_ALLOC_MIN)
+            assert_int_equal((uintptr_t)items % ((size_t)2 << 20), 0);
+    }
+    for (size_t i = 0; i < n; i++)
+        assert_int_equal(items[i], (int64_t)(i * 2654435761u));
+    int64_t *before = items;
+    size_t cap_before = cap;
+    assert_false(array_reserve((void **)&items, &cap, SIZE_MAX / 4, sizeof *items));
+    assert_ptr_equal(items, before);
+    assert_int_equal(cap, cap_before);
+    free(items);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -125,6 +155,7 @@ int main(void)
         cmocka_unit_test(test_rollback_frees_chunks_and_large_pieces),
         cmocka_unit_test(test_rollback_to_empty),
         cmocka_unit_test(test_big_alloc),
+        cmocka_unit_test(test_array_grows_onto_big_alloc),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
