@@ -9,17 +9,20 @@
 #include "scenefile/scene_bytes.h"
 #include "scenefile/scene_file.h"
 
-/* Reads all of f as scene_bytes_of_stream does, into room for `expected`
- * bytes and one more at first, growing only when that is full: a regular
- * file's size, so that it is read in one piece into room made once (not
- * grown, each move needing the old room and the new at once, and copying
- * the bytes again), or 64 KiB at a time for a stream of unknown size. */
-static char *bytes_of_stream(FILE *f, const char *name, size_t expected, size_t *size, glint_error *err)
+/* A stream of unknown size is read this many bytes at a time. */
+#define READ_STEP 65536
+
+/* Reads all of f as scene_bytes_of_stream does, into room for `first`
+ * bytes at first, growing by READ_STEP only when that is full. A regular
+ * file asks for its size and one more byte, so that it is read in one
+ * piece into room made once (not grown, each move needing the old room
+ * and the new at once, and copying the bytes again). */
+static char *bytes_of_stream(FILE *f, const char *name, size_t first, size_t *size, glint_error *err)
 {
     char *data = NULL;
     size_t cap = 0, n = 0, got;
     do {
-        if (n == cap && !array_reserve((void **)&data, &cap, n + (n ? 65536 : expected + 1), 1)) {
+        if (n == cap && !array_reserve((void **)&data, &cap, n ? n + READ_STEP : first, 1)) {
             free(data);
             error_set(err, GLINT_ERR_NOMEM, "out of memory reading '%s'", name);
             return NULL;
@@ -43,7 +46,7 @@ static char *bytes_of_stream(FILE *f, const char *name, size_t expected, size_t 
 
 char *scene_bytes_of_stream(FILE *f, const char *name, size_t *size, glint_error *err)
 {
-    return bytes_of_stream(f, name, 65535, size, err);
+    return bytes_of_stream(f, name, READ_STEP, size, err);
 }
 
 char *scene_bytes_of_file(const char *path, bool include, size_t *size, struct stat *st, glint_error *err)
@@ -61,7 +64,7 @@ char *scene_bytes_of_file(const char *path, bool include, size_t *size, struct s
         error_set(err, GLINT_ERR_INVALID, "scene '%s' is too large: %lld bytes (limit %ld)", path,
                   (long long)st->st_size, SCENE_FILE_MAX_BYTES);
     else
-        data = bytes_of_stream(f, path, S_ISREG(st->st_mode) ? (size_t)st->st_size : 65535, size, err);
+        data = bytes_of_stream(f, path, S_ISREG(st->st_mode) ? (size_t)st->st_size + 1 : READ_STEP, size, err);
     fclose(f);
     return data;
 }
