@@ -7,7 +7,8 @@
  * pixel, traces the camera ray through the pixel's centre and, from its hit,
  * one shadow ray to each light the hit faces: exactly the rays of a 1-sample
  * glint render of an opaque scene. Spheres are Embree's own (sphere
- * points), as the SPD balls need. It reports the trace time (after the
+ * points), as the SPD balls need, and open cylinders and cones Embree's cone
+ * curves, as the SPD rings and tree need. It reports the trace time (after the
  * build) and the rays per second, for single rays and for packets of 8
  * (4 x 2 pixels), which is what Embree can do at best on this machine.
  *
@@ -107,6 +108,54 @@ static void add_spheres(RTCDevice dev, RTCScene rtc, const glint_scene *s)
     rtcReleaseGeometry(g);
 }
 
+/* Whether sh is an open cylinder or cone (the NFF's), which Embree's cone
+ * curves are. */
+static bool open_cone(const shape *sh)
+{
+    return (sh->desc.kind == GLINT_SHAPE_CYLINDER || sh->desc.kind == GLINT_SHAPE_CONE) && !sh->desc.capped &&
+           !sh->desc.top_capped;
+}
+
+/* The open cylinders and cones as one geometry of Embree's own cone curves,
+ * a segment each from its base to its top (world space, single
+ * precision), so that a ceiling for the SPD rings and tree has their
+ * shapes exact and without callbacks. Each segment ends in a flat cap where
+ * glint's are open: inside the spheres joining them in the SPD scenes. */
+static void add_cones(RTCDevice dev, RTCScene rtc, const glint_scene *s)
+{
+    int count = 0;
+    for (int i = 0; i < s->shape_count; i++)
+        count += open_cone(&s->shapes[i]);
+    if (count == 0)
+        return;
+    RTCGeometry g = rtcNewGeometry(dev, RTC_GEOMETRY_TYPE_CONE_LINEAR_CURVE);
+    float *v = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT4, 4 * sizeof(float),
+                                       2 * (size_t)count);
+    unsigned *idx = rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT, sizeof(unsigned),
+                                            (size_t)count);
+    for (int i = 0, k = 0; i < s->shape_count; i++) {
+        const shape *sh = &s->shapes[i];
+        if (!open_cone(sh))
+            continue;
+        vec3 base = v3(sh->desc.center.x, sh->desc.center.y, sh->desc.center.z);
+        vec3 ends[2] = {xf_point(&sh->to_world, base), xf_point(&sh->to_world, v3_add(base, v3(0, sh->desc.height, 0)))};
+        double radii[2] = {sh->desc.radius,
+                           sh->desc.kind == GLINT_SHAPE_CONE ? sh->desc.top_radius : sh->desc.radius};
+        for (int e = 0; e < 2; e++) {
+            float *p = v + 4 * (2 * k + e);
+            p[0] = (float)ends[e].x;
+            p[1] = (float)ends[e].y;
+            p[2] = (float)ends[e].z;
+            p[3] = (float)radii[e];
+        }
+        idx[k] = 2 * (unsigned)k;
+        k++;
+    }
+    rtcCommitGeometry(g);
+    rtcAttachGeometry(rtc, g);
+    rtcReleaseGeometry(g);
+}
+
 /* One triangle geometry per placed mesh, its vertices moved to world space,
  * two triangles per plane, and the spheres as Embree's. */
 static RTCScene build_scene(RTCDevice dev, const glint_scene *s)
@@ -115,9 +164,10 @@ static RTCScene build_scene(RTCDevice dev, const glint_scene *s)
     for (int i = 0; i < s->shape_count; i++)
         if (s->shapes[i].desc.kind == GLINT_SHAPE_PLANE)
             add_plane(dev, rtc, &s->shapes[i]);
-        else if (s->shapes[i].desc.kind != GLINT_SHAPE_SPHERE)
-            die("the ceiling takes meshes, planes and spheres only");
+        else if (s->shapes[i].desc.kind != GLINT_SHAPE_SPHERE && !open_cone(&s->shapes[i]))
+            die("the ceiling takes meshes, planes, spheres and open cylinders and cones only");
     add_spheres(dev, rtc, s);
+    add_cones(dev, rtc, s);
     for (int i = 0; i < s->instance_count; i++) {
         const instance *inst = &s->instances[i];
         const mesh *m = &s->meshes[inst->mesh];
