@@ -21,8 +21,10 @@ static inline bool array_reserve(void **items, size_t *cap, size_t need, size_t 
     return need <= *cap || array_grow(items, cap, need, size);
 }
 
-/* malloc of count items of `size` bytes (at least one byte, so that
- * NULL always means failure); NULL when the product overflows. */
+/* Room for count items of `size` bytes (at least one byte, so that NULL
+ * always means failure), not cleared, freed with free(): big_alloc's, so
+ * on huge pages from BIG_ALLOC_MIN bytes up; NULL when the product
+ * overflows or memory runs out. */
 void *array_alloc(size_t count, size_t size);
 
 /* a * b into *out; false when it does not fit in a size_t. */

@@ -147,6 +147,25 @@ static void test_array_grows_onto_big_alloc(void **state)
     free(items);
 }
 
+/* array_alloc: a large array (a welded model's positions) starts on a 2
+ * MiB boundary, on big_alloc's huge pages, and holds what is written; a
+ * small one is malloc's; an overflowing count is refused. */
+static void test_array_alloc_large_on_big_alloc(void **state)
+{
+    size_t n = BIG_ALLOC_MIN / sizeof(float) + 3;
+    float *large = array_alloc(n, sizeof *large);
+    assert_non_null(large);
+    assert_int_equal((uintptr_t)large % ((size_t)2 << 20), 0);
+    for (size_t i = 0; i < n; i++)
+        large[i] = (float)i;
+    assert_true(large[n - 1] == (float)(n - 1));
+    free(large);
+    unsigned char *small = array_alloc(0, 12);
+    assert_non_null(small);
+    free(small);
+    assert_null(array_alloc(SIZE_MAX / 2, 4));
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -156,6 +175,7 @@ int main(void)
         cmocka_unit_test(test_rollback_to_empty),
         cmocka_unit_test(test_big_alloc),
         cmocka_unit_test(test_array_grows_onto_big_alloc),
+        cmocka_unit_test(test_array_alloc_large_on_big_alloc),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }

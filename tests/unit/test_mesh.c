@@ -1,6 +1,7 @@
 /* test_mesh.c - triangle meshes and instances: a tessellated sphere against
  * the analytic one, a quad split either way, instancing memory, smooth
- * normals, uv, per-triangle materials and bad mesh data. */
+ * normals, uv, per-triangle materials, bad mesh data and large meshes copied
+ * exactly. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -549,6 +550,28 @@ static void test_mesh_takes_its_groups_material(void **state)
     glint_scene_free(s);
 }
 
+/* A mesh whose arrays pass 1 MiB (on huge pages, core/big_alloc.h) is the
+ * scene's own exact copy: positions and indices byte for byte, and the
+ * float after the last position, which Embree's 16-byte reads take in,
+ * zero. */
+static void test_large_mesh_is_copied_exactly(void **state)
+{
+    glint_scene *s = new_scene(8, 8, 60);
+    sphere_mesh sm = make_sphere(400, 400);
+    assert_true((size_t)sm.vertices * 3 * sizeof(float) >= ((size_t)1 << 20));
+    glint_mesh_data md = {sm.positions, NULL, NULL, sm.vertices, sm.indices, sm.triangles, NULL, flat(s, 1, 1, 1)};
+    int id = glint_scene_add_mesh(s, NULL, &md, NULL);
+    assert_true(id >= 0);
+    const mesh *m = &s->meshes[id];
+    assert_ptr_not_equal(m->positions, sm.positions);
+    assert_memory_equal(m->positions, sm.positions, (size_t)sm.vertices * 3 * sizeof(float));
+    assert_memory_equal(m->indices, sm.indices, (size_t)sm.triangles * 3 * sizeof(uint32_t));
+    assert_true(m->positions[3 * (size_t)sm.vertices] == 0.0f);
+    free(sm.positions);
+    free(sm.indices);
+    glint_scene_free(s);
+}
+
 int main(void)
 {
     const struct CMUnitTest tests[] = {
@@ -563,6 +586,7 @@ int main(void)
         cmocka_unit_test(test_bad_mesh_data),
         cmocka_unit_test(test_scene_file_places_models),
         cmocka_unit_test(test_mesh_takes_its_groups_material),
+        cmocka_unit_test(test_large_mesh_is_copied_exactly),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
