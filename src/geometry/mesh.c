@@ -2,19 +2,18 @@
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
-#include "core/big_alloc.h"
+#include "core/array.h"
 #include "core/error.h"
 #include "geometry/mesh.h"
 
 #define MESH_MAX_COUNT (1 << 30)
 
-/* Copies count items of size bytes, plus `extra` zeroed bytes, on huge
- * pages from BIG_ALLOC_MIN up (big_alloc): on 4 KiB pages a million
- * triangles' 25 MB took 6,000 page faults of about 10 us each. */
+/* Copies count items of size bytes, plus `extra` zeroed bytes, into
+ * array_alloc's room (huge pages for a large model's arrays). */
 static void *copy_array(const void *src, size_t count, size_t size, size_t extra)
 {
     size_t bytes = count * size;
-    unsigned char *p = big_alloc(bytes + extra);
+    unsigned char *p = array_alloc(bytes + extra, 1);
     if (p) {
         memcpy(p, src, bytes);
         memset(p + bytes, 0, extra);
