@@ -6,6 +6,7 @@
  * core/lanes.h), and elsewhere the narrower instructions two quads took
  * before. */
 #include <math.h>
+#include <string.h>
 #include "core/hash.h"
 #include "shading/noise.h"
 
@@ -30,6 +31,24 @@ static inline quad_f64 octo_high(octo_f64 v) { return __builtin_shufflevector(v,
 static inline octo_f64 octo_select(octo_mask m, octo_f64 a, octo_f64 b)
 {
     return (octo_f64)(((octo_mask)a & m) | ((octo_mask)b & ~m));
+}
+
+/* All bits set in each lane whose bit 0 is set, none elsewhere. Masks are
+ * made by arithmetic, not by comparing: without AVX-512, GCC splits a
+ * comparison of eight 64-bit lanes into eight scalar ones (a compare, a
+ * set and a move each), where a subtraction is two 256-bit instructions. */
+static inline octo_mask low_bit_mask(octo_u64 v) { return (octo_mask)((octo_u64){0} - (v & 1)); }
+
+/* All bits set in each lane whose non-negative (or NaN) double is below
+ * `limit`, a positive finite one; by their bits, which order such doubles
+ * as their values (a NaN's bits lie above every finite one's, so it is
+ * not below, as `<` says). */
+static inline octo_mask below(octo_f64 magnitude, double limit)
+{
+    uint64_t l;
+    memcpy(&l, &limit, sizeof l);
+    const octo_u64 lim = {l, l, l, l, l, l, l, l};
+    return low_bit_mask(((octo_u64)magnitude - lim) >> 63);
 }
 
 /* The absolute value of every lane: the sign bit cleared. */
@@ -91,8 +110,8 @@ static inline octo_f64 gradient_dot(octo_u32 g32, octo_f64 x, octo_f64 y, octo_f
     const uint64_t n = GRADIENT_NIBBLES, s = 1ULL << 63;
     const octo_u64 nibbles = {n, n, n, n, n, n, n, n}, sign = {s, s, s, s, s, s, s, s};
     octo_u64 choice = nibbles >> (__builtin_convertvector(g32, octo_u64) << 2);
-    octo_f64 a = octo_select((octo_mask)((choice & 1) != 0), x, y);
-    octo_f64 b = octo_select((octo_mask)((choice & 2) != 0), y, z);
+    octo_f64 a = octo_select(low_bit_mask(choice), x, y);
+    octo_f64 b = octo_select(low_bit_mask(choice >> 1), y, z);
     a = (octo_f64)((octo_u64)a ^ (choice << 61 & sign));
     b = (octo_f64)((octo_u64)b ^ (choice << 60 & sign));
     return a + b;
@@ -103,7 +122,7 @@ static inline octo_f64 gradient_dot(octo_u32 g32, octo_f64 x, octo_f64 y, octo_f
 static inline octo_f64 noise_at8(octo_f64 px, octo_f64 py, octo_f64 pz, const uint32_t layers[2])
 {
     const double far = 1e15; /* past this, a double has no fraction left to vary */
-    octo_mask near = (octo_abs(px) < far) & (octo_abs(py) < far) & (octo_abs(pz) < far);
+    octo_mask near = below(octo_abs(px), far) & below(octo_abs(py), far) & below(octo_abs(pz), far);
     octo_f64 zero = octo_splat(0), one = octo_splat(1);
     px = octo_select(near, px, zero);
     py = octo_select(near, py, zero);

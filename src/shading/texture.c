@@ -368,10 +368,16 @@ color image_eval_level(const texture_image *img, double u, double v, glint_wrap 
     return c;
 }
 
+/* Lane by lane, m ? a : b, for 32-bit integers. */
+static inline quad_i32 i32_select(quad_i32 m, quad_i32 a, quad_i32 b) { return (a & m) | (b & ~m); }
+
 /* wrap_axis for four lanes, each along an axis of n[k] texels: the same
- * operations, so the same bits. */
-static inline __attribute__((always_inline)) void wrap_axis4(quad_f64 c, quad_f64 n, glint_wrap w, quad_mask *i0,
-                                                             quad_mask *i1, quad_f64 *t)
+ * operations, so the same bits. Texel indices are 32-bit (an image's
+ * channels number under 2^31, TEXTURE_IMAGE_MAX_PIXELS): without
+ * AVX-512, converting doubles to 64-bit integers and multiplying those
+ * takes a scalar instruction a lane, the 32-bit forms one for four. */
+static inline __attribute__((always_inline)) void wrap_axis4(quad_f64 c, quad_f64 n, glint_wrap w, quad_i32 *i0,
+                                                             quad_i32 *i1, quad_f64 *t)
 {
     if (w == GLINT_WRAP_MIRROR) {
         quad_f64 folded = c - 2 * quad_floor(0.5 * c);
@@ -383,14 +389,14 @@ static inline __attribute__((always_inline)) void wrap_axis4(quad_f64 c, quad_f6
     quad_f64 f = within * n - 0.5;
     quad_f64 f0 = quad_floor(f);
     *t = f - f0;
-    quad_mask a = __builtin_convertvector(f0, quad_mask), b = a + 1;
-    quad_mask last = __builtin_convertvector(n, quad_mask) - 1;
+    quad_i32 a = __builtin_convertvector(f0, quad_i32), b = a + 1;
+    quad_i32 last = __builtin_convertvector(n, quad_i32) - 1;
     if (w == GLINT_WRAP_REPEAT) {
-        a = quad_mask_select(a < 0, last, a);
-        b = quad_mask_select(b > last, (quad_mask){0, 0, 0, 0}, b);
+        a = i32_select(a < 0, last, a);
+        b = i32_select(b > last, (quad_i32){0, 0, 0, 0}, b);
     } else {
-        a = quad_mask_select(a < 0, (quad_mask){0, 0, 0, 0}, a);
-        b = quad_mask_select(b > last, last, b);
+        a = i32_select(a < 0, (quad_i32){0, 0, 0, 0}, a);
+        b = i32_select(b > last, last, b);
     }
     *i0 = a;
     *i1 = b;
@@ -414,20 +420,20 @@ static inline __attribute__((always_inline)) void image_eval_lanes(const texture
 {
     const quad_f64 width = {imgs[0]->width, imgs[1]->width, imgs[2]->width, imgs[3]->width};
     const quad_f64 height = {imgs[0]->height, imgs[1]->height, imgs[2]->height, imgs[3]->height};
-    quad_mask x0, x1, y0, y1;
+    quad_i32 x0, x1, y0, y1;
     quad_f64 tx, ty;
     wrap_axis4(u, width, wrap_u, &x0, &x1, &tx);
     wrap_axis4(v, height, wrap_v, &y0, &y1, &ty);
     /* The first channel of each corner's texel: top left, top right,
      * bottom left, bottom right. */
-    quad_mask row_length = __builtin_convertvector(width, quad_mask), row0 = y0 * row_length,
-              row1 = y1 * row_length;
-    const quad_mask first[4] = {3 * (row0 + x0), 3 * (row0 + x1), 3 * (row1 + x0), 3 * (row1 + x1)};
+    quad_i32 row_length = __builtin_convertvector(width, quad_i32), row0 = y0 * row_length,
+             row1 = y1 * row_length;
+    const quad_i32 first[4] = {3 * (row0 + x0), 3 * (row0 + x1), 3 * (row1 + x0), 3 * (row1 + x1)};
     const quad_f64 one = quad_splat(1), along_x = one - tx, along_y = one - ty;
     for (int c = 0; c < 3; c++) {
         quad_f64 texel[4];
         for (int corner = 0; corner < 4; corner++) {
-            const quad_mask at = first[corner] + c;
+            const quad_i32 at = first[corner] + c;
             quad_f32 f = {texel_channel(imgs[0], hdr, (size_t)at[0]), texel_channel(imgs[1], hdr, (size_t)at[1]),
                           texel_channel(imgs[2], hdr, (size_t)at[2]), texel_channel(imgs[3], hdr, (size_t)at[3])};
             texel[corner] = __builtin_convertvector(f, quad_f64);
