@@ -118,8 +118,10 @@ static inline octo_f64 gradient_dot(octo_u32 g32, octo_f64 x, octo_f64 y, octo_f
 }
 
 /* The noise at eight points, (px, py, pz) lane by lane: lanes 0 to 3 of
- * layer `layers[0]`, 4 to 7 of `layers[1]`. */
-static inline octo_f64 noise_at8(octo_f64 px, octo_f64 py, octo_f64 pz, const uint32_t layers[2])
+ * layer `layers[0]`, 4 to 7 of `layers[1]`. Always inline: without
+ * AVX-512 a call passes and returns its 512-bit vectors through memory
+ * (textured row 5% slower so). */
+static inline __attribute__((always_inline)) octo_f64 noise_at8(octo_f64 px, octo_f64 py, octo_f64 pz, const uint32_t layers[2])
 {
     const double far = 1e15; /* past this, a double has no fraction left to vary */
     octo_mask near = below(octo_abs(px), far) & below(octo_abs(py), far) & below(octo_abs(pz), far);
