@@ -91,7 +91,10 @@ static inline quad_f64 quad_floor(quad_f64 v)
 #if defined(__AVX__)
     return (quad_f64)_mm256_round_pd((__m256d)v, _MM_FROUND_TO_NEG_INF | _MM_FROUND_NO_EXC);
 #elif defined(__SSE4_1__)
-    __m128d lo = _mm_floor_pd((__m128d){v[0], v[1]}), hi = _mm_floor_pd((__m128d){v[2], v[3]});
+    /* The halves named first: _mm_floor_pd is a macro, and a compound
+     * literal's commas would split its argument. */
+    const __m128d low = {v[0], v[1]}, high = {v[2], v[3]};
+    __m128d lo = _mm_floor_pd(low), hi = _mm_floor_pd(high);
     return (quad_f64){lo[0], lo[1], hi[0], hi[1]};
 #else
     return (quad_f64){floor(v[0]), floor(v[1]), floor(v[2]), floor(v[3])};
