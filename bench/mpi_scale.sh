@@ -19,8 +19,8 @@
 # to build glint-mpi); without it only the model runs. See bench/README.md,
 # "glint-mpi past this machine: the scaling model".
 #
-# bench/README.md's table "Which scheduler: pull queue, static interleave,
-# work stealing" is not run here; these commands give it, the model's rows
+# bench/README.md's scheduler comparison ("The pull queue stays", under "glint-mpi
+# past this machine") is not run here; these commands give it, the model's rows
 # 8, 64 and 256 of each run (the last column: without start-up; the
 # bunny's files are 2409696 bytes):
 #   bench_tile_times bench/bunny.yaml --size 3840x2160 --spp 1 --runs 5 >t.txt
