@@ -101,7 +101,7 @@ case "${1:-}" in
 render)
     shift
     install_missing
-    cmake/pgo-build.sh build -DGLINT_MPI=ON
+    PGO_TARGETS="glint glint-mpi" cmake/pgo-build.sh build -DGLINT_MPI=ON
     ./build/glint -o glint.png "$@"
     ;;
 test)

@@ -4,7 +4,9 @@
 #   1. configure with GLINT_PGO=generate and build glint, which then records
 #      how often each branch and call runs;
 #   2. render the training set below with it (a few seconds);
-#   3. configure with GLINT_PGO=use and build everything from that record.
+#   3. configure with GLINT_PGO=use and build everything from that record
+#      (or only the targets listed in PGO_TARGETS, e.g. "glint glint-mpi":
+#      build.sh render needs no tests).
 # It also compiles for the build machine's processor (GLINT_NATIVE, unless
 # the arguments say -DGLINT_NATIVE=OFF). The images do not change (no
 # floating-point option differs); renders are 5 to 15% faster
@@ -91,7 +93,8 @@ glint="$dir/glint"
 "$glint" "$train/tiles.yaml" -o "$train/tiles.ppm" --threads 1 --quiet
 
 cmake -S . -B "$dir" -DGLINT_PGO=use >/dev/null
-cmake --build "$dir" -j "$jobs"
+read -r -a targets <<<"${PGO_TARGETS:-all}"
+cmake --build "$dir" -j "$jobs" --target "${targets[@]}"
 
 # Leave DIR configured as a plain Release build: the programs just built
 # stay, and a later rebuild after an edit compiles without the profile,
