@@ -59,6 +59,9 @@ static inline quad_f64 quad_select(quad_mask m, quad_f64 a, quad_f64 b)
 /* Lane by lane, m ? a : b, for masks (and the integers kept in them). */
 static inline quad_mask quad_mask_select(quad_mask m, quad_mask a, quad_mask b) { return (a & m) | (b & ~m); }
 
+/* Lane by lane, m ? a : b, for 32-bit integers and their comparisons' masks. */
+static inline quad_i32 quad_i32_select(quad_i32 m, quad_i32 a, quad_i32 b) { return (a & m) | (b & ~m); }
+
 /* The absolute value of every lane, as fabs's: the sign bit cleared. */
 static inline quad_f64 quad_abs(quad_f64 v)
 {

@@ -368,9 +368,6 @@ color image_eval_level(const texture_image *img, double u, double v, glint_wrap 
     return c;
 }
 
-/* Lane by lane, m ? a : b, for 32-bit integers. */
-static inline quad_i32 i32_select(quad_i32 m, quad_i32 a, quad_i32 b) { return (a & m) | (b & ~m); }
-
 /* wrap_axis for four lanes, each along an axis of n[k] texels: the same
  * operations, so the same bits. Texel indices are 32-bit (an image's
  * channels number under 2^31, TEXTURE_IMAGE_MAX_PIXELS): without
@@ -392,11 +389,11 @@ static inline __attribute__((always_inline)) void wrap_axis4(quad_f64 c, quad_f6
     quad_i32 a = __builtin_convertvector(f0, quad_i32), b = a + 1;
     quad_i32 last = __builtin_convertvector(n, quad_i32) - 1;
     if (w == GLINT_WRAP_REPEAT) {
-        a = i32_select(a < 0, last, a);
-        b = i32_select(b > last, (quad_i32){0, 0, 0, 0}, b);
+        a = quad_i32_select(a < 0, last, a);
+        b = quad_i32_select(b > last, (quad_i32){0, 0, 0, 0}, b);
     } else {
-        a = i32_select(a < 0, (quad_i32){0, 0, 0, 0}, a);
-        b = i32_select(b > last, last, b);
+        a = quad_i32_select(a < 0, (quad_i32){0, 0, 0, 0}, a);
+        b = quad_i32_select(b > last, last, b);
     }
     *i0 = a;
     *i1 = b;
