@@ -26,7 +26,8 @@ typedef struct image_reader {
 /* "texture 'WHAT' is corrupt: REASON", as GLINT_ERR_INVALID. */
 glint_status image_read_corrupt(const char *what, const char *reason, glint_error *err);
 
-/* Gives img room for width x height pixels of `bytes` bytes each, and its
+/* Gives img room for width x height pixels of `bytes` bytes each and
+ * TEXEL_SLACK bytes more (which floats must keep), and its
  * size and sRGB table, once the size is within TEXTURE_IMAGE_MAX_SIDE,
  * TEXTURE_IMAGE_MAX_PIXELS and TEXTURE_IMAGE_MAX_BYTES: beyond,
  * GLINT_ERR_INVALID naming the limits, before anything is allocated.

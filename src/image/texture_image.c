@@ -74,10 +74,11 @@ glint_status image_read_alloc(texture_image *img, unsigned long width, unsigned 
     if (st != GLINT_OK)
         return st;
     /* check_size keeps the product in range. */
-    size_t pixels = (size_t)width * height;
-    img->srgb = img->owned = written_whole ? big_alloc(pixels * bytes) : calloc(pixels, bytes);
+    size_t room = (size_t)width * height * bytes + TEXEL_SLACK;
+    img->srgb = img->owned = written_whole ? big_alloc(room) : calloc(room, 1);
     if (!img->owned)
         return error_set(err, GLINT_ERR_NOMEM, "cannot decode texture '%s': out of memory", what);
+    memset((char *)img->owned + room - TEXEL_SLACK, 0, TEXEL_SLACK);
     img->width = (int)width;
     img->height = (int)height;
     img->linear = srgb_byte_to_linear;

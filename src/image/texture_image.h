@@ -35,10 +35,14 @@
 
 /* A decoded image: srgb[3 * (y * width + x) + c], top row first, each an
  * sRGB-encoded byte whose linear value is linear[byte]; or, for a high
- * dynamic range image, hdr[3 * (y * width + x) + c], linear floats (srgb
- * NULL). The pixels are the image's own (owned, freed with it) or borrowed
- * from memory that outlives it, such as pixels compiled into the program
- * or another image's (owned NULL). */
+ * dynamic range image and for every smaller level, hdr[3 * (y * width + x)
+ * + c], linear floats (srgb NULL), followed by TEXEL_SLACK bytes more, so
+ * that any texel's three floats are read as one load of four. The pixels
+ * are the image's own (owned, freed with it) or borrowed from memory that
+ * outlives it, such as pixels compiled into the program or another
+ * image's (owned NULL). */
+#define TEXEL_SLACK sizeof(float)
+
 typedef struct texture_image {
     int width, height;
     const unsigned char *srgb;
@@ -84,8 +88,10 @@ static inline texture_image texture_image_share(const texture_image *img)
 /* Builds img's smaller levels, each half the size of the one before
  * (rounded up) down to 1 x 1, each texel the mean of the linear values of
  * the 2 x 2 below it (an edge texel of an odd size counted twice), kept as
- * the image keeps its own (sRGB bytes or linear floats): a third more
- * memory. GLINT_ERR_NOMEM, and no levels, when memory runs out. */
+ * linear floats whatever img keeps: a third more memory than an image of
+ * floats, 4/3 of the image's own for one of sRGB bytes, and read a texel a
+ * load where bytes take six (a tiled floor's look-ups, almost all from
+ * these levels). GLINT_ERR_NOMEM, and no levels, when memory runs out. */
 glint_status texture_image_build_levels(texture_image *img, glint_error *err);
 
 /* The most levels an image has: its own and 15 halvings of the longest

@@ -256,14 +256,16 @@ color checker_eval(color a, color b, double cell, double u, double v)
 }
 
 /* A texel's linear channels, from index i of its first, in a quad's first
- * three lanes: one conversion to double for all three. Inlined where
- * `hdr` is a constant, so the test for the format runs once a look-up. */
-static inline quad_f64 texel(const texture_image *img, bool hdr, size_t i)
+ * three lanes: one conversion to double for all three. Floats are one
+ * load of four (the fourth the next texel's, or TEXEL_SLACK's, and
+ * unused). Inlined where `hdr` is a constant, so the test for the format
+ * runs once a look-up. */
+static inline __attribute__((always_inline)) quad_f64 texel(const texture_image *img, bool hdr, size_t i)
 {
-    quad_f32 f = hdr ? (quad_f32){img->hdr[i], img->hdr[i + 1], img->hdr[i + 2], 0}
-                     : (quad_f32){img->linear[img->srgb[i]], img->linear[img->srgb[i + 1]],
-                                  img->linear[img->srgb[i + 2]], 0};
-    return __builtin_convertvector(f, quad_f64);
+    if (hdr)
+        return quad_from_floats(img->hdr + i);
+    return quad_widen(
+        (quad_f32){img->linear[img->srgb[i]], img->linear[img->srgb[i + 1]], img->linear[img->srgb[i + 2]], 0});
 }
 
 /* rgb_lerp on quads: a (1 - t) + b t, lane by lane, the same bits. */
@@ -273,15 +275,24 @@ static inline quad_f64 quad_lerp(quad_f64 a, quad_f64 b, double t)
 }
 
 /* The bilinear blend of the texels at rows y0 and y1 and columns x0 and x1
- * of img, weights tx and ty of the second of each. */
-static inline color bilinear(const texture_image *img, bool hdr, int x0, int x1, int y0, int y1, double tx,
-                             double ty)
+ * of img, weights tx and ty of the second of each: its channels in a
+ * quad's first three lanes. */
+static inline __attribute__((always_inline)) quad_f64 bilinear_in(const texture_image *img, bool hdr, int x0, int x1,
+                                                                   int y0, int y1, double tx, double ty)
 {
     size_t row0 = (size_t)y0 * img->width, row1 = (size_t)y1 * img->width;
     quad_f64 top = quad_lerp(texel(img, hdr, 3 * (row0 + x0)), texel(img, hdr, 3 * (row0 + x1)), tx);
     quad_f64 bottom = quad_lerp(texel(img, hdr, 3 * (row1 + x0)), texel(img, hdr, 3 * (row1 + x1)), tx);
-    quad_f64 c = quad_lerp(top, bottom, ty);
-    return rgb(c[0], c[1], c[2]);
+    return quad_lerp(top, bottom, ty);
+}
+
+/* bilinear_in, img's format tested once. Always inline, as are the two
+ * above: the profile-guided build had made the look-up of sRGB bytes a
+ * call, and each of its texels another. */
+static inline __attribute__((always_inline)) quad_f64 bilinear(const texture_image *img, int x0, int x1, int y0,
+                                                                int y1, double tx, double ty)
+{
+    return img->hdr ? bilinear_in(img, true, x0, x1, y0, y1, tx, ty) : bilinear_in(img, false, x0, x1, y0, y1, tx, ty);
 }
 
 /* Along an axis of n texels wrapped by w, the texels *i0 and *i1 either
@@ -319,7 +330,8 @@ color image_eval(const texture_image *img, double u, double v, glint_wrap wrap_u
     double tx, ty;
     wrap_axis(u, img->width, wrap_u, &x0, &x1, &tx);
     wrap_axis(v, img->height, wrap_v, &y0, &y1, &ty);
-    return img->hdr ? bilinear(img, true, x0, x1, y0, y1, tx, ty) : bilinear(img, false, x0, x1, y0, y1, tx, ty);
+    quad_f64 c = bilinear(img, x0, x1, y0, y1, tx, ty);
+    return rgb(c[0], c[1], c[2]);
 }
 
 /* The level of a footprint whose width in texels, squared, is `area`
@@ -399,45 +411,18 @@ static inline __attribute__((always_inline)) void wrap_axis4(quad_f64 c, quad_f6
     *i1 = b;
 }
 
-/* Channel i % 3 of texel i / 3 of img, linear. */
-static inline float texel_channel(const texture_image *img, bool hdr, size_t i)
-{
-    return hdr ? img->hdr[i] : img->linear[img->srgb[i]];
-}
-
-/* image_eval of four lanes, lane k in image imgs[k] at (u[k], v[k]), each
- * finite, the images all of one format (hdr): channel c of lane k into
- * out[c][k], bilinear's operations on each lane, each channel's blends
- * four lanes at a time. Each quad of texels is built from its four loads,
- * not stored lane by lane and read back as one (a load that waits for
- * the stores: 5% slower). */
-static inline __attribute__((always_inline)) void image_eval_lanes(const texture_image *const imgs[QUAD], bool hdr,
-                                                                   quad_f64 u, quad_f64 v, glint_wrap wrap_u,
-                                                                   glint_wrap wrap_v, quad_f64 out[3])
+/* Lane k's texel columns *x0 and *x1, rows *y0 and *y1 and weights *tx
+ * and *ty in imgs[k] at (u[k], v[k]), each finite: wrap_axis4 on each
+ * lane's image size. */
+static inline __attribute__((always_inline)) void wrap_lanes(const texture_image *const imgs[QUAD], quad_f64 u,
+                                                             quad_f64 v, glint_wrap wrap_u, glint_wrap wrap_v,
+                                                             quad_i32 *x0, quad_i32 *x1, quad_i32 *y0,
+                                                             quad_i32 *y1, quad_f64 *tx, quad_f64 *ty)
 {
     const quad_f64 width = {imgs[0]->width, imgs[1]->width, imgs[2]->width, imgs[3]->width};
     const quad_f64 height = {imgs[0]->height, imgs[1]->height, imgs[2]->height, imgs[3]->height};
-    quad_i32 x0, x1, y0, y1;
-    quad_f64 tx, ty;
-    wrap_axis4(u, width, wrap_u, &x0, &x1, &tx);
-    wrap_axis4(v, height, wrap_v, &y0, &y1, &ty);
-    /* The first channel of each corner's texel: top left, top right,
-     * bottom left, bottom right. */
-    quad_i32 row_length = __builtin_convertvector(width, quad_i32), row0 = y0 * row_length,
-             row1 = y1 * row_length;
-    const quad_i32 first[4] = {3 * (row0 + x0), 3 * (row0 + x1), 3 * (row1 + x0), 3 * (row1 + x1)};
-    const quad_f64 one = quad_splat(1), along_x = one - tx, along_y = one - ty;
-    for (int c = 0; c < 3; c++) {
-        quad_f64 texel[4];
-        for (int corner = 0; corner < 4; corner++) {
-            const quad_i32 at = first[corner] + c;
-            quad_f32 f = {texel_channel(imgs[0], hdr, (size_t)at[0]), texel_channel(imgs[1], hdr, (size_t)at[1]),
-                          texel_channel(imgs[2], hdr, (size_t)at[2]), texel_channel(imgs[3], hdr, (size_t)at[3])};
-            texel[corner] = __builtin_convertvector(f, quad_f64);
-        }
-        quad_f64 top = texel[0] * along_x + texel[1] * tx, bottom = texel[2] * along_x + texel[3] * tx;
-        out[c] = top * along_y + bottom * ty;
-    }
+    wrap_axis4(u, width, wrap_u, x0, x1, tx);
+    wrap_axis4(v, height, wrap_v, y0, y1, ty);
 }
 
 quad_f64 image_level4(const texture_image *img, quad_f64 u2, quad_f64 v2)
@@ -476,7 +461,7 @@ void image_eval_level4(const texture_image *img, quad_f64 u, quad_f64 v, glint_w
             }
             return;
         }
-    /* Lanes past `lanes` read the image at (0, 0), and are not kept. */
+    /* Lanes past `lanes` are wrapped at (0, 0), and not looked up. */
     u = quad_select(finite, u, quad_splat(0));
     v = quad_select(finite, v, quad_splat(0));
     /* Each lane's two levels, as image_eval_level takes them. */
@@ -495,22 +480,29 @@ void image_eval_level4(const texture_image *img, quad_f64 u, quad_f64 v, glint_w
             blended[k] = -1;
         }
     }
-    bool hdr = img->hdr != NULL;
-    if (hdr)
-        image_eval_lanes(below, true, u, v, wrap_u, wrap_v, out);
-    else
-        image_eval_lanes(below, false, u, v, wrap_u, wrap_v, out);
-    if (!quad_any(blended))
-        return;
-    quad_f64 second[3];
-    if (hdr)
-        image_eval_lanes(above, true, u, v, wrap_u, wrap_v, second);
-    else
-        image_eval_lanes(above, false, u, v, wrap_u, wrap_v, second);
-    /* rgb_lerp's operations. */
-    quad_f64 keep = quad_splat(1) - blend;
-    for (int c = 0; c < 3; c++)
-        out[c] = quad_select(blended, out[c] * keep + second[c] * blend, out[c]);
+    /* The wrapping four lanes at a time, each lane's look-up on its own:
+     * one load a texel of floats, where lanes of channels took four. */
+    quad_i32 x0, x1, y0, y1;
+    quad_f64 tx, ty;
+    wrap_lanes(below, u, v, wrap_u, wrap_v, &x0, &x1, &y0, &y1, &tx, &ty);
+    quad_f64 texels[QUAD];
+    for (int k = 0; k < QUAD; k++)
+        texels[k] = k < lanes ? bilinear(below[k], x0[k], x1[k], y0[k], y1[k], tx[k], ty[k]) : quad_splat(0);
+    if (quad_any(blended)) {
+        wrap_lanes(above, u, v, wrap_u, wrap_v, &x0, &x1, &y0, &y1, &tx, &ty);
+        for (int k = 0; k < lanes; k++)
+            if (blended[k])
+                texels[k] = quad_lerp(texels[k], bilinear(above[k], x0[k], x1[k], y0[k], y1[k], tx[k], ty[k]),
+                                      blend[k]);
+    }
+    /* Lanes of texels to lanes of channels. */
+    quad_f64 rb01 = __builtin_shufflevector(texels[0], texels[1], 0, 4, 2, 6);
+    quad_f64 g01 = __builtin_shufflevector(texels[0], texels[1], 1, 5, 3, 7);
+    quad_f64 rb23 = __builtin_shufflevector(texels[2], texels[3], 0, 4, 2, 6);
+    quad_f64 g23 = __builtin_shufflevector(texels[2], texels[3], 1, 5, 3, 7);
+    out[0] = __builtin_shufflevector(rb01, rb23, 0, 1, 4, 5);
+    out[1] = __builtin_shufflevector(g01, g23, 0, 1, 4, 5);
+    out[2] = __builtin_shufflevector(rb01, rb23, 2, 3, 6, 7);
 }
 
 void texture_release(texture *t)

@@ -162,7 +162,8 @@ quad_f64 image_level4(const texture_image *img, quad_f64 u2, quad_f64 v2);
 
 /* image_eval_level of the first `lanes` (1 to 4) of four lanes, lane k
  * at (u[k], v[k]) and level[k], channel c of its colour into out[c][k]:
- * the same colours, each texel found and blended four lanes at a time. */
+ * the same colours, the texels found four lanes at a time and each lane's
+ * blended on its own. */
 void image_eval_level4(const texture_image *img, quad_f64 u, quad_f64 v, glint_wrap wrap_u, glint_wrap wrap_v,
                        quad_f64 level, int lanes, quad_f64 out[3]);
 

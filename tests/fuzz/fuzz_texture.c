@@ -44,11 +44,13 @@ static void check_decoded(const texture_image *img)
     if (hdr == (img->srgb != NULL) || img->owned != (hdr ? (const void *)img->hdr : (const void *)img->srgb) ||
         !img->linear)
         abort();
-    /* Every byte of the pixels must be there. ASan checks the whole buffer
-     * at once: reading its bytes one by one would find the same short
-     * buffer, but took 4 to 9 s more for the largest image glint allows
-     * (which a valid arithmetic-coded JPEG of 300 bytes can be). */
-    const volatile unsigned char *missing = __asan_region_is_poisoned(img->owned, n * (hdr ? sizeof(float) : 1));
+    /* Every byte of the pixels must be there, and after floats TEXEL_SLACK.
+     * ASan checks the whole buffer at once: reading its bytes one by one
+     * would find the same short buffer, but took 4 to 9 s more for the
+     * largest image glint allows (which a valid arithmetic-coded JPEG of
+     * 300 bytes can be). */
+    const volatile unsigned char *missing =
+        __asan_region_is_poisoned(img->owned, hdr ? n * sizeof(float) + TEXEL_SLACK : n);
     if (missing) {
         (void)*missing; /* ASan's report: where the buffer ends and who allocated it */
         abort();
