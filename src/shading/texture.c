@@ -448,29 +448,22 @@ quad_f64 image_level4(const texture_image *img, quad_f64 u2, quad_f64 v2)
 void image_eval_level4(const texture_image *img, quad_f64 u, quad_f64 v, glint_wrap wrap_u, glint_wrap wrap_v,
                        quad_f64 level, int lanes, quad_f64 out[3])
 {
+    /* A lane at a non-finite point is black, as image_eval gives it, and
+     * is wrapped at (0, 0) like the lanes past `lanes`: neither is looked
+     * up. */
     quad_mask finite = (quad_abs(u) < INFINITY) & (quad_abs(v) < INFINITY);
-    for (int k = 0; k < lanes; k++)
-        if (!finite[k]) {
-            /* Rare: each lane on its own, image_eval_level's way (black
-             * at a non-finite point). */
-            for (int j = 0; j < lanes; j++) {
-                color c = image_eval_level(img, u[j], v[j], wrap_u, wrap_v, level[j]);
-                out[0][j] = c.r;
-                out[1][j] = c.g;
-                out[2][j] = c.b;
-            }
-            return;
-        }
-    /* Lanes past `lanes` are wrapped at (0, 0), and not looked up. */
     u = quad_select(finite, u, quad_splat(0));
     v = quad_select(finite, v, quad_splat(0));
+    bool looked_up[QUAD];
+    for (int k = 0; k < QUAD; k++)
+        looked_up[k] = k < lanes && finite[k];
     /* Each lane's two levels, as image_eval_level takes them. */
     const texture_image *below[QUAD], *above[QUAD];
     quad_f64 blend = quad_splat(0);
     quad_mask blended = {0};
     for (int k = 0; k < QUAD; k++) {
         below[k] = above[k] = img;
-        if (k >= lanes || !(level[k] > 0))
+        if (!looked_up[k] || !(level[k] > 0))
             continue;
         int kl = (int)level[k];
         blend[k] = level[k] - kl;
@@ -487,7 +480,7 @@ void image_eval_level4(const texture_image *img, quad_f64 u, quad_f64 v, glint_w
     wrap_lanes(below, u, v, wrap_u, wrap_v, &x0, &x1, &y0, &y1, &tx, &ty);
     quad_f64 texels[QUAD];
     for (int k = 0; k < QUAD; k++)
-        texels[k] = k < lanes ? bilinear(below[k], x0[k], x1[k], y0[k], y1[k], tx[k], ty[k]) : quad_splat(0);
+        texels[k] = looked_up[k] ? bilinear(below[k], x0[k], x1[k], y0[k], y1[k], tx[k], ty[k]) : quad_splat(0);
     if (quad_any(blended)) {
         wrap_lanes(above, u, v, wrap_u, wrap_v, &x0, &x1, &y0, &y1, &tx, &ty);
         for (int k = 0; k < lanes; k++)
