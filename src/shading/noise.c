@@ -146,7 +146,6 @@ static inline __attribute__((always_inline)) octo_f32 noise_at8(const quad_f64 l
 /* Lanes 0 to 3 of v, widened to double. */
 static inline quad_f64 octo_low(octo_f32 v) { return quad_widen(__builtin_shufflevector(v, v, 0, 1, 2, 3)); }
 
-
 /* Lanes 4 to 7 of v, widened to double. */
 static inline quad_f64 octo_high(octo_f32 v) { return quad_widen(__builtin_shufflevector(v, v, 4, 5, 6, 7)); }
 

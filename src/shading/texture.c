@@ -366,17 +366,33 @@ double image_level(const texture_image *img, uv_extent covered)
     return level < top ? level : top;
 }
 
+/* The two levels of img a look-up at `level` (above 0) blends: *below,
+ * and *above with weight *blend, when it returns true; else *below alone
+ * (*above left as it was). */
+static inline __attribute__((always_inline)) bool level_pair(const texture_image *img, double level,
+                                                             const texture_image **below,
+                                                             const texture_image **above, double *blend)
+{
+    int k = (int)level;
+    *blend = level - k;
+    *below = k == 0 ? img : &img->levels[k - 1];
+    if (!(*blend > 0 && k + 1 < img->level_count))
+        return false;
+    *above = &img->levels[k];
+    return true;
+}
+
 color image_eval_level(const texture_image *img, double u, double v, glint_wrap wrap_u, glint_wrap wrap_v,
                        double level)
 {
     if (!(level > 0))
         return image_eval(img, u, v, wrap_u, wrap_v);
-    int k = (int)level;
-    double blend = level - k;
-    const texture_image *below = k == 0 ? img : &img->levels[k - 1];
+    const texture_image *below, *above;
+    double blend;
+    bool blended = level_pair(img, level, &below, &above, &blend);
     color c = image_eval(below, u, v, wrap_u, wrap_v);
-    if (blend > 0 && k + 1 < img->level_count)
-        c = rgb_lerp(c, image_eval(&img->levels[k], u, v, wrap_u, wrap_v), blend);
+    if (blended)
+        c = rgb_lerp(c, image_eval(above, u, v, wrap_u, wrap_v), blend);
     return c;
 }
 
@@ -465,11 +481,9 @@ void image_eval_level4(const texture_image *img, quad_f64 u, quad_f64 v, glint_w
         below[k] = above[k] = img;
         if (!looked_up[k] || !(level[k] > 0))
             continue;
-        int kl = (int)level[k];
-        blend[k] = level[k] - kl;
-        below[k] = kl == 0 ? img : &img->levels[kl - 1];
-        if (blend[k] > 0 && kl + 1 < img->level_count) {
-            above[k] = &img->levels[kl];
+        double lane_blend;
+        if (level_pair(img, level[k], &below[k], &above[k], &lane_blend)) {
+            blend[k] = lane_blend;
             blended[k] = -1;
         }
     }
