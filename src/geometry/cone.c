@@ -66,6 +66,47 @@ static bool cone_intersect(const shape *s, const ray *r, double tmin, double tma
     return hit_take(&best, tmax, hit);
 }
 
+/* inside_at for four lanes whose roots are real where `real`, a != 0. */
+static inline quad_mask inside_at4(quad_mask real, quad_f64 a, quad_f64 t0, quad_f64 t1, quad_f64 t)
+{
+    quad_mask opens_up = a > quad_splat(0);
+    quad_mask between = (t >= t0) & (t <= t1), outside = (t <= t0) | (t >= t1);
+    return quad_mask_select(real, quad_mask_select(opens_up, between, outside), a < quad_splat(0));
+}
+
+/* cone_intersect for four lanes (tmin 0): the same arithmetic in each. A
+ * lane whose quadratic is linear (a == 0, a ray along the slant) or whose
+ * b is 0 (then both roots may be 0) takes the one-lane test. */
+static quad_mask cone_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_hit *hit)
+{
+    const glint_shape *d = &s->desc;
+    double k = (d->radius - d->top_radius) / d->height, k2 = k * k;
+    double apex = d->height * (d->radius / (d->radius - d->top_radius));
+    quad_f64 ox = quad_load(r->ox + first) - d->center.x, oy = quad_load(r->oy + first) - d->center.y;
+    quad_f64 oz = quad_load(r->oz + first) - d->center.z;
+    quad_f64 dx = quad_load(r->dx + first), dy = quad_load(r->dy + first), dz = quad_load(r->dz + first);
+    quad_f64 below_apex = quad_splat(apex) - oy, y_in, y_out, t0, t1;
+    quad_mask spans = slab4(oy, dy, 0, d->height, &y_in, &y_out);
+    quad_f64 a = dx * dx + dz * dz - quad_splat(k2) * dy * dy;
+    quad_f64 b = quad_splat(2) * (ox * dx + oz * dz + quad_splat(k2) * below_apex * dy);
+    quad_f64 c = ox * ox + oz * oz - quad_splat(k2) * below_apex * below_apex;
+    quad_mask real = quadratic4(a, b, c, &t0, &t1);
+    quad_f64 best = tmax;
+    quad_mask part = {0}, side = {0}, up = dy > quad_splat(0);
+    hit_offer4(&best, &part, spans & real & (t0 >= y_in) & (t0 <= y_out), t0, side);
+    hit_offer4(&best, &part, spans & real & (t1 >= y_in) & (t1 <= y_out), t1, side);
+    if (d->capped) {
+        quad_f64 t_base = quad_select(up, y_in, y_out);
+        hit_offer4(&best, &part, spans & inside_at4(real, a, t0, t1, t_base), t_base, side + 1);
+    }
+    if (d->top_capped && d->top_radius > 0) {
+        quad_f64 t_top = quad_select(up, y_out, y_in);
+        hit_offer4(&best, &part, spans & inside_at4(real, a, t0, t1, t_top), t_top, side + 2);
+    }
+    quad_mask alone = (a == quad_splat(0)) | (b == quad_splat(0));
+    return hits4_end(s, r, first, tmax, alone, spans & (best < tmax), best, part, hit);
+}
+
 /* Side: u is the angle about the axis (see polar_u), v the height from 0 at
  * the base to 1 at the apex. Cap: see disc_uv. */
 static void cone_surface(const shape *s, int part, surface *out)
@@ -152,6 +193,6 @@ static bool cone_closed(const shape *s) { return s->desc.capped && (s->desc.top_
 const shape_kind cone_kind = {
     .closed = cone_closed,
     .name = "cone", .id = GLINT_SHAPE_CONE, .params = PARAM_TABLE(CONE_PARAMS), .max_crossings = 2,
-    .init = cone_init, .intersect = cone_intersect, .surface = cone_surface, .uv = cone_uv,
+    .init = cone_init, .intersect = cone_intersect, .intersect4 = cone_intersect4, .surface = cone_surface, .uv = cone_uv,
     .bounds = cone_bounds, .sample = cone_sample,
 };

@@ -291,17 +291,6 @@ static bool csg_intersect(const shape *s, const ray *r, double tmin, double tmax
  * stack, a quad a part. */
 #define QUAD_PARTS 16
 
-/* quad_ray *w mapped by transform t, as shape_object_ray maps each lane. */
-static quad_ray quad_object_ray(const transform *t, const quad_ray *w)
-{
-    const double (*m)[4] = t->m;
-#define ROW(i, x, y, z) (quad_splat(m[i][0]) * (x) + quad_splat(m[i][1]) * (y) + quad_splat(m[i][2]) * (z))
-    return (quad_ray){ROW(0, w->ox, w->oy, w->oz) + quad_splat(m[0][3]), ROW(1, w->ox, w->oy, w->oz) + quad_splat(m[1][3]),
-                      ROW(2, w->ox, w->oy, w->oz) + quad_splat(m[2][3]), ROW(0, w->dx, w->dy, w->dz),
-                      ROW(1, w->dx, w->dy, w->dz), ROW(2, w->dx, w->dy, w->dz)};
-#undef ROW
-}
-
 /* The four world rays as leaf s sees them, mapped once for all the leaves
  * of one transform (leaf_span's cache, four lanes wide). */
 typedef struct mapped_quad {
@@ -375,8 +364,7 @@ static void quad_offer(const crossing *c, quad_f64 tmax, int k, quad_hit *hit, q
  * walk over them, as combination_crossing's (the same bits). */
 static quad_mask csg_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_hit *hit)
 {
-    const quad_ray w = {quad_load(r->ox + first), quad_load(r->oy + first), quad_load(r->oz + first),
-                        quad_load(r->dx + first), quad_load(r->dy + first), quad_load(r->dz + first)};
+    const quad_ray w = quad_ray_of(r, first);
     mapped_quad mapped;
     mapped.id = 0; /* nothing mapped yet: the rays need no clearing */
     quad_mask found = {0};

@@ -46,6 +46,33 @@ static bool cylinder_intersect(const shape *s, const ray *r, double tmin, double
     return hit_take(&best, tmax, hit);
 }
 
+/* cylinder_intersect for four lanes (tmin 0): the same arithmetic in each.
+ * A lane whose direction is parallel to the axis (radius_span's a == 0)
+ * takes the one-lane test. */
+static quad_mask cylinder_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_hit *hit)
+{
+    const glint_shape *d = &s->desc;
+    quad_f64 ox = quad_load(r->ox + first) - d->center.x, oy = quad_load(r->oy + first) - d->center.y;
+    quad_f64 oz = quad_load(r->oz + first) - d->center.z;
+    quad_f64 dx = quad_load(r->dx + first), dy = quad_load(r->dy + first), dz = quad_load(r->dz + first);
+    /* radius_span */
+    quad_f64 a = dx * dx + dz * dz, b = quad_splat(2) * (ox * dx + oz * dz);
+    quad_f64 c = ox * ox + oz * oz - quad_splat(d->radius * d->radius), r_in, r_out;
+    quad_f64 y_in, y_out;
+    quad_mask spans = quadratic4(a, b, c, &r_in, &r_out) & slab4(oy, dy, 0, d->height, &y_in, &y_out);
+    quad_f64 best = tmax;
+    quad_mask part = {0}, side = {0};
+    hit_offer4(&best, &part, spans & (r_in >= y_in) & (r_in <= y_out), r_in, side);
+    hit_offer4(&best, &part, spans & (r_out >= y_in) & (r_out <= y_out), r_out, side);
+    if (d->capped) {
+        /* Going up, the ray meets the bottom cap first. */
+        quad_mask cap_in = quad_mask_select(dy > quad_splat(0), side + 1, side + 2);
+        hit_offer4(&best, &part, spans & (y_in >= r_in) & (y_in <= r_out), y_in, cap_in);
+        hit_offer4(&best, &part, spans & (y_out >= r_in) & (y_out <= r_out), y_out, 3 - cap_in);
+    }
+    return hits4_end(s, r, first, tmax, a == quad_splat(0), spans & (best < tmax), best, part, hit);
+}
+
 /* Side: u is the angle about the axis (see polar_u), v the height from 0 at
  * the base to 1 at the top. Caps: see disc_uv. */
 static void cylinder_surface(const shape *s, int part, surface *out)
@@ -103,6 +130,6 @@ static bool cylinder_closed(const shape *s) { return s->desc.capped; }
 const shape_kind cylinder_kind = {
     .closed = cylinder_closed,
     .name = "cylinder", .id = GLINT_SHAPE_CYLINDER, .params = PARAM_TABLE(CYLINDER_PARAMS), .max_crossings = 2,
-    .intersect = cylinder_intersect, .surface = cylinder_surface, .uv = cylinder_uv,
+    .intersect = cylinder_intersect, .intersect4 = cylinder_intersect4, .surface = cylinder_surface, .uv = cylinder_uv,
     .bounds = cylinder_bounds, .sample = cylinder_sample,
 };

@@ -38,7 +38,7 @@ static glint_status init_as(shape *s, const shape_kind *k, const glint_shape *de
         return error_set(err, GLINT_ERR_INVALID, "transform is singular or not finite");
     s->has_transform = !xf_is_identity(&s->to_world);
     /* A combination's is decided as its parts come (shape_parts_changed). */
-    s->quad = !s->has_transform && k->intersect4 && !s->csg;
+    s->quad = k->intersect4 && !s->csg;
     glint_status st = params_check(k->params, &s->desc, k->name, err);
     if (st == GLINT_OK && k->init)
         st = k->init(s, err);
@@ -120,7 +120,19 @@ quad_mask shape_intersect4(const shape *s, const ray8 *r, int first, quad_f64 tm
         hit->part[k] = 0;
         hit->leaf[k] = -1;
     }
-    return s->kind->intersect4(s, r, first, tmax, hit);
+    if (!s->has_transform)
+        return s->kind->intersect4(s, r, first, tmax, hit);
+    /* The four lanes in object space, where the kind tests them, in a
+     * packet of their own at the same lanes. */
+    quad_ray world = quad_ray_of(r, first), o = quad_object_ray(&s->to_object, &world);
+    ray8 local;
+    quad_store(local.ox + first, o.ox);
+    quad_store(local.oy + first, o.oy);
+    quad_store(local.oz + first, o.oz);
+    quad_store(local.dx + first, o.dx);
+    quad_store(local.dy + first, o.dy);
+    quad_store(local.dz + first, o.dz);
+    return s->kind->intersect4(s, &local, first, tmax, hit);
 }
 
 /* Sets out->shading_n to the kind's own shading normal, when it has one,

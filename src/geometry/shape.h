@@ -125,6 +125,25 @@ typedef struct quad_ray {
     quad_f64 ox, oy, oz, dx, dy, dz;
 } quad_ray;
 
+/* Lanes `first` to first + 3 of packet r. */
+static inline quad_ray quad_ray_of(const ray8 *r, int first)
+{
+    return (quad_ray){quad_load(r->ox + first), quad_load(r->oy + first), quad_load(r->oz + first),
+                      quad_load(r->dx + first), quad_load(r->dy + first), quad_load(r->dz + first)};
+}
+
+/* quad_ray *w mapped by transform t, as shape_object_ray maps each lane
+ * (xf_point's and xf_vector's operations in their order: the same bits). */
+static inline quad_ray quad_object_ray(const transform *t, const quad_ray *w)
+{
+    const double (*m)[4] = t->m;
+#define ROW(i, x, y, z) (quad_splat(m[i][0]) * (x) + quad_splat(m[i][1]) * (y) + quad_splat(m[i][2]) * (z))
+    return (quad_ray){ROW(0, w->ox, w->oy, w->oz) + quad_splat(m[0][3]), ROW(1, w->ox, w->oy, w->oz) + quad_splat(m[1][3]),
+                      ROW(2, w->ox, w->oy, w->oz) + quad_splat(m[2][3]), ROW(0, w->dx, w->dy, w->dz),
+                      ROW(1, w->dx, w->dy, w->dz), ROW(2, w->dx, w->dy, w->dz)};
+#undef ROW
+}
+
 /* shape_span for four rays at once, lane k of each field ray k's. */
 typedef struct quad_span {
     quad_f64 t_in, t_out;
@@ -212,10 +231,11 @@ void shape_parts_changed(shape *family, int combination);
  * starts inside a closed shape finds the surface on its way out. */
 bool shape_intersect(const shape *s, const ray *r, double tmin, double tmax, shape_hit *hit);
 
-/* Whether shape_intersect4 takes s: a shape without a transform whose kind
- * tests four lanes at once (spheres and polygons, the shapes most rays
- * meet in the example scenes, and planes), or a combination of still
- * parts whose kinds give their spans four lanes at once (csg.c). */
+/* Whether shape_intersect4 takes s: a shape that does not move whose kind
+ * tests four lanes at once (spheres, polygons, discs, planes, cylinders and
+ * cones: the shapes most rays meet in the example and SPD scenes), under a
+ * transform or not, or a combination of still parts whose kinds give their
+ * spans four lanes at once (csg.c). */
 static inline bool shape_has_intersect4(const shape *s)
 {
     return s->quad;

@@ -56,11 +56,12 @@ struct shape_kind {
      * combination whose parts all have it finds its hits four lanes at a
      * time. */
     quad_mask (*span4)(const shape *s, const quad_ray *r, quad_span *out);
-    /* intersect with tmin 0 for the four lanes of *r from `first` on, each
-     * lane's bits as intersect gives them: hit->t, and for a combination
-     * hit->part and hit->leaf (shape_intersect4 sets the others' to 0 and
-     * -1). NULL: the accelerator tests lanes one by one. Unbounded kinds
-     * must have it. */
+    /* intersect with tmin 0 for the four lanes of *r (in object space) from
+     * `first` on, each lane's bits as intersect gives them: hit->t, for a
+     * kind of several parts (a cylinder's caps) hit->part, and for a
+     * combination hit->part and hit->leaf (shape_intersect4 sets the
+     * others' to 0 and -1). NULL: the accelerator tests lanes one by one.
+     * Unbounded kinds must have it. */
     quad_mask (*intersect4)(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_hit *hit);
     /* Fills out->n (object space, any length) from out->p_obj and part. */
     void (*surface)(const shape *s, int part, surface *out);

@@ -6,7 +6,7 @@
 
 #include <math.h>
 #include <stdbool.h>
-#include "geometry/shape.h"
+#include "geometry/shape_kind.h"
 
 /* Candidate hits are offered one by one to best, which starts as {tmax, 0}
  * and keeps the nearest in (tmin, tmax); the first offered wins a tie. */
@@ -112,6 +112,47 @@ static inline bool slab(double o, double d, double lo, double hi, double *t_in, 
     *t_in = b < a ? b : a;
     *t_out = b < a ? a : b;
     return true;
+}
+
+/* slab for four lanes: the mask of the lanes it accepts, and there *t_in
+ * and *t_out, each lane's bits as slab gives them. */
+static inline quad_mask slab4(quad_f64 o, quad_f64 d, double lo, double hi, quad_f64 *t_in, quad_f64 *t_out)
+{
+    quad_mask level = d == quad_splat(0);
+    quad_f64 a = (quad_splat(lo) - o) / d, b = (quad_splat(hi) - o) / d;
+    *t_in = quad_select(level, quad_splat(-INFINITY), quad_select(b < a, b, a));
+    *t_out = quad_select(level, quad_splat(INFINITY), quad_select(b < a, a, b));
+    return ~level | ((o >= quad_splat(lo)) & (o <= quad_splat(hi)));
+}
+
+/* hit_offer for four lanes with tmin 0: the lanes `offered` take t and
+ * part where t lies in (0, *best_t). */
+static inline void hit_offer4(quad_f64 *best_t, quad_mask *best_part, quad_mask offered, quad_f64 t, quad_mask part)
+{
+    quad_mask take = offered & (t > quad_splat(0)) & (t < *best_t);
+    *best_t = quad_select(take, t, *best_t);
+    *best_part = quad_mask_select(take, part, *best_part);
+}
+
+/* The end of a kind's intersect4 whose arithmetic leaves out the lanes
+ * `alone` (a rare case it does not take four lanes at a time): its answer
+ * `hits`, with hit->t and hit->part from t and part, but in those lanes
+ * the kind's one-lane intersect's (tmin 0). */
+static inline quad_mask hits4_end(const shape *s, const ray8 *r, int first, quad_f64 tmax, quad_mask alone,
+                                  quad_mask hits, quad_f64 t, quad_mask part, quad_hit *hit)
+{
+    for (int k = 0; k < QUAD; k++) {
+        if (alone[k]) {
+            ray lane = ray8_get(r, first + k);
+            shape_hit one;
+            hits[k] = s->kind->intersect(s, &lane, 0, tmax[k], &one) ? -1 : 0;
+            t[k] = one.t;
+            part[k] = one.part;
+        }
+        hit->part[k] = (int)part[k];
+    }
+    hit->t = t;
+    return hits;
 }
 
 /* The angle about +y as u in [0, 1]: 0.5 towards +z, 0.75 towards +x, and

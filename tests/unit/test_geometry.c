@@ -415,10 +415,13 @@ static void test_float_far(void **state)
 }
 
 /* shape_intersect4 gives every lane shape_intersect's answer, t and part
- * bit for bit: a sphere, a triangle, a tilted quad, a tilted plane and a
- * ring (a disk with a hole), rays aimed near them
- * from outside and inside, along the quad's plane, with a zero direction,
- * and with reaches from short to infinite. */
+ * bit for bit: a sphere, a triangle, a tilted quad, a tilted plane, a ring
+ * (a disk with a hole), capped and open cylinders, a pointed cone and
+ * cones cut off narrower and wider, and a sphere, a quad, a cylinder and a
+ * cone under transforms (turned, moved, stretched), rays aimed near them
+ * from outside and inside, along the quad's plane, the cylinders' axis and
+ * the cones' slant, with a zero direction, and with reaches from short to
+ * infinite. */
 static void test_shape_intersect4_matches(void **state)
 {
     glint_shape sphere = {.kind = GLINT_SHAPE_SPHERE, .center = {0.4, -0.3, 1.2}, .radius = 1.7};
@@ -429,11 +432,46 @@ static void test_shape_intersect4_matches(void **state)
     glint_shape plane = {.kind = GLINT_SHAPE_PLANE, .center = {0.2, -0.1, 0.3}, .normal = {0.3, 1, 0.2}};
     glint_shape ring = {.kind = GLINT_SHAPE_DISK, .center = {0.4, 0.2, -0.3}, .normal = {0.2, 0.4, 1}, .radius = 1.2,
                         .inner_radius = 0.3};
-    const glint_shape *descs[] = {&sphere, &triangle, &quad, &plane, &ring};
+    glint_shape capped = {.kind = GLINT_SHAPE_CYLINDER, .center = {0.2, -0.8, 0.1}, .radius = 0.9, .height = 1.6,
+                          .capped = true};
+    glint_shape open = capped;
+    open.capped = false;
+    glint_shape cone = {.kind = GLINT_SHAPE_CONE, .center = {-0.1, -0.7, 0.2}, .radius = 1.1, .height = 1.5,
+                        .capped = true};
+    glint_shape narrower = cone, wider = cone;
+    narrower.top_radius = 0.4;
+    narrower.top_capped = true;
+    wider.top_radius = 1.6;
+    wider.capped = false;
+    glint_transform turned = glint_transform_rotate(glint_transform_identity(), (glint_vec3){0.3, 0.2, 0.9}, 37);
+    turned = glint_transform_translate(turned, 0.4, -0.2, 0.3);
+    glint_transform stretched = glint_transform_scale(turned, 1.3, 0.7, 1.1);
+    const struct {
+        const glint_shape *desc;
+        const glint_transform *to_world;
+    } cases[] = {{&sphere, NULL},       {&triangle, NULL}, {&quad, NULL},     {&plane, NULL},
+                 {&ring, NULL},         {&capped, NULL},   {&open, NULL},     {&cone, NULL},
+                 {&narrower, NULL},     {&wider, NULL},    {&capped, &turned}, {&narrower, &stretched},
+                 {&sphere, &stretched}, {&quad, &turned}};
     uint32_t seed = 11;
-    for (int d = 0; d < 5; d++) {
-        shape s = MAKE(*descs[d], NULL);
+    for (size_t c = 0; c < sizeof cases / sizeof cases[0]; c++) {
+        const glint_shape *desc = cases[c].desc;
+        shape s = MAKE(*desc, cases[c].to_world);
         assert_true(shape_has_intersect4(&s));
+        /* Where most rays aim, and a direction along the shape (its
+         * plane's, or a cylinder's axis), in object space. */
+        vec3 middle = desc->center, along = v3(0, 1, 0);
+        if (desc->kind == GLINT_SHAPE_POLYGON) {
+            int n = desc->point_count;
+            middle = v3(0, 0, 0);
+            for (int k = 0; k < n; k++)
+                middle = v3_add(middle, v3_scale(desc->points[k], 1.0 / n));
+        }
+        if (desc->kind == GLINT_SHAPE_CYLINDER || desc->kind == GLINT_SHAPE_CONE)
+            middle = v3_add(middle, v3(0, desc->height / 2, 0));
+        if (desc->kind == GLINT_SHAPE_CONE) /* its quadratic is linear along the slant */
+            along = v3((desc->radius - desc->top_radius) / desc->height, 1, 0);
+        middle = xf_point(&s.to_world, middle);
         int hits = 0, misses = 0;
         for (int round = 0; round < 400; round++) {
             ray8 r;
@@ -441,22 +479,18 @@ static void test_shape_intersect4_matches(void **state)
             for (int i = 0; i < RAY8; i++) {
                 double v[7];
                 random_values(&seed, v, 7);
-                vec3 o = v3(v[0], v[1], v[2]);
-                /* Most rays aim within a unit or so of the shape's middle. */
-                vec3 middle = descs[d]->center;
-                if (descs[d]->kind == GLINT_SHAPE_POLYGON) {
-                    int n = descs[d]->point_count;
-                    middle = v3(0, 0, 0);
-                    for (int k = 0; k < n; k++)
-                        middle = v3_add(middle, v3_scale(descs[d]->points[k], 1.0 / n));
-                }
-                vec3 target = v3_add(middle, v3_scale(v3(v[3], v[4], v[5]), 0.15));
-                vec3 dir = v3_sub(target, o);
+                vec3 o = v3(v[0], v[1], v[2]), jitter = v3(v[3], v[4], v[5]);
+                vec3 dir = v3_sub(v3_add(middle, v3_scale(jitter, 0.15)), o);
                 if (i == 1)
-                    o = v3_add(sphere.center, v3_scale(v3(v[3], v[4], v[5]), 0.1)); /* inside the sphere */
-                if (i == 2)
-                    dir = v3_cross(d == 0 ? v3(0, 1, 0) : d < 3 ? s.poly_normal : s.desc.normal,
-                                   v3(v[3], v[4], v[5])); /* along the plane */
+                    o = v3_add(middle, v3_scale(jitter, 0.1)); /* inside the solids */
+                if (i == 2 && desc->kind == GLINT_SHAPE_POLYGON)
+                    along = v3_cross(s.poly_normal, jitter);
+                else if (i == 2 && (desc->kind == GLINT_SHAPE_PLANE || desc->kind == GLINT_SHAPE_DISK))
+                    along = v3_cross(desc->normal, jitter);
+                else if (i == 2 && desc->kind == GLINT_SHAPE_SPHERE)
+                    along = v3_cross(v3(0, 1, 0), jitter);
+                if (i == 2) /* along the shape, from near it */
+                    dir = xf_vector(&s.to_world, along);
                 if (i == 3 && round % 50 == 0)
                     dir = v3(0, 0, 0);
                 ray8_set(&r, i, (ray){o, dir});
@@ -473,8 +507,7 @@ static void test_shape_intersect4_matches(void **state)
                     double tk = qh.t[k];
                     if (want) {
                         assert_memory_equal(&tk, &h.t, sizeof h.t);
-                        assert_int_equal(h.part, 0);
-                        assert_int_equal(qh.part[k], 0);
+                        assert_int_equal(qh.part[k], h.part);
                         assert_int_equal(qh.leaf[k], -1);
                     }
                     hits += want;
@@ -484,12 +517,10 @@ static void test_shape_intersect4_matches(void **state)
         }
         assert_true(hits > 400 && misses > 400);
     }
-    glint_transform moved = glint_transform_identity();
-    moved.m[0][3] = 1;
-    shape s = MAKE(sphere, &moved);
-    assert_false(shape_has_intersect4(&s));
-    glint_shape cylinder = {.kind = GLINT_SHAPE_CYLINDER, .center = {0, 0, 0}, .radius = 1, .height = 2};
-    s = MAKE(cylinder, NULL);
+    /* Moving shapes are tested one lane at a time. */
+    glint_transform poses[2] = {glint_transform_identity(), turned};
+    shape s = MAKE(sphere, NULL);
+    shape_move(&s, poses, 2);
     assert_false(shape_has_intersect4(&s));
 }
 
