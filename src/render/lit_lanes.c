@@ -24,6 +24,14 @@ void lit_lanes_set_none(lit_lanes *ll, int i)
     ll->always_behind[i] = ll->behind_when_leaving[i] = false;
 }
 
+/* Whether m's specular lobe, if it has one, is lit on the quads: a whole
+ * exponent (quad_lobe_pow's squarings) and no metallic tint, which
+ * phong_light gives a lane at a time. */
+static bool quad_lobe(const glint_material *m)
+{
+    return lobe_exponent_whole(m->shininess) && !(m->metallic > 0);
+}
+
 void lit_lanes_set_material(lit_lanes *ll, int i, const glint_material *m, color base)
 {
     const double channels[3] = {base.r, base.g, base.b};
@@ -35,7 +43,7 @@ void lit_lanes_set_material(lit_lanes *ll, int i, const glint_material *m, color
     ll->diffuse[i] = m->diffuse;
     ll->specular[i] = m->specular;
     ll->shininess[i] = m->shininess;
-    bool whole = lobe_exponent_whole(m->shininess);
+    bool whole = quad_lobe(m);
     ll->lobe[i] = m->specular > 0 && whole;
     ll->fractional[i] = m->specular > 0 && !whole;
     ll->any_fractional |= ll->fractional[i];
@@ -43,7 +51,7 @@ void lit_lanes_set_material(lit_lanes *ll, int i, const glint_material *m, color
 
 void lit_lanes_set_one_material(lit_lanes *ll, const glint_material *m)
 {
-    bool whole = lobe_exponent_whole(m->shininess), diffuse = m->diffuse > 0;
+    bool whole = quad_lobe(m), diffuse = m->diffuse > 0;
     for (int i = 0; i < ACCEL_PACKET; i++) {
         for (int c = 0; c < 3; c++)
             ll->diffuse_in[c][i] = diffuse && ll->base[c][i] > 0;

@@ -614,16 +614,19 @@ static void test_light_lanes_are_its_samples(void **state)
     glint_scene_free(s);
 }
 
-/* A 16 x 12 view of a floor of that specular and shininess under a bright
- * rectangle lamp, whose highlight lies in the view, rendered. */
-static glint_image glossy_floor(double shininess, double specular)
+/* A 16 x 12 view of an orange floor of that specular, shininess and
+ * metallic tint under a bright rectangle lamp, whose highlight lies in
+ * the view, rendered. */
+static glint_image glossy_floor(double shininess, double specular, double metallic)
 {
     glint_camera cam = {.kind = GLINT_CAMERA_PINHOLE, .position = {0, 2, 4}, .look_at = {0, 0, 0},
                         .up = {0, 1, 0}, .vfov_degrees = 50};
     glint_scene *s = one_sample_scene(16, 12, (glint_color){0, 0, 0}, cam);
     glint_material m = glint_material_default();
+    m.color = (glint_color){1, 0.5, 0.2};
     m.specular = specular;
     m.shininess = shininess;
+    m.metallic = metallic;
     int glossy = glint_scene_add_material(s, NULL, &m, NULL);
     glint_shape floor = {.kind = GLINT_SHAPE_PLANE, .center = {0, 0, 0}, .normal = {0, 1, 0}};
     assert_true(glint_scene_add_shape(s, &floor, glossy, NULL, NULL) >= 0);
@@ -642,23 +645,33 @@ static glint_image glossy_floor(double shininess, double specular)
 /* A highlight under an area light is the same whether its exponent is a
  * whole number (worked out four lanes at a time by squarings) or not
  * (pow, a lane at a time): shininess 9 and 9 + 1e-9 differ by rounding
- * only, while the highlight itself is plain to see. */
+ * only, while the highlight itself is plain to see. So is a metallic
+ * highlight, tinted by the floor's colour: its blue is a fifth of its red
+ * (a whole exponent's had been left white). */
 static void test_glossy_lanes_agree(void **state)
 {
     (void)state;
-    glint_image whole = glossy_floor(9, 0.6), fractional = glossy_floor(9 + 1e-9, 0.6), matte = glossy_floor(9, 0);
-    double most = 0, highlight = 0;
-    for (size_t k = 0; k < (size_t)3 * whole.width * whole.height; k++) {
-        double d = fabs(whole.pixels[k] - fractional.pixels[k]);
-        most = d > most ? d : most;
-        double shine = whole.pixels[k] - matte.pixels[k];
-        highlight = shine > highlight ? shine : highlight;
+    for (int metal = 0; metal <= 1; metal++) {
+        glint_image whole = glossy_floor(9, 0.6, metal), fractional = glossy_floor(9 + 1e-9, 0.6, metal);
+        glint_image matte = glossy_floor(9, 0, metal);
+        double most = 0, highlight = 0, red = 0, blue = 0;
+        for (size_t k = 0; k < (size_t)3 * whole.width * whole.height; k++) {
+            double d = fabs(whole.pixels[k] - fractional.pixels[k]);
+            most = d > most ? d : most;
+            double shine = whole.pixels[k] - matte.pixels[k];
+            if (shine > highlight && k % 3 == 0) {
+                highlight = shine;
+                red = shine;
+                blue = whole.pixels[k + 2] - matte.pixels[k + 2];
+            }
+        }
+        assert_true(most <= 1e-6);
+        assert_true(highlight > 0.05);
+        assert_near(blue, metal ? 0.2 * red : red, 1e-6 * red);
+        glint_image_free(&whole);
+        glint_image_free(&fractional);
+        glint_image_free(&matte);
     }
-    assert_true(most <= 1e-6);
-    assert_true(highlight > 0.05);
-    glint_image_free(&whole);
-    glint_image_free(&fractional);
-    glint_image_free(&matte);
 }
 
 /* glint CornellBox-Original.obj: lit by its own ceiling lamp (MTL Ke 17
