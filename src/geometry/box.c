@@ -54,11 +54,8 @@ static quad_mask box_span4(const shape *s, const quad_ray *r, quad_span *out)
     quad_f64 t_near = quad_splat(-INFINITY), t_far = quad_splat(INFINITY);
     quad_mask near_part = {0}, far_part = {0}, meets = ~(quad_mask){0};
     for (int axis = 0; axis < 3; axis++) {
-        quad_f64 a = (quad_splat(lo[axis]) - o[axis]) / dir[axis], b = (quad_splat(hi[axis]) - o[axis]) / dir[axis];
-        quad_mask swap = b < a, along = dir[axis] == quad_splat(0);
-        quad_f64 t_in = quad_select(along, quad_splat(-INFINITY), quad_select(swap, b, a));
-        quad_f64 t_out = quad_select(along, quad_splat(INFINITY), quad_select(swap, a, b));
-        meets &= ~along | ((o[axis] >= quad_splat(lo[axis])) & (o[axis] <= quad_splat(hi[axis])));
+        quad_f64 t_in, t_out;
+        meets &= slab4(o[axis], dir[axis], lo[axis], hi[axis], &t_in, &t_out);
         quad_mask low_face = (quad_mask){0} + (1 + 2 * axis), up = dir[axis] > quad_splat(0);
         quad_mask enters = t_in > t_near, leaves = t_out < t_far;
         t_near = quad_select(enters, t_in, t_near);
