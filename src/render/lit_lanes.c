@@ -43,15 +43,15 @@ void lit_lanes_set_material(lit_lanes *ll, int i, const glint_material *m, color
     ll->diffuse[i] = m->diffuse;
     ll->specular[i] = m->specular;
     ll->shininess[i] = m->shininess;
-    bool whole = quad_lobe(m);
-    ll->lobe[i] = m->specular > 0 && whole;
-    ll->fractional[i] = m->specular > 0 && !whole;
-    ll->any_fractional |= ll->fractional[i];
+    bool on_quads = quad_lobe(m);
+    ll->lobe[i] = m->specular > 0 && on_quads;
+    ll->by_phong[i] = m->specular > 0 && !on_quads;
+    ll->any_by_phong |= ll->by_phong[i];
 }
 
 void lit_lanes_set_one_material(lit_lanes *ll, const glint_material *m)
 {
-    bool whole = quad_lobe(m), diffuse = m->diffuse > 0;
+    bool on_quads = quad_lobe(m), diffuse = m->diffuse > 0;
     for (int i = 0; i < ACCEL_PACKET; i++) {
         for (int c = 0; c < 3; c++)
             ll->diffuse_in[c][i] = diffuse && ll->base[c][i] > 0;
@@ -59,10 +59,10 @@ void lit_lanes_set_one_material(lit_lanes *ll, const glint_material *m)
         ll->diffuse[i] = m->diffuse;
         ll->specular[i] = m->specular;
         ll->shininess[i] = m->shininess;
-        ll->lobe[i] = m->specular > 0 && whole;
-        ll->fractional[i] = m->specular > 0 && !whole;
+        ll->lobe[i] = m->specular > 0 && on_quads;
+        ll->by_phong[i] = m->specular > 0 && !on_quads;
     }
-    ll->any_fractional = m->specular > 0 && !whole;
+    ll->any_by_phong = m->specular > 0 && !on_quads;
 }
 
 /* Lane i of an array of a packet's vectors (or colours), by coordinate. */
@@ -97,7 +97,7 @@ void lit_lanes_light(tracer *t, const ray8 *r, lit_lanes *ll, int depth, const l
         quad_mask diffuse = (quad_from_bools(ll->diffuse_in[0] + h) & (radiance[0] > 0)) |
                             (quad_from_bools(ll->diffuse_in[1] + h) & (radiance[1] > 0)) |
                             (quad_from_bools(ll->diffuse_in[2] + h) & (radiance[2] > 0));
-        quad_mask shiny = (quad_from_bools(ll->lobe + h) | quad_from_bools(ll->fractional + h)) &
+        quad_mask shiny = (quad_from_bools(ll->lobe + h) | quad_from_bools(ll->by_phong + h)) &
                           quad_rgb_max_positive(radiance) & (cosine > 0);
         quad_mask on = faces & (diffuse | shiny);
         quad_mask_store(lit + h, on);
@@ -133,7 +133,7 @@ void lit_lanes_light(tracer *t, const ray8 *r, lit_lanes *ll, int depth, const l
          * (base * arriving) * (diffuse * n . l) + arriving * (specular *
          * lobe_pow(cosine, shininess)) where the cosine is above 0, with
          * arriving = radiance * share * through. */
-        quad_mask adds = quad_from_bools(lit + h) & ~quad_from_bools(ll->fractional + h);
+        quad_mask adds = quad_from_bools(lit + h) & ~quad_from_bools(ll->by_phong + h);
         quad_mask passes = quad_rgb_max_positive(passed);
         quad_f64 weight = LANES(ll->diffuse, h) * LANES(n_dot_l, h);
         quad_f64 cosine = LANES(lobe_cosine, h);
@@ -151,8 +151,8 @@ void lit_lanes_light(tracer *t, const ray8 *r, lit_lanes *ll, int depth, const l
             quad_store(ll->direct[c] + h, quad_select(adds, sum + out, sum));
         }
     }
-    for (int i = 0; i < ACCEL_PACKET && ll->any_fractional; i++) {
-        if (!lit[i] || !ll->fractional[i])
+    for (int i = 0; i < ACCEL_PACKET && ll->any_by_phong; i++) {
+        if (!lit[i] || !ll->by_phong[i])
             continue;
         /* light_share: black, still added, unless something passed. */
         color arriving = rgb_mul(rgb_scale(light_samples8_radiance(ls, i), share), through[i]), add = rgb(0, 0, 0);

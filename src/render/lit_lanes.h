@@ -23,9 +23,9 @@ typedef struct lit_lanes {
     double diffuse[ACCEL_PACKET], specular[ACCEL_PACKET], shininess[ACCEL_PACKET];
     bool diffuse_in[3][ACCEL_PACKET]; /* the diffuse term has channel c: diffuse and base's c above 0 */
     bool lobe[ACCEL_PACKET];          /* an untinted specular lobe of a whole exponent (lobe_pow's squarings) */
-    bool fractional[ACCEL_PACKET];    /* a lobe of another exponent or with a metallic tint: that lane's
+    bool by_phong[ACCEL_PACKET];      /* a lobe of another exponent or with a metallic tint: that lane's
                                          light by phong_light */
-    bool any_fractional;
+    bool any_by_phong;
     int leaves_behind[ACCEL_PACKET];  /* the shape a ray leaving the hit may skip, or -1, */
     bool always_behind[ACCEL_PACKET]; /* and when (shape_left_behind_by's answers) */
     bool behind_when_leaving[ACCEL_PACKET];
