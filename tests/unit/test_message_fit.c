@@ -1,6 +1,7 @@
 /* test_message_fit.c - messages too long for a glint_error keep their
- * reason: the longest path loses its middle (core/message_fit.h), in
- * error_set, in the scene loader's reports and in warnings, never the end. */
+ * subject and reason: the longest path loses its middle
+ * (core/message_fit.h), in error_set, in the scene loader's reports and in
+ * warnings, never the end. */
 #include <stdarg.h>
 #include <stddef.h>
 #include <setjmp.h>
@@ -63,15 +64,39 @@ static void test_two_paths_both_shortened(void **state)
     assert_true(strstr(text, "...") < strstr(text, "texture"));
 }
 
-/* No word long enough to shorten: the end is cut, at a character's start. */
-static void test_no_long_word_cuts_the_end_whole_characters(void **state)
+/* No word long enough to shorten: the text after the first word loses its
+ * middle, at characters' starts, and the first word and the end stay. 19
+ * bytes of room: "été" (5), the "..." and 11 more, a third before it
+ * (" é", 3 bytes) and two thirds after it (8 bytes, less the stray
+ * continuation byte they start with: "té end"). */
+static void test_no_long_word_keeps_first_word_and_end(void **state)
 {
     (void)state;
     char text[700] = ""; /* 100 words of 6 bytes, and the NUL */
     for (int i = 0; i < 100; i++)
         strcat(text, "\xc3\xa9t\xc3\xa9 "); /* "été ", 6 bytes */
+    strcat(text, "end");
     message_fit(text, 20);
-    assert_string_equal(text, "\xc3\xa9t\xc3\xa9 \xc3\xa9t\xc3\xa9 \xc3\xa9t\xc3\xa9 ");
+    assert_string_equal(text, "\xc3\xa9t\xc3\xa9 \xc3\xa9...t\xc3\xa9 end");
+}
+
+/* A model of a short path naming a texture whose name has spaces in it
+ * and is far too long: the model's path stays whole, the texture's name
+ * loses its middle, and the reason stays (fuzzing found the model's path
+ * shortened and the reason cut off). */
+static void test_short_subject_spared_for_a_spaced_name(void **state)
+{
+    (void)state;
+    char text[4096] = "/tmp/glint-fuzz-mesh-AbCdEf/model.gltf: texture '";
+    for (int i = 0; i < 400; i++)
+        strcat(text, "ab ");
+    strcat(text, "ab' lies outside the model's folder");
+    message_fit(text, 512);
+    assert_int_equal(strlen(text), 511);
+    assert_memory_equal(text, "/tmp/glint-fuzz-mesh-AbCdEf/model.gltf: texture 'ab ab", 54);
+    const char *end = "ab ab' lies outside the model's folder";
+    assert_string_equal(text + strlen(text) - strlen(end), end);
+    assert_non_null(strstr(text, "..."));
 }
 
 /* A path of two-byte characters is cut between characters. */
@@ -147,7 +172,8 @@ int main(void)
         cmocka_unit_test(test_short_message_is_kept),
         cmocka_unit_test(test_long_path_loses_its_middle),
         cmocka_unit_test(test_two_paths_both_shortened),
-        cmocka_unit_test(test_no_long_word_cuts_the_end_whole_characters),
+        cmocka_unit_test(test_no_long_word_keeps_first_word_and_end),
+        cmocka_unit_test(test_short_subject_spared_for_a_spaced_name),
         cmocka_unit_test(test_cut_keeps_utf8_whole),
         cmocka_unit_test(test_error_set_keeps_the_reason),
         cmocka_unit_test(test_scene_problem_keeps_the_reason),
