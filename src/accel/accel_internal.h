@@ -87,6 +87,7 @@ typedef struct query {
     color depth[ACCEL_PACKET];   /* optical depth each lane's crossings add up */
     seen_set *seen;           /* shadow queries: what each lane was filtered by */
     int alone;                /* the lane traced alone (accel->apart), or -1 */
+    int reachable[ACCEL_PACKET]; /* -1 where Embree can take lane i's ray, else 0 */
 } query;
 
 /* The query's lane for lane i of a callback's n rays: i itself for glint's

@@ -153,6 +153,10 @@ static void packet_far(const query *q, struct RTCRay8 *p)
         quad_float_far(quad_load(q->tmax + i), p->tfar + i);
 }
 
+/* The square of the largest coordinate of a ray's origin and direction
+ * Embree takes (its FLT_LARGE, 1.844e18). */
+#define EMBREE_LARGEST_SQUARED 3.4e36f
+
 /* Fills the query's lanes and Embree's packet from the active rays, each
  * covering (0, tmax[i]): Embree's float tfar is rounded up so the float
  * traversal never stops short of the exact double test. Inactive lanes are
@@ -186,6 +190,21 @@ static void packet_init(query *q, const ray8 *r, const double tmax[ACCEL_PACKET]
         quad_f32 f[6] = {quad_to_floats(quad_load(r->ox + i)), quad_to_floats(quad_load(r->oy + i)),
                          quad_to_floats(quad_load(r->oz + i)), quad_to_floats(quad_load(r->dx + i)),
                          quad_to_floats(quad_load(r->dy + i)), quad_to_floats(quad_load(r->dz + i))};
+        /* Embree takes no ray with a coordinate of its origin or direction
+         * past its FLT_LARGE, 1.844e18 (Debian's build asserts it, ending
+         * the process): a camera placed, or a hit found, that far from the
+         * origin. Such a ray meets no triangle and no bounded shape; the
+         * planes, tested in double precision, it still meets. The squares
+         * of the origin's coordinates and of the direction's sum (infinite
+         * or NaN where a coordinate is) add up to under the bound's square
+         * only when each coordinate is under the bound, and always when
+         * each of the origin's is under half of it (a unit direction's sum
+         * squared is at most 3). */
+        quad_f32 d = f[3] + f[4] + f[5];
+        quad_f32 size = f[0] * f[0] + f[1] * f[1] + f[2] * f[2] + d * d;
+        quad_i32 reachable = size <= (quad_f32){EMBREE_LARGEST_SQUARED, EMBREE_LARGEST_SQUARED,
+                                                EMBREE_LARGEST_SQUARED, EMBREE_LARGEST_SQUARED};
+        memcpy(q->reachable + i, &reachable, sizeof reachable);
         memcpy(p->org_x + i, &f[0], sizeof f[0]);
         memcpy(p->org_y + i, &f[1], sizeof f[1]);
         memcpy(p->org_z + i, &f[2], sizeof f[2]);
@@ -216,12 +235,21 @@ static struct RTCRay lane_ray(const struct RTCRay8 *p, int i)
                            .mask = p->mask[i], .id = p->id[i], .flags = p->flags[i]};
 }
 
+/* Takes out of valid the lanes Embree cannot take (packet_init's
+ * q->reachable). */
+static void embree_lanes(const query *q, int valid[ACCEL_PACKET])
+{
+    for (int i = 0; i < ACCEL_PACKET; i++)
+        valid[i] &= q->reachable[i];
+}
+
 /* Embree's nearest hit for each valid lane of rh: the packet at once, or,
  * for rays that are not neighbours where the accelerator traces them
  * apart (rays_apart), each lane alone. */
 static void nearest_hits(query *q, int valid[ACCEL_PACKET], bool coherent, struct RTCRayHit8 *rh)
 {
     const accel *a = q->acc;
+    embree_lanes(q, valid);
     if (coherent || !a->apart) {
         rtcIntersect8(valid, a->scene, &q->ctx, rh);
         return;
@@ -250,6 +278,7 @@ static void nearest_hits(query *q, int valid[ACCEL_PACKET], bool coherent, struc
 static void blocked_lanes(query *q, int valid[ACCEL_PACKET], bool coherent, struct RTCRay8 *p)
 {
     const accel *a = q->acc;
+    embree_lanes(q, valid);
     if (coherent || !a->apart) {
         rtcOccluded8(valid, a->scene, &q->ctx, p);
         return;

@@ -166,6 +166,27 @@ static void test_planes_are_infinite_and_lose_ties(void **state)
     glint_scene_free(tie);
 }
 
+/* Embree takes no ray with a coordinate past 1.844e18 (Debian's build
+ * asserts it, ending the process): from a camera 1e19 units away, every
+ * camera ray and the outer pixels' shadow rays are such rays. They still
+ * meet the plane, lit by a light straight above it (ambient 0.2 + 1); the
+ * ball at the origin is far smaller than a pixel. */
+static void test_rays_past_embree_still_meet_planes(void **state)
+{
+    (void)state;
+    glint_scene *s = new_scene(4, 4, (glint_vec3){0, 0, 1e19}, (glint_vec3){0, 0, 0}, (glint_vec3){0, 1, 0}, 40);
+    glint_shape plane = {.kind = GLINT_SHAPE_PLANE, .center = {0, 0, 0}, .normal = {0, 0, 1}};
+    assert_true(glint_scene_add_shape(s, &plane, matte(s, 1, 1, 1), NULL, NULL) >= 0);
+    add_sphere(s, 0, 0, 0, 1, matte(s, 1, 0, 0));
+    glint_light sun = {.kind = GLINT_LIGHT_DIRECTIONAL, .direction = {0, 0, -1}, .color = {1, 1, 1}};
+    assert_true(glint_scene_add_light(s, &sun, NULL) >= 0);
+    glint_image img = render(s, 1);
+    for (int i = 0; i < 3 * 16; i++)
+        assert_near(img.pixels[i], 1.2, 1e-6);
+    glint_image_free(&img);
+    glint_scene_free(s);
+}
+
 /* A sphere of radius 1 at c with a spherical checker of 8 x 8 cells (no
  * center given), seen from 4 units in front of it. */
 static glint_image checked_ball(glint_vec3 c)
@@ -1330,6 +1351,7 @@ int main(void)
         cmocka_unit_test(test_every_pixel_written),
         cmocka_unit_test(test_bad_transforms_are_refused),
         cmocka_unit_test(test_planes_are_infinite_and_lose_ties),
+        cmocka_unit_test(test_rays_past_embree_still_meet_planes),
     };
     return cmocka_run_group_tests(tests, NULL, NULL);
 }
