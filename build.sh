@@ -37,25 +37,50 @@ build() { # build DIR [cmake args...]
     cmake --build "$dir" -j "$(nproc)"
 }
 
+# render_seeds DIR: fuzz_render's seeds, made in DIR from the NFF and YAML
+# seeds, each behind the byte that picks its reader (tests/fuzz/fuzz_render.c):
+# 'n' (even) for NFF, 'y' (odd) for YAML; and its dictionary, both readers'.
+render_seeds() {
+    local dir=$1 f
+    mkdir -p "$dir/corpus"
+    for f in tests/fuzz/corpus/nff/*; do
+        { printf n; cat "$f"; } >"$dir/corpus/n-${f##*/}"
+    done
+    for f in tests/fuzz/corpus/scene/*; do
+        if [ -f "$f" ]; then
+            { printf y; cat "$f"; } >"$dir/corpus/y-${f##*/}"
+        else
+            cp -R "$f" "$dir/corpus/" # what the seeds include, by name
+        fi
+    done
+    cat tests/fuzz/nff.dict tests/fuzz/scene.dict >"$dir/render.dict"
+}
+
 # fuzz NAME MAX_LEN [FLAGS...]: runs build-fuzz/fuzz_NAME for GLINT_FUZZ_SECONDS
-# on copies of tests/fuzz/corpus/NAME and tests/fuzz/regressions/NAME, from
-# inside the corpus copy (so relative includes find seeds), with
-# tests/fuzz/NAME.dict, when present the LeakSanitizer suppressions
-# tests/fuzz/NAME.supp, and any further libFuzzer FLAGS. A failing input is
-# left in build-fuzz/artifacts-NAME/, the log in build-fuzz/fuzz-NAME.log.
+# on copies of tests/fuzz/corpus/NAME (render_seeds' for render) and
+# tests/fuzz/regressions/NAME, from inside the corpus copy (so relative
+# includes find seeds), with tests/fuzz/NAME.dict, when present the
+# LeakSanitizer suppressions tests/fuzz/NAME.supp, and any further libFuzzer
+# FLAGS. A failing input is left in build-fuzz/artifacts-NAME/, the log in
+# build-fuzz/fuzz-NAME.log.
 fuzz() {
     local name=$1 max_len=$2 top=$PWD
     shift 2
-    local dir=build-fuzz/run-$name
+    local dir=build-fuzz/run-$name dict=$PWD/tests/fuzz/$name.dict
     rm -rf "$dir" "build-fuzz/artifacts-$name"
     mkdir -p "$dir/regressions" "build-fuzz/artifacts-$name"
-    cp -R "tests/fuzz/corpus/$name" "$dir/corpus"
+    if [ "$name" = render ]; then
+        render_seeds "$dir"
+        dict=$PWD/$dir/render.dict
+    else
+        cp -R "tests/fuzz/corpus/$name" "$dir/corpus"
+    fi
     [ ! -d "tests/fuzz/regressions/$name" ] || cp -R "tests/fuzz/regressions/$name/." "$dir/regressions/"
     local lsan=""
     [ ! -f "tests/fuzz/$name.supp" ] || lsan="suppressions=$top/tests/fuzz/$name.supp"
     if ! (cd "$dir/corpus" && LSAN_OPTIONS="$lsan" UBSAN_OPTIONS=print_stacktrace=1 \
             "$top/build-fuzz/fuzz_$name" -max_total_time="${GLINT_FUZZ_SECONDS:-60}" -max_len="$max_len" \
-            -rss_limit_mb=2048 -timeout=10 -dict="$top/tests/fuzz/$name.dict" \
+            -rss_limit_mb=2048 -timeout=10 -dict="$dict" \
             -artifact_prefix="$top/build-fuzz/artifacts-$name/" -print_final_stats=1 "$@" . ../regressions) \
             >"build-fuzz/fuzz-$name.log" 2>&1; then
         tail -n 60 "build-fuzz/fuzz-$name.log"
@@ -113,8 +138,9 @@ test)
     ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
         ctest --test-dir build-asan --output-on-failure -j "$(nproc)"
     same_images build/glint build-asan/glint
-    # Fuzz the scene loader, the model importer, the texture decoder and the
-    # flags for a bounded time each (tests/fuzz/README.md); a crash, leak or
+    # Fuzz the scene loader, the model importer, the texture decoder, the
+    # flags and the render of what the scene readers accept for a bounded
+    # time each (tests/fuzz/README.md); a crash, leak or
     # timeout fails the test. The flags' parser prints as glint does: its
     # stdout and stderr are closed (libFuzzer's own messages still show).
     CC=clang build build-fuzz -DGLINT_WERROR=ON -DGLINT_FUZZ=ON -DGLINT_MPI=OFF -DGLINT_BUILD_TESTS=OFF -DCMAKE_BUILD_TYPE=RelWithDebInfo
@@ -123,6 +149,7 @@ test)
     fuzz mesh 16384
     fuzz texture 16384
     fuzz cli 4096 -close_fd_mask=3
+    fuzz render 8192
     ;;
 *)
     echo "usage: ./build.sh render [glint flags] | ./build.sh test" >&2
